@@ -1,0 +1,49 @@
+#pragma once
+// The grammar's operators, one registry record each (godot_voxel style): the record holds
+// its arity for the checker, its set semantics for the checker's analyses, its interpreter
+// evaluation and its GLSL emission side by side, so no backend can miss an operator.
+#include "voxc/builtins/ValueSet.h"
+#include "voxc/program/Program.h"
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace voxc {
+
+struct SymbolOpInfo {
+    SymbolOp op;
+    std::string_view name;
+    bool takesValue;
+    bool (*eval)(float density, float value);
+    ValueSet (*accepts)(float value);
+    // A GLSL bool expression; `density` and `value` are GLSL expressions.
+    std::string (*glsl)(const std::string& density, const std::string& value);
+};
+
+struct TransformOpInfo {
+    TransformOp op;
+    std::string_view name;
+    bool takesValue;
+    bool writes; // false for NOP: the cell is left untouched (and not clamped)
+    float (*eval)(float density, float value);
+    std::string (*glsl)(const std::string& density, const std::string& value);
+};
+
+std::span<const SymbolOpInfo> symbolOps();
+std::span<const TransformOpInfo> transformOps();
+const SymbolOpInfo& symbolOpInfo(SymbolOp op);
+const TransformOpInfo& transformOpInfo(TransformOp op);
+std::optional<SymbolOp> findSymbolOp(std::string_view name);
+std::optional<TransformOp> findTransformOp(std::string_view name);
+
+// A GLSL float literal that parses back to exactly `v` (v must be finite).
+std::string glslFloat(float v);
+
+// Interpreter helpers built from the records.
+bool cellPasses(const SymbolCell& cell, float density);
+// The value a transform cell writes, clamped to [clampMin, clampMax] where given; NOP returns density.
+float applyTransform(const TransformCell& cell, float density, const Grammar& grammar);
+
+} // namespace voxc

@@ -1,0 +1,49 @@
+#pragma once
+// The start block's shapes, one registry record each: the keys the checker accepts (type,
+// range, default), the interpreter's evaluation and the GLSL emission side by side.
+#include "voxc/program/Program.h"
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace voxc {
+
+enum class KeyType : uint8_t { Number, Integer, Vec3, Axis };
+
+struct KeySpec {
+    std::string_view name;
+    KeyType type;
+    bool required;
+    double min; // inclusive bounds on a Number/Integer, or on each Vec3 component
+    double max;
+    // Stores the checked value; Axis arrives as 0, 1 or 2, Number/Integer as values[0].
+    void (*set)(StartShape& shape, const double* values);
+};
+
+struct ShapeInfo {
+    ShapeKind kind;
+    std::string_view name;
+    std::span<const KeySpec> keys;
+    // Density after this shape at one voxel: `current` where the shape is not solid.
+    float (*eval)(const StartShape& shape, glm::ivec3 local, glm::ivec3 world, uint32_t seed, float current);
+    // GLSL statements that update `float density` from `ivec3 local`, `ivec3 world` and `uint seed`.
+    std::string (*glsl)(const StartShape& shape);
+};
+
+std::span<const ShapeInfo> shapes();
+const ShapeInfo& shapeInfo(ShapeKind kind);
+std::optional<ShapeKind> findShape(std::string_view name);
+
+// The start state's density at one voxel: every shape in order over air (0).
+float startDensity(const Program& program, glm::ivec3 local);
+
+// 2D improved Perlin noise with Perlin's reference permutation, range about [-1, 1].
+// compiler/shaders/perlin.glsl mirrors it; both avoid fused multiply-adds so they agree bit for bit.
+float perlin2(float x, float y);
+// The heightfield's surface height at world column (x, z).
+float heightfieldHeight(const HeightfieldParams& params, uint32_t seed, int worldX, int worldZ);
+
+} // namespace voxc

@@ -1,0 +1,105 @@
+#include "voxc/builtins/Ops.h"
+
+#include "voxc/core/Errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+namespace voxc {
+
+namespace {
+
+std::string compare(const std::string& density, const char* op, const std::string& value) {
+    return fmt::format("({} {} {})", density, op, value);
+}
+
+// Densities are compared exactly (digest §1, decision 5); ABS and PRES compare with zero.
+const SymbolOpInfo kSymbolOps[] = {
+    {SymbolOp::IGN, "IGN", false, [](float, float) { return true; }, [](float) { return ValueSet::all(); },
+     [](const std::string&, const std::string&) { return std::string("true"); }},
+    {SymbolOp::PRES, "PRES", false, [](float d, float) { return d > 0.0f; },
+     [](float) { return ValueSet::above(0.0f, false); },
+     [](const std::string& d, const std::string&) { return compare(d, ">", "0.0"); }},
+    {SymbolOp::ABS, "ABS", false, [](float d, float) { return d == 0.0f; },
+     [](float) { return ValueSet::point(0.0f); },
+     [](const std::string& d, const std::string&) { return compare(d, "==", "0.0"); }},
+    {SymbolOp::EQ, "EQ", true, [](float d, float v) { return d == v; }, [](float v) { return ValueSet::point(v); },
+     [](const std::string& d, const std::string& v) { return compare(d, "==", v); }},
+    {SymbolOp::NEQ, "NEQ", true, [](float d, float v) { return d != v; }, [](float v) { return ValueSet::allBut(v); },
+     [](const std::string& d, const std::string& v) { return compare(d, "!=", v); }},
+    {SymbolOp::LT, "LT", true, [](float d, float v) { return d < v; },
+     [](float v) { return ValueSet::below(v, false); },
+     [](const std::string& d, const std::string& v) { return compare(d, "<", v); }},
+    {SymbolOp::LEQ, "LEQ", true, [](float d, float v) { return d <= v; },
+     [](float v) { return ValueSet::below(v, true); },
+     [](const std::string& d, const std::string& v) { return compare(d, "<=", v); }},
+    {SymbolOp::GT, "GT", true, [](float d, float v) { return d > v; },
+     [](float v) { return ValueSet::above(v, false); },
+     [](const std::string& d, const std::string& v) { return compare(d, ">", v); }},
+    {SymbolOp::GEQ, "GEQ", true, [](float d, float v) { return d >= v; },
+     [](float v) { return ValueSet::above(v, true); },
+     [](const std::string& d, const std::string& v) { return compare(d, ">=", v); }},
+};
+
+const TransformOpInfo kTransformOps[] = {
+    {TransformOp::NOP, "NOP", false, false, [](float d, float) { return d; },
+     [](const std::string& d, const std::string&) { return d; }},
+    {TransformOp::SET, "SET", true, true, [](float, float v) { return v; },
+     [](const std::string&, const std::string& v) { return v; }},
+    {TransformOp::ADD, "ADD", true, true, [](float d, float v) { return d + v; },
+     [](const std::string& d, const std::string& v) { return fmt::format("({} + {})", d, v); }},
+};
+
+} // namespace
+
+std::span<const SymbolOpInfo> symbolOps() { return kSymbolOps; }
+std::span<const TransformOpInfo> transformOps() { return kTransformOps; }
+
+const SymbolOpInfo& symbolOpInfo(SymbolOp op) {
+    for (const SymbolOpInfo& info : kSymbolOps)
+        if (info.op == op) return info;
+    throw InternalError("unknown symbol operator");
+}
+
+const TransformOpInfo& transformOpInfo(TransformOp op) {
+    for (const TransformOpInfo& info : kTransformOps)
+        if (info.op == op) return info;
+    throw InternalError("unknown transform operator");
+}
+
+std::optional<SymbolOp> findSymbolOp(std::string_view name) {
+    for (const SymbolOpInfo& info : kSymbolOps)
+        if (info.name == name) return info.op;
+    return std::nullopt;
+}
+
+std::optional<TransformOp> findTransformOp(std::string_view name) {
+    for (const TransformOpInfo& info : kTransformOps)
+        if (info.name == name) return info.op;
+    return std::nullopt;
+}
+
+std::string glslFloat(float v) {
+    VOXC_ASSERT(std::isfinite(v));
+    // Nine significant digits round-trip every float32 exactly.
+    std::string s = fmt::format("{:.9g}", v);
+    if (s.find_first_of(".e") == std::string::npos) s += ".0";
+    return s;
+}
+
+bool cellPasses(const SymbolCell& cell, float density) {
+    return std::all_of(cell.predicates.begin(), cell.predicates.end(),
+                       [&](const Predicate& p) { return symbolOpInfo(p.op).eval(density, p.value); });
+}
+
+float applyTransform(const TransformCell& cell, float density, const Grammar& grammar) {
+    const TransformOpInfo& info = transformOpInfo(cell.op);
+    if (!info.writes) return density;
+    float v = info.eval(density, cell.value);
+    if (grammar.clampMin) v = std::max(v, *grammar.clampMin);
+    if (grammar.clampMax) v = std::min(v, *grammar.clampMax);
+    return v;
+}
+
+} // namespace voxc

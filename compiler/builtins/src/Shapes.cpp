@@ -1,0 +1,175 @@
+#include "voxc/builtins/Shapes.h"
+
+#include "voxc/builtins/Ops.h"
+#include "voxc/core/Errors.h"
+
+#include <fmt/format.h>
+
+namespace voxc {
+
+namespace {
+
+constexpr double kCoord = 1.0e6; // bound on positions and sizes, far beyond any grid limit
+
+glm::vec3 toVec3(const double* v) { return {float(v[0]), float(v[1]), float(v[2])}; }
+
+std::string glslVec3(glm::vec3 v) {
+    return fmt::format("vec3({}, {}, {})", glslFloat(v.x), glslFloat(v.y), glslFloat(v.z));
+}
+
+// Every shape writes `value` where it is solid.
+constexpr KeySpec kValueKey{"value", KeyType::Number, false, -kCoord, kCoord,
+                            [](StartShape& s, const double* v) { s.value = float(v[0]); }};
+
+// Fill: every voxel.
+const KeySpec kFillKeys[] = {kValueKey};
+
+float fillEval(const StartShape& s, glm::ivec3, glm::ivec3, uint32_t, float) { return s.value; }
+
+std::string fillGlsl(const StartShape& s) { return fmt::format("density = {};", glslFloat(s.value)); }
+
+// Box: min <= p < max, per axis.
+const KeySpec kBoxKeys[] = {
+    {"min", KeyType::Vec3, true, -kCoord, kCoord, [](StartShape& s, const double* v) { s.min = toVec3(v); }},
+    {"max", KeyType::Vec3, true, -kCoord, kCoord, [](StartShape& s, const double* v) { s.max = toVec3(v); }},
+    kValueKey,
+};
+
+float boxEval(const StartShape& s, glm::ivec3 local, glm::ivec3, uint32_t, float current) {
+    const glm::vec3 p(local);
+    const bool inside = p.x >= s.min.x && p.y >= s.min.y && p.z >= s.min.z && p.x < s.max.x && p.y < s.max.y &&
+                        p.z < s.max.z;
+    return inside ? s.value : current;
+}
+
+std::string boxGlsl(const StartShape& s) {
+    return fmt::format("if (all(greaterThanEqual(vec3(local), {})) && all(lessThan(vec3(local), {}))) density = {};",
+                       glslVec3(s.min), glslVec3(s.max), glslFloat(s.value));
+}
+
+// Sphere: |p - center|^2 <= radius^2 (squared, so no sqrt can differ between devices).
+const KeySpec kSphereKeys[] = {
+    {"center", KeyType::Vec3, true, -kCoord, kCoord, [](StartShape& s, const double* v) { s.center = toVec3(v); }},
+    {"radius", KeyType::Number, true, 0.0, kCoord, [](StartShape& s, const double* v) { s.radius = float(v[0]); }},
+    kValueKey,
+};
+
+float sphereEval(const StartShape& s, glm::ivec3 local, glm::ivec3, uint32_t, float current) {
+    const glm::vec3 d = glm::vec3(local) - s.center;
+    const float distanceSquared = d.x * d.x + d.y * d.y + d.z * d.z;
+    return distanceSquared <= s.radius * s.radius ? s.value : current;
+}
+
+std::string sphereGlsl(const StartShape& s) {
+    return fmt::format("{{\n"
+                       "        precise vec3 d = vec3(local) - {};\n"
+                       "        precise float distanceSquared = d.x * d.x + d.y * d.y + d.z * d.z;\n"
+                       "        if (distanceSquared <= {}) density = {};\n"
+                       "    }}",
+                       glslVec3(s.center), glslFloat(s.radius * s.radius), glslFloat(s.value));
+}
+
+// Wall: at <= p[axis] < at + thickness.
+const KeySpec kWallKeys[] = {
+    {"axis", KeyType::Axis, true, 0.0, 2.0, [](StartShape& s, const double* v) { s.axis = int32_t(v[0]); }},
+    {"at", KeyType::Number, true, -kCoord, kCoord, [](StartShape& s, const double* v) { s.at = float(v[0]); }},
+    {"thickness", KeyType::Number, false, 0.0, kCoord,
+     [](StartShape& s, const double* v) { s.thickness = float(v[0]); }},
+    kValueKey,
+};
+
+float wallEval(const StartShape& s, glm::ivec3 local, glm::ivec3, uint32_t, float current) {
+    const float p = float(local[s.axis]);
+    return p >= s.at && p < s.at + s.thickness ? s.value : current;
+}
+
+std::string wallGlsl(const StartShape& s) {
+    const char axis = "xyz"[s.axis];
+    return fmt::format("if (float(local.{0}) >= {1} && float(local.{0}) < {2}) density = {3};", axis, glslFloat(s.at),
+                       glslFloat(s.at + s.thickness), glslFloat(s.value));
+}
+
+// Half-space: dot(p, normal) <= offset.
+const KeySpec kHalfSpaceKeys[] = {
+    {"normal", KeyType::Vec3, true, -kCoord, kCoord, [](StartShape& s, const double* v) { s.normal = toVec3(v); }},
+    {"offset", KeyType::Number, true, -kCoord, kCoord, [](StartShape& s, const double* v) { s.offset = float(v[0]); }},
+    kValueKey,
+};
+
+float halfSpaceEval(const StartShape& s, glm::ivec3 local, glm::ivec3, uint32_t, float current) {
+    const glm::vec3 p(local);
+    const float d = p.x * s.normal.x + p.y * s.normal.y + p.z * s.normal.z;
+    return d <= s.offset ? s.value : current;
+}
+
+std::string halfSpaceGlsl(const StartShape& s) {
+    return fmt::format("{{\n"
+                       "        precise vec3 p = vec3(local) * {};\n"
+                       "        precise float d = p.x + p.y + p.z;\n"
+                       "        if (d <= {}) density = {};\n"
+                       "    }}",
+                       glslVec3(s.normal), glslFloat(s.offset), glslFloat(s.value));
+}
+
+// Heightfield: solid below a fractal Perlin surface sampled at world (x, z) (Dey §3.2).
+const KeySpec kHeightfieldKeys[] = {
+    {"base", KeyType::Number, false, -kCoord, kCoord,
+     [](StartShape& s, const double* v) { s.heightfield.base = float(v[0]); }},
+    {"amplitude", KeyType::Number, false, 0.0, kCoord,
+     [](StartShape& s, const double* v) { s.heightfield.amplitude = float(v[0]); }},
+    {"frequency", KeyType::Number, false, 0.0, 1.0,
+     [](StartShape& s, const double* v) { s.heightfield.frequency = float(v[0]); }},
+    {"octaves", KeyType::Integer, false, 1.0, 8.0,
+     [](StartShape& s, const double* v) { s.heightfield.octaves = int32_t(v[0]); }},
+    {"lacunarity", KeyType::Number, false, 1.0, 4.0,
+     [](StartShape& s, const double* v) { s.heightfield.lacunarity = float(v[0]); }},
+    {"gain", KeyType::Number, false, 0.0, 1.0, [](StartShape& s, const double* v) { s.heightfield.gain = float(v[0]); }},
+    kValueKey,
+};
+
+float heightfieldEval(const StartShape& s, glm::ivec3 local, glm::ivec3 world, uint32_t seed, float current) {
+    return float(local.y) < heightfieldHeight(s.heightfield, seed, world.x, world.z) ? s.value : current;
+}
+
+std::string heightfieldGlsl(const StartShape& s) {
+    const HeightfieldParams& h = s.heightfield;
+    return fmt::format("if (float(local.y) < heightfieldHeight(world.x, world.z, seed, {}, {}, {}, {}, {}, {})) "
+                       "density = {};",
+                       glslFloat(h.base), glslFloat(h.amplitude), glslFloat(h.frequency), h.octaves,
+                       glslFloat(h.lacunarity), glslFloat(h.gain), glslFloat(s.value));
+}
+
+const ShapeInfo kShapes[] = {
+    {ShapeKind::Fill, "fill", kFillKeys, fillEval, fillGlsl},
+    {ShapeKind::Box, "box", kBoxKeys, boxEval, boxGlsl},
+    {ShapeKind::Sphere, "sphere", kSphereKeys, sphereEval, sphereGlsl},
+    {ShapeKind::Wall, "wall", kWallKeys, wallEval, wallGlsl},
+    {ShapeKind::HalfSpace, "halfspace", kHalfSpaceKeys, halfSpaceEval, halfSpaceGlsl},
+    {ShapeKind::Heightfield, "heightfield", kHeightfieldKeys, heightfieldEval, heightfieldGlsl},
+};
+
+} // namespace
+
+std::span<const ShapeInfo> shapes() { return kShapes; }
+
+const ShapeInfo& shapeInfo(ShapeKind kind) {
+    for (const ShapeInfo& info : kShapes)
+        if (info.kind == kind) return info;
+    throw InternalError("unknown start shape");
+}
+
+std::optional<ShapeKind> findShape(std::string_view name) {
+    for (const ShapeInfo& info : kShapes)
+        if (info.name == name) return info.kind;
+    return std::nullopt;
+}
+
+float startDensity(const Program& program, glm::ivec3 local) {
+    const glm::ivec3 world = program.world.origin + local;
+    float density = 0.0f;
+    for (const StartShape& shape : program.start)
+        density = shapeInfo(shape.kind).eval(shape, local, world, program.world.seed, density);
+    return density;
+}
+
+} // namespace voxc

@@ -1,0 +1,63 @@
+#pragma once
+// What the compiler hands the runtime: generated kernels plus the plan that orders their
+// dispatches. `voxc compile` writes it out as GLSL + SPIR-V files and manifest.json.
+#include "voxc/program/Program.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace voxc {
+
+// The push-constant block every kernel declares (compiler/shaders/common.glsl), std430 layout.
+// The runtime fills one per dispatch.
+struct PushBlock {
+    int32_t gridOrigin[4];  // xyz: world coordinate of grid voxel (0,0,0); w: chunk size
+    int32_t gridSize[4];    // xyz: grid size in voxels; w: seed (bit pattern)
+    int32_t chunkBase[4];   // xyz: world chunk coordinate of chunk-table entry 0; w: iteration
+    int32_t chunkCount[4];  // xyz: chunk-table extents; w: sweep index within its grammar
+    int32_t anchorStart[4]; // xyz: grid-local first anchor (start kernel: 0)
+    int32_t anchorStep[4];  // xyz: distance between anchors of one phase (start kernel: 1)
+    int32_t anchorCount[4]; // xyz: anchors per axis in this dispatch (start kernel: grid size)
+};
+static_assert(sizeof(PushBlock) == 112, "must match common.glsl");
+
+// Descriptor set 0 for every kernel.
+constexpr uint32_t kBindingVoxels = 0;     // buffer of float densities, chunk-major (see runtime ChunkLayout)
+constexpr uint32_t kBindingChunkTable = 1; // buffer of int: chunk-table entry -> chunk slot
+
+struct Kernel {
+    std::string name;               // e.g. "start", "overhang_sweep0"; also the file stem in a package
+    std::string origin;             // which .vox construct it came from, e.g. "overhang.vox:14:3 grammar overhang, window [3,3,1]"
+    std::string glsl;               // generated source
+    std::vector<uint32_t> spirv;    // compiled, validated SPIR-V
+    uint32_t localSize[3] = {8, 8, 1};
+};
+
+struct SweepPlan {
+    uint32_t kernel = 0;       // index into KernelPackage::kernels
+    glm::ivec3 window{1};
+    glm::ivec3 phaseCount{1};  // as Sweep::phaseCount
+    // Per phase p (x fastest): anchors start + i*step, i < count, as voxc::phaseAnchors computes.
+    std::vector<glm::ivec3> phaseStart, phaseStep, phaseCount3;
+};
+
+struct GrammarPlan {
+    std::string name;
+    uint32_t iterations = 1;
+    std::vector<SweepPlan> sweeps; // in execution order; index = sweep index for hashing
+};
+
+struct StagePlan {
+    Stage::Kind kind = Stage::Kind::Start;
+    uint32_t startKernel = 0; // Start
+    GrammarPlan grammar;      // Grammar
+};
+
+struct KernelPackage {
+    World world;
+    std::vector<Kernel> kernels;
+    std::vector<StagePlan> stages;
+};
+
+} // namespace voxc

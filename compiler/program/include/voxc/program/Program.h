@@ -1,0 +1,126 @@
+#pragma once
+// The checked program: what the checker produces from a .vox file once every name is
+// resolved, every value is in range and every array has its declared shape. The interpreter
+// and the IR lowering both start from here; neither ever sees the AST.
+#include "voxc/core/SourceLoc.h"
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace voxc {
+
+enum class SymbolOp : uint8_t { IGN, PRES, ABS, EQ, NEQ, LT, LEQ, GT, GEQ };
+enum class TransformOp : uint8_t { NOP, SET, ADD };
+
+struct Predicate {
+    SymbolOp op = SymbolOp::IGN;
+    float value = 0.0f; // unused by IGN, PRES, ABS
+};
+
+// A symbol cell passes when every predicate passes; an empty list is IGN.
+struct SymbolCell {
+    std::vector<Predicate> predicates;
+};
+
+struct TransformCell {
+    TransformOp op = TransformOp::NOP;
+    float value = 0.0f; // unused by NOP
+};
+
+// Cells of a window are stored x fastest, then y (up), then z:
+// index = x + I * (y + J * z). The checker converts from the printed layout
+// (first written row = top = highest y).
+inline int cellIndex(glm::ivec3 size, int x, int y, int z) { return x + size.x * (y + size.y * z); }
+
+// Weights are fixed point so tie-breaking is integer arithmetic on every device.
+constexpr float kWeightUnitsPerOne = 1000.0f;   // weight 1.0 == 1000 units; range (0, 1000]
+constexpr uint32_t kProbabilityOne = 1u << 24;  // probability 1.0 == 2^24
+
+struct Rule {
+    std::string name;
+    SourceLoc loc;
+    glm::ivec3 size{1, 1, 1};
+    std::vector<SymbolCell> symbol;       // size.x*size.y*size.z cells
+    std::vector<TransformCell> transform; // same count
+    int32_t priority = 0;
+    float weight = 1.0f;
+    float probability = 1.0f;
+    uint32_t weightUnits = 1000;                 // round(weight * kWeightUnitsPerOne), >= 1
+    uint32_t probabilityUnits = kProbabilityOne; // round(probability * kProbabilityOne)
+};
+
+struct Grammar {
+    std::string name;
+    SourceLoc loc;
+    glm::ivec3 stride{1, 1, 1};
+    glm::ivec3 boundsMin{0, 0, 0}; // grid-local, half-open, already clipped to the grid
+    glm::ivec3 boundsMax{0, 0, 0};
+    int32_t iterations = 1;
+    std::optional<float> clampMin; // clamp applies to every value a transform writes
+    std::optional<float> clampMax;
+    std::vector<Rule> rules;       // declaration order
+};
+
+enum class ShapeKind : uint8_t { Fill, Box, Sphere, Wall, HalfSpace, Heightfield };
+
+// Parameters of the start state's 3-octave (by default) Perlin heightfield (Dey §3.2).
+struct HeightfieldParams {
+    float base = 16.0f;       // mean surface height in voxels
+    float amplitude = 8.0f;   // height of the first octave in voxels
+    float frequency = 0.03f;  // first octave, cycles per voxel (world coordinates)
+    int32_t octaves = 3;
+    float lacunarity = 2.0f;
+    float gain = 0.5f;
+};
+
+// One statement of the start block; later shapes overwrite earlier ones where they are solid.
+// Positions are grid-local voxel coordinates; a voxel is sampled at its integer index.
+struct StartShape {
+    ShapeKind kind = ShapeKind::Fill;
+    SourceLoc loc;
+    float value = 1.0f;             // density written inside the shape (Fill: everywhere)
+    glm::vec3 min{0.0f}, max{0.0f}; // Box: min <= p < max
+    glm::vec3 center{0.0f};         // Sphere: |p - center| <= radius
+    float radius = 0.0f;
+    int32_t axis = 0;               // Wall: at <= p[axis] < at + thickness
+    float at = 0.0f;
+    float thickness = 1.0f;
+    glm::vec3 normal{0.0f, 1.0f, 0.0f}; // HalfSpace: dot(p, normal) <= offset
+    float offset = 0.0f;
+    HeightfieldParams heightfield;  // Heightfield: p.y < height(world x, world z)
+};
+
+struct World {
+    glm::ivec3 size{64, 64, 64};
+    glm::ivec3 origin{0, 0, 0}; // world coordinate of grid voxel (0,0,0)
+    int32_t chunkSize = 32;     // power of two, 8..64
+    uint32_t seed = 0;
+};
+
+// One step of the pipeline. Later parts of the language add kinds here.
+struct Stage {
+    enum class Kind : uint8_t { Start, Grammar };
+    Kind kind = Kind::Start;
+    uint32_t index = 0; // Grammar: index into Program::grammars
+};
+
+struct Program {
+    std::string sourcePath;
+    World world;
+    std::vector<StartShape> start; // empty means all air
+    std::vector<Grammar> grammars;
+    std::vector<Stage> pipeline;   // Start first, then grammars in pipeline order
+};
+
+// Limits enforced by the checker so a bad file fails with a message, not an OOM kill.
+struct Limits {
+    int64_t maxVoxels = int64_t(512) * 512 * 512;
+    int32_t maxIterations = 100000;
+    int32_t maxWindowCells = 512;
+    int32_t maxRulesPerSweep = 256;
+};
+
+} // namespace voxc

@@ -1,0 +1,45 @@
+#pragma once
+// The grammar's execution order, defined once (digest §1, decisions 2-4) and used by the
+// interpreter, the IR lowering and the runtime's dispatch expansion alike.
+//
+// - Rules of one window size form a sweep; sweeps run largest window volume first, equal
+//   volumes in the declaration order of their first rule.
+// - Anchors are boundsMin + n*stride for every n whose window lies inside the half-open bounds.
+// - A sweep's anchors split into phases by n mod ceil(size/stride) per axis, so the windows of
+//   one phase never overlap. Phases run x fastest, then y, then z; each reads the previous result.
+// - Among matching rules the highest priority wins; ties are drawn by weight with
+//   anchorHash(RuleChoice); the chosen rule then fires with its probability (anchorHash(Probability)).
+#include "voxc/program/Program.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace voxc {
+
+struct Sweep {
+    glm::ivec3 window{1, 1, 1};
+    std::vector<uint32_t> rules; // indices into Grammar::rules, declaration order
+    glm::ivec3 anchorCount{0};   // anchors per axis over the whole sweep (0: window does not fit)
+    glm::ivec3 phaseCount{1};    // ceil(window / stride) per axis
+    int phases() const { return phaseCount.x * phaseCount.y * phaseCount.z; }
+};
+
+std::vector<Sweep> orderSweeps(const Grammar& grammar);
+
+// Phase p in [0, sweep.phases()) as per-axis residues, x fastest.
+glm::ivec3 phaseResidue(const Sweep& sweep, int phase);
+
+// The anchors of one phase: start + i*step for i in [0, count) per axis (grid-local).
+struct PhaseAnchors {
+    glm::ivec3 start{0};
+    glm::ivec3 step{1};
+    glm::ivec3 count{0};
+};
+PhaseAnchors phaseAnchors(const Grammar& grammar, const Sweep& sweep, int phase);
+
+// Picks among the matched rules (indices into Grammar::rules, ascending) at one anchor.
+// Returns the rule that fires, or -1 when none does (no match, or the probability draw failed).
+int chooseRule(const Grammar& grammar, const std::vector<uint32_t>& matched, uint32_t seed, uint32_t iteration,
+               uint32_t sweepIndex, glm::ivec3 anchorWorld);
+
+} // namespace voxc

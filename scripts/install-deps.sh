@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs the Debian packages voxc needs, only those that are missing.
+set -euo pipefail
+packages=(
+  cmake g++ ninja-build pkg-config
+  antlr4 libantlr4-runtime-dev
+  glslang-dev glslang-tools spirv-tools
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
+  libglm-dev libfmt-dev libcli11-dev nlohmann-json3-dev
+  libgtest-dev libbenchmark-dev libnoise-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+echo "install-deps: installing ${missing[*]}"
+sudo_cmd=()
+[ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
