@@ -1,0 +1,32 @@
+#pragma once
+// The CPU interpreter: runs a checked Program on a DenseGrid, single-threaded, using only the
+// shared definitions of the semantics (voxc/program/Semantics.h, voxc/builtins/Ops.h,
+// voxc/builtins/Shapes.h). It is the oracle the Vulkan path is compared with bit for bit.
+#include "voxc/grid/Grid.h"
+#include "voxc/interp/Slice.h"
+#include "voxc/interp/Stats.h"
+#include "voxc/interp/Trace.h"
+#include "voxc/program/Program.h"
+
+#include <cstdint>
+#include <functional>
+
+namespace voxc {
+
+struct InterpOptions {
+    // Called after each rule firing, in execution order (within a phase: x fastest, then y, z).
+    std::function<void(const TraceEvent&)> onFire;
+    // When set, firing counts are added to it.
+    FireStats* stats = nullptr;
+};
+
+// The start state: startDensity at every voxel of the world.
+DenseGrid evaluateStart(const Program& program);
+
+// Runs every iteration of one grammar in place. `grid` must have the world's size.
+void runGrammar(const Program& program, uint32_t grammarIndex, DenseGrid& grid, const InterpOptions& options = {});
+
+// Runs program.pipeline in order, starting from an all-air grid of the world's size.
+DenseGrid interpret(const Program& program, const InterpOptions& options = {});
+
+} // namespace voxc

@@ -1,0 +1,144 @@
+#include "voxc/interp/Interpreter.h"
+
+#include "voxc/builtins/Ops.h"
+#include "voxc/builtins/Shapes.h"
+#include "voxc/core/Errors.h"
+#include "voxc/program/Semantics.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+namespace voxc {
+
+namespace {
+
+// What one sweep needs at every anchor, computed once per grammar run.
+struct PreparedSweep {
+    const Sweep* sweep = nullptr;
+    std::vector<ptrdiff_t> cellOffsets;  // grid-index offset of each window cell from the anchor, cellIndex order
+    std::vector<PhaseAnchors> phases;
+};
+
+PreparedSweep prepareSweep(const Grammar& grammar, const Sweep& sweep, const DenseGrid& grid) {
+    PreparedSweep prepared;
+    prepared.sweep = &sweep;
+    const glm::ivec3 w = sweep.window;
+    prepared.cellOffsets.resize(size_t(w.x) * w.y * w.z);
+    for (int z = 0; z < w.z; ++z)
+        for (int y = 0; y < w.y; ++y)
+            for (int x = 0; x < w.x; ++x)
+                prepared.cellOffsets[size_t(cellIndex(w, x, y, z))] = ptrdiff_t(grid.index({x, y, z}));
+    for (int p = 0; p < sweep.phases(); ++p) prepared.phases.push_back(phaseAnchors(grammar, sweep, p));
+    return prepared;
+}
+
+bool windowMatches(const Rule& rule, const float* anchor, const std::vector<ptrdiff_t>& offsets) {
+    for (size_t c = 0; c < offsets.size(); ++c)
+        if (!cellPasses(rule.symbol[c], anchor[offsets[c]])) return false;
+    return true;
+}
+
+void applyRule(const Rule& rule, const Grammar& grammar, float* anchor, const std::vector<ptrdiff_t>& offsets) {
+    for (size_t c = 0; c < offsets.size(); ++c) {
+        float& cell = anchor[offsets[c]];
+        cell = applyTransform(rule.transform[c], cell, grammar);
+    }
+}
+
+void checkFits(const Grammar& grammar, const DenseGrid& grid) {
+    const glm::ivec3 size = grid.size();
+    for (int axis = 0; axis < 3; ++axis) {
+        VOXC_ASSERT(grammar.boundsMin[axis] >= 0 && grammar.boundsMax[axis] <= size[axis]);
+        VOXC_ASSERT(grammar.stride[axis] >= 1);
+    }
+    for (const Rule& rule : grammar.rules) {
+        const size_t cells = size_t(rule.size.x) * rule.size.y * rule.size.z;
+        VOXC_ASSERT(rule.symbol.size() == cells && rule.transform.size() == cells);
+    }
+}
+
+} // namespace
+
+DenseGrid evaluateStart(const Program& program) {
+    DenseGrid grid(program.world.size);
+    const glm::ivec3 size = program.world.size;
+    for (int z = 0; z < size.z; ++z)
+        for (int y = 0; y < size.y; ++y)
+            for (int x = 0; x < size.x; ++x) grid.at({x, y, z}) = startDensity(program, {x, y, z});
+    return grid;
+}
+
+void runGrammar(const Program& program, uint32_t grammarIndex, DenseGrid& grid, const InterpOptions& options) {
+    VOXC_ASSERT(grammarIndex < program.grammars.size());
+    VOXC_ASSERT(grid.size() == program.world.size);
+    const Grammar& grammar = program.grammars[grammarIndex];
+    checkFits(grammar, grid);
+
+    const std::vector<Sweep> sweeps = orderSweeps(grammar);
+    std::vector<PreparedSweep> prepared;
+    size_t maxRules = 0;
+    for (const Sweep& sweep : sweeps) {
+        prepared.push_back(prepareSweep(grammar, sweep, grid));
+        maxRules = std::max(maxRules, sweep.rules.size());
+    }
+    if (options.stats) {
+        options.stats->firings.resize(program.grammars.size());
+        options.stats->anchors.resize(program.grammars.size(), 0);
+        options.stats->firings[grammarIndex].resize(grammar.rules.size(), 0);
+    }
+
+    std::vector<uint32_t> matched;
+    matched.reserve(maxRules);
+    float* data = grid.data().data();
+    const uint32_t seed = program.world.seed;
+    const glm::ivec3 origin = program.world.origin;
+
+    for (uint32_t iteration = 0; iteration < uint32_t(grammar.iterations); ++iteration) {
+        for (uint32_t s = 0; s < prepared.size(); ++s) {
+            const PreparedSweep& sweep = prepared[s];
+            for (uint32_t phase = 0; phase < sweep.phases.size(); ++phase) {
+                const PhaseAnchors& anchors = sweep.phases[phase];
+                if (options.stats)
+                    options.stats->anchors[grammarIndex] +=
+                        uint64_t(anchors.count.x) * uint64_t(anchors.count.y) * uint64_t(anchors.count.z);
+                for (int k = 0; k < anchors.count.z; ++k) {
+                    for (int j = 0; j < anchors.count.y; ++j) {
+                        for (int i = 0; i < anchors.count.x; ++i) {
+                            const glm::ivec3 anchor = anchors.start + glm::ivec3(i, j, k) * anchors.step;
+                            float* base = data + grid.index(anchor);
+                            matched.clear();
+                            for (uint32_t r : sweep.sweep->rules)
+                                if (windowMatches(grammar.rules[r], base, sweep.cellOffsets)) matched.push_back(r);
+                            if (matched.empty()) continue;
+                            const int chosen = chooseRule(grammar, matched, seed, iteration, s, anchor + origin);
+                            if (chosen < 0) continue;
+                            // Windows of one phase never overlap, so writing in place is safe.
+                            applyRule(grammar.rules[size_t(chosen)], grammar, base, sweep.cellOffsets);
+                            if (options.stats) ++options.stats->firings[grammarIndex][size_t(chosen)];
+                            if (options.onFire)
+                                options.onFire(TraceEvent{grammarIndex, iteration, s, phase, anchor, uint32_t(chosen)});
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+DenseGrid interpret(const Program& program, const InterpOptions& options) {
+    DenseGrid grid(program.world.size);
+    for (const Stage& stage : program.pipeline) {
+        switch (stage.kind) {
+        case Stage::Kind::Start:
+            grid = evaluateStart(program);
+            break;
+        case Stage::Kind::Grammar:
+            runGrammar(program, stage.index, grid, options);
+            break;
+        }
+    }
+    return grid;
+}
+
+} // namespace voxc
