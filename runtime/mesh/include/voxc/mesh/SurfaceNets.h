@@ -1,0 +1,27 @@
+#pragma once
+// Naive surface nets (Gibson 1998, centre-of-mass variant as in Dey ch. 3): one vertex per cell
+// that the surface crosses, at the mean of the crossings on the cell's 12 edges, and one quad
+// per crossed grid edge joining the vertices of the four cells around it.
+//
+// Conventions:
+// - A voxel is solid when its density is > iso, air when <= iso.
+// - Voxels outside the grid read as density 0, so for iso >= 0 the mesh of a bounded grid is
+//   closed: the surface wraps the grid boundary half a voxel outside it (at iso 0.5 and density 1).
+// - Voxel (x,y,z) sits at world position gridOrigin + (x,y,z); vertices are in world coordinates.
+// - For iso >= 0 the mesh is always closed, but not always manifold: a cell face whose corners alternate
+//   solid/air (a saddle of the field) joins two vertices by four quads, a non-manifold edge.
+//   Naive surface nets does not resolve that ambiguity; smooth convex shapes never hit it.
+// - Triangles wind counter-clockwise seen from air. Normals are the negated field gradient
+//   (central differences at the cell's corners, blended trilinearly at the vertex), so they point
+//   from solid to air; where that gradient vanishes the adjacent faces' normals stand in.
+// - Work is split into the layout's world-aligned chunks (a cell belongs to the chunk holding
+//   its minimum corner), but vertices and triangles are ordered by global cell, so the mesh is
+//   identical, bit for bit, for every chunk size.
+#include "voxc/grid/Grid.h"
+#include "voxc/mesh/Mesh.h"
+
+namespace voxc {
+
+Mesh meshSurfaceNets(const ChunkedGrid& grid, float iso = 0.5f);
+
+} // namespace voxc

@@ -1,0 +1,119 @@
+#include "CellExtraction.h"
+
+#include <glm/geometric.hpp>
+
+namespace voxc::surface_nets {
+namespace {
+
+// Densities of a chunk's cells plus a one-sample margin on every side (the extra sample on
+// the low side and the second one on the high side feed the central-difference gradients).
+class SampleBlock {
+public:
+    SampleBlock(const ChunkedGrid& grid, glm::ivec3 first, glm::ivec3 extent) : first_(first), extent_(extent) {
+        values_.resize(size_t(extent.x) * size_t(extent.y) * size_t(extent.z));
+        const glm::ivec3 gridSize = grid.layout().gridSize;
+        size_t i = 0;
+        for (int z = 0; z < extent.z; ++z)
+            for (int y = 0; y < extent.y; ++y)
+                for (int x = 0; x < extent.x; ++x) {
+                    const glm::ivec3 p = first + glm::ivec3(x, y, z);
+                    const bool inside = glm::all(glm::greaterThanEqual(p, glm::ivec3(0))) && glm::all(glm::lessThan(p, gridSize));
+                    values_[i++] = inside ? grid.at(p) : 0.0f; // outside the grid is air
+                }
+    }
+
+    float at(glm::ivec3 local) const {
+        const glm::ivec3 q = local - first_;
+        return values_[size_t(q.x) + size_t(extent_.x) * (size_t(q.y) + size_t(extent_.y) * size_t(q.z))];
+    }
+
+    glm::vec3 gradient(glm::ivec3 p) const {
+        return 0.5f * glm::vec3(at(p + glm::ivec3(1, 0, 0)) - at(p - glm::ivec3(1, 0, 0)),
+                                at(p + glm::ivec3(0, 1, 0)) - at(p - glm::ivec3(0, 1, 0)),
+                                at(p + glm::ivec3(0, 0, 1)) - at(p - glm::ivec3(0, 0, 1)));
+    }
+
+private:
+    glm::ivec3 first_, extent_;
+    std::vector<float> values_;
+};
+
+// Corner i of a cell is at offset (i&1, (i>>1)&1, (i>>2)&1).
+glm::ivec3 cornerOffset(int i) { return {i & 1, (i >> 1) & 1, (i >> 2) & 1}; }
+
+CellVertex makeVertex(const SampleBlock& block, glm::ivec3 cell, glm::ivec3 world, const float (&density)[8], unsigned solid, float iso) {
+    glm::vec3 sum(0.0f);
+    int crossings = 0;
+    for (int bit : {1, 2, 4})
+        for (int a = 0; a < 8; ++a) {
+            const int b = a | bit;
+            if ((a & bit) || ((solid >> a) & 1) == ((solid >> b) & 1)) continue;
+            const float t = (iso - density[a]) / (density[b] - density[a]);
+            const glm::vec3 pa(cornerOffset(a)), pb(cornerOffset(b));
+            sum += pa + t * (pb - pa);
+            ++crossings;
+        }
+    const glm::vec3 inCell = sum / float(crossings);
+
+    // Trilinear blend of the corner gradients at the vertex; density rises into the solid,
+    // so the outward normal is the negated gradient.
+    glm::vec3 gradient(0.0f);
+    for (int i = 0; i < 8; ++i) {
+        const glm::ivec3 o = cornerOffset(i);
+        const float w = (o.x ? inCell.x : 1.0f - inCell.x) * (o.y ? inCell.y : 1.0f - inCell.y) * (o.z ? inCell.z : 1.0f - inCell.z);
+        gradient += w * block.gradient(cell + o);
+    }
+    const float length = glm::length(gradient);
+    const glm::vec3 normal = length > 0.0f ? -gradient / length : glm::vec3(0.0f);
+    return {0, glm::vec3(world) + inCell, normal};
+}
+
+} // namespace
+
+ChunkSurface extractChunk(const ChunkedGrid& grid, float iso, glm::ivec3 worldChunk) {
+    const ChunkLayout& layout = grid.layout();
+    const CellDomain domain{layout.gridSize};
+    const glm::ivec3 chunkFirst = worldChunk * layout.chunkSize - layout.gridOrigin; // grid-local
+    const glm::ivec3 cellBegin = glm::max(chunkFirst, glm::ivec3(-1));
+    const glm::ivec3 cellEnd = glm::min(chunkFirst + layout.chunkSize, layout.gridSize);
+    ChunkSurface surface;
+    if (glm::any(glm::greaterThanEqual(cellBegin, cellEnd))) return surface;
+    const SampleBlock block(grid, cellBegin - 1, cellEnd - cellBegin + 3);
+
+    for (int z = cellBegin.z; z < cellEnd.z; ++z)
+        for (int y = cellBegin.y; y < cellEnd.y; ++y)
+            for (int x = cellBegin.x; x < cellEnd.x; ++x) {
+                const glm::ivec3 cell(x, y, z);
+                float density[8];
+                unsigned solid = 0;
+                for (int i = 0; i < 8; ++i) {
+                    density[i] = block.at(cell + cornerOffset(i));
+                    if (density[i] > iso) solid |= 1u << i;
+                }
+                if (solid == 0 || solid == 0xffu) continue;
+                CellVertex vertex = makeVertex(block, cell, layout.gridOrigin + cell, density, solid, iso);
+                vertex.cell = domain.key(cell);
+                surface.vertices.push_back(vertex);
+
+                // The three grid edges leaving this cell's minimum corner belong to this cell.
+                for (int axis = 0; axis < 3; ++axis) {
+                    const bool solidAtMin = solid & 1u;
+                    if (solidAtMin == bool(solid & (1u << (1 << axis)))) continue;
+                    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+                    glm::ivec3 eu(0), ev(0);
+                    eu[u] = 1;
+                    ev[v] = 1;
+                    // Edges on the grid's low faces lie wholly in the outside air (for iso >= 0);
+                    // skipping them keeps every quad's four cells inside the cell domain.
+                    if (cell[u] < 0 || cell[v] < 0) continue;
+                    EdgeQuad quad{domain.key(cell) * 3 + uint64_t(axis), {}};
+                    // Counter-clockwise around +axis; reversed when the solid lies on the + side.
+                    const glm::ivec3 ring[4] = {cell - eu - ev, cell - ev, cell, cell - eu};
+                    for (int k = 0; k < 4; ++k) quad.cells[k] = domain.key(ring[solidAtMin ? k : (4 - k) % 4]);
+                    surface.quads.push_back(quad);
+                }
+            }
+    return surface;
+}
+
+} // namespace voxc::surface_nets

@@ -1,0 +1,116 @@
+#include "voxc/core/AtomicWrite.h"
+#include "voxc/core/Errors.h"
+#include "voxc/mesh/Export.h"
+
+#include <bit>
+#include <cstring>
+#include <fmt/format.h>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+namespace voxc {
+
+static_assert(std::endian::native == std::endian::little, "PLY I/O writes host floats and ints as little-endian");
+
+namespace {
+
+constexpr const char* kVertexProperties[] = {"x", "y", "z", "nx", "ny", "nz"};
+
+std::string plyHeader(size_t vertexCount, size_t faceCount) {
+    std::string header = "ply\nformat binary_little_endian 1.0\ncomment voxc surface nets\n";
+    header += fmt::format("element vertex {}\n", vertexCount);
+    for (const char* name : kVertexProperties) header += fmt::format("property float {}\n", name);
+    header += fmt::format("element face {}\nproperty list uchar int vertex_indices\nend_header\n", faceCount);
+    return header;
+}
+
+template <typename T>
+void append(std::string& out, const T& value) {
+    out.append(reinterpret_cast<const char*>(&value), sizeof(T));
+}
+
+[[noreturn]] void malformed(const std::string& path, const std::string& why) {
+    throw UserError(fmt::format("'{}' is not a voxc PLY mesh: {}", path, why));
+}
+
+// Reads the next header line, skipping comments.
+std::string headerLine(std::istringstream& header, const std::string& path) {
+    std::string line;
+    do {
+        if (!std::getline(header, line)) malformed(path, "header ends early");
+    } while (line.rfind("comment", 0) == 0);
+    return line;
+}
+
+size_t elementCount(const std::string& line, const std::string& element, const std::string& path) {
+    const std::string prefix = "element " + element + " ";
+    if (line.rfind(prefix, 0) != 0) malformed(path, fmt::format("expected '{}<count>', got '{}'", prefix, line));
+    const std::string digits = line.substr(prefix.size());
+    if (digits.empty() || digits.size() > 10 || digits.find_first_not_of("0123456789") != std::string::npos)
+        malformed(path, fmt::format("bad {} count '{}'", element, digits));
+    return size_t(std::stoull(digits));
+}
+
+void expectLine(const std::string& line, const std::string& expected, const std::string& path) {
+    if (line != expected) malformed(path, fmt::format("expected '{}', got '{}'", expected, line));
+}
+
+} // namespace
+
+void writePly(const std::string& path, const Mesh& mesh) {
+    VOXC_ASSERT(mesh.normals.size() == mesh.positions.size() && mesh.triangles.size() % 3 == 0);
+    std::string bytes = plyHeader(mesh.positions.size(), mesh.triangles.size() / 3);
+    bytes.reserve(bytes.size() + mesh.positions.size() * 24 + mesh.triangles.size() / 3 * 13);
+    for (size_t v = 0; v < mesh.positions.size(); ++v) {
+        for (int a = 0; a < 3; ++a) append(bytes, mesh.positions[v][a]);
+        for (int a = 0; a < 3; ++a) append(bytes, mesh.normals[v][a]);
+    }
+    for (size_t t = 0; t < mesh.triangles.size(); t += 3) {
+        append(bytes, uint8_t(3));
+        for (size_t k = 0; k < 3; ++k) append(bytes, int32_t(mesh.triangles[t + k]));
+    }
+    writeFileAtomically(path, bytes);
+}
+
+Mesh readPly(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw UserError(fmt::format("cannot read '{}'", path));
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string endHeader = "end_header\n";
+    const size_t headerEnd = bytes.find(endHeader);
+    if (bytes.rfind("ply\n", 0) != 0 || headerEnd == std::string::npos) malformed(path, "no PLY header");
+    std::istringstream header(bytes.substr(4, headerEnd - 4));
+
+    expectLine(headerLine(header, path), "format binary_little_endian 1.0", path);
+    const size_t vertexCount = elementCount(headerLine(header, path), "vertex", path);
+    for (const char* name : kVertexProperties) expectLine(headerLine(header, path), fmt::format("property float {}", name), path);
+    const size_t faceCount = elementCount(headerLine(header, path), "face", path);
+    expectLine(headerLine(header, path), "property list uchar int vertex_indices", path);
+
+    const size_t dataStart = headerEnd + endHeader.size();
+    if (bytes.size() - dataStart != vertexCount * 24 + faceCount * 13) malformed(path, "data size does not match the header");
+    Mesh mesh;
+    mesh.positions.resize(vertexCount);
+    mesh.normals.resize(vertexCount);
+    const char* at = bytes.data() + dataStart;
+    for (size_t v = 0; v < vertexCount; ++v) {
+        std::memcpy(&mesh.positions[v], at, 12);
+        std::memcpy(&mesh.normals[v], at + 12, 12);
+        at += 24;
+    }
+    mesh.triangles.reserve(faceCount * 3);
+    for (size_t f = 0; f < faceCount; ++f) {
+        if (uint8_t(*at) != 3) malformed(path, fmt::format("face {} is not a triangle", f));
+        int32_t indices[3];
+        std::memcpy(indices, at + 1, 12);
+        at += 13;
+        for (int32_t index : indices) {
+            if (index < 0 || size_t(index) >= vertexCount) malformed(path, fmt::format("face {} has vertex index {} out of range", f, index));
+            mesh.triangles.push_back(uint32_t(index));
+        }
+    }
+    return mesh;
+}
+
+} // namespace voxc

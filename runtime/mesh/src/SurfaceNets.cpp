@@ -1,0 +1,109 @@
+#include "voxc/mesh/SurfaceNets.h"
+
+#include "CellExtraction.h"
+#include "voxc/core/Errors.h"
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <glm/geometric.hpp>
+#include <thread>
+
+namespace voxc {
+namespace {
+
+using surface_nets::CellVertex;
+using surface_nets::ChunkSurface;
+using surface_nets::EdgeQuad;
+
+// World chunks holding at least one cell, z slowest. Cells start one voxel below the grid.
+std::vector<glm::ivec3> cellChunks(const ChunkLayout& layout) {
+    const glm::ivec3 first = (layout.gridOrigin - 1) >> layout.chunkShift;
+    const glm::ivec3 last = (layout.gridOrigin + layout.gridSize - 1) >> layout.chunkShift;
+    std::vector<glm::ivec3> chunks;
+    for (int z = first.z; z <= last.z; ++z)
+        for (int y = first.y; y <= last.y; ++y)
+            for (int x = first.x; x <= last.x; ++x) chunks.push_back({x, y, z});
+    return chunks;
+}
+
+// Chunks are independent, so workers take them in any order; each result has its own slot.
+std::vector<ChunkSurface> extractAll(const ChunkedGrid& grid, float iso, const std::vector<glm::ivec3>& chunks) {
+    std::vector<ChunkSurface> surfaces(chunks.size());
+    std::atomic<size_t> next{0};
+    std::vector<std::exception_ptr> failures;
+    const size_t workerCount = std::max<size_t>(1, std::min<size_t>(std::thread::hardware_concurrency(), chunks.size()));
+    failures.resize(workerCount);
+    auto work = [&](size_t worker) {
+        try {
+            for (size_t i = next++; i < chunks.size(); i = next++) surfaces[i] = surface_nets::extractChunk(grid, iso, chunks[i]);
+        } catch (...) {
+            failures[worker] = std::current_exception();
+            next = chunks.size();
+        }
+    };
+    std::vector<std::thread> workers;
+    for (size_t w = 1; w < workerCount; ++w) workers.emplace_back(work, w);
+    work(0);
+    for (std::thread& t : workers) t.join();
+    for (const std::exception_ptr& failure : failures)
+        if (failure) std::rethrow_exception(failure);
+    return surfaces;
+}
+
+// Where the field gradient vanished at a vertex, the area-weighted face normals stand in.
+void fillMissingNormals(Mesh& mesh) {
+    std::vector<glm::vec3> faceSums(mesh.positions.size(), glm::vec3(0.0f));
+    bool missing = false;
+    for (const glm::vec3& n : mesh.normals) missing |= n == glm::vec3(0.0f);
+    if (!missing) return;
+    for (size_t t = 0; t < mesh.triangles.size(); t += 3) {
+        const uint32_t a = mesh.triangles[t], b = mesh.triangles[t + 1], c = mesh.triangles[t + 2];
+        const glm::vec3 face = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
+        for (uint32_t v : {a, b, c}) faceSums[v] += face;
+    }
+    for (size_t v = 0; v < mesh.normals.size(); ++v)
+        if (mesh.normals[v] == glm::vec3(0.0f) && glm::length(faceSums[v]) > 0.0f) mesh.normals[v] = glm::normalize(faceSums[v]);
+}
+
+} // namespace
+
+Mesh meshSurfaceNets(const ChunkedGrid& grid, float iso) {
+    const std::vector<ChunkSurface> surfaces = extractAll(grid, iso, cellChunks(grid.layout()));
+
+    // Ordering by global cell and edge makes the result independent of the chunking.
+    std::vector<CellVertex> vertices;
+    std::vector<EdgeQuad> quads;
+    for (const ChunkSurface& s : surfaces) {
+        vertices.insert(vertices.end(), s.vertices.begin(), s.vertices.end());
+        quads.insert(quads.end(), s.quads.begin(), s.quads.end());
+    }
+    std::sort(vertices.begin(), vertices.end(), [](const CellVertex& a, const CellVertex& b) { return a.cell < b.cell; });
+    std::sort(quads.begin(), quads.end(), [](const EdgeQuad& a, const EdgeQuad& b) { return a.edge < b.edge; });
+    VOXC_ASSERT(vertices.size() <= UINT32_MAX);
+
+    Mesh mesh;
+    std::vector<uint64_t> cellKeys;
+    mesh.positions.reserve(vertices.size());
+    mesh.normals.reserve(vertices.size());
+    cellKeys.reserve(vertices.size());
+    for (const CellVertex& v : vertices) {
+        mesh.positions.push_back(v.position);
+        mesh.normals.push_back(v.normal);
+        cellKeys.push_back(v.cell);
+    }
+    auto vertexOf = [&](uint64_t cell) {
+        const auto it = std::lower_bound(cellKeys.begin(), cellKeys.end(), cell);
+        VOXC_ASSERT(it != cellKeys.end() && *it == cell); // every cell around a crossed edge is crossed
+        return uint32_t(it - cellKeys.begin());
+    };
+    mesh.triangles.reserve(quads.size() * 6);
+    for (const EdgeQuad& q : quads) {
+        const uint32_t v[4] = {vertexOf(q.cells[0]), vertexOf(q.cells[1]), vertexOf(q.cells[2]), vertexOf(q.cells[3])};
+        mesh.triangles.insert(mesh.triangles.end(), {v[0], v[1], v[2], v[0], v[2], v[3]});
+    }
+    fillMissingNormals(mesh);
+    return mesh;
+}
+
+} // namespace voxc

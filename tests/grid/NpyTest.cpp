@@ -1,0 +1,89 @@
+#include "voxc/core/AtomicWrite.h"
+#include "voxc/core/Errors.h"
+#include "voxc/grid/Grid.h"
+
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <iterator>
+
+namespace voxc {
+namespace {
+
+DenseGrid numberedGrid(glm::ivec3 size) {
+    DenseGrid grid(size);
+    for (int z = 0; z < size.z; ++z)
+        for (int y = 0; y < size.y; ++y)
+            for (int x = 0; x < size.x; ++x) grid.at({x, y, z}) = float(100 * x + 10 * y + z) + 0.5f;
+    return grid;
+}
+
+std::string readBytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+TEST(grid_Npy, roundTripPreservesEveryVoxel) {
+    const std::string path = testing::TempDir() + "grid_roundtrip.npy";
+    const DenseGrid grid = numberedGrid({3, 4, 5});
+    writeNpy(path, grid);
+    const DenseGrid back = readNpy(path);
+    EXPECT_EQ(back.size(), grid.size());
+    EXPECT_EQ(back.data(), grid.data());
+}
+
+TEST(grid_Npy, headerIsVersion1AlignedTo64AndDataIsCOrder) {
+    const std::string path = testing::TempDir() + "grid_header.npy";
+    writeNpy(path, numberedGrid({2, 3, 4}));
+    const std::string bytes = readBytes(path);
+    ASSERT_GE(bytes.size(), 10u);
+    EXPECT_EQ(bytes.substr(0, 6), "\x93NUMPY");
+    EXPECT_EQ(bytes[6], 1);
+    EXPECT_EQ(bytes[7], 0);
+    const size_t headerLength = size_t(uint8_t(bytes[8])) | size_t(uint8_t(bytes[9])) << 8;
+    EXPECT_EQ((10 + headerLength) % 64, 0u);
+    const std::string dict = bytes.substr(10, headerLength);
+    EXPECT_EQ(dict.rfind("{'descr': '<f4', 'fortran_order': False, 'shape': (2, 3, 4), }", 0), 0u);
+    EXPECT_EQ(dict.back(), '\n');
+    ASSERT_EQ(bytes.size(), 10 + headerLength + 24 * sizeof(float));
+    // C order: the second float is arr[0,0,1], the fifth is arr[0,1,0].
+    float values[5];
+    std::memcpy(values, bytes.data() + 10 + headerLength, sizeof(values));
+    EXPECT_EQ(values[0], 0.5f);
+    EXPECT_EQ(values[1], 1.5f);
+    EXPECT_EQ(values[4], 10.5f);
+}
+
+TEST(grid_Npy, malformedFilesAreUserErrors) {
+    const std::string dir = testing::TempDir();
+    writeFileAtomically(dir + "grid_bad_magic.npy", std::string("not a numpy file at all"));
+    EXPECT_THROW(readNpy(dir + "grid_bad_magic.npy"), UserError);
+
+    const std::string good = dir + "grid_truncated.npy";
+    writeNpy(good, numberedGrid({2, 2, 2}));
+    const std::string bytes = readBytes(good);
+    writeFileAtomically(good, bytes.substr(0, bytes.size() - 3));
+    EXPECT_THROW(readNpy(good), UserError);
+
+    std::string wrongType = bytes;
+    wrongType.replace(wrongType.find("<f4"), 3, "<f8");
+    writeFileAtomically(dir + "grid_f8.npy", wrongType);
+    EXPECT_THROW(readNpy(dir + "grid_f8.npy"), UserError);
+
+    EXPECT_THROW(readNpy(dir + "grid_does_not_exist.npy"), UserError);
+}
+
+// Cross-checks the file against NumPy itself where it is installed.
+TEST(grid_Npy, numpyLoadsTheFileWithMatchingValues) {
+    if (std::system("python3 -c 'import numpy' >/dev/null 2>&1") != 0) GTEST_SKIP() << "python3 with numpy not available";
+    const std::string path = testing::TempDir() + "grid_numpy.npy";
+    writeNpy(path, numberedGrid({3, 4, 5}));
+    const std::string check = "python3 -c \"import numpy as np; a = np.load('" + path +
+                              "'); assert a.dtype == np.float32 and a.shape == (3, 4, 5); "
+                              "assert a[2, 3, 4] == 234.5 and a[1, 0, 3] == 103.5\"";
+    EXPECT_EQ(std::system(check.c_str()), 0);
+}
+
+} // namespace
+} // namespace voxc

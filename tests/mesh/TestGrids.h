@@ -1,0 +1,29 @@
+#pragma once
+// Density fields for the mesh tests, built in world coordinates so one shape can be placed
+// at any origin.
+#include "voxc/grid/Grid.h"
+
+#include <functional>
+#include <glm/geometric.hpp>
+
+namespace voxc::test {
+
+inline ChunkedGrid makeGrid(glm::ivec3 origin, glm::ivec3 size, int32_t chunkSize, const std::function<float(glm::vec3)>& density) {
+    ChunkedGrid grid(ChunkLayout::make(origin, size, chunkSize));
+    for (int z = 0; z < size.z; ++z)
+        for (int y = 0; y < size.y; ++y)
+            for (int x = 0; x < size.x; ++x) grid.at({x, y, z}) = density(glm::vec3(origin + glm::ivec3(x, y, z)));
+    return grid;
+}
+
+// Falls linearly from 1 at the centre to 0 at `falloff`, so the iso-level t sits at radius falloff*(1-t).
+inline std::function<float(glm::vec3)> coneBall(glm::vec3 centre, float falloff) {
+    return [=](glm::vec3 p) { return glm::max(0.0f, 1.0f - glm::length(p - centre) / falloff); };
+}
+
+// 1 inside the half-open world box [lo, hi), 0 outside.
+inline std::function<float(glm::vec3)> box(glm::vec3 lo, glm::vec3 hi) {
+    return [=](glm::vec3 p) { return glm::all(glm::greaterThanEqual(p, lo)) && glm::all(glm::lessThan(p, hi)) ? 1.0f : 0.0f; };
+}
+
+} // namespace voxc::test
