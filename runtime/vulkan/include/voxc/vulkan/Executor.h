@@ -1,0 +1,63 @@
+#pragma once
+// Runs a KernelPackage on a VulkanContext: one compute pipeline per kernel, a chunk-major
+// voxel buffer laid out as ChunkLayout::make(world.origin, world.size, world.chunkSize), and
+// every dispatch of the plan in order (DispatchCursor), each phase behind a barrier on the
+// previous one. The pipelines and buffers live as long as the executor, so run() can be
+// repeated (benchmarks) without recompiling anything.
+#include "voxc/codegen/KernelPackage.h"
+#include "voxc/grid/Grid.h"
+#include "voxc/vulkan/Context.h"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+
+namespace voxc {
+
+struct ExecutorOptions {
+    // Dispatches per command buffer. Batches are recorded while the previous one executes,
+    // so a plan with many iterations never holds all of its commands at once.
+    uint32_t dispatchesPerBatch = 4096;
+    // Copy through staging buffers even where device memory is host-visible (integrated GPUs,
+    // lavapipe), i.e. what a discrete GPU does; lets tests cover that path on lavapipe.
+    bool alwaysStage = false;
+    // Per-axis workgroup-count limit; 0 means the device's maxComputeWorkGroupCount. Tests
+    // lower it to exercise split dispatches.
+    std::array<uint32_t, 3> maxWorkGroups{0, 0, 0};
+};
+
+struct RunTimings {
+    double setupMs = 0;    // executor construction: pipelines, buffers, chunk-table upload (same every run)
+    double recordMs = 0;   // command recording in this run (overlaps execution after the first batch)
+    double executeMs = 0;  // first submit -> last fence signalled
+    double readbackMs = 0; // device results -> ChunkedGrid
+};
+
+struct RunResult {
+    ChunkedGrid grid;
+    RunTimings timings;
+    uint64_t dispatches = 0; // vkCmdDispatch calls recorded
+};
+
+class VulkanExecutor {
+public:
+    // Validates the package (InternalError when malformed), checks the voxel buffer against the
+    // device limits (UserError when the grid is too large), builds pipelines and buffers and
+    // uploads the chunk table. `context` must outlive the executor; the package is copied.
+    VulkanExecutor(VulkanContext& context, const KernelPackage& package, const ExecutorOptions& options = {});
+    ~VulkanExecutor();
+    VulkanExecutor(const VulkanExecutor&) = delete;
+    VulkanExecutor& operator=(const VulkanExecutor&) = delete;
+
+    // Clears the voxel buffer to 0, runs every dispatch of the plan, returns the grid.
+    RunResult run();
+
+    const ChunkLayout& layout() const;
+    double setupMs() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace voxc

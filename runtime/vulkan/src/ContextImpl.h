@@ -1,0 +1,33 @@
+#pragma once
+// What VulkanContext holds, shared with the executor (private to voxc_vulkan).
+#include "VulkanApi.h"
+#include "voxc/vulkan/Context.h"
+
+#include <mutex>
+#include <vector>
+
+namespace voxc {
+
+struct VulkanContext::Impl {
+    vulkan_detail::VulkanApi api;
+    VkInstance instance = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+    VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    VkQueue queue = VK_NULL_HANDLE;
+    uint32_t queueFamily = 0;
+    VkPhysicalDeviceProperties properties{};
+    VkPhysicalDeviceMemoryProperties memory{};
+    DeviceInfo info;
+    bool validation = false;
+
+    mutable std::mutex messageMutex; // the layer may call back from driver threads
+    std::vector<ValidationMessage> messages;
+
+    Impl() = default;
+    Impl(const Impl&) = delete;
+    Impl& operator=(const Impl&) = delete;
+    ~Impl();
+};
+
+} // namespace voxc

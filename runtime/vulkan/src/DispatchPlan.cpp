@@ -1,0 +1,140 @@
+#include "voxc/vulkan/DispatchPlan.h"
+
+#include "voxc/core/Errors.h"
+#include "voxc/grid/Grid.h"
+
+#include <fmt/format.h>
+#include <glm/common.hpp>
+
+#include <algorithm>
+#include <cstring>
+
+namespace voxc {
+
+namespace {
+
+constexpr uint32_t kSpirvMagic = 0x07230203;
+
+void packageError(const std::string& what) { throw InternalError("invalid kernel package: " + what); }
+
+void setXyz(int32_t (&field)[4], glm::ivec3 v, int32_t w) {
+    field[0] = v.x;
+    field[1] = v.y;
+    field[2] = v.z;
+    field[3] = w;
+}
+
+} // namespace
+
+void validatePackage(const KernelPackage& package) {
+    const World& world = package.world;
+    if (world.chunkSize <= 0 || (world.chunkSize & (world.chunkSize - 1)) != 0)
+        packageError(fmt::format("chunk size {} is not a power of two", world.chunkSize));
+    if (world.size.x <= 0 || world.size.y <= 0 || world.size.z <= 0) packageError("empty grid");
+    for (const Kernel& kernel : package.kernels) {
+        if (kernel.spirv.size() < 5 || kernel.spirv[0] != kSpirvMagic)
+            packageError(fmt::format("kernel '{}' has no SPIR-V", kernel.name));
+        if (kernel.localSize[0] == 0 || kernel.localSize[1] == 0 || kernel.localSize[2] == 0)
+            packageError(fmt::format("kernel '{}' has a zero local size", kernel.name));
+    }
+    const auto checkKernel = [&](uint32_t index) {
+        if (index >= package.kernels.size())
+            packageError(fmt::format("kernel index {} out of range ({} kernels)", index, package.kernels.size()));
+    };
+    for (const StagePlan& stage : package.stages) {
+        if (stage.kind == Stage::Kind::Start) {
+            checkKernel(stage.startKernel);
+            continue;
+        }
+        for (const SweepPlan& sweep : stage.grammar.sweeps) {
+            checkKernel(sweep.kernel);
+            if (sweep.phaseStep.size() != sweep.phaseStart.size() || sweep.phaseCount3.size() != sweep.phaseStart.size())
+                packageError(fmt::format("grammar '{}': phase arrays differ in length", stage.grammar.name));
+        }
+    }
+}
+
+DispatchCursor::DispatchCursor(const KernelPackage& package, std::array<uint32_t, 3> maxGroups)
+    : package_(package), maxGroups_(maxGroups) {
+    for (uint32_t& g : maxGroups_) g = std::max(g, 1u);
+    const World& world = package.world;
+    const ChunkLayout layout = ChunkLayout::make(world.origin, world.size, world.chunkSize);
+    int32_t seedBits;
+    std::memcpy(&seedBits, &world.seed, sizeof seedBits);
+    setXyz(base_.gridOrigin, world.origin, world.chunkSize);
+    setXyz(base_.gridSize, world.size, seedBits);
+    setXyz(base_.chunkBase, layout.chunkBase, 0);
+    setXyz(base_.chunkCount, layout.chunkCount, 0);
+}
+
+bool DispatchCursor::next(Dispatch& out) {
+    while (position_ == step_.size()) {
+        if (!expandNextStep()) return false;
+    }
+    out = step_[position_++];
+    return true;
+}
+
+bool DispatchCursor::expandNextStep() {
+    step_.clear();
+    position_ = 0;
+    while (stage_ < package_.stages.size()) {
+        const StagePlan& stage = package_.stages[stage_];
+        if (stage.kind == Stage::Kind::Start) {
+            ++stage_;
+            appendPhase(stage.startKernel, 0, 0, glm::ivec3(0), glm::ivec3(1), package_.world.size);
+            return true;
+        }
+        const GrammarPlan& grammar = stage.grammar;
+        if (iteration_ >= grammar.iterations) {
+            ++stage_;
+            iteration_ = 0;
+            continue;
+        }
+        const int32_t iteration = int32_t(iteration_++);
+        for (size_t s = 0; s < grammar.sweeps.size(); ++s) {
+            const SweepPlan& sweep = grammar.sweeps[s];
+            for (size_t p = 0; p < sweep.phaseStart.size(); ++p)
+                appendPhase(sweep.kernel, iteration, int32_t(s), sweep.phaseStart[p], sweep.phaseStep[p],
+                            sweep.phaseCount3[p]);
+        }
+        return true;
+    }
+    return false;
+}
+
+void DispatchCursor::appendPhase(uint32_t kernel, int32_t iteration, int32_t sweep, glm::ivec3 start,
+                                 glm::ivec3 step, glm::ivec3 count) {
+    if (count.x <= 0 || count.y <= 0 || count.z <= 0) return; // nothing to do; a dispatch of zero is not allowed
+    const uint32_t* local = package_.kernels[kernel].localSize;
+    // Anchors per piece along each axis: as many as maxGroups workgroups cover.
+    glm::ivec3 piece;
+    for (int a = 0; a < 3; ++a)
+        piece[a] = int32_t(std::min<uint64_t>(uint64_t(maxGroups_[a]) * local[a], uint64_t(count[a])));
+    for (int32_t oz = 0; oz < count.z; oz += piece.z)
+        for (int32_t oy = 0; oy < count.y; oy += piece.y)
+            for (int32_t ox = 0; ox < count.x; ox += piece.x) {
+                const glm::ivec3 offset(ox, oy, oz);
+                const glm::ivec3 n = glm::min(piece, count - offset);
+                Dispatch d;
+                d.kernel = kernel;
+                d.push = base_;
+                d.push.chunkBase[3] = iteration;
+                d.push.chunkCount[3] = sweep;
+                setXyz(d.push.anchorStart, start + offset * step, 0);
+                setXyz(d.push.anchorStep, step, 0);
+                setXyz(d.push.anchorCount, n, 0);
+                for (int a = 0; a < 3; ++a) d.groups[a] = (uint32_t(n[a]) + local[a] - 1) / local[a];
+                step_.push_back(d);
+            }
+}
+
+uint64_t countDispatches(const KernelPackage& package, std::array<uint32_t, 3> maxGroups) {
+    DispatchCursor cursor(package, maxGroups);
+    Dispatch d;
+    uint64_t n = 0;
+    while (cursor.next(d)) ++n;
+    return n;
+}
+
+} // namespace voxc

@@ -1,0 +1,276 @@
+#include "voxc/vulkan/Executor.h"
+
+#include "ContextImpl.h"
+#include "DeviceBuffer.h"
+#include "KernelPipelines.h"
+#include "voxc/core/Errors.h"
+#include "voxc/vulkan/DispatchPlan.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cstring>
+
+namespace voxc {
+
+using namespace vulkan_detail;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// The one hazard voxc has: every command touches the voxel buffer, so each waits on the last.
+struct Access {
+    VkPipelineStageFlags stage;
+    VkAccessFlags access;
+};
+constexpr Access kTransferWrite{VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT};
+constexpr Access kTransferRead{VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT};
+constexpr Access kShaderReadWrite{VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                                  VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
+constexpr Access kShaderRead{VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT};
+constexpr Access kHostRead{VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT};
+
+void barrier(const VulkanApi& api, VkCommandBuffer cmd, VkBuffer buffer, Access before, Access after) {
+    VkBufferMemoryBarrier b{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
+    b.srcAccessMask = before.access;
+    b.dstAccessMask = after.access;
+    b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.buffer = buffer;
+    b.size = VK_WHOLE_SIZE;
+    api.vkCmdPipelineBarrier(cmd, before.stage, after.stage, 0, 0, nullptr, 1, &b, 0, nullptr);
+}
+
+} // namespace
+
+struct VulkanExecutor::Impl {
+    struct Frame {
+        VkCommandBuffer cmd = VK_NULL_HANDLE;
+        VkFence fence = VK_NULL_HANDLE;
+        bool pending = false;
+    };
+
+    VulkanContext::Impl& ctx;
+    KernelPackage package;
+    ExecutorOptions options;
+    ChunkLayout layout;
+    std::array<uint32_t, 3> maxGroups{};
+    bool staged = false; // results come back through `readback` instead of a mapped voxel buffer
+    KernelPipelines pipelines;
+    DeviceBuffer voxels, chunkTable, readback;
+    VkCommandPool commandPool = VK_NULL_HANDLE;
+    Frame frames[2];
+    double setupMs = 0;
+
+    Impl(VulkanContext::Impl& c, const KernelPackage& p, const ExecutorOptions& o) : ctx(c), package(p), options(o) {}
+    Impl(const Impl&) = delete;
+    Impl& operator=(const Impl&) = delete;
+    ~Impl();
+
+    void checkLimits() const;
+    void createBuffers();
+    void createFrames();
+    void submit(Frame& frame);
+    void wait(Frame& frame);
+    void recordReadback(VkCommandBuffer cmd, Access last);
+};
+
+VulkanExecutor::Impl::~Impl() {
+    if (ctx.device) ctx.api.vkDeviceWaitIdle(ctx.device);
+    for (Frame& frame : frames)
+        if (frame.fence) ctx.api.vkDestroyFence(ctx.device, frame.fence, nullptr);
+    if (commandPool) ctx.api.vkDestroyCommandPool(ctx.device, commandPool, nullptr);
+    destroyBuffer(ctx, readback);
+    destroyBuffer(ctx, chunkTable);
+    destroyBuffer(ctx, voxels);
+    destroyPipelines(ctx, pipelines);
+}
+
+void VulkanExecutor::Impl::checkLimits() const {
+    const uint64_t bytes = uint64_t(layout.chunkTotal()) * layout.chunkVoxels() * sizeof(float);
+    const uint64_t maxRange = ctx.properties.limits.maxStorageBufferRange;
+    if (bytes > maxRange)
+        throw UserError(fmt::format("the grid needs a {:.1f} MiB voxel buffer ({} chunks of {}^3 voxels), more than "
+                                    "the Vulkan device '{}' can bind as one storage buffer ({:.1f} MiB); use a "
+                                    "smaller grid or chunk size",
+                                    double(bytes) / (1 << 20), layout.chunkTotal(), layout.chunkSize, ctx.info.name,
+                                    double(maxRange) / (1 << 20)));
+}
+
+void VulkanExecutor::Impl::createBuffers() {
+    const VkDeviceSize voxelBytes = VkDeviceSize(layout.chunkTotal()) * layout.chunkVoxels() * sizeof(float);
+    const std::vector<int32_t> table = layout.chunkTable();
+    const VkDeviceSize tableBytes = table.size() * sizeof(int32_t);
+    const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+
+    if (!staged) {
+        voxels = createBuffer(ctx, voxelBytes, storage, MemoryUse::HostAccess);
+        chunkTable = createBuffer(ctx, tableBytes, storage, MemoryUse::HostAccess);
+        std::memcpy(chunkTable.mapped, table.data(), tableBytes);
+        flushForDevice(ctx, chunkTable); // the queue submit then makes the host write visible
+        return;
+    }
+    voxels = createBuffer(ctx, voxelBytes, storage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Device);
+    chunkTable = createBuffer(ctx, tableBytes, storage, MemoryUse::Device);
+    readback = createBuffer(ctx, voxelBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostAccess);
+
+    DeviceBuffer upload = createBuffer(ctx, tableBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::HostAccess);
+    try {
+        std::memcpy(upload.mapped, table.data(), tableBytes);
+        flushForDevice(ctx, upload);
+        Frame& frame = frames[0];
+        VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+        begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+        check(ctx.api.vkBeginCommandBuffer(frame.cmd, &begin), "vkBeginCommandBuffer");
+        const VkBufferCopy region{0, 0, tableBytes};
+        ctx.api.vkCmdCopyBuffer(frame.cmd, upload.buffer, chunkTable.buffer, 1, &region);
+        // Its second scope covers later submissions too, so every kernel sees the table.
+        barrier(ctx.api, frame.cmd, chunkTable.buffer, kTransferWrite, kShaderRead);
+        check(ctx.api.vkEndCommandBuffer(frame.cmd), "vkEndCommandBuffer");
+        submit(frame);
+        wait(frame);
+    } catch (...) {
+        destroyBuffer(ctx, upload);
+        throw;
+    }
+    destroyBuffer(ctx, upload);
+}
+
+void VulkanExecutor::Impl::createFrames() {
+    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    poolInfo.queueFamilyIndex = ctx.queueFamily;
+    check(ctx.api.vkCreateCommandPool(ctx.device, &poolInfo, nullptr, &commandPool), "vkCreateCommandPool");
+    for (Frame& frame : frames) {
+        VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+        allocate.commandPool = commandPool;
+        allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+        allocate.commandBufferCount = 1;
+        check(ctx.api.vkAllocateCommandBuffers(ctx.device, &allocate, &frame.cmd), "vkAllocateCommandBuffers");
+        VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+        check(ctx.api.vkCreateFence(ctx.device, &fenceInfo, nullptr, &frame.fence), "vkCreateFence");
+    }
+}
+
+void VulkanExecutor::Impl::submit(Frame& frame) {
+    VkSubmitInfo info{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    info.commandBufferCount = 1;
+    info.pCommandBuffers = &frame.cmd;
+    check(ctx.api.vkQueueSubmit(ctx.queue, 1, &info, frame.fence), "vkQueueSubmit");
+    frame.pending = true;
+}
+
+void VulkanExecutor::Impl::wait(Frame& frame) {
+    if (!frame.pending) return;
+    check(ctx.api.vkWaitForFences(ctx.device, 1, &frame.fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+    check(ctx.api.vkResetFences(ctx.device, 1, &frame.fence), "vkResetFences");
+    frame.pending = false;
+}
+
+void VulkanExecutor::Impl::recordReadback(VkCommandBuffer cmd, Access last) {
+    if (!staged) {
+        barrier(ctx.api, cmd, voxels.buffer, last, kHostRead);
+        return;
+    }
+    barrier(ctx.api, cmd, voxels.buffer, last, kTransferRead);
+    const VkBufferCopy region{0, 0, voxels.size};
+    ctx.api.vkCmdCopyBuffer(cmd, voxels.buffer, readback.buffer, 1, &region);
+    barrier(ctx.api, cmd, readback.buffer, kTransferWrite, kHostRead);
+}
+
+VulkanExecutor::VulkanExecutor(VulkanContext& context, const KernelPackage& package, const ExecutorOptions& options)
+    : impl_(std::make_unique<Impl>(*context.impl_, package, options)) {
+    const Clock::time_point start = Clock::now();
+    Impl& s = *impl_;
+    validatePackage(s.package);
+    const World& world = s.package.world;
+    s.layout = ChunkLayout::make(world.origin, world.size, world.chunkSize);
+    s.checkLimits();
+    for (int a = 0; a < 3; ++a) {
+        const uint32_t device = s.ctx.properties.limits.maxComputeWorkGroupCount[a];
+        s.maxGroups[a] = options.maxWorkGroups[a] ? std::min(options.maxWorkGroups[a], device) : device;
+    }
+    const DeviceType type = s.ctx.info.type;
+    s.staged = options.alwaysStage || !(type == DeviceType::Integrated || type == DeviceType::Cpu);
+    if (s.options.dispatchesPerBatch == 0) s.options.dispatchesPerBatch = 1;
+
+    createPipelines(s.ctx, s.package.kernels, s.pipelines);
+    s.createFrames();
+    s.createBuffers();
+    bindBuffers(s.ctx, s.pipelines, s.voxels.buffer, s.chunkTable.buffer);
+    s.setupMs = millisecondsSince(start);
+}
+
+VulkanExecutor::~VulkanExecutor() = default;
+
+const ChunkLayout& VulkanExecutor::layout() const { return impl_->layout; }
+
+double VulkanExecutor::setupMs() const { return impl_->setupMs; }
+
+RunResult VulkanExecutor::run() {
+    Impl& s = *impl_;
+    const VulkanApi& api = s.ctx.api;
+    RunResult result{ChunkedGrid(s.layout), {}, 0};
+    result.timings.setupMs = s.setupMs;
+
+    DispatchCursor cursor(s.package, s.maxGroups);
+    Dispatch next;
+    bool more = cursor.next(next);
+    Access last{};
+    Clock::time_point executeStart;
+    for (uint32_t batch = 0;; ++batch) {
+        Impl::Frame& frame = s.frames[batch % 2];
+        s.wait(frame); // the batch before the previous one; the previous may still run meanwhile
+        const Clock::time_point recordStart = Clock::now();
+        check(api.vkResetCommandBuffer(frame.cmd, 0), "vkResetCommandBuffer");
+        VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+        begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+        check(api.vkBeginCommandBuffer(frame.cmd, &begin), "vkBeginCommandBuffer");
+        if (batch == 0) {
+            // Padding voxels outside the grid and grids without a start stage read as 0 on every run.
+            api.vkCmdFillBuffer(frame.cmd, s.voxels.buffer, 0, VK_WHOLE_SIZE, 0);
+            last = kTransferWrite;
+        }
+        api.vkCmdBindDescriptorSets(frame.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, s.pipelines.layout, 0, 1,
+                                    &s.pipelines.set, 0, nullptr);
+        uint32_t bound = UINT32_MAX;
+        for (uint32_t n = 0; more && n < s.options.dispatchesPerBatch; ++n) {
+            barrier(api, frame.cmd, s.voxels.buffer, last, kShaderReadWrite);
+            last = kShaderReadWrite;
+            if (next.kernel != bound) {
+                api.vkCmdBindPipeline(frame.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, s.pipelines.pipelines[next.kernel]);
+                bound = next.kernel;
+            }
+            api.vkCmdPushConstants(frame.cmd, s.pipelines.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(PushBlock),
+                                   &next.push);
+            api.vkCmdDispatch(frame.cmd, next.groups[0], next.groups[1], next.groups[2]);
+            ++result.dispatches;
+            more = cursor.next(next);
+        }
+        if (!more) s.recordReadback(frame.cmd, last);
+        check(api.vkEndCommandBuffer(frame.cmd), "vkEndCommandBuffer");
+        result.timings.recordMs += millisecondsSince(recordStart);
+        if (batch == 0) executeStart = Clock::now();
+        s.submit(frame);
+        if (!more) break;
+    }
+    s.wait(s.frames[0]);
+    s.wait(s.frames[1]);
+    result.timings.executeMs = millisecondsSince(executeStart);
+
+    const Clock::time_point readStart = Clock::now();
+    const DeviceBuffer& source = s.staged ? s.readback : s.voxels;
+    invalidateForHost(s.ctx, source);
+    std::vector<float>& data = result.grid.data();
+    VOXC_ASSERT(data.size() * sizeof(float) == source.size);
+    std::memcpy(data.data(), source.mapped, source.size);
+    result.timings.readbackMs = millisecondsSince(readStart);
+    return result;
+}
+
+} // namespace voxc

@@ -1,0 +1,25 @@
+#pragma once
+// The compute pipelines of a package and the one descriptor set they share
+// (binding 0: voxels, binding 1: chunk table; push constants: PushBlock).
+#include "ContextImpl.h"
+#include "voxc/codegen/KernelPackage.h"
+
+#include <vector>
+
+namespace voxc::vulkan_detail {
+
+struct KernelPipelines {
+    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    std::vector<VkPipeline> pipelines; // one per Kernel, same order
+};
+
+// Fills `out` step by step, so destroyPipelines cleans up after a failure part way.
+// A kernel the driver rejects is an InternalError naming the kernel.
+void createPipelines(VulkanContext::Impl& ctx, const std::vector<Kernel>& kernels, KernelPipelines& out);
+void bindBuffers(VulkanContext::Impl& ctx, const KernelPipelines& pipelines, VkBuffer voxels, VkBuffer chunkTable);
+void destroyPipelines(VulkanContext::Impl& ctx, KernelPipelines& pipelines);
+
+} // namespace voxc::vulkan_detail

@@ -1,0 +1,137 @@
+#include "TestKernels.h"
+#include "voxc/core/Errors.h"
+#include "voxc/vulkan/DispatchPlan.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <tuple>
+
+using namespace voxc;
+using namespace voxc::test;
+
+namespace {
+
+constexpr std::array<uint32_t, 3> kNoLimit{65535, 65535, 65535};
+
+std::vector<Dispatch> expand(const KernelPackage& package, std::array<uint32_t, 3> maxGroups = kNoLimit) {
+    DispatchCursor cursor(package, maxGroups);
+    std::vector<Dispatch> all;
+    Dispatch d;
+    while (cursor.next(d)) all.push_back(d);
+    return all;
+}
+
+glm::ivec3 xyz(const int32_t (&v)[4]) { return {v[0], v[1], v[2]}; }
+
+// Every anchor of a dispatch, as (kernel, iteration, sweep, anchor) -> times covered.
+using Visits = std::map<std::tuple<uint32_t, int, int, int, int, int>, int>;
+void visit(const Dispatch& d, Visits& visits) {
+    const glm::ivec3 start = xyz(d.push.anchorStart), step = xyz(d.push.anchorStep), count = xyz(d.push.anchorCount);
+    for (int z = 0; z < count.z; ++z)
+        for (int y = 0; y < count.y; ++y)
+            for (int x = 0; x < count.x; ++x) {
+                const glm::ivec3 a = start + glm::ivec3(x, y, z) * step;
+                ++visits[{d.kernel, d.push.chunkBase[3], d.push.chunkCount[3], a.x, a.y, a.z}];
+            }
+}
+
+} // namespace
+
+TEST(vulkan_DispatchPlan, StartThenIterationsSweepsPhasesInOrder) {
+    const World world = makeWorld({20, 12, 9}, {-37, -5, -100}, 8, 0xDEADBEEFu);
+    TestGrammar grammar;
+    grammar.iterations = 3;
+    grammar.sweeps = {{TestKernel::AddOne, {1, 2, 1}}, {TestKernel::Shift, {2, 1, 1}}};
+    const KernelPackage package = makePackage(world, true, {grammar});
+    const std::vector<Dispatch> dispatches = expand(package);
+
+    // Start: the whole grid once; then per iteration both sweeps (equal volumes: declaration order), 2 phases each.
+    ASSERT_EQ(dispatches.size(), 1u + 3u * (2u + 2u));
+    const Dispatch& start = dispatches[0];
+    EXPECT_EQ(start.kernel, package.stages[0].startKernel);
+    EXPECT_EQ(xyz(start.push.anchorStart), glm::ivec3(0));
+    EXPECT_EQ(xyz(start.push.anchorStep), glm::ivec3(1));
+    EXPECT_EQ(xyz(start.push.anchorCount), world.size);
+    EXPECT_EQ(start.groups[0], 3u); // ceil(20 / 8)
+    EXPECT_EQ(start.groups[1], 2u); // ceil(12 / 8)
+    EXPECT_EQ(start.groups[2], 9u);
+
+    const ChunkLayout layout = ChunkLayout::make(world.origin, world.size, world.chunkSize);
+    const GrammarPlan& plan = package.stages[1].grammar;
+    size_t i = 1;
+    for (int it = 0; it < 3; ++it)
+        for (int s = 0; s < 2; ++s)
+            for (int p = 0; p < 2; ++p, ++i) {
+                const Dispatch& d = dispatches[i];
+                const SweepPlan& sweep = plan.sweeps[s];
+                EXPECT_EQ(d.kernel, sweep.kernel);
+                EXPECT_EQ(xyz(d.push.gridOrigin), world.origin);
+                EXPECT_EQ(d.push.gridOrigin[3], 8);
+                EXPECT_EQ(xyz(d.push.gridSize), world.size);
+                EXPECT_EQ(uint32_t(d.push.gridSize[3]), 0xDEADBEEFu);
+                EXPECT_EQ(xyz(d.push.chunkBase), layout.chunkBase);
+                EXPECT_EQ(d.push.chunkBase[3], it);
+                EXPECT_EQ(xyz(d.push.chunkCount), layout.chunkCount);
+                EXPECT_EQ(d.push.chunkCount[3], s);
+                EXPECT_EQ(xyz(d.push.anchorStart), sweep.phaseStart[p]);
+                EXPECT_EQ(xyz(d.push.anchorStep), sweep.phaseStep[p]);
+                EXPECT_EQ(xyz(d.push.anchorCount), sweep.phaseCount3[p]);
+            }
+    EXPECT_EQ(countDispatches(package, kNoLimit), dispatches.size());
+}
+
+TEST(vulkan_DispatchPlan, PhasesWithoutAnchorsAreSkipped) {
+    // Window 3 with stride 1 over a 4-voxel span: 2 anchors, so phase residue 2 has none.
+    TestGrammar grammar;
+    grammar.sweeps = {{TestKernel::AddOne, {3, 1, 1}}};
+    grammar.boundsMax = {4, 5, 5};
+    const KernelPackage package = makePackage(makeWorld({5, 5, 5}, {0, 0, 0}, 8), false, {grammar});
+    ASSERT_EQ(package.stages[0].grammar.sweeps[0].phaseStart.size(), 3u);
+    const std::vector<Dispatch> dispatches = expand(package);
+    ASSERT_EQ(dispatches.size(), 2u);
+    for (const Dispatch& d : dispatches) EXPECT_EQ(d.push.anchorCount[0], 1);
+}
+
+TEST(vulkan_DispatchPlan, SplitsDispatchesAboveTheWorkgroupLimit) {
+    TestGrammar grammar;
+    grammar.iterations = 2;
+    grammar.stride = {1, 2, 1};
+    grammar.sweeps = {{TestKernel::AddOne, {2, 3, 2}}};
+    const KernelPackage package = makePackage(makeWorld({45, 40, 13}, {3, -9, 1}, 16), true, {grammar});
+    const std::vector<Dispatch> whole = expand(package);
+    const std::array<uint32_t, 3> limit{2, 1, 3};
+    const std::vector<Dispatch> split = expand(package, limit);
+    EXPECT_GT(split.size(), whole.size());
+    Visits wholeVisits, splitVisits;
+    for (const Dispatch& d : whole) visit(d, wholeVisits);
+    for (const Dispatch& d : split) {
+        for (int a = 0; a < 3; ++a) EXPECT_LE(d.groups[a], limit[a]);
+        visit(d, splitVisits);
+    }
+    EXPECT_EQ(splitVisits, wholeVisits);
+    for (const auto& [anchor, times] : wholeVisits) EXPECT_EQ(times, 1);
+}
+
+TEST(vulkan_DispatchPlan, MalformedPackagesAreInternalErrors) {
+    TestGrammar grammar;
+    grammar.sweeps = {{TestKernel::AddOne, {1, 1, 1}}};
+    const KernelPackage good = makePackage(makeWorld({8, 8, 8}, {0, 0, 0}, 8), true, {grammar});
+    EXPECT_NO_THROW(validatePackage(good));
+
+    KernelPackage badIndex = good;
+    badIndex.stages[1].grammar.sweeps[0].kernel = 7;
+    EXPECT_THROW(validatePackage(badIndex), InternalError);
+
+    KernelPackage ragged = good;
+    ragged.stages[1].grammar.sweeps[0].phaseStep.clear();
+    EXPECT_THROW(validatePackage(ragged), InternalError);
+
+    KernelPackage noSpirv = good;
+    noSpirv.kernels[0].spirv.clear();
+    EXPECT_THROW(validatePackage(noSpirv), InternalError);
+
+    KernelPackage oddChunk = good;
+    oddChunk.world.chunkSize = 12;
+    EXPECT_THROW(validatePackage(oddChunk), InternalError);
+}
