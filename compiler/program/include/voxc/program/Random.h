@@ -1,6 +1,6 @@
 #pragma once
 // Counter-based randomness (digest §1, decision 4): every random choice is a pure hash of
-// (seed, iteration, sweep, anchor, stream). compiler/codegen/shaders/random.glsl mirrors
+// (seed, iteration, sweep, anchor, stream). compiler/shaders/random.glsl mirrors
 // this function exactly; tests compare the two bit for bit.
 #include <cstdint>
 #include <glm/vec3.hpp>

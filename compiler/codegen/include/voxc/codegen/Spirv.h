@@ -1,0 +1,19 @@
+#pragma once
+// GLSL compute shader -> SPIR-V (glslang), and SPIR-V validation (SPIRV-Tools).
+// Targets Vulkan 1.1 / SPIR-V 1.3.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace voxc::codegen {
+
+// Compiles and validates one generated kernel. Any failure is a voxc bug: InternalError with
+// the compiler's or validator's message and the source with line numbers.
+std::vector<uint32_t> compileComputeShader(std::string_view kernelName, const std::string& glsl);
+
+// The validator's messages, or nothing when `spirv` is valid for Vulkan 1.1.
+std::optional<std::string> spirvValidationErrors(const std::vector<uint32_t>& spirv);
+
+} // namespace voxc::codegen

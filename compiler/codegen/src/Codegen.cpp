@@ -1,0 +1,84 @@
+#include "voxc/codegen/Codegen.h"
+
+#include "KernelSources.h"
+#include "voxc/codegen/Spirv.h"
+#include "voxc/ir/Lower.h"
+#include "voxc/program/Semantics.h"
+
+#include <filesystem>
+#include <fmt/format.h>
+
+namespace voxc::codegen {
+
+namespace {
+
+Kernel makeKernel(std::string name, std::string origin, std::string glsl) {
+    Kernel kernel;
+    kernel.name = std::move(name);
+    kernel.origin = std::move(origin);
+    kernel.glsl = std::move(glsl);
+    kernel.spirv = compileComputeShader(kernel.name, kernel.glsl);
+    return kernel;
+}
+
+SweepPlan planSweep(const Grammar& grammar, const ir::IrSweep& irSweep, uint32_t kernel) {
+    Sweep sweep;
+    sweep.window = irSweep.window;
+    sweep.anchorCount = irSweep.anchorCount;
+    sweep.phaseCount = irSweep.phaseCount;
+    SweepPlan plan;
+    plan.kernel = kernel;
+    plan.window = irSweep.window;
+    plan.phaseCount = irSweep.phaseCount;
+    for (int p = 0; p < sweep.phases(); ++p) {
+        const PhaseAnchors anchors = phaseAnchors(grammar, sweep, p);
+        plan.phaseStart.push_back(anchors.start);
+        plan.phaseStep.push_back(anchors.step);
+        plan.phaseCount3.push_back(anchors.count);
+    }
+    return plan;
+}
+
+} // namespace
+
+KernelPackage compileProgram(const Program& program, const CompileOptions& options) {
+    const ir::IrModule module = ir::lowerProgram(program, ir::LowerOptions{options.afterPass});
+    const std::string sourceName =
+        program.sourcePath.empty() ? "<program>" : std::filesystem::path(program.sourcePath).filename().string();
+
+    KernelPackage package;
+    package.world = program.world;
+    package.kernels.push_back(
+        makeKernel("start", fmt::format("{} start", sourceName), startKernelSource(module, sourceName)));
+
+    // Kernels of a grammar are generated once, even if the pipeline runs it more than once.
+    std::vector<GrammarPlan> grammarPlans;
+    for (const ir::IrGrammar& grammar : module.grammars) {
+        GrammarPlan plan;
+        plan.name = grammar.name;
+        plan.iterations = uint32_t(grammar.iterations);
+        for (const ir::IrSweep& sweep : grammar.sweeps) {
+            const std::string name = fmt::format("{}_sweep{}", grammar.name, sweep.index);
+            const std::string origin =
+                fmt::format("{}:{}:{} grammar {}, window [{},{},{}]", sourceName, grammar.loc.line, grammar.loc.column,
+                            grammar.name, sweep.window.x, sweep.window.y, sweep.window.z);
+            plan.sweeps.push_back(
+                planSweep(program.grammars[grammar.programIndex], sweep, uint32_t(package.kernels.size())));
+            package.kernels.push_back(makeKernel(name, origin, sweepKernelSource(grammar, sweep, name, sourceName)));
+        }
+        grammarPlans.push_back(std::move(plan));
+    }
+
+    for (const Stage& stage : module.pipeline) {
+        StagePlan plan;
+        plan.kind = stage.kind;
+        switch (stage.kind) {
+        case Stage::Kind::Start: plan.startKernel = 0; break;
+        case Stage::Kind::Grammar: plan.grammar = grammarPlans.at(stage.index); break;
+        }
+        package.stages.push_back(std::move(plan));
+    }
+    return package;
+}
+
+} // namespace voxc::codegen

@@ -1,0 +1,97 @@
+#pragma once
+// The grammar-stage IR: what the kernels of one program must do, in execution order.
+// Lowering fills it from a checked Program; the passes in voxc/ir/passes refine it; codegen
+// turns each sweep into one compute kernel. printIr gives a stable text form for tests and
+// `voxc compile --print-ir`.
+#include "voxc/program/Program.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace voxc::ir {
+
+// What a kernel must do with one window cell. Lowering starts every cell at Load; the
+// dead-cells pass narrows it to what the live rules need.
+enum class CellAccess : uint8_t {
+    None,    // no live rule reads or writes the cell
+    Address, // written without reading the old density (SET)
+    Load,    // a predicate or a transform reads the density
+};
+
+struct IrCell {
+    glm::ivec3 offset{0}; // position inside the window
+    CellAccess access = CellAccess::Load;
+    // Distinct non-IGN predicates the live rules test on this cell; bit i of the cell's
+    // pass mask is tests[i]. Empty until the predicate-bits pass runs.
+    std::vector<Predicate> tests;
+};
+
+struct IrRule {
+    uint32_t ruleIndex = 0; // index into Grammar::rules, stable across passes
+    std::string name;
+    SourceLoc loc;
+    int32_t priority = 0;
+    uint32_t weightUnits = 1000;
+    uint32_t probabilityUnits = kProbabilityOne;
+    std::vector<SymbolCell> symbol;       // per window cell, cellIndex order
+    std::vector<TransformCell> transform; // per window cell, cellIndex order
+    // Per window cell: indices into IrCell::tests that must all pass. Filled by the
+    // predicate-bits pass (one entry per cell); empty before.
+    std::vector<std::vector<uint32_t>> needs;
+};
+
+// A rule some pass proved can never match; kept so the generated code can say why it is absent.
+struct IrRemovedRule {
+    uint32_t ruleIndex = 0;
+    std::string name;
+    SourceLoc loc;
+    uint32_t cell = 0; // a window cell whose predicates no density passes
+};
+
+struct IrSweep {
+    uint32_t index = 0; // position in the grammar's execution order; the anchor hash's sweep input
+    glm::ivec3 window{1};
+    glm::ivec3 anchorCount{0}; // as voxc::Sweep
+    glm::ivec3 phaseCount{1};
+    std::vector<IrCell> cells; // every window cell, cellIndex order
+    std::vector<IrRule> rules; // live rules, declaration order
+    std::vector<IrRemovedRule> removed;
+};
+
+struct IrGrammar {
+    std::string name;
+    SourceLoc loc;
+    uint32_t programIndex = 0; // index into Program::grammars
+    glm::ivec3 stride{1};
+    glm::ivec3 boundsMin{0};
+    glm::ivec3 boundsMax{0};
+    int32_t iterations = 1;
+    std::optional<float> clampMin;
+    std::optional<float> clampMax;
+    std::vector<IrSweep> sweeps; // execution order
+};
+
+struct IrModule {
+    std::string sourcePath;
+    World world;
+    std::vector<StartShape> start;
+    std::vector<IrGrammar> grammars; // Program::grammars order
+    std::vector<Stage> pipeline;
+};
+
+// Window cell position of a cellIndex.
+glm::ivec3 cellOffset(glm::ivec3 window, uint32_t cell);
+
+// Stable, human-readable text of the whole module.
+std::string printIr(const IrModule& module);
+
+// The pieces printIr uses, shared with the comments of generated code:
+// "GEQ 0.5", "ADD -0.5", "(1, 0, 2)", "[3, 3, 1]".
+std::string printPredicate(const Predicate& predicate);
+std::string printTransform(const TransformCell& transform);
+std::string printCell(glm::ivec3 offset);
+std::string printVec(glm::ivec3 v);
+
+} // namespace voxc::ir

@@ -1,0 +1,110 @@
+#include "voxc/builtins/Ops.h"
+#include "voxc/builtins/Shapes.h"
+#include "voxc/ir/Ir.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+namespace voxc::ir {
+
+namespace {
+
+std::string loc(const SourceLoc& l) { return fmt::format("{}:{}", l.line, l.column); }
+
+const char* accessName(CellAccess access) {
+    switch (access) {
+    case CellAccess::None: return "none";
+    case CellAccess::Address: return "address";
+    case CellAccess::Load: return "load";
+    }
+    return "?";
+}
+
+void printRule(std::string& out, const IrSweep& sweep, const IrRule& rule) {
+    out += fmt::format("    rule {} {} ({}) priority {} weight {} probability {}\n", rule.ruleIndex, rule.name,
+                       loc(rule.loc), rule.priority, rule.weightUnits, rule.probabilityUnits);
+    std::string symbol, transform, needs;
+    for (uint32_t c = 0; c < sweep.cells.size(); ++c) {
+        const std::string at = printCell(sweep.cells[c].offset);
+        std::string predicates;
+        for (const Predicate& p : rule.symbol[c].predicates) {
+            if (p.op == SymbolOp::IGN) continue;
+            predicates += (predicates.empty() ? "" : " & ") + printPredicate(p);
+        }
+        if (!predicates.empty()) symbol += fmt::format("{}{} {}", symbol.empty() ? "" : " | ", at, predicates);
+        if (transformOpInfo(rule.transform[c].op).writes)
+            transform += fmt::format("{}{} {}", transform.empty() ? "" : " | ", at, printTransform(rule.transform[c]));
+        if (!rule.needs.empty() && !rule.needs[c].empty())
+            needs += fmt::format("{}cell {} {{{}}}", needs.empty() ? "" : ", ", c, fmt::join(rule.needs[c], ", "));
+    }
+    out += fmt::format("      symbol {}\n", symbol.empty() ? "(matches everywhere)" : symbol);
+    out += fmt::format("      transform {}\n", transform.empty() ? "(writes nothing)" : transform);
+    if (!rule.needs.empty()) out += fmt::format("      needs {}\n", needs.empty() ? "(nothing)" : needs);
+}
+
+void printSweep(std::string& out, const IrSweep& sweep) {
+    out += fmt::format("  sweep {} window {} anchors {} phases {}\n", sweep.index, printVec(sweep.window),
+                       printVec(sweep.anchorCount), printVec(sweep.phaseCount));
+    for (uint32_t c = 0; c < sweep.cells.size(); ++c) {
+        const IrCell& cell = sweep.cells[c];
+        out += fmt::format("    cell {} {} {}", c, printCell(cell.offset), accessName(cell.access));
+        if (!cell.tests.empty()) {
+            out += " tests";
+            for (uint32_t b = 0; b < cell.tests.size(); ++b)
+                out += fmt::format(" {}:{}", b, printPredicate(cell.tests[b]));
+        }
+        out += "\n";
+    }
+    for (const IrRule& rule : sweep.rules)
+        printRule(out, sweep, rule);
+    for (const IrRemovedRule& removed : sweep.removed)
+        out += fmt::format("    removed rule {} {} ({}): cell {} passes no density\n", removed.ruleIndex, removed.name,
+                           loc(removed.loc), removed.cell);
+}
+
+} // namespace
+
+std::string printPredicate(const Predicate& p) {
+    const SymbolOpInfo& info = symbolOpInfo(p.op);
+    return info.takesValue ? fmt::format("{} {}", info.name, glslFloat(p.value)) : std::string(info.name);
+}
+
+std::string printTransform(const TransformCell& t) {
+    const TransformOpInfo& info = transformOpInfo(t.op);
+    return info.takesValue ? fmt::format("{} {}", info.name, glslFloat(t.value)) : std::string(info.name);
+}
+
+std::string printCell(glm::ivec3 p) { return fmt::format("({}, {}, {})", p.x, p.y, p.z); }
+std::string printVec(glm::ivec3 v) { return fmt::format("[{}, {}, {}]", v.x, v.y, v.z); }
+
+glm::ivec3 cellOffset(glm::ivec3 window, uint32_t cell) {
+    const int i = int(cell);
+    return {i % window.x, (i / window.x) % window.y, i / (window.x * window.y)};
+}
+
+std::string printIr(const IrModule& module) {
+    const World& w = module.world;
+    std::string out = fmt::format("module \"{}\"\n", module.sourcePath);
+    out += fmt::format("world size {} origin {} chunk {} seed {}\n", printVec(w.size), printVec(w.origin), w.chunkSize,
+                       w.seed);
+    out += "start\n";
+    for (const StartShape& shape : module.start)
+        out += fmt::format("  {} value {} ({})\n", shapeInfo(shape.kind).name, glslFloat(shape.value), loc(shape.loc));
+    out += "pipeline";
+    for (const Stage& stage : module.pipeline)
+        out += stage.kind == Stage::Kind::Start ? std::string(" start") : " " + module.grammars[stage.index].name;
+    out += "\n";
+    for (const IrGrammar& g : module.grammars) {
+        out += fmt::format("grammar {} ({}) stride {} bounds {}..{} iterations {}", g.name, loc(g.loc),
+                           printVec(g.stride), printVec(g.boundsMin), printVec(g.boundsMax), g.iterations);
+        if (g.clampMin || g.clampMax)
+            out += fmt::format(" clamp [{}, {}]", g.clampMin ? glslFloat(*g.clampMin) : "-",
+                               g.clampMax ? glslFloat(*g.clampMax) : "-");
+        out += "\n";
+        for (const IrSweep& sweep : g.sweeps)
+            printSweep(out, sweep);
+    }
+    return out;
+}
+
+} // namespace voxc::ir

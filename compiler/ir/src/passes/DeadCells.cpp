@@ -1,0 +1,46 @@
+#include "voxc/ir/passes/DeadCells.h"
+
+#include "voxc/builtins/Ops.h"
+
+namespace voxc::ir {
+
+namespace {
+
+// Whether writing this transform needs the cell's old density. The Ops registry has no such
+// field, so the switch is here; -Wswitch flags a new operator.
+bool transformReadsDensity(TransformOp op) {
+    switch (op) {
+    case TransformOp::NOP: return false;
+    case TransformOp::SET: return false;
+    case TransformOp::ADD: return true;
+    }
+    return true;
+}
+
+bool symbolReads(const SymbolCell& cell) {
+    for (const Predicate& p : cell.predicates)
+        if (p.op != SymbolOp::IGN) return true;
+    return false;
+}
+
+} // namespace
+
+IrModule eliminateDeadCells(IrModule module) {
+    for (IrGrammar& grammar : module.grammars) {
+        for (IrSweep& sweep : grammar.sweeps) {
+            for (uint32_t c = 0; c < sweep.cells.size(); ++c) {
+                bool reads = false;
+                bool writes = false;
+                for (const IrRule& rule : sweep.rules) {
+                    const TransformCell& t = rule.transform[c];
+                    reads = reads || symbolReads(rule.symbol[c]) || transformReadsDensity(t.op);
+                    writes = writes || transformOpInfo(t.op).writes;
+                }
+                sweep.cells[c].access = reads ? CellAccess::Load : writes ? CellAccess::Address : CellAccess::None;
+            }
+        }
+    }
+    return module;
+}
+
+} // namespace voxc::ir

@@ -1,0 +1,126 @@
+#include "SamplePrograms.h"
+#include "voxc/codegen/Codegen.h"
+#include "voxc/codegen/PackageWriter.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace voxc::codegen {
+namespace {
+
+namespace fs = std::filesystem;
+
+class codegen_Package : public ::testing::Test {
+protected:
+    void SetUp() override {
+        root_ = fs::temp_directory_path() /
+                ("voxc_codegen_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(root_);
+    }
+    void TearDown() override { fs::remove_all(root_); }
+    fs::path root_;
+};
+
+std::map<std::string, std::string> readTree(const fs::path& dir) {
+    std::map<std::string, std::string> files;
+    for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+        if (!entry.is_regular_file()) continue;
+        std::ifstream in(entry.path(), std::ios::binary);
+        std::ostringstream bytes;
+        bytes << in.rdbuf();
+        files[fs::relative(entry.path(), dir).string()] = bytes.str();
+    }
+    return files;
+}
+
+TEST_F(codegen_Package, CompilingAndWritingTwiceGivesIdenticalBytes) {
+    const Program program = test::sampleProgram();
+    writePackage(compileProgram(program), (root_ / "a").string(), program.sourcePath);
+    writePackage(compileProgram(program), (root_ / "b").string(), program.sourcePath);
+    const auto a = readTree(root_ / "a");
+    const auto b = readTree(root_ / "b");
+    EXPECT_EQ(a.size(), 11u); // manifest + 5 kernels x (.comp, .spv)
+    EXPECT_EQ(a, b);
+    EXPECT_TRUE(a.contains("kernels/overhang_sweep0.spv"));
+    EXPECT_TRUE(a.contains("kernels/start.comp"));
+}
+
+TEST_F(codegen_Package, WrittenFilesMatchThePackage) {
+    const KernelPackage package = compileProgram(test::sampleProgram());
+    writePackage(package, root_.string(), "tests/sample.vox");
+    const auto files = readTree(root_);
+    for (const Kernel& k : package.kernels) {
+        EXPECT_EQ(files.at("kernels/" + k.name + ".comp"), k.glsl);
+        const std::string& spv = files.at("kernels/" + k.name + ".spv");
+        ASSERT_EQ(spv.size(), k.spirv.size() * 4);
+        EXPECT_EQ(std::string(spv.data(), 4), std::string("\x03\x02\x23\x07", 4)); // little-endian magic
+    }
+    EXPECT_EQ(files.at("manifest.json"), packageManifest(package, "tests/sample.vox"));
+}
+
+TEST_F(codegen_Package, ManifestDescribesKernelsAndDispatch) {
+    const Program program = test::sampleProgram();
+    const KernelPackage package = compileProgram(program);
+    const nlohmann::ordered_json m = nlohmann::ordered_json::parse(packageManifest(package, program.sourcePath));
+    std::vector<std::string> keys;
+    for (const auto& [key, value] : m.items())
+        keys.push_back(key);
+    EXPECT_EQ(keys, (std::vector<std::string>{"voxc_version", "source_file", "world", "kernels", "dispatch"}));
+    EXPECT_EQ(m["source_file"], "tests/sample.vox");
+    EXPECT_EQ(m["world"]["origin"], nlohmann::json::array({-5, 3, -12}));
+    EXPECT_EQ(m["world"]["chunk"], 8);
+    EXPECT_EQ(m["world"]["seed"], 7);
+
+    const auto& kernels = m["kernels"];
+    ASSERT_EQ(kernels.size(), package.kernels.size());
+    const auto& sweep = kernels[1];
+    EXPECT_EQ(sweep["name"], "overhang_sweep0");
+    EXPECT_EQ(sweep["origin"], package.kernels[1].origin);
+    EXPECT_EQ(sweep["glsl"], "kernels/overhang_sweep0.comp");
+    EXPECT_EQ(sweep["spv"], "kernels/overhang_sweep0.spv");
+    EXPECT_EQ(sweep["local_size"], nlohmann::json::array({8, 8, 1}));
+    EXPECT_EQ(sweep["bindings"][0]["binding"], 0);
+    EXPECT_EQ(sweep["bindings"][0]["name"], "density");
+    EXPECT_EQ(sweep["bindings"][1]["binding"], 1);
+    EXPECT_EQ(sweep["bindings"][1]["name"], "chunkSlot");
+    ASSERT_EQ(sweep["push_constants"].size(), 7u);
+    EXPECT_EQ(sweep["push_constants"][0]["name"], "gridOrigin");
+    EXPECT_EQ(sweep["push_constants"][6]["name"], "anchorCount");
+    EXPECT_EQ(sweep["push_constants"][6]["offset"], 96);
+
+    const auto& stages = m["dispatch"]["stages"];
+    ASSERT_EQ(stages.size(), 3u);
+    EXPECT_EQ(stages[0]["kind"], "start");
+    EXPECT_EQ(stages[0]["kernel"], "start");
+    EXPECT_EQ(stages[1]["grammar"], "overhang");
+    EXPECT_EQ(stages[1]["iterations"], 4);
+    const auto& smooth = stages[2]["sweeps"][0];
+    EXPECT_EQ(smooth["kernel"], "smooth_sweep0");
+    EXPECT_EQ(smooth["window"], nlohmann::json::array({2, 1, 2}));
+    ASSERT_EQ(smooth["phases"].size(), 1u); // stride [2,1,2] covers a [2,1,2] window in one phase
+    EXPECT_EQ(smooth["phases"][0]["start"], nlohmann::json::array({1, 2, 0}));
+    EXPECT_EQ(smooth["phases"][0]["step"], nlohmann::json::array({2, 1, 2}));
+    EXPECT_EQ(smooth["phases"][0]["count"], nlohmann::json::array({9, 9, 5}));
+}
+
+TEST_F(codegen_Package, SpirvValAcceptsEveryWrittenModule) {
+    const std::string spirvVal = VOXC_SPIRV_VAL;
+    if (spirvVal.empty() || spirvVal.ends_with("NOTFOUND")) GTEST_SKIP() << "spirv-val not installed";
+    writePackage(compileProgram(test::sampleProgram()), root_.string());
+    int modules = 0;
+    for (const auto& entry : fs::directory_iterator(root_ / "kernels")) {
+        if (entry.path().extension() != ".spv") continue;
+        ++modules;
+        const std::string command = spirvVal + " --target-env vulkan1.1 '" + entry.path().string() + "' 2>&1";
+        EXPECT_EQ(std::system(command.c_str()), 0) << command;
+    }
+    EXPECT_EQ(modules, 5);
+}
+
+} // namespace
+} // namespace voxc::codegen

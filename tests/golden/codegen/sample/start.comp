@@ -1,0 +1,192 @@
+#version 450
+// voxc generated kernel "start": the start state of sample.vox.
+// Shapes in order; each overwrites the density where it is solid:
+//   fill value 0.0 (sample.vox:3:3)
+//   box value 1.0 (sample.vox:4:3)
+//   heightfield value 1.0 (sample.vox:5:3)
+
+// The start state: one invocation per grid voxel evaluates the start block's shapes in
+// order over air (density 0), as voxc::startDensity does on the CPU.
+
+// ---- begin common.glsl ----
+// Declarations every voxc kernel shares: the push block (voxc::PushBlock in
+// compiler/codegen/include/voxc/codegen/KernelPackage.h, field for field) and the two
+// storage buffers of descriptor set 0.
+
+layout(push_constant, std430) uniform PushBlock {
+    ivec4 gridOrigin;  // xyz: world coordinate of grid voxel (0,0,0); w: chunk size
+    ivec4 gridSize;    // xyz: grid size in voxels; w: seed (bit pattern)
+    ivec4 chunkBase;   // xyz: world chunk coordinate of chunk-table entry 0; w: iteration
+    ivec4 chunkCount;  // xyz: chunk-table extents; w: sweep index within its grammar
+    ivec4 anchorStart; // xyz: grid-local first anchor of this dispatch
+    ivec4 anchorStep;  // xyz: distance between the anchors of one dispatch
+    ivec4 anchorCount; // xyz: anchors per axis in this dispatch
+} push;
+
+// Densities, chunk-major: all voxels of one chunk slot, then the next slot.
+layout(std430, set = 0, binding = 0) buffer Voxels {
+    float density[];
+} voxels;
+
+// Chunk-table entry -> chunk slot; entries run x fastest over push.chunkCount.xyz.
+layout(std430, set = 0, binding = 1) readonly buffer ChunkTable {
+    int chunkSlot[];
+} chunkTable;
+
+// Buffer index of a grid-local voxel, exactly as voxc::ChunkLayout::address computes it.
+// Chunks are aligned to world coordinates and their size is a power of two, so the
+// arithmetic shift and the mask are floor division and remainder, negatives included.
+int voxelAddress(ivec3 local) {
+    int chunkSize = push.gridOrigin.w;
+    int chunkShift = findMSB(chunkSize);
+    ivec3 world = push.gridOrigin.xyz + local;
+    ivec3 chunk = world >> chunkShift;
+    ivec3 inside = world & (chunkSize - 1);
+    ivec3 entry = chunk - push.chunkBase.xyz;
+    int slot = chunkTable.chunkSlot[entry.x + push.chunkCount.x * (entry.y + push.chunkCount.y * entry.z)];
+    return slot * chunkSize * chunkSize * chunkSize + inside.x + chunkSize * (inside.y + chunkSize * inside.z);
+}
+
+// ---- end common.glsl ----
+// ---- begin random.glsl ----
+// Counter-based randomness: mirrors compiler/program/src/Random.cpp bit for bit.
+
+// Chris Wellons' "lowbias32" integer finaliser.
+uint mix32(uint x) {
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    x ^= x >> 16;
+    return x;
+}
+
+const uint STREAM_RULE_CHOICE = 0u;
+const uint STREAM_PROBABILITY = 1u;
+
+uint anchorHash(uint seed, uint iteration, uint sweep, ivec3 anchorWorld, uint stream) {
+    uint h = mix32(stream);
+    h = mix32(uint(anchorWorld.z) ^ h);
+    h = mix32(uint(anchorWorld.y) ^ h);
+    h = mix32(uint(anchorWorld.x) ^ h);
+    h = mix32(sweep ^ h);
+    h = mix32(iteration ^ h);
+    return mix32(seed ^ h);
+}
+// ---- end random.glsl ----
+// ---- begin perlin.glsl ----
+// 2D improved Perlin noise and the start state's heightfield: mirrors
+// compiler/builtins/src/Perlin.cpp. Every float result is `precise` so the compiler may not fuse
+// multiply-adds, which keeps the GPU bit-identical to the interpreter.
+// Requires random.glsl (mix32).
+
+// Ken Perlin's reference permutation (Improved Noise, 2002).
+const int PERLIN_PERMUTATION[256] = int[256](
+    151, 160, 137, 91, 90, 15, 131, 13, 201, 95, 96, 53, 194, 233, 7, 225,
+    140, 36, 103, 30, 69, 142, 8, 99, 37, 240, 21, 10, 23, 190, 6, 148,
+    247, 120, 234, 75, 0, 26, 197, 62, 94, 252, 219, 203, 117, 35, 11, 32,
+    57, 177, 33, 88, 237, 149, 56, 87, 174, 20, 125, 136, 171, 168, 68, 175,
+    74, 165, 71, 134, 139, 48, 27, 166, 77, 146, 158, 231, 83, 111, 229, 122,
+    60, 211, 133, 230, 220, 105, 92, 41, 55, 46, 245, 40, 244, 102, 143, 54,
+    65, 25, 63, 161, 1, 216, 80, 73, 209, 76, 132, 187, 208, 89, 18, 169,
+    200, 196, 135, 130, 116, 188, 159, 86, 164, 100, 109, 198, 173, 186, 3, 64,
+    52, 217, 226, 250, 124, 123, 5, 202, 38, 147, 118, 126, 255, 82, 85, 212,
+    207, 206, 59, 227, 47, 16, 58, 17, 182, 189, 28, 42, 223, 183, 170, 213,
+    119, 248, 152, 2, 44, 154, 163, 70, 221, 153, 101, 155, 167, 43, 172, 9,
+    129, 22, 39, 253, 19, 98, 108, 110, 79, 113, 224, 232, 178, 185, 112, 104,
+    218, 246, 97, 228, 251, 34, 242, 193, 238, 210, 144, 12, 191, 179, 162, 241,
+    81, 51, 145, 235, 249, 14, 239, 107, 49, 192, 214, 31, 181, 199, 106, 157,
+    184, 84, 204, 176, 115, 121, 50, 45, 127, 4, 150, 254, 138, 236, 205, 93,
+    222, 114, 67, 29, 24, 72, 243, 141, 128, 195, 78, 66, 215, 61, 156, 180);
+
+int perlinPerm(int i) { return PERLIN_PERMUTATION[i & 255]; }
+
+float perlinFade(float t) {
+    precise float r = t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
+    return r;
+}
+
+float perlinLerp(float t, float a, float b) {
+    precise float r = a + t * (b - a);
+    return r;
+}
+
+// Eight 2D gradient directions: the four diagonals and the four axes.
+float perlinGradient(int hash, float x, float y) {
+    precise float r;
+    switch (hash & 7) {
+    case 0: r = x + y; break;
+    case 1: r = -x + y; break;
+    case 2: r = x - y; break;
+    case 3: r = -x - y; break;
+    case 4: r = x; break;
+    case 5: r = -x; break;
+    case 6: r = y; break;
+    default: r = -y; break;
+    }
+    return r;
+}
+
+float perlin2(float x, float y) {
+    precise float fx = floor(x);
+    precise float fy = floor(y);
+    int X = int(fx) & 255;
+    int Y = int(fy) & 255;
+    precise float xf = x - fx;
+    precise float yf = y - fy;
+    precise float u = perlinFade(xf);
+    precise float v = perlinFade(yf);
+    int aa = perlinPerm(perlinPerm(X) + Y);
+    int ab = perlinPerm(perlinPerm(X) + Y + 1);
+    int ba = perlinPerm(perlinPerm(X + 1) + Y);
+    int bb = perlinPerm(perlinPerm(X + 1) + Y + 1);
+    precise float x1 = perlinLerp(u, perlinGradient(aa, xf, yf), perlinGradient(ba, xf - 1.0, yf));
+    precise float x2 = perlinLerp(u, perlinGradient(ab, xf, yf - 1.0), perlinGradient(bb, xf - 1.0, yf - 1.0));
+    precise float r = perlinLerp(v, x1, x2);
+    return r;
+}
+
+float heightfieldHeight(int worldX, int worldZ, uint seed, float base, float amplitude0, float frequency0,
+                        int octaves, float lacunarity, float gain) {
+    precise float height = base;
+    precise float amplitude = amplitude0;
+    precise float frequency = frequency0;
+    for (int octave = 0; octave < octaves; ++octave) {
+        uint h = mix32(seed ^ mix32(uint(octave) + 0x68u));
+        float offsetX = float(h & 1023u);
+        float offsetZ = float((h >> 10) & 1023u);
+        precise float sx = float(worldX) * frequency + offsetX;
+        precise float sz = float(worldZ) * frequency + offsetZ;
+        precise float n = perlin2(sx, sz);
+        height = height + amplitude * n;
+        amplitude = amplitude * gain;
+        frequency = frequency * lacunarity;
+    }
+    return height;
+}
+// ---- end perlin.glsl ----
+
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+
+void main() {
+    ivec3 id = ivec3(gl_GlobalInvocationID);
+    if (any(greaterThanEqual(id, push.anchorCount.xyz))) return;
+    ivec3 local = push.anchorStart.xyz + id * push.anchorStep.xyz;
+    ivec3 world = push.gridOrigin.xyz + local;
+    uint seed = uint(push.gridSize.w);
+
+    float density = 0.0;
+    // fill (sample.vox:3:3)
+    {
+        density = 0.0;
+    }
+    // box (sample.vox:4:3)
+    {
+        if (all(greaterThanEqual(vec3(local), vec3(0.0, 0.0, 0.0))) && all(lessThan(vec3(local), vec3(10.0, 4.0, 10.0)))) density = 1.0;
+    }
+    // heightfield (sample.vox:5:3)
+    {
+        if (float(local.y) < heightfieldHeight(world.x, world.z, seed, 6.0, 3.0, 0.0299999993, 3, 2.0, 0.5)) density = 1.0;
+    }
+    voxels.density[voxelAddress(local)] = density;
+}
