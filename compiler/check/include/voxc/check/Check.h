@@ -1,0 +1,30 @@
+#pragma once
+// The checker: source text -> voxc::Program, or located diagnostics saying why not.
+// It reads the file, parses it (syntax errors stop here), folds constants, validates every
+// block and key, converts printed symbol/transform layouts into Program's cell order,
+// builds the pipeline and finally runs the warning analyses (W0201-W0204).
+#include "voxc/program/Program.h"
+#include "voxc/syntax/Diagnostics.h"
+#include "voxc/syntax/SourceFile.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace voxc {
+
+struct CheckResult {
+    std::optional<Program> program;       // present exactly when no error was reported
+    std::vector<Diagnostic> diagnostics;  // errors and warnings in report order
+    SourceFile source;                    // what was checked (empty text when it could not be read)
+
+    bool hasErrors() const;
+    // Every diagnostic rendered against `source` (see voxc/syntax/Diagnostics.h).
+    std::string rendered() const;
+};
+
+CheckResult checkSource(const SourceFile& source, const Limits& limits = {});
+// Reads `path` (E0100 when it cannot, E0101 when it is not UTF-8 text) and checks it.
+CheckResult checkFile(const std::string& path, const Limits& limits = {});
+
+} // namespace voxc

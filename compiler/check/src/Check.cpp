@@ -1,0 +1,141 @@
+#include "voxc/check/Check.h"
+
+#include "Sections.h"
+#include "Suggest.h"
+
+#include "voxc/syntax/Parser.h"
+
+#include <fmt/format.h>
+#include <algorithm>
+#include <map>
+
+namespace voxc {
+
+bool CheckResult::hasErrors() const {
+    return std::any_of(diagnostics.begin(), diagnostics.end(),
+                       [](const Diagnostic& d) { return d.severity == Severity::Error; });
+}
+
+std::string CheckResult::rendered() const { return renderAll(diagnostics, source); }
+
+namespace check {
+namespace {
+
+constexpr std::string_view kTopLevelBlocks[] = {"world", "start", "grammar", "pipeline"};
+// Later parts of the language; using one is E0013 rather than "unknown block".
+constexpr std::string_view kReservedBlocks[] = {"lsystem", "feature", "field", "material"};
+
+// The first block of a kind that may appear once; later ones are E0003.
+const ast::Block* uniqueBlock(Context& context, const ast::File& file, std::string_view kind) {
+    const ast::Block* first = nullptr;
+    for (const ast::Block& block : file.blocks) {
+        if (block.kind != kind) continue;
+        if (first)
+            context.diagnostics.error("E0003", block.loc, fmt::format("a second '{}' block", kind),
+                                      {{first->loc, "the first one is here"}});
+        else
+            first = &block;
+    }
+    return first;
+}
+
+void reportUnknownBlocks(Context& context, const ast::File& file) {
+    for (const ast::Block& block : file.blocks) {
+        if (std::find(std::begin(kTopLevelBlocks), std::end(kTopLevelBlocks), block.kind) != std::end(kTopLevelBlocks))
+            continue;
+        if (std::find(std::begin(kReservedBlocks), std::end(kReservedBlocks), block.kind) != std::end(kReservedBlocks))
+            context.diagnostics.error("E0013", block.loc,
+                                      fmt::format("'{}' blocks are not supported yet", block.kind));
+        else
+            context.diagnostics.error("E0008", block.loc,
+                                      fmt::format("unknown block '{}'{}", block.kind,
+                                                  didYouMean(block.kind, kTopLevelBlocks)));
+    }
+}
+
+// Grammars in declaration order with unique names (E0003); `start` names the start stage.
+std::vector<CheckedGrammar> checkGrammars(Context& context, const ast::File& file, const World* world) {
+    std::vector<CheckedGrammar> grammars;
+    std::map<std::string, SourceLoc> names;
+    for (const ast::Block& block : file.blocks) {
+        if (block.kind != "grammar") continue;
+        if (block.label) {
+            if (*block.label == "start")
+                context.diagnostics.error("E0003", block.labelLoc,
+                                          "a grammar cannot be named 'start': the pipeline uses that name for the "
+                                          "start state");
+            auto [it, inserted] = names.emplace(*block.label, block.labelLoc);
+            if (!inserted)
+                context.diagnostics.error("E0003", block.labelLoc,
+                                          fmt::format("a grammar named '{}' already exists", *block.label),
+                                          {{it->second, "first declared here"}});
+        }
+        if (auto grammar = checkGrammar(context, block, world)) grammars.push_back(std::move(*grammar));
+    }
+    return grammars;
+}
+
+Program checkProgram(Context& context, const ast::File& file, const std::string& path) {
+    for (const ast::ConstDecl& decl : file.constants) context.constants.declare(decl);
+    reportUnknownBlocks(context, file);
+
+    Program program;
+    program.sourcePath = path;
+    std::optional<World> world;
+    if (const ast::Block* block = uniqueBlock(context, file, "world"))
+        world = checkWorld(context, *block);
+    else
+        context.diagnostics.error("E0009", {}, "missing the required 'world' block, e.g. 'world { size = [64, 64, 64]; }'");
+    if (world) program.world = *world;
+    if (const ast::Block* block = uniqueBlock(context, file, "start")) program.start = checkStart(context, *block);
+
+    std::vector<CheckedGrammar> grammars = checkGrammars(context, file, world ? &*world : nullptr);
+    for (const CheckedGrammar& grammar : grammars) program.grammars.push_back(grammar.grammar);
+
+    program.pipeline.push_back({Stage::Kind::Start, 0});
+    if (const ast::Block* block = uniqueBlock(context, file, "pipeline")) {
+        std::vector<std::string> grammarNames;
+        for (const ast::Block& grammarBlock : file.blocks)
+            if (grammarBlock.kind == "grammar" && grammarBlock.label) grammarNames.push_back(*grammarBlock.label);
+        for (const Stage& stage : checkPipeline(context, *block, grammarNames)) program.pipeline.push_back(stage);
+    } else {
+        for (uint32_t i = 0; i < program.grammars.size(); ++i) program.pipeline.push_back({Stage::Kind::Grammar, i});
+    }
+    // Warnings only make sense about a program that is otherwise correct.
+    if (!context.diagnostics.hasErrors())
+        for (const CheckedGrammar& grammar : grammars) analyseGrammar(context, grammar);
+    return program;
+}
+
+} // namespace
+} // namespace check
+
+CheckResult checkSource(const SourceFile& source, const Limits& limits) {
+    Diagnostics diagnostics;
+    CheckResult result;
+    result.source = source;
+    if (!reportIfNotText(source, diagnostics)) {
+        ast::File file = parse(source, diagnostics);
+        if (!diagnostics.hasErrors()) {
+            check::Context context{diagnostics, limits, check::Constants(diagnostics)};
+            Program program = check::checkProgram(context, file, source.path());
+            if (!diagnostics.hasErrors()) result.program = std::move(program);
+        }
+    }
+    result.diagnostics = diagnostics.take();
+    return result;
+}
+
+CheckResult checkFile(const std::string& path, const Limits& limits) {
+    Diagnostics diagnostics;
+    std::optional<SourceFile> source = loadSourceFile(path, diagnostics);
+    if (!source) {
+        CheckResult result;
+        result.source = SourceFile(path, "");
+        result.diagnostics = diagnostics.take();
+        return result;
+    }
+    return checkSource(*source, limits);
+}
+
+} // namespace voxc

@@ -1,0 +1,75 @@
+#include "Constants.h"
+
+#include "Suggest.h"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <vector>
+
+namespace voxc::check {
+
+void Constants::declare(const ast::ConstDecl& decl) {
+    if (auto it = entries_.find(decl.name); it != entries_.end()) {
+        diagnostics_.error("E0003", decl.loc, fmt::format("constant '{}' is already declared", decl.name),
+                           {{it->second.loc, "first declared here"}});
+        return;
+    }
+    std::optional<double> value = decl.value ? evaluate(*decl.value) : std::nullopt;
+    entries_.emplace(decl.name, Entry{decl.loc, value});
+}
+
+std::optional<double> Constants::evaluate(const ast::Expr& expr) const {
+    bool failed = false;
+    std::optional<double> value = fold(expr, failed);
+    if (failed || !value) return std::nullopt;
+    return value;
+}
+
+std::optional<double> Constants::fold(const ast::Expr& expr, bool& failed) const {
+    using Kind = ast::Expr::Kind;
+    auto checked = [&](double v) -> std::optional<double> {
+        if (std::isfinite(v)) return v;
+        diagnostics_.error("E0007", expr.loc, "value is too large to represent");
+        failed = true;
+        return std::nullopt;
+    };
+    switch (expr.kind) {
+    case Kind::Number: return checked(expr.number);
+    case Kind::Name: {
+        auto it = entries_.find(expr.name);
+        if (it != entries_.end()) {
+            if (!it->second.value) failed = true; // already reported at its declaration
+            return it->second.value;
+        }
+        std::vector<std::string_view> names;
+        for (const auto& entry : entries_) names.push_back(entry.first);
+        diagnostics_.error("E0002", expr.loc,
+                           fmt::format("unknown constant '{}'{}", expr.name, didYouMean(expr.name, names)));
+        failed = true;
+        return std::nullopt;
+    }
+    case Kind::Negate: {
+        auto operand = fold(*expr.lhs, failed);
+        return operand ? std::optional<double>(-*operand) : std::nullopt;
+    }
+    default: break;
+    }
+    auto lhs = fold(*expr.lhs, failed);
+    auto rhs = fold(*expr.rhs, failed);
+    if (!lhs || !rhs) return std::nullopt;
+    switch (expr.kind) {
+    case Kind::Add: return checked(*lhs + *rhs);
+    case Kind::Subtract: return checked(*lhs - *rhs);
+    case Kind::Multiply: return checked(*lhs * *rhs);
+    case Kind::Divide:
+        if (*rhs == 0.0) {
+            diagnostics_.error("E0007", expr.rhs->loc, "division by zero");
+            failed = true;
+            return std::nullopt;
+        }
+        return checked(*lhs / *rhs);
+    default: return std::nullopt;
+    }
+}
+
+} // namespace voxc::check

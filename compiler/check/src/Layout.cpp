@@ -1,0 +1,218 @@
+#include "Layout.h"
+
+#include "Suggest.h"
+#include "Values.h"
+
+#include "voxc/builtins/Ops.h"
+
+#include <fmt/format.h>
+
+namespace voxc::check {
+
+namespace {
+
+using Layer = std::vector<const ast::Row*>;
+
+std::string plural(size_t n, const char* word) { return fmt::format("{} {}{}", n, word, n == 1 ? "" : "s"); }
+
+// The block's layers: its own rows as one layer, or one per `layer { ... }` block.
+std::optional<std::vector<Layer>> collectLayers(Context& context, const ast::Block& block) {
+    const std::string where = fmt::format("'{}' block", block.kind);
+    checkLabel(context, block, false);
+    rejectUnexpectedMembers(context, block, where, {.blocks = true, .rows = true});
+    for (const ast::Assignment& a : block.assignments)
+        context.diagnostics.error("E0008", a.loc, fmt::format("unexpected key '{}' in {}; it holds rows", a.key, where));
+    if (!block.rows.empty() && !block.blocks.empty()) {
+        context.diagnostics.error("E0005", block.blocks.front().loc,
+                                  fmt::format("{} mixes rows and 'layer' blocks; write either rows (one layer) or "
+                                              "only 'layer' blocks",
+                                              where));
+        return std::nullopt;
+    }
+    std::vector<Layer> layers;
+    if (block.blocks.empty()) {
+        layers.emplace_back();
+        for (const ast::Row& row : block.rows) layers.back().push_back(&row);
+        return layers;
+    }
+    bool ok = true;
+    static constexpr std::string_view kLayer[] = {"layer"};
+    for (const ast::Block& layerBlock : block.blocks) {
+        if (layerBlock.kind != "layer") {
+            context.diagnostics.error("E0008", layerBlock.loc,
+                                      fmt::format("unknown block '{}' in {}{}", layerBlock.kind, where,
+                                                  didYouMean(layerBlock.kind, kLayer)));
+            ok = false;
+            continue;
+        }
+        checkLabel(context, layerBlock, false);
+        rejectUnexpectedMembers(context, layerBlock, "'layer' block", {.rows = true});
+        for (const ast::Assignment& a : layerBlock.assignments)
+            context.diagnostics.error("E0008", a.loc, fmt::format("unexpected key '{}' in 'layer' block", a.key));
+        layers.emplace_back();
+        for (const ast::Row& row : layerBlock.rows) layers.back().push_back(&row);
+    }
+    return ok ? std::optional(layers) : std::nullopt;
+}
+
+// E0005: every row of a layer has the same length and every layer the same row count.
+bool checkRectangular(Context& context, const ast::Block& block, const std::vector<Layer>& layers) {
+    bool ok = true;
+    for (size_t k = 0; k < layers.size(); ++k) {
+        const Layer& layer = layers[k];
+        for (const ast::Row* row : layer) {
+            if (row->cells.size() == layer.front()->cells.size()) continue;
+            context.diagnostics.error("E0005", row->loc,
+                                      fmt::format("ragged rows: this row has {} but the first row{} has {}",
+                                                  plural(row->cells.size(), "cell"),
+                                                  layers.size() > 1 ? " of its layer" : "",
+                                                  plural(layer.front()->cells.size(), "cell")),
+                                      {{layer.front()->loc, "first row"}});
+            ok = false;
+            break;
+        }
+        if (layer.size() != layers.front().size()) {
+            context.diagnostics.error("E0005", block.blocks[k].loc,
+                                      fmt::format("ragged layers: layer {} has {} but layer 1 has {}", k + 1,
+                                                  plural(layer.size(), "row"), plural(layers.front().size(), "row")));
+            ok = false;
+        }
+    }
+    return ok;
+}
+
+// E0004: layer, row and column counts against size = [I, J, K].
+bool checkCounts(Context& context, const ast::Block& block, const std::vector<Layer>& layers, glm::ivec3 size) {
+    const std::string declared = formatVec(size);
+    if (int(layers.size()) != size.z) {
+        context.diagnostics.error("E0004", block.loc,
+                                  fmt::format("{} has {} but size {} declares {}{}", block.kind,
+                                              plural(layers.size(), "layer"), declared, size.z,
+                                              block.blocks.empty() ? "; write one 'layer { ... }' per z slice" : ""));
+        return false;
+    }
+    const Layer& first = layers.front();
+    if (int(first.size()) != size.y) {
+        context.diagnostics.error("E0004", block.loc,
+                                  fmt::format("{} has {}{} but size {} declares {}", block.kind,
+                                              plural(first.size(), "row"), layers.size() > 1 ? " per layer" : "",
+                                              declared, size.y));
+        return false;
+    }
+    if (int(first.front()->cells.size()) != size.x) {
+        context.diagnostics.error("E0004", first.front()->loc,
+                                  fmt::format("{} rows have {} but size {} declares {}", block.kind,
+                                              plural(first.front()->cells.size(), "column"), declared, size.x));
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
+std::optional<std::vector<const ast::Cell*>> readLayout(Context& context, const ast::Block& block, glm::ivec3 size) {
+    auto layers = collectLayers(context, block);
+    if (!layers || !checkRectangular(context, block, *layers) || !checkCounts(context, block, *layers, size))
+        return std::nullopt;
+    std::vector<const ast::Cell*> cells(size_t(size.x) * size.y * size.z, nullptr);
+    for (int z = 0; z < size.z; ++z)
+        for (int row = 0; row < size.y; ++row)
+            for (int x = 0; x < size.x; ++x) {
+                const int y = size.y - 1 - row; // the first printed row is the top
+                cells[cellIndex(size, x, y, z)] = &(*layers)[z][row]->cells[x];
+            }
+    return cells;
+}
+
+namespace {
+
+// E0006: a value where the operator takes none, or none where it needs one.
+bool checkArity(Context& context, const ast::Term& term, bool takesValue) {
+    if (takesValue && !term.value) {
+        context.diagnostics.error("E0006", term.opLoc, fmt::format("'{}' needs a value, as in '{} 0.5'", term.op, term.op));
+        return false;
+    }
+    if (!takesValue && term.value) {
+        context.diagnostics.error("E0006", term.value->loc, fmt::format("'{}' takes no value", term.op));
+        return false;
+    }
+    return true;
+}
+
+std::vector<std::string_view> opNames(bool symbol) {
+    std::vector<std::string_view> names;
+    if (symbol)
+        for (const SymbolOpInfo& info : symbolOps()) names.push_back(info.name);
+    else
+        for (const TransformOpInfo& info : transformOps()) names.push_back(info.name);
+    return names;
+}
+
+void reportUnknownOp(Context& context, const ast::Term& term, bool symbol) {
+    const char* kind = symbol ? "symbol" : "transform";
+    bool otherKind = symbol ? findTransformOp(term.op).has_value() : findSymbolOp(term.op).has_value();
+    if (otherKind) {
+        context.diagnostics.error("E0011", term.opLoc,
+                                  fmt::format("'{}' is a {} operator and cannot appear in a {}", term.op,
+                                              symbol ? "transform" : "symbol", kind));
+        return;
+    }
+    context.diagnostics.error("E0011", term.opLoc,
+                              fmt::format("unknown {} operator '{}'{}", kind, term.op,
+                                          suggestOrList(term.op, opNames(symbol))));
+}
+
+} // namespace
+
+std::optional<SymbolCell> convertSymbolCell(Context& context, const ast::Cell& cell) {
+    SymbolCell out;
+    bool ok = true;
+    for (const ast::Term& term : cell.terms) {
+        std::optional<SymbolOp> op = findSymbolOp(term.op);
+        if (!op) {
+            reportUnknownOp(context, term, true);
+            ok = false;
+            continue;
+        }
+        const SymbolOpInfo& info = symbolOpInfo(*op);
+        if (!checkArity(context, term, info.takesValue)) {
+            ok = false;
+            continue;
+        }
+        Predicate predicate{*op, 0.0f};
+        if (term.value) {
+            auto value = readFloat(context, *term.value);
+            if (!value) {
+                ok = false;
+                continue;
+            }
+            predicate.value = *value;
+        }
+        if (*op != SymbolOp::IGN) out.predicates.push_back(predicate);
+    }
+    return ok ? std::optional(out) : std::nullopt;
+}
+
+std::optional<TransformCell> convertTransformCell(Context& context, const ast::Cell& cell) {
+    if (cell.terms.size() != 1) {
+        context.diagnostics.error("E0006", cell.terms[1].opLoc,
+                                  "a transform cell takes exactly one operator; '&' joins symbol predicates only");
+        return std::nullopt;
+    }
+    const ast::Term& term = cell.terms.front();
+    std::optional<TransformOp> op = findTransformOp(term.op);
+    if (!op) {
+        reportUnknownOp(context, term, false);
+        return std::nullopt;
+    }
+    if (!checkArity(context, term, transformOpInfo(*op).takesValue)) return std::nullopt;
+    TransformCell out{*op, 0.0f};
+    if (term.value) {
+        auto value = readFloat(context, *term.value);
+        if (!value) return std::nullopt;
+        out.value = *value;
+    }
+    return out;
+}
+
+} // namespace voxc::check

@@ -1,0 +1,44 @@
+#pragma once
+// One function per top-level block kind. Each reports its own errors and returns what it
+// could check; the caller assembles the Program only when no error was reported.
+#include "Context.h"
+
+#include "voxc/program/Program.h"
+#include "voxc/syntax/Ast.h"
+
+#include <optional>
+#include <vector>
+
+namespace voxc::check {
+
+// Locations the warning analyses need, which Program does not keep.
+struct RuleSyntax {
+    SourceLoc sizeLoc;
+    SourceLoc symbolLoc;
+    std::vector<SourceLoc> symbolCells; // in Program's cell order (cellIndex)
+};
+
+struct CheckedGrammar {
+    Grammar grammar;
+    std::vector<RuleSyntax> rules; // parallel to grammar.rules
+};
+
+// Nothing when `size` is missing or invalid; errors in other keys are reported but the
+// world is still returned, so that grammar bounds can be checked against its size.
+std::optional<World> checkWorld(Context& context, const ast::Block& block);
+
+std::vector<StartShape> checkStart(Context& context, const ast::Block& block);
+
+// `world` is null when the world block is missing or invalid; bounds are then not checked
+// against the grid.
+std::optional<CheckedGrammar> checkGrammar(Context& context, const ast::Block& block, const World* world);
+
+// The stages after Start, as indices into `grammarNames`: every grammar declared, in order,
+// including those with errors, so that their names are not reported as unknown as well.
+std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
+                                 const std::vector<std::string>& grammarNames);
+
+// W0201-W0204 for one checked grammar.
+void analyseGrammar(Context& context, const CheckedGrammar& grammar);
+
+} // namespace voxc::check

@@ -1,0 +1,89 @@
+#pragma once
+// The syntax tree of a .vox file, built once by the parser and never changed afterwards:
+// the checker reads it and writes its findings into its own tables. Every node has a location.
+//
+// The tree mirrors the generic surface syntax: a file is constants and blocks; a block holds
+// assignments, nested blocks, rows and bare names. What each block may contain is decided
+// by the checker, not the parser.
+#include "voxc/core/SourceLoc.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace voxc::ast {
+
+struct Expr {
+    enum class Kind : uint8_t { Number, Name, Negate, Add, Subtract, Multiply, Divide };
+    Kind kind = Kind::Number;
+    SourceLoc loc;                // the whole expression
+    double number = 0.0;          // Number
+    std::string name;             // Name
+    std::unique_ptr<const Expr> lhs; // Negate: the operand; binary kinds: left operand
+    std::unique_ptr<const Expr> rhs; // binary kinds: right operand
+};
+
+// The right-hand side of `key = value;`: a scalar expression or a bracketed list.
+struct Value {
+    SourceLoc loc;
+    std::unique_ptr<const Expr> scalar; // null for a list
+    std::vector<Value> elements;        // a list's elements
+    bool isList() const { return scalar == nullptr; }
+};
+
+struct Assignment {
+    SourceLoc loc; // the key
+    std::string key;
+    Value value;
+};
+
+// One operator of a row cell: `GEQ 0.5`, `IGN`, `ADD -HALF`.
+struct Term {
+    SourceLoc loc;   // operator and value
+    std::string op;
+    SourceLoc opLoc; // the operator name alone
+    std::unique_ptr<const Expr> value; // null when none is written
+};
+
+// A cell is one or more terms joined by `&`.
+struct Cell {
+    SourceLoc loc;
+    std::vector<Term> terms;
+};
+
+struct Row {
+    SourceLoc loc;
+    std::vector<Cell> cells;
+};
+
+// A bare `name;` statement, as in `pipeline { start; caves; }`.
+struct NameStatement {
+    SourceLoc loc;
+    std::string name;
+};
+
+// `kind label { ... }`. Members of each sort keep their written order.
+struct Block {
+    SourceLoc loc; // the kind word
+    std::string kind;
+    std::optional<std::string> label;
+    SourceLoc labelLoc;
+    std::vector<Assignment> assignments;
+    std::vector<Block> blocks;
+    std::vector<Row> rows;
+    std::vector<NameStatement> names;
+};
+
+struct ConstDecl {
+    SourceLoc loc; // the name
+    std::string name;
+    std::unique_ptr<const Expr> value;
+};
+
+struct File {
+    std::vector<ConstDecl> constants; // declaration order
+    std::vector<Block> blocks;        // declaration order
+};
+
+} // namespace voxc::ast

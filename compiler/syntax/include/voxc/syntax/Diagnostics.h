@@ -1,0 +1,65 @@
+#pragma once
+// Diagnostics are typed values; turning them into text is a separate step (render), so tests
+// can assert on codes and locations and the CLI can choose how to print them.
+#include "voxc/core/SourceLoc.h"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace voxc {
+
+class SourceFile;
+
+enum class Severity : uint8_t { Error, Warning, Note };
+
+// A remark attached to a diagnostic, e.g. where the other half of a conflict is.
+// A note whose loc.line is 0 has no location.
+struct DiagnosticNote {
+    SourceLoc loc;
+    std::string message;
+};
+
+// code is a stable identifier such as "E0004" or "W0201" (empty only for the final
+// "too many errors" line). loc.line == 0 means the diagnostic is about the whole file.
+struct Diagnostic {
+    Severity severity = Severity::Error;
+    std::string code;
+    SourceLoc loc;
+    std::string message;
+    std::vector<DiagnosticNote> notes;
+};
+
+// Collects diagnostics in report order, drops exact duplicates, and stops recording errors
+// after kMaxErrors, appending one final "too many errors" diagnostic instead.
+class Diagnostics {
+public:
+    static constexpr int kMaxErrors = 20;
+
+    void report(Diagnostic diagnostic);
+    void error(std::string_view code, SourceLoc loc, std::string message, std::vector<DiagnosticNote> notes = {});
+    void warning(std::string_view code, SourceLoc loc, std::string message, std::vector<DiagnosticNote> notes = {});
+
+    bool hasErrors() const { return errorCount_ > 0; }
+    int errorCount() const { return errorCount_; }
+    const std::vector<Diagnostic>& all() const { return diagnostics_; }
+    std::vector<Diagnostic> take() { return std::move(diagnostics_); }
+
+private:
+    std::vector<Diagnostic> diagnostics_;
+    int errorCount_ = 0;
+    bool truncated_ = false;
+};
+
+// One diagnostic in the form
+//   path:line:col: error E0004: message
+//      12 |     symbol {
+//         |     ^~~~~~
+// followed by its notes in the same form. Without a location: `path: error E0100: message`.
+// Ends with a newline.
+std::string render(const Diagnostic& diagnostic, const SourceFile& source);
+
+// Every diagnostic in order, each rendered as above.
+std::string renderAll(const std::vector<Diagnostic>& diagnostics, const SourceFile& source);
+
+} // namespace voxc

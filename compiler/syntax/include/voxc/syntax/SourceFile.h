@@ -1,0 +1,38 @@
+#pragma once
+// A .vox file's text and path, with a line index for rendering diagnostics. Loading never
+// throws for the user's mistakes: a missing or binary file becomes a diagnostic.
+#include "voxc/syntax/Diagnostics.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace voxc {
+
+class SourceFile {
+public:
+    SourceFile() = default;
+    SourceFile(std::string path, std::string text);
+
+    const std::string& path() const { return path_; }
+    const std::string& text() const { return text_; }
+    // Line `line` (1-based) without its line terminator; empty when out of range.
+    std::string_view line(uint32_t line) const;
+    uint32_t lineCount() const { return uint32_t(lineStarts_.size()); }
+
+private:
+    std::string path_;
+    std::string text_;
+    std::vector<size_t> lineStarts_;
+};
+
+// Reads `path`. On failure reports E0100 and returns nothing. The text is not validated;
+// see reportIfNotText.
+std::optional<SourceFile> loadSourceFile(const std::string& path, Diagnostics& diagnostics);
+
+// Reports E0101 (and returns true) when the text holds a NUL byte or is not valid UTF-8.
+bool reportIfNotText(const SourceFile& source, Diagnostics& diagnostics);
+
+} // namespace voxc
