@@ -1,0 +1,34 @@
+#include "Cases.h"
+
+#include "voxc/check/Check.h"
+#include "voxc/core/Errors.h"
+
+#include <fmt/format.h>
+
+namespace voxc::bench {
+
+const std::vector<Case>& grammarCases() {
+    static const std::vector<Case> cases = {
+        {"overhang", "examples/overhang.vox"},
+        {"cave", "examples/cave_grammar.vox"},
+    };
+    return cases;
+}
+
+Program loadCaseProgram(const Case& benchCase, int n) {
+    const std::string path = fmt::format("{}/{}", VOXC_SOURCE_DIR, benchCase.example);
+    CheckResult result = checkFile(path);
+    if (result.hasErrors() || !result.program) throw UserError(fmt::format("{} does not check", path));
+    Program program = std::move(*result.program);
+    program.world.size = glm::ivec3(n);
+    program.world.origin = glm::ivec3(0);
+    for (Grammar& grammar : program.grammars) {
+        grammar.boundsMin = glm::ivec3(0);
+        grammar.boundsMax = glm::ivec3(n);
+        grammar.stride = glm::ivec3(1);
+        grammar.iterations = 1;
+    }
+    return program;
+}
+
+} // namespace voxc::bench

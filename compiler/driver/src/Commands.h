@@ -1,0 +1,12 @@
+#pragma once
+// One function per verb: each adds its subcommand, flags and action to the app.
+#include <CLI/CLI.hpp>
+
+namespace voxc::driver {
+
+void addCheckCommand(CLI::App& app);
+void addCompileCommand(CLI::App& app);
+void addRunCommand(CLI::App& app);
+void addInterpCommand(CLI::App& app);
+
+} // namespace voxc::driver

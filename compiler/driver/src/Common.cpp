@@ -1,0 +1,50 @@
+#include "Common.h"
+
+#include "voxc/check/Check.h"
+#include "voxc/core/Errors.h"
+#include "voxc/syntax/Diagnostics.h"
+
+#include <fmt/format.h>
+#include <iostream>
+
+namespace voxc::driver {
+
+void addWorldOverrideFlags(CLI::App& command, WorldOverrides& overrides) {
+    command.add_option("--seed", overrides.seed, "Override the world's seed");
+    command.add_option("--chunk", overrides.chunk, "Override the chunk size (power of two, 8..64)");
+}
+
+Program loadProgram(const std::string& path, const WorldOverrides& overrides, bool warningsAsErrors) {
+    CheckResult result = checkFile(path);
+    size_t errors = 0;
+    size_t warnings = 0;
+    for (const Diagnostic& diagnostic : result.diagnostics) {
+        std::cerr << render(diagnostic, result.source);
+        (diagnostic.severity == Severity::Error ? errors : warnings)++;
+    }
+    if (result.hasErrors() || !result.program)
+        throw UserError(fmt::format("{}: {} error{}", path, errors, errors == 1 ? "" : "s"));
+    if (warningsAsErrors && warnings > 0)
+        throw UserError(fmt::format("{}: {} warning{} (--werror)", path, warnings, warnings == 1 ? "" : "s"));
+    Program program = std::move(*result.program);
+    if (overrides.seed) program.world.seed = *overrides.seed;
+    if (overrides.chunk) {
+        const int32_t c = *overrides.chunk;
+        if (c < 8 || c > 64 || (c & (c - 1)) != 0)
+            throw UserError(fmt::format("--chunk {}: the chunk size must be a power of two from 8 to 64", c));
+        program.world.chunkSize = c;
+    }
+    return program;
+}
+
+void requireExtension(const std::string& path, std::initializer_list<const char*> extensions, const char* what) {
+    for (const char* extension : extensions) {
+        const std::string e(extension);
+        if (path.size() > e.size() && path.compare(path.size() - e.size(), e.size(), e) == 0) return;
+    }
+    std::string list;
+    for (const char* extension : extensions) list += fmt::format("{}{}", list.empty() ? "" : ", ", extension);
+    throw UserError(fmt::format("{} '{}' must end in {}", what, path, list));
+}
+
+} // namespace voxc::driver

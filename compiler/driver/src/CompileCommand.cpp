@@ -1,0 +1,44 @@
+#include "Commands.h"
+#include "Common.h"
+
+#include "voxc/codegen/Codegen.h"
+#include "voxc/ir/Lower.h"
+
+#include <iostream>
+
+namespace voxc::driver {
+
+namespace {
+
+struct CompileOptions {
+    std::string file;
+    std::string outputDir;
+    bool dumpIr = false;
+    WorldOverrides overrides;
+};
+
+} // namespace
+
+void addCompileCommand(CLI::App& app) {
+    auto options = std::make_shared<CompileOptions>();
+    CLI::App* command = app.add_subcommand(
+        "compile", "Compile a .vox file into a package: GLSL kernels, SPIR-V and manifest.json");
+    command->add_option("file", options->file, "The .vox file")->required();
+    command->add_option("-o,--output", options->outputDir, "Package directory to write")->required();
+    command->add_flag("--dump-ir", options->dumpIr, "Print the IR after every compiler pass to stdout");
+    addWorldOverrideFlags(*command, options->overrides);
+    command->callback([options] {
+        const Program program = loadProgram(options->file, options->overrides);
+        codegen::CompileOptions compileOptions;
+        if (options->dumpIr) {
+            compileOptions.afterPass = [](std::string_view pass, const ir::IrModule& module) {
+                std::cout << "=== after " << pass << " ===\n" << ir::printIr(module) << "\n";
+            };
+        }
+        const KernelPackage package = codegen::compileProgram(program, compileOptions);
+        codegen::writePackage(package, options->outputDir, program.sourcePath);
+        std::cerr << "wrote " << package.kernels.size() << " kernels to " << options->outputDir << "\n";
+    });
+}
+
+} // namespace voxc::driver

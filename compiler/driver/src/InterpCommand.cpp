@@ -1,0 +1,97 @@
+#include "Commands.h"
+#include "Common.h"
+
+#include "voxc/core/Errors.h"
+#include "voxc/grid/Grid.h"
+#include "voxc/interp/Interpreter.h"
+
+#include <fmt/format.h>
+#include <iostream>
+
+namespace voxc::driver {
+
+namespace {
+
+struct InterpOptions {
+    std::string file;
+    std::string voxelsPath;
+    bool trace = false;
+    TraceFilter filter;
+    std::optional<uint64_t> traceLimit;
+    std::string slice;
+    WorldOverrides overrides;
+};
+
+struct SliceSpec {
+    int axis = 1;
+    int index = 0;
+};
+
+SliceSpec parseSlice(const std::string& text, glm::ivec3 size) {
+    const size_t equals = text.find('=');
+    const std::string axisName = text.substr(0, equals);
+    SliceSpec spec;
+    if (equals == std::string::npos || axisName.size() != 1 || std::string("xyz").find(axisName[0]) == std::string::npos)
+        throw UserError(fmt::format("--slice '{}': expected AXIS=INDEX, e.g. y=12", text));
+    spec.axis = int(std::string("xyz").find(axisName[0]));
+    try {
+        size_t used = 0;
+        spec.index = std::stoi(text.substr(equals + 1), &used);
+        if (used != text.size() - equals - 1) throw std::invalid_argument("trailing");
+    } catch (const std::exception&) {
+        throw UserError(fmt::format("--slice '{}': the index must be an integer", text));
+    }
+    if (spec.index < 0 || spec.index >= size[spec.axis])
+        throw UserError(fmt::format("--slice '{}': index out of range 0..{}", text, size[spec.axis] - 1));
+    return spec;
+}
+
+void interpretFile(const InterpOptions& options) {
+    const Program program = loadProgram(options.file, options.overrides);
+    std::optional<SliceSpec> slice;
+    if (!options.slice.empty()) slice = parseSlice(options.slice, program.world.size);
+
+    voxc::InterpOptions interpOptions;
+    uint64_t printed = 0;
+    uint64_t fired = 0;
+    if (options.trace) {
+        interpOptions.onFire = [&](const TraceEvent& event) {
+            if (!traceFilterAccepts(program, options.filter, event)) return;
+            ++fired;
+            if (options.traceLimit && printed >= *options.traceLimit) return;
+            ++printed;
+            std::cout << formatTraceEvent(program, event) << "\n";
+        };
+    }
+    const DenseGrid grid = interpret(program, interpOptions);
+    if (options.trace)
+        std::cout << fmt::format("{} firings matched the trace filter ({} printed)\n", fired, printed);
+    if (slice) std::cout << renderSlice(grid, slice->axis, slice->index);
+    if (!options.voxelsPath.empty()) {
+        writeNpy(options.voxelsPath, grid);
+        std::cerr << "wrote " << options.voxelsPath << "\n";
+    }
+}
+
+} // namespace
+
+void addInterpCommand(CLI::App& app) {
+    auto options = std::make_shared<InterpOptions>();
+    CLI::App* command = app.add_subcommand(
+        "interp", "Run a .vox file with the CPU interpreter (the reference), with tracing and slices");
+    command->add_option("file", options->file, "The .vox file")->required();
+    command->add_option("--voxels", options->voxelsPath, "Write the densities as a NumPy .npy file");
+    command->add_flag("--trace", options->trace, "Print every rule firing (iteration, sweep, phase, anchor, rule)");
+    command->add_option("--trace-rule", options->filter.rule, "Trace only this rule");
+    command->add_option("--trace-grammar", options->filter.grammar, "Trace only this grammar");
+    command->add_option("--trace-iteration", options->filter.iteration, "Trace only this iteration (0-based)");
+    command->add_option("--trace-limit", options->traceLimit, "Print at most this many firings");
+    command->add_option("--slice", options->slice, "Print one layer as text, e.g. y=12");
+    addWorldOverrideFlags(*command, options->overrides);
+    command->callback([options] {
+        if (!options->voxelsPath.empty()) requireExtension(options->voxelsPath, {".npy"}, "voxel file");
+        interpretFile(*options);
+    });
+}
+
+} // namespace voxc::driver

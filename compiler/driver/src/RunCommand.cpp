@@ -1,0 +1,96 @@
+#include "Commands.h"
+#include "Common.h"
+
+#include "voxc/codegen/Codegen.h"
+#include "voxc/core/Errors.h"
+#include "voxc/grid/Grid.h"
+#include "voxc/mesh/Export.h"
+#include "voxc/mesh/SurfaceNets.h"
+#include "voxc/vulkan/Context.h"
+#include "voxc/vulkan/Executor.h"
+
+#include <fmt/format.h>
+#include <iostream>
+
+namespace voxc::driver {
+
+namespace {
+
+struct RunOptions {
+    std::string file;
+    std::string meshPath;
+    std::string voxelsPath;
+    std::string device = "auto";
+    float iso = 0.5f;
+    bool validate = false;
+    bool listDevices = false;
+    WorldOverrides overrides;
+};
+
+void run(const RunOptions& options) {
+    if (options.listDevices) {
+        std::cout << formatDeviceList(VulkanContext::listDevices());
+        return;
+    }
+    if (options.file.empty()) throw UserError("run: a .vox file is required");
+    if (options.meshPath.empty() && options.voxelsPath.empty())
+        throw UserError("run: nothing to write; give -o MESH.ply|.obj and/or --voxels FILE.npy");
+    if (!options.meshPath.empty()) requireExtension(options.meshPath, {".ply", ".obj"}, "mesh file");
+    if (!options.voxelsPath.empty()) requireExtension(options.voxelsPath, {".npy"}, "voxel file");
+
+    const Program program = loadProgram(options.file, options.overrides);
+    const KernelPackage package = codegen::compileProgram(program, {});
+    VulkanContext context(ContextOptions{.device = options.device, .validation = options.validate});
+    VulkanExecutor executor(context, package);
+    const RunResult result = executor.run();
+    const ChunkedGrid& voxels = result.grid;
+    std::cerr << fmt::format("device: {} ({})\n", context.device().name, deviceTypeName(context.device().type));
+    std::cerr << fmt::format("grid {}x{}x{}, chunk {}, seed {}: {} dispatches, {:.1f} ms on device\n",
+                             program.world.size.x, program.world.size.y, program.world.size.z,
+                             program.world.chunkSize, program.world.seed, result.dispatches,
+                             result.timings.executeMs);
+
+    if (!options.voxelsPath.empty()) {
+        writeNpy(options.voxelsPath, voxels.toDense());
+        std::cerr << "wrote " << options.voxelsPath << "\n";
+    }
+    if (!options.meshPath.empty()) {
+        const Mesh mesh = meshSurfaceNets(voxels, options.iso);
+        // Naive surface nets joins four faces at a saddle of the density field, so "watertight"
+        // here means closed (no boundary edge, no crack) without duplicate faces.
+        const MeshTopology topology = analyzeTopology(mesh);
+        if (!topology.closed() || topology.duplicateTriangles != 0)
+            throw InternalError(fmt::format("the mesh has {} boundary edges and {} duplicate faces",
+                                            topology.boundaryEdges, topology.duplicateTriangles));
+        writeMesh(options.meshPath, mesh);
+        std::cerr << fmt::format("wrote {}: {} vertices, {} triangles, watertight ({} non-manifold edges at saddles)\n",
+                                 options.meshPath, mesh.positions.size(), mesh.triangles.size() / 3,
+                                 topology.nonManifoldEdges);
+    }
+    if (options.validate) {
+        const std::vector<ValidationMessage> messages = context.validationMessages();
+        std::cerr << fmt::format("validation layer: {} message{}\n", messages.size(), messages.size() == 1 ? "" : "s");
+        for (const ValidationMessage& message : messages)
+            std::cerr << "  " << (message.error ? "error: " : "warning: ") << message.text << "\n";
+        if (!messages.empty()) throw InternalError("the Vulkan validation layer reported problems");
+    }
+}
+
+} // namespace
+
+void addRunCommand(CLI::App& app) {
+    auto options = std::make_shared<RunOptions>();
+    CLI::App* command =
+        app.add_subcommand("run", "Compile a .vox file, run it with Vulkan, mesh the result and export it");
+    command->add_option("file", options->file, "The .vox file");
+    command->add_option("-o,--output", options->meshPath, "Mesh to write (.ply binary or .obj)");
+    command->add_option("--voxels", options->voxelsPath, "Also write the densities as a NumPy .npy file");
+    command->add_option("--device", options->device, "auto (default: a GPU if present), lavapipe, gpu, or an index");
+    command->add_option("--iso", options->iso, "Surface level for meshing (default 0.5)");
+    command->add_flag("--validate", options->validate, "Enable the Khronos validation layer; fail on any message");
+    command->add_flag("--list-devices", options->listDevices, "List Vulkan devices and exit");
+    addWorldOverrideFlags(*command, options->overrides);
+    command->callback([options] { run(*options); });
+}
+
+} // namespace voxc::driver

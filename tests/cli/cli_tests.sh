@@ -1,0 +1,100 @@
+#!/usr/bin/env bash
+# Usage: cli_tests.sh VOXC SOURCE_DIR. Runs voxc as a user would and checks exit codes, messages
+# and output files. Prints "N passed, N failed" last.
+set -u
+voxc=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0
+failed=0
+
+# expect NAME WANT_EXIT PATTERN -- COMMAND...: the exit code must be WANT_EXIT and the combined
+# output must match the extended regex PATTERN (empty: not checked).
+expect() {
+    local name=$1 want=$2 pattern=$3
+    shift 4
+    local out code
+    out=$("$@" 2>&1)
+    code=$?
+    if [ "$code" -ne "$want" ]; then
+        echo "FAIL $name: exit $code, want $want"; echo "$out" | head -20; failed=$((failed + 1)); return
+    fi
+    if [ -n "$pattern" ] && ! grep -Eq -- "$pattern" <<<"$out"; then
+        echo "FAIL $name: output does not match /$pattern/"; echo "$out" | head -20; failed=$((failed + 1)); return
+    fi
+    echo "ok   $name"; passed=$((passed + 1))
+}
+
+# expect_no_file NAME PATH: a failed command must not leave an output (or temp) file behind.
+expect_no_file() {
+    if compgen -G "$2*" >/dev/null; then
+        echo "FAIL $1: $2 exists after a failure"; failed=$((failed + 1))
+    else
+        echo "ok   $1"; passed=$((passed + 1))
+    fi
+}
+
+# --help on every verb
+for verb in check compile run interp; do
+    expect "help_$verb" 0 "Usage" -- "$voxc" "$verb" --help
+done
+expect no_verb 1 "" -- "$voxc"
+expect unknown_flag 1 "" -- "$voxc" check --frobnicate "$src/examples/overhang.vox"
+
+# bad input: located errors, exit 1
+printf 'world {\n  size = [8, 8, 8]\n}\ngrammar g { rule r { size = [1,1,1]; symbol { [PRES 3] } } }\n' > "$work/bad.vox"
+expect bad_syntax 1 "bad\.vox:[0-9]+:[0-9]+: error E[0-9]{4}" -- "$voxc" check "$work/bad.vox"
+expect caret 1 "\^" -- "$voxc" check "$work/bad.vox"
+head -c 300 /dev/urandom > "$work/garbage.vox"; printf '\0\1\2' >> "$work/garbage.vox"
+expect binary 1 "garbage\.vox.*E0101" -- "$voxc" check "$work/garbage.vox"
+printf '%%$#@ not a vox file ((((\n' > "$work/junk.vox"
+expect garbage_text 1 "junk\.vox:1:[0-9]+: error E0001" -- "$voxc" check "$work/junk.vox"
+: > "$work/empty.vox"
+expect empty 1 "empty\.vox.*error E0009" -- "$voxc" check "$work/empty.vox"
+expect missing 1 "nope\.vox.*E0100" -- "$voxc" check "$work/nope.vox"
+expect missing_run 1 "E0100" -- "$voxc" run "$work/nope.vox" -o "$work/nope.ply"
+expect_no_file no_partial_mesh "$work/nope.ply"
+expect bad_chunk 1 "power of two" -- "$voxc" run "$src/examples/overhang.vox" --chunk 12 -o "$work/x.ply"
+expect bad_mesh_ext 1 "must end in" -- "$voxc" run "$src/examples/overhang.vox" -o "$work/x.stl"
+expect bad_slice 1 "slice" -- "$voxc" interp "$src/examples/overhang.vox" --slice q=3
+expect bad_device 1 "device" -- "$voxc" run "$src/examples/overhang.vox" --device 99 -o "$work/x.ply"
+expect unwritable 1 "cannot write" -- "$voxc" run "$src/examples/overhang.vox" -o /nonexistent-dir/x.ply
+
+# every example checks, compiles, runs on lavapipe into a watertight mesh
+for example in "$src"/examples/*.vox; do
+    name=$(basename "$example" .vox)
+    expect "check_$name" 0 "ok" -- "$voxc" check "$example"
+    expect "compile_$name" 0 "kernels" -- "$voxc" compile "$example" -o "$work/pkg_$name"
+    expect "run_$name" 0 "watertight" -- "$voxc" run "$example" --device lavapipe \
+        -o "$work/$name.ply" --voxels "$work/$name.npy"
+    expect "interp_$name" 0 "" -- "$voxc" interp "$example" --voxels "$work/${name}_interp.npy"
+    if cmp -s "$work/$name.npy" "$work/${name}_interp.npy"; then
+        echo "ok   same_voxels_$name"; passed=$((passed + 1))
+    else
+        echo "FAIL same_voxels_$name: run and interp voxels differ"; failed=$((failed + 1))
+    fi
+done
+
+# compile is byte-identical on every run
+"$voxc" compile "$src/examples/overhang.vox" -o "$work/pkg_again" >/dev/null 2>&1
+if diff -r "$work/pkg_overhang" "$work/pkg_again" >/dev/null; then
+    echo "ok   compile_deterministic"; passed=$((passed + 1))
+else
+    echo "FAIL compile_deterministic"; failed=$((failed + 1))
+fi
+# every emitted SPIR-V passes spirv-val
+for spv in "$work"/pkg_*/kernels/*.spv; do
+    expect "spirv_val_$(basename "$(dirname "$(dirname "$spv")")")_$(basename "$spv")" 0 "" -- spirv-val --target-env vulkan1.1 "$spv"
+done
+
+# the Khronos validation layer reports nothing on a full run
+expect validation_layer 0 "validation layer: 0 messages" -- "$voxc" run "$src/examples/overhang.vox" \
+    --device lavapipe --validate -o "$work/validated.obj"
+
+# interp trace and slice
+expect trace 0 "iter 0 sweep [0-9]+ phase [0-9]+ anchor" -- "$voxc" interp "$src/examples/overhang.vox" --trace --trace-limit 5
+expect slice 0 "#" -- "$voxc" interp "$src/examples/overhang.vox" --slice y=12
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

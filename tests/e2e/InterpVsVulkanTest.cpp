@@ -1,0 +1,81 @@
+// Every example, run by the interpreter and by the Vulkan path at chunk sizes 8, 16 and 32 and
+// at grid origins that are zero, negative, and far away (so chunks straddle and floor division
+// of negative coordinates matters), must give bit-identical voxels.
+#include "voxc/check/Check.h"
+#include "voxc/codegen/Codegen.h"
+#include "voxc/grid/Grid.h"
+#include "voxc/interp/Interpreter.h"
+#include "voxc/vulkan/Context.h"
+#include "voxc/vulkan/Executor.h"
+
+#include <cstring>
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+namespace voxc {
+namespace {
+
+VulkanContext& lavapipe() {
+    static VulkanContext context(ContextOptions{.device = "lavapipe"});
+    return context;
+}
+
+Program loadExample(const std::string& name) {
+    CheckResult result = checkFile(fmt::format("{}/examples/{}.vox", VOXC_SOURCE_DIR, name));
+    EXPECT_FALSE(result.hasErrors());
+    return std::move(*result.program);
+}
+
+// Number of voxels whose bit patterns differ; reports the first few.
+size_t countDifferences(const DenseGrid& expected, const DenseGrid& actual) {
+    EXPECT_EQ(expected.size(), actual.size());
+    size_t differences = 0;
+    const glm::ivec3 size = expected.size();
+    for (int z = 0; z < size.z; ++z)
+        for (int y = 0; y < size.y; ++y)
+            for (int x = 0; x < size.x; ++x) {
+                const float a = expected.at({x, y, z});
+                const float b = actual.at({x, y, z});
+                if (std::memcmp(&a, &b, sizeof(float)) != 0 && differences++ < 5)
+                    ADD_FAILURE() << fmt::format("voxel ({},{},{}): interpreter {} vulkan {}", x, y, z, a, b);
+            }
+    return differences;
+}
+
+struct Case {
+    std::string example;
+    glm::ivec3 origin;
+};
+
+class InterpVsVulkan : public ::testing::TestWithParam<Case> {};
+
+TEST_P(InterpVsVulkan, BitIdenticalAtEveryChunkSize) {
+    Program program = loadExample(GetParam().example);
+    program.world.origin = GetParam().origin;
+    const DenseGrid expected = interpret(program);
+    for (int chunk : {8, 16, 32}) {
+        SCOPED_TRACE(fmt::format("chunk {}", chunk));
+        program.world.chunkSize = chunk;
+        VulkanExecutor executor(lavapipe(), codegen::compileProgram(program, {}));
+        const DenseGrid actual = executor.run().grid.toDense();
+        EXPECT_EQ(countDifferences(expected, actual), 0u);
+    }
+}
+
+std::vector<Case> cases() {
+    std::vector<Case> all;
+    for (const char* example : {"overhang", "cave_grammar", "terrain"})
+        for (glm::ivec3 origin : {glm::ivec3(0, 0, 0), glm::ivec3(-37, -5, -100), glm::ivec3(100003, 7, -65541)})
+            all.push_back({example, origin});
+    return all;
+}
+
+INSTANTIATE_TEST_SUITE_P(Examples, InterpVsVulkan, ::testing::ValuesIn(cases()), [](const auto& info) {
+    const glm::ivec3 o = info.param.origin;
+    return fmt::format("{}_origin_{}_{}_{}", info.param.example, o.x < 0 ? "m" + std::to_string(-o.x) : std::to_string(o.x),
+                       o.y < 0 ? "m" + std::to_string(-o.y) : std::to_string(o.y),
+                       o.z < 0 ? "m" + std::to_string(-o.z) : std::to_string(o.z));
+});
+
+} // namespace
+} // namespace voxc
