@@ -47,6 +47,10 @@ struct Case {
     glm::ivec3 origin;
 };
 
+void PrintTo(const Case& c, std::ostream* out) {
+    *out << fmt::format("{} at origin ({}, {}, {})", c.example, c.origin.x, c.origin.y, c.origin.z);
+}
+
 class InterpVsVulkan : public ::testing::TestWithParam<Case> {};
 
 TEST_P(InterpVsVulkan, BitIdenticalAtEveryChunkSize) {

@@ -54,7 +54,10 @@ void interpretFile(const InterpOptions& options) {
     voxc::InterpOptions interpOptions;
     uint64_t printed = 0;
     uint64_t fired = 0;
-    if (options.trace) {
+    // Any --trace-* filter asks for a trace too.
+    const bool trace = options.trace || options.filter.rule || options.filter.grammar || options.filter.iteration ||
+                       options.traceLimit;
+    if (trace) {
         interpOptions.onFire = [&](const TraceEvent& event) {
             if (!traceFilterAccepts(program, options.filter, event)) return;
             ++fired;
@@ -64,7 +67,7 @@ void interpretFile(const InterpOptions& options) {
         };
     }
     const DenseGrid grid = interpret(program, interpOptions);
-    if (options.trace)
+    if (trace)
         std::cout << fmt::format("{} firings matched the trace filter ({} printed)\n", fired, printed);
     if (slice) std::cout << renderSlice(grid, slice->axis, slice->index);
     if (!options.voxelsPath.empty()) {
