@@ -1,6 +1,6 @@
 // Declarations every voxc kernel shares: the push block (voxc::PushBlock in
-// compiler/codegen/include/voxc/codegen/KernelPackage.h, field for field) and the two
-// storage buffers of descriptor set 0.
+// compiler/codegen/include/voxc/codegen/KernelPackage.h, field for field) and the three
+// storage buffers of descriptor set 0 (kBindingVoxels, kBindingChunkTable, kBindingNoiseTables).
 
 layout(push_constant, std430) uniform PushBlock {
     ivec4 gridOrigin;  // xyz: world coordinate of grid voxel (0,0,0); w: chunk size
@@ -21,6 +21,11 @@ layout(std430, set = 0, binding = 0) buffer Voxels {
 layout(std430, set = 0, binding = 1) readonly buffer ChunkTable {
     int chunkSlot[];
 } chunkTable;
+
+// Ken Perlin's 256-entry permutation (voxc::perlinPermutation), read by perlin.glsl.
+layout(std430, set = 0, binding = 2) readonly buffer NoiseTables {
+    int perlinPermutation[];
+} noiseTables;
 
 // Buffer index of a grid-local voxel, exactly as voxc::ChunkLayout::address computes it.
 // Chunks are aligned to world coordinates and their size is a power of two, so the

@@ -6,7 +6,7 @@
 
 #include "common.glsl"
 
-layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+// <<DISPATCH_SHAPE>>
 
 void main() {
 }

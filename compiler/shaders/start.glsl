@@ -1,23 +1,44 @@
 #version 450
 // <<HEADER>>
 
-// The start state: one invocation per grid voxel evaluates the start block's shapes in
-// order over air (density 0), as voxc::startDensity does on the CPU.
+// The start state: every grid voxel gets the start block's shapes in order over air
+// (density 0), as voxc::startDensity does on the CPU. One invocation owns a column of voxels
+// along y, so per-column values (a heightfield's height) are computed once, and the chunk
+// table is consulted once per chunk the column enters instead of once per voxel.
 
 #include "common.glsl"
 #include "random.glsl"
 #include "perlin.glsl"
 
-layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+// <<DISPATCH_SHAPE>>
 
 void main() {
-    ivec3 id = ivec3(gl_GlobalInvocationID);
-    if (any(greaterThanEqual(id, push.anchorCount.xyz))) return;
-    ivec3 local = push.anchorStart.xyz + id * push.anchorStep.xyz;
-    ivec3 world = push.gridOrigin.xyz + local;
+    ivec3 first = ivec3(gl_GlobalInvocationID) * ANCHORS_PER_INVOCATION;
+    if (any(greaterThanEqual(first, push.anchorCount.xyz))) return;
+    ivec3 last = min(first + ANCHORS_PER_INVOCATION, push.anchorCount.xyz);
     uint seed = uint(push.gridSize.w);
+    int chunkSize = push.gridOrigin.w;
 
-    float density = 0.0;
-    // <<SHAPES>>
-    voxels.density[voxelAddress(local)] = density;
+    for (int z = first.z; z < last.z; ++z) {
+        for (int x = first.x; x < last.x; ++x) {
+            ivec3 columnLocal = push.anchorStart.xyz + ivec3(x, first.y, z) * push.anchorStep.xyz;
+            ivec3 world = push.gridOrigin.xyz + columnLocal;
+            // <<COLUMN_VALUES>>
+            int address = 0;
+            for (int y = first.y; y < last.y; ++y) {
+                ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                world = push.gridOrigin.xyz + local;
+                // Inside a chunk the next voxel along y (the start dispatch steps by 1) lies chunkSize
+                // entries further on.
+                if (y == first.y || (world.y & (chunkSize - 1)) == 0) {
+                    address = voxelAddress(local);
+                } else {
+                    address += chunkSize;
+                }
+                float density = 0.0;
+                // <<SHAPES>>
+                voxels.density[address] = density;
+            }
+        }
+    }
 }

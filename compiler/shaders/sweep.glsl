@@ -2,64 +2,57 @@
 // <<HEADER>>
 
 // One sweep of a grammar: all rules of one window size. One invocation per anchor of the
-// current phase; the windows of one phase never overlap, so every invocation owns its cells.
-// The steps mirror the CPU interpreter: read the window, find the matching rules, choose one
-// (voxc::chooseRule), then apply its transform.
+// current phase; the windows of one phase never overlap, so every invocation owns its cells. The steps mirror the CPU interpreter: read the window, find the matching
+// rules, choose one (voxc::chooseRule), then apply its transform.
 
 #include "common.glsl"
 #include "random.glsl"
 
-layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+// <<DISPATCH_SHAPE>>
 
 // <<RULE_TABLE>>
 
-// voxc::chooseRule: the highest priority among the matched rules wins; equal priorities are
-// drawn by weight in declaration order; the chosen rule then fires with its probability.
-// Returns the index into the rule table above, or -1 when no rule fires.
-int chooseRule(bool matched[RULE_COUNT], ivec3 anchorWorld) {
-    bool found = false;
-    int best = 0;
-    for (int r = 0; r < RULE_COUNT; ++r) {
-        if (!matched[r]) continue;
-        best = found ? max(best, RULE_PRIORITY[r]) : RULE_PRIORITY[r];
-        found = true;
-    }
-    if (!found) return -1;
-
-    uint total = 0u;
-    for (int r = 0; r < RULE_COUNT; ++r)
-        if (matched[r] && RULE_PRIORITY[r] == best) total += RULE_WEIGHT_UNITS[r];
-
-    uint seed = uint(push.gridSize.w);
-    uint iteration = uint(push.chunkBase.w);
-    uint sweep = uint(push.chunkCount.w);
-    uint target = anchorHash(seed, iteration, sweep, anchorWorld, STREAM_RULE_CHOICE) % total;
-    uint accumulated = 0u;
-    int chosen = -1;
-    for (int r = 0; r < RULE_COUNT; ++r) {
-        if (!matched[r] || RULE_PRIORITY[r] != best) continue;
-        accumulated += RULE_WEIGHT_UNITS[r];
-        if (target < accumulated) {
-            chosen = r;
-            break;
-        }
-    }
-    uint draw = anchorHash(seed, iteration, sweep, anchorWorld, STREAM_PROBABILITY) >> 8;
-    return draw < RULE_PROBABILITY_UNITS[chosen] ? chosen : -1;
+// The two draws of voxc::chooseRule at one anchor: which matched rule, and whether it fires.
+uint ruleChoiceDraw(ivec3 anchorWorld) {
+    return anchorHash(uint(push.gridSize.w), uint(push.chunkBase.w), uint(push.chunkCount.w), anchorWorld,
+                      STREAM_RULE_CHOICE);
+}
+uint probabilityDraw(ivec3 anchorWorld) {
+    return anchorHash(uint(push.gridSize.w), uint(push.chunkBase.w), uint(push.chunkCount.w), anchorWorld,
+                      STREAM_PROBABILITY) >> 8;
 }
 
+// Where the cells of a window lie in the voxel buffer. A window inside one chunk (the common
+// case) is addressed from the anchor's address; one straddling a chunk border looks every cell up.
+struct WindowAddressing {
+    ivec3 anchor;
+    int anchorAddress;
+    bool oneChunk;
+};
+
+WindowAddressing windowAddressing(ivec3 anchor, ivec3 size) {
+    int chunkSize = push.gridOrigin.w;
+    ivec3 inside = (push.gridOrigin.xyz + anchor) & (chunkSize - 1);
+    return WindowAddressing(anchor, voxelAddress(anchor), all(lessThanEqual(inside + size, ivec3(chunkSize))));
+}
+
+int windowCellAddress(WindowAddressing window, ivec3 offset) {
+    int chunkSize = push.gridOrigin.w;
+    if (window.oneChunk) return window.anchorAddress + offset.x + chunkSize * (offset.y + chunkSize * offset.z);
+    return voxelAddress(window.anchor + offset);
+}
+
+// One invocation per anchor (ANCHORS_PER_INVOCATION is 1): a loop over several anchors with
+// run-time bounds costs more than it saves on llvmpipe.
 void main() {
     ivec3 id = ivec3(gl_GlobalInvocationID);
     if (any(greaterThanEqual(id, push.anchorCount.xyz))) return;
     ivec3 anchor = push.anchorStart.xyz + id * push.anchorStep.xyz;
     ivec3 anchorWorld = push.gridOrigin.xyz + anchor;
 
-    // <<LOAD_WINDOW>>
+    // <<MATCH_WINDOW>>
 
-    // <<PASS_MASKS>>
-    // <<MATCH_RULES>>
-
-    int chosen = chooseRule(matched, anchorWorld);
+    // <<CHOOSE_RULE>>
 
     // <<APPLY_RULE>>
 }

@@ -1,6 +1,8 @@
 #include "voxc/builtins/Shapes.h"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 #include <gtest/gtest.h>
 
 namespace voxc {
@@ -10,6 +12,17 @@ Program programWith(StartShape shape) {
     Program program;
     program.start.push_back(shape);
     return program;
+}
+
+TEST(builtins_perlin, PermutationIsPerlinsReferenceTable) {
+    const std::span<const int, 256> table = perlinPermutation();
+    std::vector<int> sorted(table.begin(), table.end());
+    std::sort(sorted.begin(), sorted.end());
+    for (int i = 0; i < 256; ++i) EXPECT_EQ(sorted[size_t(i)], i);
+    // First and last entries of Ken Perlin's Improved Noise (2002) permutation.
+    EXPECT_EQ(table[0], 151);
+    EXPECT_EQ(table[1], 160);
+    EXPECT_EQ(table[255], 180);
 }
 
 TEST(builtins_perlin, ZeroOnTheIntegerLattice) {

@@ -88,6 +88,11 @@ TEST_F(codegen_Package, ManifestDescribesKernelsAndDispatch) {
     EXPECT_EQ(sweep["bindings"][0]["name"], "density");
     EXPECT_EQ(sweep["bindings"][1]["binding"], 1);
     EXPECT_EQ(sweep["bindings"][1]["name"], "chunkSlot");
+    EXPECT_EQ(sweep["bindings"][2]["binding"], kBindingNoiseTables);
+    EXPECT_EQ(sweep["bindings"][2]["name"], "perlinPermutation");
+    EXPECT_EQ(sweep["anchors_per_invocation"], nlohmann::json::array({1, 1, 1}));
+    // The start kernel walks whole columns along y.
+    EXPECT_EQ(kernels[0]["anchors_per_invocation"], nlohmann::json::array({1, package.world.size.y, 1}));
     ASSERT_EQ(sweep["push_constants"].size(), 7u);
     EXPECT_EQ(sweep["push_constants"][0]["name"], "gridOrigin");
     EXPECT_EQ(sweep["push_constants"][6]["name"], "anchorCount");

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <tuple>
 
@@ -113,6 +114,32 @@ TEST(vulkan_DispatchPlan, SplitsDispatchesAboveTheWorkgroupLimit) {
     for (const auto& [anchor, times] : wholeVisits) EXPECT_EQ(times, 1);
 }
 
+TEST(vulkan_DispatchPlan, WorkgroupsCoverAnchorsPerInvocation) {
+    // The start kernel walks columns: 4 anchors per invocation along y, local size 8 x 1 x 8.
+    const World world = makeWorld({20, 12, 9}, {0, 0, 0}, 8);
+    KernelPackage package = makePackage(world, true, {});
+    Kernel& start = package.kernels[package.stages[0].startKernel];
+    const uint32_t local[3] = {8, 1, 8}, perInvocation[3] = {1, 4, 1};
+    std::copy(local, local + 3, start.localSize);
+    std::copy(perInvocation, perInvocation + 3, start.anchorsPerInvocation);
+    const std::vector<Dispatch> whole = expand(package);
+    ASSERT_EQ(whole.size(), 1u);
+    EXPECT_EQ(whole[0].groups[0], 3u); // ceil(20 / 8)
+    EXPECT_EQ(whole[0].groups[1], 3u); // ceil(12 / (1 * 4))
+    EXPECT_EQ(whole[0].groups[2], 2u); // ceil(9 / 8)
+    EXPECT_EQ(xyz(whole[0].push.anchorCount), world.size);
+
+    // Split by the workgroup limit, the pieces still cover every voxel once.
+    const std::array<uint32_t, 3> limit{1, 2, 1};
+    Visits visits;
+    for (const Dispatch& d : expand(package, limit)) {
+        for (int a = 0; a < 3; ++a) EXPECT_LE(d.groups[a], limit[a]);
+        visit(d, visits);
+    }
+    EXPECT_EQ(visits.size(), size_t(20 * 12 * 9));
+    for (const auto& [voxel, times] : visits) EXPECT_EQ(times, 1);
+}
+
 TEST(vulkan_DispatchPlan, MalformedPackagesAreInternalErrors) {
     TestGrammar grammar;
     grammar.sweeps = {{TestKernel::AddOne, {1, 1, 1}}};
@@ -130,6 +157,10 @@ TEST(vulkan_DispatchPlan, MalformedPackagesAreInternalErrors) {
     KernelPackage noSpirv = good;
     noSpirv.kernels[0].spirv.clear();
     EXPECT_THROW(validatePackage(noSpirv), InternalError);
+
+    KernelPackage noAnchors = good;
+    noAnchors.kernels[0].anchorsPerInvocation[1] = 0;
+    EXPECT_THROW(validatePackage(noAnchors), InternalError);
 
     KernelPackage oddChunk = good;
     oddChunk.world.chunkSize = 12;

@@ -7,8 +7,7 @@ namespace voxc {
 
 namespace {
 
-// Ken Perlin's reference permutation (Improved Noise, 2002). perlin.glsl holds the same table;
-// a test checks they agree.
+// Ken Perlin's reference permutation (Improved Noise, 2002).
 const int kPermutation[256] = {
     151, 160, 137, 91,  90,  15,  131, 13,  201, 95,  96,  53,  194, 233, 7,   225, 140, 36,  103, 30,  69,  142,
     8,   99,  37,  240, 21,  10,  23,  190, 6,   148, 247, 120, 234, 75,  0,   26,  197, 62,  94,  252, 219, 203,
@@ -44,6 +43,8 @@ float gradient(int hash, float x, float y) {
 }
 
 } // namespace
+
+std::span<const int, 256> perlinPermutation() { return kPermutation; }
 
 float perlin2(float x, float y) {
     const float fx = std::floor(x);

@@ -132,11 +132,14 @@ float heightfieldEval(const StartShape& s, glm::ivec3 local, glm::ivec3 world, u
 }
 
 std::string heightfieldGlsl(const StartShape& s) {
+    return fmt::format("if (float(local.y) < column) density = {};", glslFloat(s.value));
+}
+
+std::string heightfieldColumnGlsl(const StartShape& s) {
     const HeightfieldParams& h = s.heightfield;
-    return fmt::format("if (float(local.y) < heightfieldHeight(world.x, world.z, seed, {}, {}, {}, {}, {}, {})) "
-                       "density = {};",
-                       glslFloat(h.base), glslFloat(h.amplitude), glslFloat(h.frequency), h.octaves,
-                       glslFloat(h.lacunarity), glslFloat(h.gain), glslFloat(s.value));
+    return fmt::format("heightfieldHeight(world.x, world.z, seed, {}, {}, {}, {}, {}, {})", glslFloat(h.base),
+                       glslFloat(h.amplitude), glslFloat(h.frequency), h.octaves, glslFloat(h.lacunarity),
+                       glslFloat(h.gain));
 }
 
 const ShapeInfo kShapes[] = {
@@ -145,7 +148,7 @@ const ShapeInfo kShapes[] = {
     {ShapeKind::Sphere, "sphere", kSphereKeys, sphereEval, sphereGlsl},
     {ShapeKind::Wall, "wall", kWallKeys, wallEval, wallGlsl},
     {ShapeKind::HalfSpace, "halfspace", kHalfSpaceKeys, halfSpaceEval, halfSpaceGlsl},
-    {ShapeKind::Heightfield, "heightfield", kHeightfieldKeys, heightfieldEval, heightfieldGlsl},
+    {ShapeKind::Heightfield, "heightfield", kHeightfieldKeys, heightfieldEval, heightfieldGlsl, heightfieldColumnGlsl},
 };
 
 } // namespace

@@ -12,11 +12,15 @@ namespace voxc::codegen {
 
 namespace {
 
-Kernel makeKernel(std::string name, std::string origin, std::string glsl) {
+Kernel makeKernel(std::string name, std::string origin, const DispatchShape& shape, std::string glsl) {
     Kernel kernel;
     kernel.name = std::move(name);
     kernel.origin = std::move(origin);
     kernel.glsl = std::move(glsl);
+    for (int a = 0; a < 3; ++a) {
+        kernel.localSize[a] = shape.localSize[a];
+        kernel.anchorsPerInvocation[a] = shape.anchorsPerInvocation[a];
+    }
     kernel.spirv = compileComputeShader(kernel.name, kernel.glsl);
     return kernel;
 }
@@ -49,7 +53,8 @@ KernelPackage compileProgram(const Program& program, const CompileOptions& optio
     KernelPackage package;
     package.world = program.world;
     package.kernels.push_back(
-        makeKernel("start", fmt::format("{} start", sourceName), startKernelSource(module, sourceName)));
+        makeKernel("start", fmt::format("{} start", sourceName), startDispatchShape(module),
+                   startKernelSource(module, sourceName)));
 
     // Kernels of a grammar are generated once, even if the pipeline runs it more than once.
     std::vector<GrammarPlan> grammarPlans;
@@ -64,7 +69,8 @@ KernelPackage compileProgram(const Program& program, const CompileOptions& optio
                             grammar.name, sweep.window.x, sweep.window.y, sweep.window.z);
             plan.sweeps.push_back(
                 planSweep(program.grammars[grammar.programIndex], sweep, uint32_t(package.kernels.size())));
-            package.kernels.push_back(makeKernel(name, origin, sweepKernelSource(grammar, sweep, name, sourceName)));
+            package.kernels.push_back(makeKernel(name, origin, sweepDispatchShape(sweep),
+                                                 sweepKernelSource(grammar, sweep, name, sourceName)));
         }
         grammarPlans.push_back(std::move(plan));
     }

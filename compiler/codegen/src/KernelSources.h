@@ -2,15 +2,29 @@
 // Generated GLSL for each kind of kernel, built from the templates in compiler/shaders.
 #include "voxc/ir/Ir.h"
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 
 namespace voxc::codegen {
 
+// How a kernel's invocations cover the anchors of a dispatch: Kernel::localSize and
+// Kernel::anchorsPerInvocation, which the generated source repeats as its layout and
+// ANCHORS_PER_INVOCATION.
+struct DispatchShape {
+    uint32_t localSize[3];
+    uint32_t anchorsPerInvocation[3];
+};
+
+// The DISPATCH_SHAPE section of a template: the local size layout and ANCHORS_PER_INVOCATION.
+std::string dispatchShapeGlsl(const DispatchShape& shape);
+
 // `sourceName` is how comments name the .vox file (its file name, so output does not
 // depend on the directory it was compiled from).
+DispatchShape startDispatchShape(const ir::IrModule& module);
 std::string startKernelSource(const ir::IrModule& module, std::string_view sourceName);
 
+DispatchShape sweepDispatchShape(const ir::IrSweep& sweep);
 std::string sweepKernelSource(const ir::IrGrammar& grammar, const ir::IrSweep& sweep, std::string_view kernelName,
                               std::string_view sourceName);
 

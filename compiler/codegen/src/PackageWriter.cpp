@@ -24,7 +24,8 @@ std::string spirvPath(const Kernel& k) { return "kernels/" + k.name + ".spv"; }
 // The interface every kernel declares in compiler/shaders/common.glsl.
 Json bindings() {
     return Json::array({Json{{"binding", kBindingVoxels}, {"name", "density"}, {"type", "float[]"}},
-                        Json{{"binding", kBindingChunkTable}, {"name", "chunkSlot"}, {"type", "int[]"}}});
+                        Json{{"binding", kBindingChunkTable}, {"name", "chunkSlot"}, {"type", "int[]"}},
+                        Json{{"binding", kBindingNoiseTables}, {"name", "perlinPermutation"}, {"type", "int[256]"}}});
 }
 
 Json pushConstants() {
@@ -43,6 +44,8 @@ Json kernelJson(const Kernel& k) {
                 {"glsl", glslPath(k)},
                 {"spv", spirvPath(k)},
                 {"local_size", Json::array({k.localSize[0], k.localSize[1], k.localSize[2]})},
+                {"anchors_per_invocation",
+                 Json::array({k.anchorsPerInvocation[0], k.anchorsPerInvocation[1], k.anchorsPerInvocation[2]})},
                 {"bindings", bindings()},
                 {"push_constants", pushConstants()}};
 }

@@ -8,23 +8,37 @@
 
 namespace voxc::codegen {
 
+DispatchShape startDispatchShape(const ir::IrModule& module) {
+    // A workgroup of 8 x 8 columns; each invocation walks its whole column along y.
+    return DispatchShape{{8, 1, 8}, {1, uint32_t(module.world.size.y), 1}};
+}
+
 std::string startKernelSource(const ir::IrModule& module, std::string_view sourceName) {
     std::string header = fmt::format("voxc generated kernel \"start\": the start state of {}.\n", sourceName);
-    std::string shapes;
+    std::string columns, shapes;
     if (module.start.empty()) {
         header += "The start block is empty: the grid starts as air.\n";
         shapes = "// No shapes: every voxel stays air.\n";
     } else {
         header += "Shapes in order; each overwrites the density where it is solid:\n";
     }
-    for (const StartShape& shape : module.start) {
+    for (size_t i = 0; i < module.start.size(); ++i) {
+        const StartShape& shape = module.start[i];
         const ShapeInfo& info = shapeInfo(shape.kind);
         const std::string where = fmt::format("{}:{}:{}", sourceName, shape.loc.line, shape.loc.column);
         header += fmt::format("  {} value {} ({})\n", info.name, glslFloat(shape.value), where);
         shapes += fmt::format("// {} ({})\n{{\n", info.name, where);
+        if (info.columnGlsl) {
+            columns += fmt::format("float column{} = {}; // {} ({})\n", i, info.columnGlsl(shape), info.name, where);
+            shapes += fmt::format("    float column = column{};\n", i);
+        }
         shapes += prefixLines(info.glsl(shape), "    ") + "}\n";
     }
-    return instantiateTemplate("start.glsl", {{"HEADER", prefixLines(header, "// ")}, {"SHAPES", shapes}});
+    if (columns.empty()) columns = "// No shape has a per-column value.\n";
+    return instantiateTemplate("start.glsl", {{"HEADER", prefixLines(header, "// ")},
+                                              {"DISPATCH_SHAPE", dispatchShapeGlsl(startDispatchShape(module))},
+                                              {"COLUMN_VALUES", columns},
+                                              {"SHAPES", shapes}});
 }
 
 } // namespace voxc::codegen

@@ -7,6 +7,9 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
+#include <map>
+
 namespace voxc::codegen {
 
 namespace {
@@ -79,20 +82,12 @@ std::string header(const IrGrammar& g, const IrSweep& sweep, std::string_view ke
 }
 
 std::string ruleTable(const IrGrammar& g, const IrSweep& sweep, std::string_view src) {
-    std::string t = "// The live rules of this sweep in declaration order:\n";
-    std::vector<std::string> priorities, weights, probabilities;
+    std::string t = "// The live rules of this sweep in declaration order (matchedN, weightN below):\n";
     for (uint32_t r = 0; r < sweep.rules.size(); ++r) {
         const IrRule& rule = sweep.rules[r];
         t += fmt::format("//   {}: {} (rule {} of grammar {}, {})\n", r, rule.name, rule.ruleIndex, g.name,
                          where(src, rule.loc));
-        priorities.push_back(fmt::format("{}", rule.priority));
-        weights.push_back(fmt::format("{}u", rule.weightUnits));
-        probabilities.push_back(fmt::format("{}u", rule.probabilityUnits));
     }
-    t += fmt::format("const int RULE_COUNT = {};\n", sweep.rules.size());
-    t += fmt::format("const int RULE_PRIORITY[RULE_COUNT] = int[]({});\n", fmt::join(priorities, ", "));
-    t += fmt::format("const uint RULE_WEIGHT_UNITS[RULE_COUNT] = uint[]({});\n", fmt::join(weights, ", "));
-    t += fmt::format("const uint RULE_PROBABILITY_UNITS[RULE_COUNT] = uint[]({});\n", fmt::join(probabilities, ", "));
     if (g.clampMin || g.clampMax) {
         // The same comparisons as std::max(v, min) then std::min(v, max) in voxc::applyTransform.
         t += "\n// The grammar's clamp, applied to every written value as the CPU does it.\n";
@@ -104,34 +99,61 @@ std::string ruleTable(const IrGrammar& g, const IrSweep& sweep, std::string_view
     return t;
 }
 
-std::string loadWindow(const IrSweep& sweep) {
-    const glm::ivec3 w = sweep.window;
-    std::string s = fmt::format("// Window {}: cell i sits at anchor + (i % {}, i / {} % {}, i / {}).\n", printVec(w),
-                                w.x, w.x, w.y, w.x * w.y);
-    std::vector<uint32_t> unused;
+// Cells with tests, in the order the kernel reads them: those more rules test first and, among
+// them, those with fewer distinct predicates (more selective), so a window that matches nothing
+// is usually rejected after its first reads.
+std::vector<uint32_t> testOrder(const IrSweep& sweep) {
+    std::vector<uint32_t> order, users(sweep.cells.size(), 0);
     for (uint32_t c = 0; c < sweep.cells.size(); ++c) {
-        const IrCell& cell = sweep.cells[c];
-        if (cell.access == CellAccess::None) {
-            unused.push_back(c);
-            continue;
-        }
-        s += fmt::format("int address{} = voxelAddress(anchor + ivec3({}, {}, {}));\n", c, cell.offset.x, cell.offset.y,
-                         cell.offset.z);
-        if (cell.access == CellAccess::Load) s += fmt::format("float cell{0} = voxels.density[address{0}];\n", c);
+        for (const IrRule& rule : sweep.rules) users[c] += rule.needs[c].empty() ? 0 : 1;
+        if (!sweep.cells[c].tests.empty()) order.push_back(c);
     }
-    if (!unused.empty())
-        s += fmt::format("// No live rule reads or writes cell{} {}.\n", unused.size() == 1 ? "" : "s", fmt::join(unused, ", "));
-    return s;
+    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+        if (users[a] != users[b]) return users[a] > users[b];
+        return sweep.cells[a].tests.size() < sweep.cells[b].tests.size();
+    });
+    return order;
 }
 
-std::string passMasks(const IrSweep& sweep) {
-    std::string s;
-    for (uint32_t c = 0; c < sweep.cells.size(); ++c) {
+std::string cellAddress(const IrCell& cell) {
+    return fmt::format("windowCellAddress(window, ivec3({}, {}, {}))", cell.offset.x, cell.offset.y, cell.offset.z);
+}
+
+// Reads the window's tested cells one at a time, each only while a rule that tests it can still
+// match, and narrows `matchedN` (rule N matches while every cell read so far has all the bits
+// it needs). The order changes which cells are read, never which rules match.
+std::string matchWindow(const IrSweep& sweep, std::string_view src) {
+    const glm::ivec3 w = sweep.window;
+    std::string s = fmt::format("// Window {}: cell i sits at anchor + (i % {}, i / {} % {}, i / {}).\n", printVec(w), w.x,
+                                w.x, w.y, w.x * w.y);
+    s += fmt::format("WindowAddressing window = windowAddressing(anchor, ivec3({}, {}, {}));\n", w.x, w.y, w.z);
+    std::vector<uint32_t> used, unused;
+    for (uint32_t c = 0; c < sweep.cells.size(); ++c)
+        (sweep.cells[c].access == CellAccess::None ? unused : used).push_back(c);
+    for (uint32_t c : used) s += fmt::format("int address{0} = 0;\nfloat cell{0} = 0.0;\n", c);
+    if (!unused.empty())
+        s += fmt::format("// No live rule reads or writes cell{} {}.\n", unused.size() == 1 ? "" : "s",
+                         fmt::join(unused, ", "));
+
+    s += "\n// The rules' symbols; a rule matches when every cell has all the bits the rule needs.\n";
+    for (uint32_t r = 0; r < sweep.rules.size(); ++r) {
+        const IrRule& rule = sweep.rules[r];
+        VOXC_ASSERT(rule.needs.size() == sweep.cells.size());
+        s += symbolComment(sweep, rule, fmt::format("{}: {} ({})", r, rule.name, where(src, rule.loc)));
+        s += fmt::format("bool matched{} = true;\n", r);
+    }
+
+    bool firstCell = true;
+    for (uint32_t c : testOrder(sweep)) {
         const IrCell& cell = sweep.cells[c];
-        if (cell.tests.empty()) continue;
         VOXC_ASSERT(cell.access == CellAccess::Load);
-        if (s.empty())
-            s = "// Each distinct predicate of a cell is evaluated once, into one bit of the cell's pass mask.\n";
+        std::vector<std::string> testers;
+        for (uint32_t r = 0; r < sweep.rules.size(); ++r)
+            if (!sweep.rules[r].needs[c].empty()) testers.push_back(fmt::format("matched{}", r));
+        s += fmt::format("\n// Cell {} {}: each distinct predicate is one bit of its pass mask.\n", c,
+                         printCell(cell.offset));
+        std::string body = fmt::format("address{0} = {1};\ncell{0} = voxels.density[address{0}];\n", c,
+                                       cellAddress(cell));
         for (uint32_t word = 0; word < maskCount(cell); ++word) {
             const std::string name = maskName(cell, c, word);
             const uint32_t first = word * kBitsPerMask;
@@ -140,38 +162,78 @@ std::string passMasks(const IrSweep& sweep) {
                 const Predicate& p = cell.tests[b];
                 const std::string test = symbolOpInfo(p.op).glsl(fmt::format("cell{}", c), glslFloat(p.value));
                 const std::string lead =
-                    b == first ? fmt::format("uint {} = ", name) : std::string(name.size() + 6, ' ');
-                s += fmt::format("{}{}({} ? 0x{:x}u : 0u){} // bit {}: {}\n", lead, b == first ? "" : "| ", test,
-                                 1u << (b - first), b + 1 == last ? ";" : "", b - first, printPredicate(p));
+                    b == first ? fmt::format("uint {} = ", name) : std::string(name.size() + 6, ' ') + "| ";
+                body += fmt::format("{}({} ? 0x{:x}u : 0u){} // bit {}: {}\n", lead, test, 1u << (b - first),
+                                    b + 1 == last ? ";" : "", b - first, printPredicate(p));
             }
         }
-    }
-    return s.empty() ? s : s + "\n";
-}
-
-std::string matchRules(const IrSweep& sweep, std::string_view src) {
-    std::string s = "// A rule matches when every cell has all the bits the rule needs.\nbool matched[RULE_COUNT];\n";
-    for (uint32_t r = 0; r < sweep.rules.size(); ++r) {
-        const IrRule& rule = sweep.rules[r];
-        VOXC_ASSERT(rule.needs.size() == sweep.cells.size());
-        s += symbolComment(sweep, rule, fmt::format("{}: {} ({})", r, rule.name, where(src, rule.loc)));
-        std::vector<std::string> tests;
-        for (uint32_t c = 0; c < sweep.cells.size(); ++c) {
-            std::vector<uint32_t> words(maskCount(sweep.cells[c]), 0u);
-            for (uint32_t bit : rule.needs[c])
-                words[bit / kBitsPerMask] |= 1u << (bit % kBitsPerMask);
+        for (uint32_t r = 0; r < sweep.rules.size(); ++r) {
+            std::vector<uint32_t> words(maskCount(cell), 0u);
+            for (uint32_t bit : sweep.rules[r].needs[c]) words[bit / kBitsPerMask] |= 1u << (bit % kBitsPerMask);
             for (uint32_t word = 0; word < words.size(); ++word)
                 if (words[word] != 0)
-                    tests.push_back(fmt::format("({} & 0x{:x}u) == 0x{:x}u", maskName(sweep.cells[c], c, word),
-                                                words[word], words[word]));
+                    body += fmt::format("matched{0} = matched{0} && ({1} & 0x{2:x}u) == 0x{2:x}u;\n", r,
+                                        maskName(cell, c, word), words[word]);
         }
-        const std::string lead = fmt::format("matched[{}] = ", r);
-        if (tests.empty()) s += lead + "true;\n";
-        for (size_t i = 0; i < tests.size(); ++i)
-            s += fmt::format("{}{}{}\n", i == 0 ? lead : std::string(lead.size() - 3, ' ') + "&& ", tests[i],
-                             i + 1 == tests.size() ? ";" : "");
+        if (firstCell) {
+            s += body;
+        } else {
+            s += fmt::format("if ({}) {{\n{}}}\n", fmt::join(testers, " || "), prefixLines(body, "    "));
+        }
+        firstCell = false;
     }
     return s;
+}
+
+// voxc::chooseRule unrolled over the rule table: every rule a scalar, no arrays (drivers that
+// keep arrays in memory, such as llvmpipe, pay for each indexed access).
+std::string chooseRule(const IrSweep& sweep) {
+    const uint32_t n = uint32_t(sweep.rules.size());
+    std::string s = "// voxc::chooseRule: the highest priority among the matched rules wins; equal priorities are\n"
+                    "// drawn by weight in declaration order; the chosen rule then fires with its probability.\n";
+    for (uint32_t r = 0; r < n; ++r)
+        s += fmt::format("uint weight{0} = matched{0} ? {1}u : 0u;\n", r, sweep.rules[r].weightUnits);
+
+    // Priority levels, highest first; a matched rule of a level silences every lower level.
+    std::map<int32_t, std::vector<uint32_t>, std::greater<>> levels;
+    for (uint32_t r = 0; r < n; ++r) levels[sweep.rules[r].priority].push_back(r);
+    if (levels.size() > 1) {
+        s += "// Only the highest matched priority competes: a level with a match silences the lower ones.\n";
+        std::vector<uint32_t> lower;
+        for (const auto& [priority, rules] : levels) lower.insert(lower.end(), rules.begin(), rules.end());
+        bool firstLevel = true;
+        for (auto level = levels.begin(); std::next(level) != levels.end(); ++level) {
+            lower.erase(lower.begin(), lower.begin() + ptrdiff_t(level->second.size()));
+            std::vector<std::string> sum, silence;
+            for (uint32_t r : level->second) sum.push_back(fmt::format("weight{}", r));
+            for (uint32_t r : lower) silence.push_back(fmt::format("weight{} = 0u;", r));
+            s += fmt::format("{}if ({} != 0u) {{ // priority {}\n    {}\n", firstLevel ? "" : "} else ",
+                             fmt::join(sum, " + "), level->first, fmt::join(silence, " "));
+            firstLevel = false;
+        }
+        s += "}\n";
+    }
+
+    std::vector<std::string> all;
+    for (uint32_t r = 0; r < n; ++r) all.push_back(fmt::format("weight{}", r));
+    s += fmt::format("uint total = {};\nint chosen = -1;\nif (total != 0u) {{\n", fmt::join(all, " + "));
+    s += "    uint target = ruleChoiceDraw(anchorWorld) % total;\n";
+    s += "    // The first rule whose running weight sum exceeds the target, in declaration order.\n";
+    s += "    uint upTo = weight0;\n    chosen = target < upTo ? 0 : -1;\n";
+    for (uint32_t r = 1; r < n; ++r)
+        s += fmt::format("    upTo += weight{0};\n    if (chosen < 0 && target < upTo) chosen = {0};\n", r);
+    bool certain = true;
+    for (const IrRule& rule : sweep.rules) certain = certain && rule.probabilityUnits >= kProbabilityOne;
+    if (certain) {
+        s += "    // Every rule has probability 1: the draw (< 2^24) always passes, so it is skipped.\n";
+    } else {
+        s += "    uint probability = ";
+        for (uint32_t r = 0; r + 1 < n; ++r)
+            s += fmt::format("chosen == {} ? {}u : ", r, sweep.rules[r].probabilityUnits);
+        s += fmt::format("{}u;\n", sweep.rules[n - 1].probabilityUnits);
+        s += "    if (probabilityDraw(anchorWorld) >= probability) chosen = -1;\n";
+    }
+    return s + "}\n";
 }
 
 std::string applyRule(const IrGrammar& g, const IrSweep& sweep, std::string_view src) {
@@ -189,6 +251,12 @@ std::string applyRule(const IrGrammar& g, const IrSweep& sweep, std::string_view
             if (!info.writes) continue;
             VOXC_ASSERT(sweep.cells[c].access != CellAccess::None);
             writes = true;
+            // matchWindow read only the cells this rule tests; fetch the others it transforms.
+            if (rule.needs[c].empty()) {
+                s += fmt::format("    address{} = {};\n", c, cellAddress(sweep.cells[c]));
+                if (sweep.cells[c].access == CellAccess::Load)
+                    s += fmt::format("    cell{0} = voxels.density[address{0}];\n", c);
+            }
             // `precise` keeps the value exactly what the interpreter's float arithmetic gives.
             s += fmt::format("    precise float next{} = {}; // {} {}\n", c,
                              info.glsl(fmt::format("cell{}", c), glslFloat(t.value)), printCell(sweep.cells[c].offset),
@@ -204,15 +272,22 @@ std::string applyRule(const IrGrammar& g, const IrSweep& sweep, std::string_view
 
 } // namespace
 
+DispatchShape sweepDispatchShape(const IrSweep&) {
+    // A workgroup of 8 x 8 anchors in x and y, one anchor per invocation (see sweep.glsl).
+    return DispatchShape{{8, 8, 1}, {1, 1, 1}};
+}
+
 std::string sweepKernelSource(const IrGrammar& grammar, const IrSweep& sweep, std::string_view kernelName,
                               std::string_view sourceName) {
     const std::string headerComment = header(grammar, sweep, kernelName, sourceName);
-    if (sweep.rules.empty()) return instantiateTemplate("noop_sweep.glsl", {{"HEADER", headerComment}});
+    const std::string shape = dispatchShapeGlsl(sweepDispatchShape(sweep));
+    if (sweep.rules.empty())
+        return instantiateTemplate("noop_sweep.glsl", {{"HEADER", headerComment}, {"DISPATCH_SHAPE", shape}});
     return instantiateTemplate("sweep.glsl", {{"HEADER", headerComment},
+                                              {"DISPATCH_SHAPE", shape},
                                               {"RULE_TABLE", ruleTable(grammar, sweep, sourceName)},
-                                              {"LOAD_WINDOW", loadWindow(sweep)},
-                                              {"PASS_MASKS", passMasks(sweep)},
-                                              {"MATCH_RULES", matchRules(sweep, sourceName)},
+                                              {"MATCH_WINDOW", matchWindow(sweep, sourceName)},
+                                              {"CHOOSE_RULE", chooseRule(sweep)},
                                               {"APPLY_RULE", applyRule(grammar, sweep, sourceName)}});
 }
 

@@ -36,6 +36,9 @@ void validatePackage(const KernelPackage& package) {
             packageError(fmt::format("kernel '{}' has no SPIR-V", kernel.name));
         if (kernel.localSize[0] == 0 || kernel.localSize[1] == 0 || kernel.localSize[2] == 0)
             packageError(fmt::format("kernel '{}' has a zero local size", kernel.name));
+        if (kernel.anchorsPerInvocation[0] == 0 || kernel.anchorsPerInvocation[1] == 0 ||
+            kernel.anchorsPerInvocation[2] == 0)
+            packageError(fmt::format("kernel '{}' has zero anchors per invocation", kernel.name));
     }
     const auto checkKernel = [&](uint32_t index) {
         if (index >= package.kernels.size())
@@ -106,11 +109,14 @@ bool DispatchCursor::expandNextStep() {
 void DispatchCursor::appendPhase(uint32_t kernel, int32_t iteration, int32_t sweep, glm::ivec3 start,
                                  glm::ivec3 step, glm::ivec3 count) {
     if (count.x <= 0 || count.y <= 0 || count.z <= 0) return; // nothing to do; a dispatch of zero is not allowed
-    const uint32_t* local = package_.kernels[kernel].localSize;
+    const Kernel& k = package_.kernels[kernel];
+    // Anchors one workgroup covers along each axis.
+    uint64_t perGroup[3];
+    for (int a = 0; a < 3; ++a) perGroup[a] = uint64_t(k.localSize[a]) * k.anchorsPerInvocation[a];
     // Anchors per piece along each axis: as many as maxGroups workgroups cover.
     glm::ivec3 piece;
     for (int a = 0; a < 3; ++a)
-        piece[a] = int32_t(std::min<uint64_t>(uint64_t(maxGroups_[a]) * local[a], uint64_t(count[a])));
+        piece[a] = int32_t(std::min<uint64_t>(uint64_t(maxGroups_[a]) * perGroup[a], uint64_t(count[a])));
     for (int32_t oz = 0; oz < count.z; oz += piece.z)
         for (int32_t oy = 0; oy < count.y; oy += piece.y)
             for (int32_t ox = 0; ox < count.x; ox += piece.x) {
@@ -124,7 +130,7 @@ void DispatchCursor::appendPhase(uint32_t kernel, int32_t iteration, int32_t swe
                 setXyz(d.push.anchorStart, start + offset * step, 0);
                 setXyz(d.push.anchorStep, step, 0);
                 setXyz(d.push.anchorCount, n, 0);
-                for (int a = 0; a < 3; ++a) d.groups[a] = (uint32_t(n[a]) + local[a] - 1) / local[a];
+                for (int a = 0; a < 3; ++a) d.groups[a] = uint32_t((uint64_t(n[a]) + perGroup[a] - 1) / perGroup[a]);
                 step_.push_back(d);
             }
 }

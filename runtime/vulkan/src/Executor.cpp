@@ -3,6 +3,7 @@
 #include "ContextImpl.h"
 #include "DeviceBuffer.h"
 #include "KernelPipelines.h"
+#include "voxc/builtins/Shapes.h"
 #include "voxc/core/Errors.h"
 #include "voxc/vulkan/DispatchPlan.h"
 
@@ -10,6 +11,7 @@
 
 #include <chrono>
 #include <cstring>
+#include <span>
 
 namespace voxc {
 
@@ -62,7 +64,7 @@ struct VulkanExecutor::Impl {
     std::array<uint32_t, 3> maxGroups{};
     bool staged = false; // results come back through `readback` instead of a mapped voxel buffer
     KernelPipelines pipelines;
-    DeviceBuffer voxels, chunkTable, readback;
+    DeviceBuffer voxels, chunkTable, noiseTables, readback;
     VkCommandPool commandPool = VK_NULL_HANDLE;
     Frame frames[2];
     double setupMs = 0;
@@ -74,6 +76,8 @@ struct VulkanExecutor::Impl {
 
     void checkLimits() const;
     void createBuffers();
+    // A read-only int buffer with `values`, ready for every kernel.
+    DeviceBuffer createTable(const std::vector<int32_t>& values);
     void createFrames();
     void submit(Frame& frame);
     void wait(Frame& frame);
@@ -86,6 +90,7 @@ VulkanExecutor::Impl::~Impl() {
         if (frame.fence) ctx.api.vkDestroyFence(ctx.device, frame.fence, nullptr);
     if (commandPool) ctx.api.vkDestroyCommandPool(ctx.device, commandPool, nullptr);
     destroyBuffer(ctx, readback);
+    destroyBuffer(ctx, noiseTables);
     destroyBuffer(ctx, chunkTable);
     destroyBuffer(ctx, voxels);
     destroyPipelines(ctx, pipelines);
@@ -104,41 +109,50 @@ void VulkanExecutor::Impl::checkLimits() const {
 
 void VulkanExecutor::Impl::createBuffers() {
     const VkDeviceSize voxelBytes = VkDeviceSize(layout.chunkTotal()) * layout.chunkVoxels() * sizeof(float);
-    const std::vector<int32_t> table = layout.chunkTable();
-    const VkDeviceSize tableBytes = table.size() * sizeof(int32_t);
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    voxels = staged ? createBuffer(ctx, voxelBytes, storage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Device)
+                    : createBuffer(ctx, voxelBytes, storage, MemoryUse::HostAccess);
+    if (staged) readback = createBuffer(ctx, voxelBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostAccess);
+    const std::vector<int32_t> table = layout.chunkTable();
+    chunkTable = createTable(table);
+    const std::span<const int, 256> permutation = perlinPermutation();
+    noiseTables = createTable(std::vector<int32_t>(permutation.begin(), permutation.end()));
+}
 
+DeviceBuffer VulkanExecutor::Impl::createTable(const std::vector<int32_t>& values) {
+    const VkDeviceSize bytes = values.size() * sizeof(int32_t);
+    const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     if (!staged) {
-        voxels = createBuffer(ctx, voxelBytes, storage, MemoryUse::HostAccess);
-        chunkTable = createBuffer(ctx, tableBytes, storage, MemoryUse::HostAccess);
-        std::memcpy(chunkTable.mapped, table.data(), tableBytes);
-        flushForDevice(ctx, chunkTable); // the queue submit then makes the host write visible
-        return;
+        DeviceBuffer table = createBuffer(ctx, bytes, storage, MemoryUse::HostAccess);
+        std::memcpy(table.mapped, values.data(), bytes);
+        flushForDevice(ctx, table); // the queue submit then makes the host write visible
+        return table;
     }
-    voxels = createBuffer(ctx, voxelBytes, storage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Device);
-    chunkTable = createBuffer(ctx, tableBytes, storage, MemoryUse::Device);
-    readback = createBuffer(ctx, voxelBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostAccess);
-
-    DeviceBuffer upload = createBuffer(ctx, tableBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::HostAccess);
+    DeviceBuffer table = createBuffer(ctx, bytes, storage, MemoryUse::Device);
+    DeviceBuffer upload{};
     try {
-        std::memcpy(upload.mapped, table.data(), tableBytes);
+        upload = createBuffer(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::HostAccess);
+        std::memcpy(upload.mapped, values.data(), bytes);
         flushForDevice(ctx, upload);
         Frame& frame = frames[0];
         VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
         begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+        check(ctx.api.vkResetCommandBuffer(frame.cmd, 0), "vkResetCommandBuffer");
         check(ctx.api.vkBeginCommandBuffer(frame.cmd, &begin), "vkBeginCommandBuffer");
-        const VkBufferCopy region{0, 0, tableBytes};
-        ctx.api.vkCmdCopyBuffer(frame.cmd, upload.buffer, chunkTable.buffer, 1, &region);
+        const VkBufferCopy region{0, 0, bytes};
+        ctx.api.vkCmdCopyBuffer(frame.cmd, upload.buffer, table.buffer, 1, &region);
         // Its second scope covers later submissions too, so every kernel sees the table.
-        barrier(ctx.api, frame.cmd, chunkTable.buffer, kTransferWrite, kShaderRead);
+        barrier(ctx.api, frame.cmd, table.buffer, kTransferWrite, kShaderRead);
         check(ctx.api.vkEndCommandBuffer(frame.cmd), "vkEndCommandBuffer");
         submit(frame);
         wait(frame);
     } catch (...) {
         destroyBuffer(ctx, upload);
+        destroyBuffer(ctx, table);
         throw;
     }
     destroyBuffer(ctx, upload);
+    return table;
 }
 
 void VulkanExecutor::Impl::createFrames() {
@@ -202,7 +216,7 @@ VulkanExecutor::VulkanExecutor(VulkanContext& context, const KernelPackage& pack
     createPipelines(s.ctx, s.package.kernels, s.pipelines);
     s.createFrames();
     s.createBuffers();
-    bindBuffers(s.ctx, s.pipelines, s.voxels.buffer, s.chunkTable.buffer);
+    bindBuffers(s.ctx, s.pipelines, s.voxels.buffer, s.chunkTable.buffer, s.noiseTables.buffer);
     s.setupMs = millisecondsSince(start);
 }
 

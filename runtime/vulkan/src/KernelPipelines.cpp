@@ -4,18 +4,28 @@
 
 #include <fmt/format.h>
 
+#include <iterator>
+
 namespace voxc::vulkan_detail {
 
+namespace {
+
+// Descriptor set 0 of every kernel (compiler/shaders/common.glsl), all storage buffers.
+constexpr uint32_t kBindings[] = {kBindingVoxels, kBindingChunkTable, kBindingNoiseTables};
+constexpr uint32_t kBindingCount = std::size(kBindings);
+
+} // namespace
+
 void createPipelines(VulkanContext::Impl& ctx, const std::vector<Kernel>& kernels, KernelPipelines& out) {
-    VkDescriptorSetLayoutBinding bindings[2]{};
-    for (uint32_t i = 0; i < 2; ++i) {
-        bindings[i].binding = i == 0 ? kBindingVoxels : kBindingChunkTable;
+    VkDescriptorSetLayoutBinding bindings[kBindingCount]{};
+    for (uint32_t i = 0; i < kBindingCount; ++i) {
+        bindings[i].binding = kBindings[i];
         bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
         bindings[i].descriptorCount = 1;
         bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
     }
     VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    setInfo.bindingCount = 2;
+    setInfo.bindingCount = kBindingCount;
     setInfo.pBindings = bindings;
     check(ctx.api.vkCreateDescriptorSetLayout(ctx.device, &setInfo, nullptr, &out.setLayout),
           "vkCreateDescriptorSetLayout");
@@ -28,7 +38,7 @@ void createPipelines(VulkanContext::Impl& ctx, const std::vector<Kernel>& kernel
     layoutInfo.pPushConstantRanges = &push;
     check(ctx.api.vkCreatePipelineLayout(ctx.device, &layoutInfo, nullptr, &out.layout), "vkCreatePipelineLayout");
 
-    VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2};
+    VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kBindingCount};
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     poolInfo.maxSets = 1;
     poolInfo.poolSizeCount = 1;
@@ -65,18 +75,20 @@ void createPipelines(VulkanContext::Impl& ctx, const std::vector<Kernel>& kernel
     }
 }
 
-void bindBuffers(VulkanContext::Impl& ctx, const KernelPipelines& pipelines, VkBuffer voxels, VkBuffer chunkTable) {
-    VkDescriptorBufferInfo buffers[2] = {{voxels, 0, VK_WHOLE_SIZE}, {chunkTable, 0, VK_WHOLE_SIZE}};
-    VkWriteDescriptorSet writes[2]{};
-    for (uint32_t i = 0; i < 2; ++i) {
+void bindBuffers(VulkanContext::Impl& ctx, const KernelPipelines& pipelines, VkBuffer voxels, VkBuffer chunkTable,
+                 VkBuffer noiseTables) {
+    const VkDescriptorBufferInfo buffers[kBindingCount] = {
+        {voxels, 0, VK_WHOLE_SIZE}, {chunkTable, 0, VK_WHOLE_SIZE}, {noiseTables, 0, VK_WHOLE_SIZE}};
+    VkWriteDescriptorSet writes[kBindingCount]{};
+    for (uint32_t i = 0; i < kBindingCount; ++i) {
         writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
         writes[i].dstSet = pipelines.set;
-        writes[i].dstBinding = i == 0 ? kBindingVoxels : kBindingChunkTable;
+        writes[i].dstBinding = kBindings[i];
         writes[i].descriptorCount = 1;
         writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
         writes[i].pBufferInfo = &buffers[i];
     }
-    ctx.api.vkUpdateDescriptorSets(ctx.device, 2, writes, 0, nullptr);
+    ctx.api.vkUpdateDescriptorSets(ctx.device, kBindingCount, writes, 0, nullptr);
 }
 
 void destroyPipelines(VulkanContext::Impl& ctx, KernelPipelines& p) {

@@ -1,6 +1,6 @@
 #pragma once
 // The compute pipelines of a package and the one descriptor set they share
-// (binding 0: voxels, binding 1: chunk table; push constants: PushBlock).
+// (binding 0: voxels, binding 1: chunk table, binding 2: noise tables; push constants: PushBlock).
 #include "ContextImpl.h"
 #include "voxc/codegen/KernelPackage.h"
 
@@ -19,7 +19,8 @@ struct KernelPipelines {
 // Fills `out` step by step, so destroyPipelines cleans up after a failure part way.
 // A kernel the driver rejects is an InternalError naming the kernel.
 void createPipelines(VulkanContext::Impl& ctx, const std::vector<Kernel>& kernels, KernelPipelines& out);
-void bindBuffers(VulkanContext::Impl& ctx, const KernelPipelines& pipelines, VkBuffer voxels, VkBuffer chunkTable);
+void bindBuffers(VulkanContext::Impl& ctx, const KernelPipelines& pipelines, VkBuffer voxels, VkBuffer chunkTable,
+                 VkBuffer noiseTables);
 void destroyPipelines(VulkanContext::Impl& ctx, KernelPipelines& pipelines);
 
 } // namespace voxc::vulkan_detail

@@ -9,14 +9,13 @@
 //   clean_up (overhang.vox:90:8): priority 0, weight 1000 units, probability 16777216 / 2^24
 
 // One sweep of a grammar: all rules of one window size. One invocation per anchor of the
-// current phase; the windows of one phase never overlap, so every invocation owns its cells.
-// The steps mirror the CPU interpreter: read the window, find the matching rules, choose one
-// (voxc::chooseRule), then apply its transform.
+// current phase; the windows of one phase never overlap, so every invocation owns its cells. The steps mirror the CPU interpreter: read the window, find the matching
+// rules, choose one (voxc::chooseRule), then apply its transform.
 
 // ---- begin common.glsl ----
 // Declarations every voxc kernel shares: the push block (voxc::PushBlock in
-// compiler/codegen/include/voxc/codegen/KernelPackage.h, field for field) and the two
-// storage buffers of descriptor set 0.
+// compiler/codegen/include/voxc/codegen/KernelPackage.h, field for field) and the three
+// storage buffers of descriptor set 0 (kBindingVoxels, kBindingChunkTable, kBindingNoiseTables).
 
 layout(push_constant, std430) uniform PushBlock {
     ivec4 gridOrigin;  // xyz: world coordinate of grid voxel (0,0,0); w: chunk size
@@ -37,6 +36,11 @@ layout(std430, set = 0, binding = 0) buffer Voxels {
 layout(std430, set = 0, binding = 1) readonly buffer ChunkTable {
     int chunkSlot[];
 } chunkTable;
+
+// Ken Perlin's 256-entry permutation (voxc::perlinPermutation), read by perlin.glsl.
+layout(std430, set = 0, binding = 2) readonly buffer NoiseTables {
+    int perlinPermutation[];
+} noiseTables;
 
 // Buffer index of a grid-local voxel, exactly as voxc::ChunkLayout::address computes it.
 // Chunks are aligned to world coordinates and their size is a power of two, so the
@@ -81,16 +85,15 @@ uint anchorHash(uint seed, uint iteration, uint sweep, ivec3 anchorWorld, uint s
 // ---- end random.glsl ----
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+// Each invocation handles this many consecutive anchors of its dispatch per axis
+// (voxc::Kernel::anchorsPerInvocation; the runtime sizes the dispatch by it).
+const ivec3 ANCHORS_PER_INVOCATION = ivec3(1, 1, 1);
 
-// The live rules of this sweep in declaration order:
+// The live rules of this sweep in declaration order (matchedN, weightN below):
 //   0: erode_base (rule 0 of grammar overhang, overhang.vox:45:8)
 //   1: deepen_notch (rule 1 of grammar overhang, overhang.vox:60:8)
 //   2: ledge (rule 2 of grammar overhang, overhang.vox:75:8)
 //   3: clean_up (rule 3 of grammar overhang, overhang.vox:90:8)
-const int RULE_COUNT = 4;
-const int RULE_PRIORITY[RULE_COUNT] = int[](0, 0, 0, 0);
-const uint RULE_WEIGHT_UNITS[RULE_COUNT] = uint[](1000u, 1000u, 1000u, 1000u);
-const uint RULE_PROBABILITY_UNITS[RULE_COUNT] = uint[](16777216u, 16777216u, 16777216u, 16777216u);
 
 // The grammar's clamp, applied to every written value as the CPU does it.
 float clampDensity(float v) {
@@ -99,41 +102,38 @@ float clampDensity(float v) {
     return v;
 }
 
-// voxc::chooseRule: the highest priority among the matched rules wins; equal priorities are
-// drawn by weight in declaration order; the chosen rule then fires with its probability.
-// Returns the index into the rule table above, or -1 when no rule fires.
-int chooseRule(bool matched[RULE_COUNT], ivec3 anchorWorld) {
-    bool found = false;
-    int best = 0;
-    for (int r = 0; r < RULE_COUNT; ++r) {
-        if (!matched[r]) continue;
-        best = found ? max(best, RULE_PRIORITY[r]) : RULE_PRIORITY[r];
-        found = true;
-    }
-    if (!found) return -1;
-
-    uint total = 0u;
-    for (int r = 0; r < RULE_COUNT; ++r)
-        if (matched[r] && RULE_PRIORITY[r] == best) total += RULE_WEIGHT_UNITS[r];
-
-    uint seed = uint(push.gridSize.w);
-    uint iteration = uint(push.chunkBase.w);
-    uint sweep = uint(push.chunkCount.w);
-    uint target = anchorHash(seed, iteration, sweep, anchorWorld, STREAM_RULE_CHOICE) % total;
-    uint accumulated = 0u;
-    int chosen = -1;
-    for (int r = 0; r < RULE_COUNT; ++r) {
-        if (!matched[r] || RULE_PRIORITY[r] != best) continue;
-        accumulated += RULE_WEIGHT_UNITS[r];
-        if (target < accumulated) {
-            chosen = r;
-            break;
-        }
-    }
-    uint draw = anchorHash(seed, iteration, sweep, anchorWorld, STREAM_PROBABILITY) >> 8;
-    return draw < RULE_PROBABILITY_UNITS[chosen] ? chosen : -1;
+// The two draws of voxc::chooseRule at one anchor: which matched rule, and whether it fires.
+uint ruleChoiceDraw(ivec3 anchorWorld) {
+    return anchorHash(uint(push.gridSize.w), uint(push.chunkBase.w), uint(push.chunkCount.w), anchorWorld,
+                      STREAM_RULE_CHOICE);
+}
+uint probabilityDraw(ivec3 anchorWorld) {
+    return anchorHash(uint(push.gridSize.w), uint(push.chunkBase.w), uint(push.chunkCount.w), anchorWorld,
+                      STREAM_PROBABILITY) >> 8;
 }
 
+// Where the cells of a window lie in the voxel buffer. A window inside one chunk (the common
+// case) is addressed from the anchor's address; one straddling a chunk border looks every cell up.
+struct WindowAddressing {
+    ivec3 anchor;
+    int anchorAddress;
+    bool oneChunk;
+};
+
+WindowAddressing windowAddressing(ivec3 anchor, ivec3 size) {
+    int chunkSize = push.gridOrigin.w;
+    ivec3 inside = (push.gridOrigin.xyz + anchor) & (chunkSize - 1);
+    return WindowAddressing(anchor, voxelAddress(anchor), all(lessThanEqual(inside + size, ivec3(chunkSize))));
+}
+
+int windowCellAddress(WindowAddressing window, ivec3 offset) {
+    int chunkSize = push.gridOrigin.w;
+    if (window.oneChunk) return window.anchorAddress + offset.x + chunkSize * (offset.y + chunkSize * offset.z);
+    return voxelAddress(window.anchor + offset);
+}
+
+// One invocation per anchor (ANCHORS_PER_INVOCATION is 1): a loop over several anchors with
+// run-time bounds costs more than it saves on llvmpipe.
 void main() {
     ivec3 id = ivec3(gl_GlobalInvocationID);
     if (any(greaterThanEqual(id, push.anchorCount.xyz))) return;
@@ -141,72 +141,134 @@ void main() {
     ivec3 anchorWorld = push.gridOrigin.xyz + anchor;
 
     // Window [3, 3, 1]: cell i sits at anchor + (i % 3, i / 3 % 3, i / 9).
-    int address0 = voxelAddress(anchor + ivec3(0, 0, 0));
-    float cell0 = voxels.density[address0];
-    int address1 = voxelAddress(anchor + ivec3(1, 0, 0));
-    float cell1 = voxels.density[address1];
-    int address3 = voxelAddress(anchor + ivec3(0, 1, 0));
-    float cell3 = voxels.density[address3];
-    int address4 = voxelAddress(anchor + ivec3(1, 1, 0));
-    float cell4 = voxels.density[address4];
-    int address5 = voxelAddress(anchor + ivec3(2, 1, 0));
-    float cell5 = voxels.density[address5];
-    int address6 = voxelAddress(anchor + ivec3(0, 2, 0));
-    float cell6 = voxels.density[address6];
-    int address7 = voxelAddress(anchor + ivec3(1, 2, 0));
-    float cell7 = voxels.density[address7];
-    int address8 = voxelAddress(anchor + ivec3(2, 2, 0));
-    float cell8 = voxels.density[address8];
+    WindowAddressing window = windowAddressing(anchor, ivec3(3, 3, 1));
+    int address0 = 0;
+    float cell0 = 0.0;
+    int address1 = 0;
+    float cell1 = 0.0;
+    int address3 = 0;
+    float cell3 = 0.0;
+    int address4 = 0;
+    float cell4 = 0.0;
+    int address5 = 0;
+    float cell5 = 0.0;
+    int address6 = 0;
+    float cell6 = 0.0;
+    int address7 = 0;
+    float cell7 = 0.0;
+    int address8 = 0;
+    float cell8 = 0.0;
     // No live rule reads or writes cell 2.
 
-    // Each distinct predicate of a cell is evaluated once, into one bit of the cell's pass mask.
-    uint pass0 = ((cell0 >= 0.5) ? 0x1u : 0u); // bit 0: GEQ 0.5
-    uint pass1 = ((cell1 < 0.5) ? 0x1u : 0u) // bit 0: LT 0.5
-               | ((cell1 >= 0.5) ? 0x2u : 0u); // bit 1: GEQ 0.5
-    uint pass3 = ((cell3 >= 0.5) ? 0x1u : 0u); // bit 0: GEQ 0.5
-    uint pass4 = ((cell4 < 0.5) ? 0x1u : 0u) // bit 0: LT 0.5
-               | ((cell4 >= 0.5) ? 0x2u : 0u); // bit 1: GEQ 0.5
-    uint pass6 = ((cell6 >= 0.5) ? 0x1u : 0u); // bit 0: GEQ 0.5
-    uint pass7 = ((cell7 < 0.5) ? 0x1u : 0u) // bit 0: LT 0.5
-               | ((cell7 >= 0.5) ? 0x2u : 0u); // bit 1: GEQ 0.5
-    uint pass8 = ((cell8 >= 0.5) ? 0x1u : 0u); // bit 0: GEQ 0.5
-
-    // A rule matches when every cell has all the bits the rule needs.
-    bool matched[RULE_COUNT];
+    // The rules' symbols; a rule matches when every cell has all the bits the rule needs.
     // 0: erode_base (overhang.vox:45:8): (0, 0, 0) GEQ 0.5 | (1, 0, 0) LT 0.5 | (0, 1, 0) GEQ 0.5 |
     //    (1, 1, 0) LT 0.5 | (0, 2, 0) GEQ 0.5 | (1, 2, 0) LT 0.5
-    matched[0] = (pass0 & 0x1u) == 0x1u
-              && (pass1 & 0x1u) == 0x1u
-              && (pass3 & 0x1u) == 0x1u
-              && (pass4 & 0x1u) == 0x1u
-              && (pass6 & 0x1u) == 0x1u
-              && (pass7 & 0x1u) == 0x1u;
+    bool matched0 = true;
     // 1: deepen_notch (overhang.vox:60:8): (0, 0, 0) GEQ 0.5 | (1, 0, 0) GEQ 0.5 | (0, 1, 0) GEQ 0.5 |
     //    (1, 1, 0) LT 0.5 | (0, 2, 0) GEQ 0.5 | (1, 2, 0) GEQ 0.5
-    matched[1] = (pass0 & 0x1u) == 0x1u
-              && (pass1 & 0x2u) == 0x2u
-              && (pass3 & 0x1u) == 0x1u
-              && (pass4 & 0x1u) == 0x1u
-              && (pass6 & 0x1u) == 0x1u
-              && (pass7 & 0x2u) == 0x2u;
+    bool matched1 = true;
     // 2: ledge (overhang.vox:75:8): (1, 0, 0) LT 0.5 | (0, 1, 0) GEQ 0.5 | (1, 1, 0) LT 0.5 |
     //    (0, 2, 0) GEQ 0.5 | (1, 2, 0) GEQ 0.5 | (2, 2, 0) GEQ 0.5
-    matched[2] = (pass1 & 0x1u) == 0x1u
-              && (pass3 & 0x1u) == 0x1u
-              && (pass4 & 0x1u) == 0x1u
-              && (pass6 & 0x1u) == 0x1u
-              && (pass7 & 0x2u) == 0x2u
-              && (pass8 & 0x1u) == 0x1u;
+    bool matched2 = true;
     // 3: clean_up (overhang.vox:90:8): (0, 0, 0) GEQ 0.5 | (1, 0, 0) LT 0.5 | (0, 1, 0) GEQ 0.5 |
     //    (1, 1, 0) GEQ 0.5 | (0, 2, 0) GEQ 0.5 | (1, 2, 0) GEQ 0.5
-    matched[3] = (pass0 & 0x1u) == 0x1u
-              && (pass1 & 0x1u) == 0x1u
-              && (pass3 & 0x1u) == 0x1u
-              && (pass4 & 0x2u) == 0x2u
-              && (pass6 & 0x1u) == 0x1u
-              && (pass7 & 0x2u) == 0x2u;
+    bool matched3 = true;
 
-    int chosen = chooseRule(matched, anchorWorld);
+    // Cell 3 (0, 1, 0): each distinct predicate is one bit of its pass mask.
+    address3 = windowCellAddress(window, ivec3(0, 1, 0));
+    cell3 = voxels.density[address3];
+    uint pass3 = ((cell3 >= 0.5) ? 0x1u : 0u); // bit 0: GEQ 0.5
+    matched0 = matched0 && (pass3 & 0x1u) == 0x1u;
+    matched1 = matched1 && (pass3 & 0x1u) == 0x1u;
+    matched2 = matched2 && (pass3 & 0x1u) == 0x1u;
+    matched3 = matched3 && (pass3 & 0x1u) == 0x1u;
+
+    // Cell 6 (0, 2, 0): each distinct predicate is one bit of its pass mask.
+    if (matched0 || matched1 || matched2 || matched3) {
+        address6 = windowCellAddress(window, ivec3(0, 2, 0));
+        cell6 = voxels.density[address6];
+        uint pass6 = ((cell6 >= 0.5) ? 0x1u : 0u); // bit 0: GEQ 0.5
+        matched0 = matched0 && (pass6 & 0x1u) == 0x1u;
+        matched1 = matched1 && (pass6 & 0x1u) == 0x1u;
+        matched2 = matched2 && (pass6 & 0x1u) == 0x1u;
+        matched3 = matched3 && (pass6 & 0x1u) == 0x1u;
+    }
+
+    // Cell 1 (1, 0, 0): each distinct predicate is one bit of its pass mask.
+    if (matched0 || matched1 || matched2 || matched3) {
+        address1 = windowCellAddress(window, ivec3(1, 0, 0));
+        cell1 = voxels.density[address1];
+        uint pass1 = ((cell1 < 0.5) ? 0x1u : 0u) // bit 0: LT 0.5
+                   | ((cell1 >= 0.5) ? 0x2u : 0u); // bit 1: GEQ 0.5
+        matched0 = matched0 && (pass1 & 0x1u) == 0x1u;
+        matched1 = matched1 && (pass1 & 0x2u) == 0x2u;
+        matched2 = matched2 && (pass1 & 0x1u) == 0x1u;
+        matched3 = matched3 && (pass1 & 0x1u) == 0x1u;
+    }
+
+    // Cell 4 (1, 1, 0): each distinct predicate is one bit of its pass mask.
+    if (matched0 || matched1 || matched2 || matched3) {
+        address4 = windowCellAddress(window, ivec3(1, 1, 0));
+        cell4 = voxels.density[address4];
+        uint pass4 = ((cell4 < 0.5) ? 0x1u : 0u) // bit 0: LT 0.5
+                   | ((cell4 >= 0.5) ? 0x2u : 0u); // bit 1: GEQ 0.5
+        matched0 = matched0 && (pass4 & 0x1u) == 0x1u;
+        matched1 = matched1 && (pass4 & 0x1u) == 0x1u;
+        matched2 = matched2 && (pass4 & 0x1u) == 0x1u;
+        matched3 = matched3 && (pass4 & 0x2u) == 0x2u;
+    }
+
+    // Cell 7 (1, 2, 0): each distinct predicate is one bit of its pass mask.
+    if (matched0 || matched1 || matched2 || matched3) {
+        address7 = windowCellAddress(window, ivec3(1, 2, 0));
+        cell7 = voxels.density[address7];
+        uint pass7 = ((cell7 < 0.5) ? 0x1u : 0u) // bit 0: LT 0.5
+                   | ((cell7 >= 0.5) ? 0x2u : 0u); // bit 1: GEQ 0.5
+        matched0 = matched0 && (pass7 & 0x1u) == 0x1u;
+        matched1 = matched1 && (pass7 & 0x2u) == 0x2u;
+        matched2 = matched2 && (pass7 & 0x2u) == 0x2u;
+        matched3 = matched3 && (pass7 & 0x2u) == 0x2u;
+    }
+
+    // Cell 0 (0, 0, 0): each distinct predicate is one bit of its pass mask.
+    if (matched0 || matched1 || matched3) {
+        address0 = windowCellAddress(window, ivec3(0, 0, 0));
+        cell0 = voxels.density[address0];
+        uint pass0 = ((cell0 >= 0.5) ? 0x1u : 0u); // bit 0: GEQ 0.5
+        matched0 = matched0 && (pass0 & 0x1u) == 0x1u;
+        matched1 = matched1 && (pass0 & 0x1u) == 0x1u;
+        matched3 = matched3 && (pass0 & 0x1u) == 0x1u;
+    }
+
+    // Cell 8 (2, 2, 0): each distinct predicate is one bit of its pass mask.
+    if (matched2) {
+        address8 = windowCellAddress(window, ivec3(2, 2, 0));
+        cell8 = voxels.density[address8];
+        uint pass8 = ((cell8 >= 0.5) ? 0x1u : 0u); // bit 0: GEQ 0.5
+        matched2 = matched2 && (pass8 & 0x1u) == 0x1u;
+    }
+
+    // voxc::chooseRule: the highest priority among the matched rules wins; equal priorities are
+    // drawn by weight in declaration order; the chosen rule then fires with its probability.
+    uint weight0 = matched0 ? 1000u : 0u;
+    uint weight1 = matched1 ? 1000u : 0u;
+    uint weight2 = matched2 ? 1000u : 0u;
+    uint weight3 = matched3 ? 1000u : 0u;
+    uint total = weight0 + weight1 + weight2 + weight3;
+    int chosen = -1;
+    if (total != 0u) {
+        uint target = ruleChoiceDraw(anchorWorld) % total;
+        // The first rule whose running weight sum exceeds the target, in declaration order.
+        uint upTo = weight0;
+        chosen = target < upTo ? 0 : -1;
+        upTo += weight1;
+        if (chosen < 0 && target < upTo) chosen = 1;
+        upTo += weight2;
+        if (chosen < 0 && target < upTo) chosen = 2;
+        upTo += weight3;
+        if (chosen < 0 && target < upTo) chosen = 3;
+        // Every rule has probability 1: the draw (< 2^24) always passes, so it is skipped.
+    }
 
     // Apply the chosen rule's transform; NOP cells are left untouched and every written value is clamped.
     if (chosen == 0) { // erode_base (overhang.vox:45:8)
@@ -216,13 +278,19 @@ void main() {
         precise float next3 = (cell3 + -0.5); // (0, 1, 0) ADD -0.5
         voxels.density[address3] = clampDensity(next3);
     } else if (chosen == 2) { // ledge (overhang.vox:75:8)
+        address0 = windowCellAddress(window, ivec3(0, 0, 0));
+        cell0 = voxels.density[address0];
         precise float next0 = (cell0 + -0.5); // (0, 0, 0) ADD -0.5
         voxels.density[address0] = clampDensity(next0);
         precise float next4 = (cell4 + 0.5); // (1, 1, 0) ADD 0.5
         voxels.density[address4] = clampDensity(next4);
     } else if (chosen == 3) { // clean_up (overhang.vox:90:8)
+        address5 = windowCellAddress(window, ivec3(2, 1, 0));
+        cell5 = voxels.density[address5];
         precise float next5 = (cell5 + 0.5); // (2, 1, 0) ADD 0.5
         voxels.density[address5] = clampDensity(next5);
+        address8 = windowCellAddress(window, ivec3(2, 2, 0));
+        cell8 = voxels.density[address8];
         precise float next8 = (cell8 + 0.5); // (2, 2, 0) ADD 0.5
         voxels.density[address8] = clampDensity(next8);
     }

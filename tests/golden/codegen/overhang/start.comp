@@ -4,13 +4,15 @@
 //   fill value 0.0 (overhang.vox:34:3)
 //   box value 1.0 (overhang.vox:36:3)
 
-// The start state: one invocation per grid voxel evaluates the start block's shapes in
-// order over air (density 0), as voxc::startDensity does on the CPU.
+// The start state: every grid voxel gets the start block's shapes in order over air
+// (density 0), as voxc::startDensity does on the CPU. One invocation owns a column of voxels
+// along y, so per-column values (a heightfield's height) are computed once, and the chunk
+// table is consulted once per chunk the column enters instead of once per voxel.
 
 // ---- begin common.glsl ----
 // Declarations every voxc kernel shares: the push block (voxc::PushBlock in
-// compiler/codegen/include/voxc/codegen/KernelPackage.h, field for field) and the two
-// storage buffers of descriptor set 0.
+// compiler/codegen/include/voxc/codegen/KernelPackage.h, field for field) and the three
+// storage buffers of descriptor set 0 (kBindingVoxels, kBindingChunkTable, kBindingNoiseTables).
 
 layout(push_constant, std430) uniform PushBlock {
     ivec4 gridOrigin;  // xyz: world coordinate of grid voxel (0,0,0); w: chunk size
@@ -31,6 +33,11 @@ layout(std430, set = 0, binding = 0) buffer Voxels {
 layout(std430, set = 0, binding = 1) readonly buffer ChunkTable {
     int chunkSlot[];
 } chunkTable;
+
+// Ken Perlin's 256-entry permutation (voxc::perlinPermutation), read by perlin.glsl.
+layout(std430, set = 0, binding = 2) readonly buffer NoiseTables {
+    int perlinPermutation[];
+} noiseTables;
 
 // Buffer index of a grid-local voxel, exactly as voxc::ChunkLayout::address computes it.
 // Chunks are aligned to world coordinates and their size is a power of two, so the
@@ -79,26 +86,10 @@ uint anchorHash(uint seed, uint iteration, uint sweep, ivec3 anchorWorld, uint s
 // multiply-adds, which keeps the GPU bit-identical to the interpreter.
 // Requires random.glsl (mix32).
 
-// Ken Perlin's reference permutation (Improved Noise, 2002).
-const int PERLIN_PERMUTATION[256] = int[256](
-    151, 160, 137, 91, 90, 15, 131, 13, 201, 95, 96, 53, 194, 233, 7, 225,
-    140, 36, 103, 30, 69, 142, 8, 99, 37, 240, 21, 10, 23, 190, 6, 148,
-    247, 120, 234, 75, 0, 26, 197, 62, 94, 252, 219, 203, 117, 35, 11, 32,
-    57, 177, 33, 88, 237, 149, 56, 87, 174, 20, 125, 136, 171, 168, 68, 175,
-    74, 165, 71, 134, 139, 48, 27, 166, 77, 146, 158, 231, 83, 111, 229, 122,
-    60, 211, 133, 230, 220, 105, 92, 41, 55, 46, 245, 40, 244, 102, 143, 54,
-    65, 25, 63, 161, 1, 216, 80, 73, 209, 76, 132, 187, 208, 89, 18, 169,
-    200, 196, 135, 130, 116, 188, 159, 86, 164, 100, 109, 198, 173, 186, 3, 64,
-    52, 217, 226, 250, 124, 123, 5, 202, 38, 147, 118, 126, 255, 82, 85, 212,
-    207, 206, 59, 227, 47, 16, 58, 17, 182, 189, 28, 42, 223, 183, 170, 213,
-    119, 248, 152, 2, 44, 154, 163, 70, 221, 153, 101, 155, 167, 43, 172, 9,
-    129, 22, 39, 253, 19, 98, 108, 110, 79, 113, 224, 232, 178, 185, 112, 104,
-    218, 246, 97, 228, 251, 34, 242, 193, 238, 210, 144, 12, 191, 179, 162, 241,
-    81, 51, 145, 235, 249, 14, 239, 107, 49, 192, 214, 31, 181, 199, 106, 157,
-    184, 84, 204, 176, 115, 121, 50, 45, 127, 4, 150, 254, 138, 236, 205, 93,
-    222, 114, 67, 29, 24, 72, 243, 141, 128, 195, 78, 66, 215, 61, 156, 180);
-
-int perlinPerm(int i) { return PERLIN_PERMUTATION[i & 255]; }
+// Ken Perlin's reference permutation comes from the noise-table buffer (common.glsl), which the
+// runtime fills from voxc::perlinPermutation: one table for both sides. A constant array here
+// would be materialised on every call by some drivers (llvmpipe), costing ~1000x.
+int perlinPerm(int i) { return noiseTables.perlinPermutation[i & 255]; }
 
 float perlinFade(float t) {
     precise float r = t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
@@ -165,23 +156,45 @@ float heightfieldHeight(int worldX, int worldZ, uint seed, float base, float amp
 }
 // ---- end perlin.glsl ----
 
-layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+layout(local_size_x = 8, local_size_y = 1, local_size_z = 8) in;
+// Each invocation handles this many consecutive anchors of its dispatch per axis
+// (voxc::Kernel::anchorsPerInvocation; the runtime sizes the dispatch by it).
+const ivec3 ANCHORS_PER_INVOCATION = ivec3(1, 64, 1);
 
 void main() {
-    ivec3 id = ivec3(gl_GlobalInvocationID);
-    if (any(greaterThanEqual(id, push.anchorCount.xyz))) return;
-    ivec3 local = push.anchorStart.xyz + id * push.anchorStep.xyz;
-    ivec3 world = push.gridOrigin.xyz + local;
+    ivec3 first = ivec3(gl_GlobalInvocationID) * ANCHORS_PER_INVOCATION;
+    if (any(greaterThanEqual(first, push.anchorCount.xyz))) return;
+    ivec3 last = min(first + ANCHORS_PER_INVOCATION, push.anchorCount.xyz);
     uint seed = uint(push.gridSize.w);
+    int chunkSize = push.gridOrigin.w;
 
-    float density = 0.0;
-    // fill (overhang.vox:34:3)
-    {
-        density = 0.0;
+    for (int z = first.z; z < last.z; ++z) {
+        for (int x = first.x; x < last.x; ++x) {
+            ivec3 columnLocal = push.anchorStart.xyz + ivec3(x, first.y, z) * push.anchorStep.xyz;
+            ivec3 world = push.gridOrigin.xyz + columnLocal;
+            // No shape has a per-column value.
+            int address = 0;
+            for (int y = first.y; y < last.y; ++y) {
+                ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                world = push.gridOrigin.xyz + local;
+                // Inside a chunk the next voxel along y (the start dispatch steps by 1) lies chunkSize
+                // entries further on.
+                if (y == first.y || (world.y & (chunkSize - 1)) == 0) {
+                    address = voxelAddress(local);
+                } else {
+                    address += chunkSize;
+                }
+                float density = 0.0;
+                // fill (overhang.vox:34:3)
+                {
+                    density = 0.0;
+                }
+                // box (overhang.vox:36:3)
+                {
+                    if (all(greaterThanEqual(vec3(local), vec3(0.0, 0.0, 0.0))) && all(lessThan(vec3(local), vec3(24.0, 64.0, 64.0)))) density = 1.0;
+                }
+                voxels.density[address] = density;
+            }
+        }
     }
-    // box (overhang.vox:36:3)
-    {
-        if (all(greaterThanEqual(vec3(local), vec3(0.0, 0.0, 0.0))) && all(lessThan(vec3(local), vec3(24.0, 64.0, 64.0)))) density = 1.0;
-    }
-    voxels.density[voxelAddress(local)] = density;
 }

@@ -6,14 +6,13 @@
 //   blend (sample.vox:43:3): priority 0, weight 1000 units, probability 16777216 / 2^24
 
 // One sweep of a grammar: all rules of one window size. One invocation per anchor of the
-// current phase; the windows of one phase never overlap, so every invocation owns its cells.
-// The steps mirror the CPU interpreter: read the window, find the matching rules, choose one
-// (voxc::chooseRule), then apply its transform.
+// current phase; the windows of one phase never overlap, so every invocation owns its cells. The steps mirror the CPU interpreter: read the window, find the matching
+// rules, choose one (voxc::chooseRule), then apply its transform.
 
 // ---- begin common.glsl ----
 // Declarations every voxc kernel shares: the push block (voxc::PushBlock in
-// compiler/codegen/include/voxc/codegen/KernelPackage.h, field for field) and the two
-// storage buffers of descriptor set 0.
+// compiler/codegen/include/voxc/codegen/KernelPackage.h, field for field) and the three
+// storage buffers of descriptor set 0 (kBindingVoxels, kBindingChunkTable, kBindingNoiseTables).
 
 layout(push_constant, std430) uniform PushBlock {
     ivec4 gridOrigin;  // xyz: world coordinate of grid voxel (0,0,0); w: chunk size
@@ -34,6 +33,11 @@ layout(std430, set = 0, binding = 0) buffer Voxels {
 layout(std430, set = 0, binding = 1) readonly buffer ChunkTable {
     int chunkSlot[];
 } chunkTable;
+
+// Ken Perlin's 256-entry permutation (voxc::perlinPermutation), read by perlin.glsl.
+layout(std430, set = 0, binding = 2) readonly buffer NoiseTables {
+    int perlinPermutation[];
+} noiseTables;
 
 // Buffer index of a grid-local voxel, exactly as voxc::ChunkLayout::address computes it.
 // Chunks are aligned to world coordinates and their size is a power of two, so the
@@ -78,49 +82,45 @@ uint anchorHash(uint seed, uint iteration, uint sweep, ivec3 anchorWorld, uint s
 // ---- end random.glsl ----
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+// Each invocation handles this many consecutive anchors of its dispatch per axis
+// (voxc::Kernel::anchorsPerInvocation; the runtime sizes the dispatch by it).
+const ivec3 ANCHORS_PER_INVOCATION = ivec3(1, 1, 1);
 
-// The live rules of this sweep in declaration order:
+// The live rules of this sweep in declaration order (matchedN, weightN below):
 //   0: blend (rule 1 of grammar smooth, sample.vox:43:3)
-const int RULE_COUNT = 1;
-const int RULE_PRIORITY[RULE_COUNT] = int[](0);
-const uint RULE_WEIGHT_UNITS[RULE_COUNT] = uint[](1000u);
-const uint RULE_PROBABILITY_UNITS[RULE_COUNT] = uint[](16777216u);
 
-// voxc::chooseRule: the highest priority among the matched rules wins; equal priorities are
-// drawn by weight in declaration order; the chosen rule then fires with its probability.
-// Returns the index into the rule table above, or -1 when no rule fires.
-int chooseRule(bool matched[RULE_COUNT], ivec3 anchorWorld) {
-    bool found = false;
-    int best = 0;
-    for (int r = 0; r < RULE_COUNT; ++r) {
-        if (!matched[r]) continue;
-        best = found ? max(best, RULE_PRIORITY[r]) : RULE_PRIORITY[r];
-        found = true;
-    }
-    if (!found) return -1;
-
-    uint total = 0u;
-    for (int r = 0; r < RULE_COUNT; ++r)
-        if (matched[r] && RULE_PRIORITY[r] == best) total += RULE_WEIGHT_UNITS[r];
-
-    uint seed = uint(push.gridSize.w);
-    uint iteration = uint(push.chunkBase.w);
-    uint sweep = uint(push.chunkCount.w);
-    uint target = anchorHash(seed, iteration, sweep, anchorWorld, STREAM_RULE_CHOICE) % total;
-    uint accumulated = 0u;
-    int chosen = -1;
-    for (int r = 0; r < RULE_COUNT; ++r) {
-        if (!matched[r] || RULE_PRIORITY[r] != best) continue;
-        accumulated += RULE_WEIGHT_UNITS[r];
-        if (target < accumulated) {
-            chosen = r;
-            break;
-        }
-    }
-    uint draw = anchorHash(seed, iteration, sweep, anchorWorld, STREAM_PROBABILITY) >> 8;
-    return draw < RULE_PROBABILITY_UNITS[chosen] ? chosen : -1;
+// The two draws of voxc::chooseRule at one anchor: which matched rule, and whether it fires.
+uint ruleChoiceDraw(ivec3 anchorWorld) {
+    return anchorHash(uint(push.gridSize.w), uint(push.chunkBase.w), uint(push.chunkCount.w), anchorWorld,
+                      STREAM_RULE_CHOICE);
+}
+uint probabilityDraw(ivec3 anchorWorld) {
+    return anchorHash(uint(push.gridSize.w), uint(push.chunkBase.w), uint(push.chunkCount.w), anchorWorld,
+                      STREAM_PROBABILITY) >> 8;
 }
 
+// Where the cells of a window lie in the voxel buffer. A window inside one chunk (the common
+// case) is addressed from the anchor's address; one straddling a chunk border looks every cell up.
+struct WindowAddressing {
+    ivec3 anchor;
+    int anchorAddress;
+    bool oneChunk;
+};
+
+WindowAddressing windowAddressing(ivec3 anchor, ivec3 size) {
+    int chunkSize = push.gridOrigin.w;
+    ivec3 inside = (push.gridOrigin.xyz + anchor) & (chunkSize - 1);
+    return WindowAddressing(anchor, voxelAddress(anchor), all(lessThanEqual(inside + size, ivec3(chunkSize))));
+}
+
+int windowCellAddress(WindowAddressing window, ivec3 offset) {
+    int chunkSize = push.gridOrigin.w;
+    if (window.oneChunk) return window.anchorAddress + offset.x + chunkSize * (offset.y + chunkSize * offset.z);
+    return voxelAddress(window.anchor + offset);
+}
+
+// One invocation per anchor (ANCHORS_PER_INVOCATION is 1): a loop over several anchors with
+// run-time bounds costs more than it saves on llvmpipe.
 void main() {
     ivec3 id = ivec3(gl_GlobalInvocationID);
     if (any(greaterThanEqual(id, push.anchorCount.xyz))) return;
@@ -128,22 +128,37 @@ void main() {
     ivec3 anchorWorld = push.gridOrigin.xyz + anchor;
 
     // Window [2, 1, 2]: cell i sits at anchor + (i % 2, i / 2 % 1, i / 2).
-    int address1 = voxelAddress(anchor + ivec3(1, 0, 0));
-    float cell1 = voxels.density[address1];
-    int address2 = voxelAddress(anchor + ivec3(0, 0, 1));
+    WindowAddressing window = windowAddressing(anchor, ivec3(2, 1, 2));
+    int address1 = 0;
+    float cell1 = 0.0;
+    int address2 = 0;
+    float cell2 = 0.0;
     // No live rule reads or writes cells 0, 3.
 
-    // A rule matches when every cell has all the bits the rule needs.
-    bool matched[RULE_COUNT];
+    // The rules' symbols; a rule matches when every cell has all the bits the rule needs.
     // 0: blend (sample.vox:43:3): every cell IGN
-    matched[0] = true;
+    bool matched0 = true;
 
-    int chosen = chooseRule(matched, anchorWorld);
+    // voxc::chooseRule: the highest priority among the matched rules wins; equal priorities are
+    // drawn by weight in declaration order; the chosen rule then fires with its probability.
+    uint weight0 = matched0 ? 1000u : 0u;
+    uint total = weight0;
+    int chosen = -1;
+    if (total != 0u) {
+        uint target = ruleChoiceDraw(anchorWorld) % total;
+        // The first rule whose running weight sum exceeds the target, in declaration order.
+        uint upTo = weight0;
+        chosen = target < upTo ? 0 : -1;
+        // Every rule has probability 1: the draw (< 2^24) always passes, so it is skipped.
+    }
 
     // Apply the chosen rule's transform; NOP cells are left untouched.
     if (chosen == 0) { // blend (sample.vox:43:3)
+        address1 = windowCellAddress(window, ivec3(1, 0, 0));
+        cell1 = voxels.density[address1];
         precise float next1 = (cell1 + 0.125); // (1, 0, 0) ADD 0.125
         voxels.density[address1] = next1;
+        address2 = windowCellAddress(window, ivec3(0, 0, 1));
         precise float next2 = 0.5; // (0, 0, 1) SET 0.5
         voxels.density[address2] = next2;
     }

@@ -10,8 +10,8 @@
 
 // ---- begin common.glsl ----
 // Declarations every voxc kernel shares: the push block (voxc::PushBlock in
-// compiler/codegen/include/voxc/codegen/KernelPackage.h, field for field) and the two
-// storage buffers of descriptor set 0.
+// compiler/codegen/include/voxc/codegen/KernelPackage.h, field for field) and the three
+// storage buffers of descriptor set 0 (kBindingVoxels, kBindingChunkTable, kBindingNoiseTables).
 
 layout(push_constant, std430) uniform PushBlock {
     ivec4 gridOrigin;  // xyz: world coordinate of grid voxel (0,0,0); w: chunk size
@@ -33,6 +33,11 @@ layout(std430, set = 0, binding = 1) readonly buffer ChunkTable {
     int chunkSlot[];
 } chunkTable;
 
+// Ken Perlin's 256-entry permutation (voxc::perlinPermutation), read by perlin.glsl.
+layout(std430, set = 0, binding = 2) readonly buffer NoiseTables {
+    int perlinPermutation[];
+} noiseTables;
+
 // Buffer index of a grid-local voxel, exactly as voxc::ChunkLayout::address computes it.
 // Chunks are aligned to world coordinates and their size is a power of two, so the
 // arithmetic shift and the mask are floor division and remainder, negatives included.
@@ -50,6 +55,9 @@ int voxelAddress(ivec3 local) {
 // ---- end common.glsl ----
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+// Each invocation handles this many consecutive anchors of its dispatch per axis
+// (voxc::Kernel::anchorsPerInvocation; the runtime sizes the dispatch by it).
+const ivec3 ANCHORS_PER_INVOCATION = ivec3(1, 1, 1);
 
 void main() {
 }

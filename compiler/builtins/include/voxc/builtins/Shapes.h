@@ -29,8 +29,13 @@ struct ShapeInfo {
     std::span<const KeySpec> keys;
     // Density after this shape at one voxel: `current` where the shape is not solid.
     float (*eval)(const StartShape& shape, glm::ivec3 local, glm::ivec3 world, uint32_t seed, float current);
-    // GLSL statements that update `float density` from `ivec3 local`, `ivec3 world` and `uint seed`.
+    // GLSL statements that update `float density` from `ivec3 local`, `ivec3 world` and `uint seed`
+    // (and `float column`, see below).
     std::string (*glsl)(const StartShape& shape);
+    // Optional: a GLSL float expression of `world.x`, `world.z` and `seed` only, which the start
+    // kernel evaluates once per (x, z) column and hands to `glsl` as `column` (a heightfield's
+    // surface height). nullptr when the shape has none.
+    std::string (*columnGlsl)(const StartShape& shape) = nullptr;
 };
 
 std::span<const ShapeInfo> shapes();
@@ -43,6 +48,9 @@ float startDensity(const Program& program, glm::ivec3 local);
 // 2D improved Perlin noise with Perlin's reference permutation, range about [-1, 1].
 // compiler/shaders/perlin.glsl mirrors it; both avoid fused multiply-adds so they agree bit for bit.
 float perlin2(float x, float y);
+// Ken Perlin's reference permutation, the one table perlin2 uses. The Vulkan runtime uploads it
+// to the kernels' noise-table buffer (kBindingNoiseTables), so the GPU reads the same table.
+std::span<const int, 256> perlinPermutation();
 // The heightfield's surface height at world column (x, z).
 float heightfieldHeight(const HeightfieldParams& params, uint32_t seed, int worldX, int worldZ);
 

@@ -25,6 +25,7 @@ static_assert(sizeof(PushBlock) == 112, "must match common.glsl");
 // Descriptor set 0 for every kernel.
 constexpr uint32_t kBindingVoxels = 0;     // buffer of float densities, chunk-major (see runtime ChunkLayout)
 constexpr uint32_t kBindingChunkTable = 1; // buffer of int: chunk-table entry -> chunk slot
+constexpr uint32_t kBindingNoiseTables = 2; // buffer of int: Perlin's 256-entry permutation (voxc::perlinPermutation)
 
 struct Kernel {
     std::string name;               // e.g. "start", "overhang_sweep0"; also the file stem in a package
@@ -32,6 +33,9 @@ struct Kernel {
     std::string glsl;               // generated source
     std::vector<uint32_t> spirv;    // compiled, validated SPIR-V
     uint32_t localSize[3] = {8, 8, 1};
+    // Each invocation handles a block of this many consecutive anchors of its dispatch per axis
+    // (the kernel's ANCHORS_PER_INVOCATION); a workgroup covers localSize * anchorsPerInvocation.
+    uint32_t anchorsPerInvocation[3] = {1, 1, 1};
 };
 
 struct SweepPlan {

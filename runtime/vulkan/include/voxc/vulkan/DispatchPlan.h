@@ -13,7 +13,7 @@ namespace voxc {
 struct Dispatch {
     uint32_t kernel = 0;
     PushBlock push{};
-    uint32_t groups[3] = {1, 1, 1}; // workgroups: ceil(anchorCount / localSize) per axis
+    uint32_t groups[3] = {1, 1, 1}; // workgroups: ceil(anchorCount / (localSize * anchorsPerInvocation)) per axis
 };
 
 // Checks what the executor relies on (kernel indices, phase arrays of equal length, SPIR-V
