@@ -1,0 +1,38 @@
+// Math builtins of field expressions whose GLSL built-in may be computed in another operation
+// order (or with a fused multiply-add): written out with `precise` exactly as the interpreter
+// computes them (compiler/builtins/src/functions/Math.cpp). GLSL's own min, max, abs, floor,
+// sqrt, pow, sin and cos are used directly.
+
+// mix(x, y, a) = x * (1 - a) + y * a, GLSL's definition.
+float mathMix(float x, float y, float a) { precise float r = x * (1.0 - a) + y * a; return r; }
+vec2 mathMix(vec2 x, vec2 y, vec2 a) { precise vec2 r = x * (1.0 - a) + y * a; return r; }
+vec3 mathMix(vec3 x, vec3 y, vec3 a) { precise vec3 r = x * (1.0 - a) + y * a; return r; }
+vec2 mathMix(vec2 x, vec2 y, float a) { return mathMix(x, y, vec2(a)); }
+vec3 mathMix(vec3 x, vec3 y, float a) { return mathMix(x, y, vec3(a)); }
+
+// smoothstep: t = clamp((x - e0) / (e1 - e0), 0, 1); t * t * (3 - 2 t), GLSL's definition,
+// also defined (as written) when e0 >= e1.
+float mathSmoothstep(float e0, float e1, float x) {
+    precise float t = min(max((x - e0) / (e1 - e0), 0.0), 1.0);
+    precise float r = t * t * (3.0 - 2.0 * t);
+    return r;
+}
+vec2 mathSmoothstep(vec2 e0, vec2 e1, vec2 x) {
+    return vec2(mathSmoothstep(e0.x, e1.x, x.x), mathSmoothstep(e0.y, e1.y, x.y));
+}
+vec3 mathSmoothstep(vec3 e0, vec3 e1, vec3 x) {
+    return vec3(mathSmoothstep(e0.x, e1.x, x.x), mathSmoothstep(e0.y, e1.y, x.y), mathSmoothstep(e0.z, e1.z, x.z));
+}
+vec2 mathSmoothstep(float e0, float e1, vec2 x) { return mathSmoothstep(vec2(e0), vec2(e1), x); }
+vec3 mathSmoothstep(float e0, float e1, vec3 x) { return mathSmoothstep(vec3(e0), vec3(e1), x); }
+
+// fract(x) = x - floor(x), GLSL's definition (1.0 for tiny negative x, as on the CPU).
+float mathFract(float x) { precise float r = x - floor(x); return r; }
+vec2 mathFract(vec2 x) { precise vec2 r = x - floor(x); return r; }
+vec3 mathFract(vec3 x) { precise vec3 r = x - floor(x); return r; }
+
+// dot and length summed left to right.
+float mathDot(vec2 a, vec2 b) { precise float r = a.x * b.x + a.y * b.y; return r; }
+float mathDot(vec3 a, vec3 b) { precise float r = a.x * b.x + a.y * b.y + a.z * b.z; return r; }
+float mathLength(vec2 a) { return sqrt(mathDot(a, a)); }
+float mathLength(vec3 a) { return sqrt(mathDot(a, a)); }

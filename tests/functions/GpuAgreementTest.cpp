@@ -1,0 +1,233 @@
+// CPU vs GPU for every builtin function: for each record of voxc::functions() and each
+// argument-type list its type rule accepts, a compute kernel evaluates record.glsl(...) on
+// arguments derived from the invocation index, runs as the start stage of a hand-built
+// KernelPackage on Vulkan (lavapipe on CI), and every result component is compared with
+// record.eval on the same arguments within record.tolerance.
+#include "Signatures.h"
+#include "TestKernels.h"
+
+#include "voxc/builtins/Ops.h"
+#include "voxc/program/Random.h"
+#include "voxc/shaders/ShaderSources.h"
+#include "voxc/vulkan/Executor.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+namespace voxc {
+namespace {
+
+// 64 x 64 samples; sample s sits at grid column (s % 64, s / 64) and writes component c at y = c.
+constexpr int kSide = 64;
+constexpr int kSamples = kSide * kSide;
+
+// How one argument's values are drawn; both sides compute them with the same float operations.
+struct Domain {
+    enum Kind { Coordinate, Range, IntRange, Seed } kind;
+    float lo = 0, hi = 0;
+};
+
+// Defaults: float/vector components are coordinates (|x| up to 2, 50, 1000 or 1e4 by sample),
+// ints are seeds. Overrides keep arguments where a function is defined and its tolerance holds.
+Domain domainFor(std::string_view name, const std::vector<Type>& args, size_t index) {
+    const bool fractal = name == "fbm" || name == "ridged" || name == "turbulence";
+    if (name == "sqrt") return {Domain::Range, 0.0f, 10000.0f};
+    if (name == "length") return {Domain::Range, -100.0f, 100.0f};
+    if (name == "pow") return index == 0 ? Domain{Domain::Range, 0.1f, 10.0f} : Domain{Domain::Range, -3.0f, 3.0f};
+    if (name == "sin" || name == "cos") return {Domain::Range, -3.14159265f, 3.14159265f};
+    if (fractal && index == 1) return {Domain::IntRange, 1, 16};
+    if (fractal && index == 2) return {Domain::Range, 1.5f, 3.0f};
+    if (fractal && index == 3) return {Domain::Range, 0.2f, 0.8f};
+    if (name == "warp" && index == 1) return {Domain::Range, -4.0f, 4.0f};
+    if (name == "warped_fbm" && args.size() == 5 && index >= 1 && index <= 3) return {Domain::Range, 0.0f, 2.0f};
+    return args[index] == Type::Int ? Domain{Domain::Seed} : Domain{Domain::Coordinate};
+}
+
+uint32_t sampleBits(uint32_t sample, uint32_t arg, uint32_t component) {
+    return mix32(mix32(sample * 8u + arg) ^ (component + 0x51u));
+}
+
+float sampleFloat(const Domain& d, uint32_t sample, uint32_t arg, uint32_t component) {
+    const float unit = float(sampleBits(sample, arg, component) >> 8) * 5.9604644775390625e-8f;
+    if (d.kind == Domain::Coordinate) {
+        const float scales[4] = {2.0f, 50.0f, 1000.0f, 10000.0f};
+        return (unit * 2.0f - 1.0f) * scales[sample % 4];
+    }
+    return d.lo + unit * (d.hi - d.lo);
+}
+
+int32_t sampleInt(const Domain& d, uint32_t sample, uint32_t arg) {
+    const uint32_t bits = sampleBits(sample, arg, 0);
+    if (d.kind == Domain::IntRange) return int32_t(d.lo) + int32_t(bits % uint32_t(d.hi - d.lo + 1));
+    return sample % 8 == 0 ? 0 : int32_t(bits);
+}
+
+// The GLSL of the two functions above.
+constexpr const char* kSamplingGlsl = R"(
+uint sampleBits(uint s, uint arg, uint component) { return mix32(mix32(s * 8u + arg) ^ (component + 0x51u)); }
+float sampleUnit(uint s, uint arg, uint component) {
+    precise float r = float(sampleBits(s, arg, component) >> 8) * 5.9604644775390625e-8;
+    return r;
+}
+float sampleCoordinate(uint s, uint arg, uint component) {
+    float scales[4] = float[4](2.0, 50.0, 1000.0, 10000.0);
+    precise float r = (sampleUnit(s, arg, component) * 2.0 - 1.0) * scales[s % 4u];
+    return r;
+}
+float sampleRange(uint s, uint arg, uint component, float lo, float span) {
+    precise float r = lo + sampleUnit(s, arg, component) * span;
+    return r;
+}
+int sampleSeed(uint s, uint arg) { return s % 8u == 0u ? 0 : int(sampleBits(s, arg, 0u)); }
+)";
+
+std::string glslComponent(const Domain& d, size_t arg, int component) {
+    const std::string where = "s, " + std::to_string(arg) + "u, " + std::to_string(component) + "u";
+    if (d.kind == Domain::Coordinate) return "sampleCoordinate(" + where + ")";
+    return "sampleRange(" + where + ", " + glslFloat(d.lo) + ", " + glslFloat(d.hi - d.lo) + ")";
+}
+
+std::string glslArgument(const Domain& d, Type type, size_t arg) {
+    switch (type) {
+    case Type::Int:
+        if (d.kind == Domain::IntRange)
+            return std::to_string(int(d.lo)) + " + int(sampleBits(s, " + std::to_string(arg) + "u, 0u) % " +
+                   std::to_string(int(d.hi - d.lo + 1)) + "u)";
+        return "sampleSeed(s, " + std::to_string(arg) + "u)";
+    case Type::Float: return glslComponent(d, arg, 0);
+    case Type::Vec2: return "vec2(" + glslComponent(d, arg, 0) + ", " + glslComponent(d, arg, 1) + ")";
+    case Type::Vec3:
+        return "vec3(" + glslComponent(d, arg, 0) + ", " + glslComponent(d, arg, 1) + ", " + glslComponent(d, arg, 2) + ")";
+    case Type::Bool: break;
+    }
+    throw std::runtime_error("no sample domain for bool arguments");
+}
+
+Value cpuArgument(const Domain& d, Type type, uint32_t sample, uint32_t arg) {
+    Value v;
+    v.type = type;
+    if (type == Type::Int) v.i = sampleInt(d, sample, arg);
+    const int n = type == Type::Vec3 ? 3 : type == Type::Vec2 ? 2 : type == Type::Float ? 1 : 0;
+    for (int c = 0; c < n; ++c) v.v[c] = sampleFloat(d, sample, arg, uint32_t(c));
+    return v;
+}
+
+int componentCount(Type t) { return t == Type::Vec3 ? 3 : t == Type::Vec2 ? 2 : 1; }
+
+std::string kernelSource(const FunctionInfo& info, const test::Overload& overload) {
+    std::string source = "#version 450\nlayout(local_size_x = 8, local_size_y = 1, local_size_z = 8) in;\n";
+    source += shaderSource("common.glsl");
+    std::set<std::string_view> included{"random.glsl"}; // the sampling code below needs mix32
+    source += shaderSource("random.glsl");
+    for (std::string_view library : info.glslLibraries)
+        if (included.insert(library).second) source += shaderSource(library);
+    source += kSamplingGlsl;
+    std::vector<std::string> args;
+    std::string body;
+    for (size_t i = 0; i < overload.args.size(); ++i) {
+        const Type t = overload.args[i];
+        body += "    " + std::string(typeName(t)) + " a" + std::to_string(i) + " = " +
+                glslArgument(domainFor(info.name, overload.args, i), t, i) + ";\n";
+        args.push_back("a" + std::to_string(i));
+    }
+    body += "    " + std::string(typeName(overload.result)) + " r = " + info.glsl(args, overload.args) + ";\n";
+    for (int c = 0; c < componentCount(overload.result); ++c) {
+        const std::string value = overload.result == Type::Float ? "r" : "r[" + std::to_string(c) + "]";
+        body += "    voxels.density[voxelAddress(ivec3(local.x, " + std::to_string(c) + ", local.z))] = " + value + ";\n";
+    }
+    return source + R"(
+void main() {
+    ivec3 cell = ivec3(gl_GlobalInvocationID);
+    if (any(greaterThanEqual(cell, push.anchorCount.xyz))) return;
+    ivec3 local = push.anchorStart.xyz + cell * push.anchorStep.xyz;
+    if (local.y != 0) return;
+    uint s = uint(local.x + )" + std::to_string(kSide) + R"( * local.z);
+)" + body + "}\n";
+}
+
+KernelPackage packageFor(const std::string& source) {
+    KernelPackage package;
+    package.world.size = {kSide, 3, kSide};
+    package.world.origin = {0, 0, 0};
+    package.world.chunkSize = 32;
+    Kernel kernel;
+    kernel.name = "function";
+    kernel.origin = "tests/functions/GpuAgreementTest.cpp";
+    kernel.glsl = source;
+    kernel.spirv = test::compileGlsl(source);
+    kernel.localSize[0] = 8;
+    kernel.localSize[1] = 1;
+    kernel.localSize[2] = 8;
+    package.kernels.push_back(kernel);
+    StagePlan start;
+    start.kind = Stage::Kind::Start;
+    start.startKernel = 0;
+    package.stages.push_back(start);
+    return package;
+}
+
+VulkanContext& context() {
+    static VulkanContext instance;
+    return instance;
+}
+
+class functions_GpuAgreement : public testing::TestWithParam<std::string_view> {};
+
+// One test per record (named by the record), each covering all of its overloads.
+
+TEST_P(functions_GpuAgreement, EveryOverloadMatchesTheInterpreterWithinTolerance) {
+    const FunctionInfo* info = findFunction(GetParam());
+    ASSERT_NE(info, nullptr);
+    const std::vector<test::Overload> overloads = test::acceptedOverloads(*info);
+    ASSERT_FALSE(overloads.empty());
+    for (const test::Overload& overload : overloads) {
+        const std::string what = test::describe(*info, overload.args);
+        ASSERT_NE(overload.result, Type::Bool) << what << ": bool results need a comparison of their own";
+        ASSERT_NE(overload.result, Type::Int) << what << ": int results need a comparison of their own";
+        const KernelPackage package = packageFor(kernelSource(*info, overload));
+        VulkanExecutor executor(context(), package);
+        const DenseGrid gpu = executor.run().grid.toDense();
+        float maxDifference = 0.0f;
+        int failures = 0;
+        for (uint32_t s = 0; s < uint32_t(kSamples); ++s) {
+            std::vector<Value> args;
+            for (size_t i = 0; i < overload.args.size(); ++i)
+                args.push_back(cpuArgument(domainFor(info->name, overload.args, i), overload.args[i], s, uint32_t(i)));
+            const Value cpu = info->eval(args);
+            ASSERT_EQ(cpu.type, overload.result) << what;
+            for (int c = 0; c < componentCount(overload.result); ++c) {
+                const float expected = cpu.v[c];
+                const float actual = gpu.at({int(s) % kSide, c, int(s) / kSide});
+                ASSERT_TRUE(std::isfinite(expected)) << what << " sample " << s;
+                const float difference = std::fabs(actual - expected);
+                maxDifference = std::max(maxDifference, difference);
+                if (!(difference <= info->tolerance) && failures++ < 5) {
+                    std::string argText;
+                    for (const Value& a : args)
+                        argText += " (" + std::to_string(a.v.x) + ", " + std::to_string(a.v.y) + ", " +
+                                   std::to_string(a.v.z) + " | " + std::to_string(a.i) + ")";
+                    ADD_FAILURE() << what << " sample " << s << " component " << c << ": GPU " << actual << ", CPU "
+                                  << expected << ", difference " << difference << " > tolerance " << info->tolerance
+                                  << "; args" << argText;
+                }
+            }
+        }
+        EXPECT_EQ(failures, 0) << what;
+        std::cout << "[ max |GPU - CPU| ] " << what << ": " << maxDifference << " (tolerance " << info->tolerance
+                  << ")\n";
+    }
+}
+
+std::vector<std::string_view> allNames() {
+    std::vector<std::string_view> names;
+    for (const FunctionInfo& f : functions()) names.push_back(f.name);
+    return names;
+}
+
+INSTANTIATE_TEST_SUITE_P(, functions_GpuAgreement, testing::ValuesIn(allNames()),
+                         [](const testing::TestParamInfo<std::string_view>& p) { return std::string(p.param); });
+
+} // namespace
+} // namespace voxc
