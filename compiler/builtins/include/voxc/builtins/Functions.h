@@ -3,6 +3,8 @@
 // one registry record each, godot_voxel style: the checker's type rule, the interpreter's
 // evaluation, the GLSL emitter, the GLSL library it needs and the documented CPU/GPU tolerance
 // side by side, so no backend can silently miss a function.
+#include "voxc/program/Field.h"
+
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -12,8 +14,6 @@
 #include <string_view>
 
 namespace voxc {
-
-enum class Type : uint8_t { Float, Int, Bool, Vec2, Vec3 };
 
 std::string_view typeName(Type type); // "float", "int", "bool", "vec2", "vec3"
 

@@ -3,6 +3,7 @@
 // resolved, every value is in range and every array has its declared shape. The interpreter
 // and the IR lowering both start from here; neither ever sees the AST.
 #include "voxc/core/SourceLoc.h"
+#include "voxc/program/Field.h"
 
 #include <cstdint>
 #include <glm/vec3.hpp>
@@ -100,11 +101,22 @@ struct World {
     uint32_t seed = 0;
 };
 
+// How a field stage combines the field's value f with the grid's density d at each voxel.
+// Densities follow the grammar's convention (1 rock, 0 air).
+enum class FieldMode : uint8_t {
+    Set,      // d = f
+    Union,    // d = max(d, f): add material
+    Subtract, // d = min(d, 1 - f): carve material away
+    Intersect // d = min(d, f)
+};
+
 // One step of the pipeline. Later parts of the language add kinds here.
 struct Stage {
-    enum class Kind : uint8_t { Start, Grammar };
+    enum class Kind : uint8_t { Start, Grammar, Field };
     Kind kind = Kind::Start;
-    uint32_t index = 0; // Grammar: index into Program::grammars
+    uint32_t index = 0;               // Grammar: index into Program::grammars; Field: into Program::fields
+    FieldMode mode = FieldMode::Set;  // Field only
+    SourceLoc loc;
 };
 
 struct Program {
@@ -112,7 +124,8 @@ struct Program {
     World world;
     std::vector<StartShape> start; // empty means all air
     std::vector<Grammar> grammars;
-    std::vector<Stage> pipeline;   // Start first, then grammars in pipeline order
+    std::vector<Field> fields;     // named density fields, declaration order
+    std::vector<Stage> pipeline;   // Start first, then grammars and field stages in pipeline order
 };
 
 // Limits enforced by the checker so a bad file fails with a message, not an OOM kill.
