@@ -2,13 +2,20 @@
 // <<HEADER>>
 
 // One sweep of a grammar: all rules of one window size. One invocation per anchor of the
-// current phase; the windows of one phase never overlap, so every invocation owns its cells. The steps mirror the CPU interpreter: read the window, find the matching
-// rules, choose one (voxc::chooseRule), then apply its transform.
+// current phase; the windows of one phase never overlap, so every invocation owns its cells.
+// The steps mirror the CPU interpreter: read the window, find the matching rules, choose one
+// (voxc::chooseRule), then apply its transform.
+//
+// Two ways to dispatch it (push.anchorCount.w): 0, directly over every anchor of the phase;
+// 1, indirectly over the tiles the sweep's active-tiles kernel found (tiles.glsl), where
+// workgroup y picks the tile and workgroup x with the local index picks its anchor.
 
 #include "common.glsl"
 #include "random.glsl"
 
 // <<DISPATCH_SHAPE>>
+
+#include "tiles.glsl"
 
 // <<RULE_TABLE>>
 
@@ -42,12 +49,45 @@ int windowCellAddress(WindowAddressing window, ivec3 offset) {
     return voxelAddress(window.anchor + offset);
 }
 
+// Stores a written density and keeps its tile's range a superset of the tile's densities
+// (the range only widens; the next tile_ranges pass recomputes it exactly).
+void writeDensity(int address, float value) {
+    voxels.density[address] = value;
+    if (push.anchorCount.w == 0) return; // direct dispatch: no tile bookkeeping
+    int chunkSize = push.gridOrigin.w;
+    int chunkShift = findMSB(chunkSize);
+    int inside = address & (chunkSize * chunkSize * chunkSize - 1);
+    int perAxis = tilesPerAxis();
+    ivec3 tile = (ivec3(inside, inside >> chunkShift, inside >> (2 * chunkShift)) & (push.gridOrigin.w - 1)) >> tileShift();
+    int index = (address >> (3 * chunkShift)) * tilesPerChunk() + tile.x + perAxis * (tile.y + perAxis * tile.z);
+    uint key = densityKey(value);
+    atomicMin(tileRanges.key[2 * index], key);
+    atomicMax(tileRanges.key[2 * index + 1], key);
+    tileDirty.flag[index] = 1u;
+}
+
+// The anchor of this invocation in an indirect dispatch: false when it has none.
+bool activeTileAnchor(out ivec3 anchor) {
+    TileAnchors anchors = tileAnchors(tileOfId(activeTiles.id[gl_WorkGroupID.y]));
+    ivec3 n = anchorsPerTile();
+    int t = int(gl_WorkGroupID.x * (gl_WorkGroupSize.x * gl_WorkGroupSize.y * gl_WorkGroupSize.z) +
+                gl_LocalInvocationIndex);
+    ivec3 i = anchors.first + ivec3(t % n.x, t / n.x % n.y, t / (n.x * n.y));
+    anchor = push.anchorStart.xyz + i * push.anchorStep.xyz;
+    return all(lessThanEqual(i, anchors.last));
+}
+
 // One invocation per anchor (ANCHORS_PER_INVOCATION is 1): a loop over several anchors with
 // run-time bounds costs more than it saves on llvmpipe.
 void main() {
-    ivec3 id = ivec3(gl_GlobalInvocationID);
-    if (any(greaterThanEqual(id, push.anchorCount.xyz))) return;
-    ivec3 anchor = push.anchorStart.xyz + id * push.anchorStep.xyz;
+    ivec3 anchor;
+    if (push.anchorCount.w != 0) {
+        if (!activeTileAnchor(anchor)) return;
+    } else {
+        ivec3 id = ivec3(gl_GlobalInvocationID);
+        if (any(greaterThanEqual(id, push.anchorCount.xyz))) return;
+        anchor = push.anchorStart.xyz + id * push.anchorStep.xyz;
+    }
     ivec3 anchorWorld = push.gridOrigin.xyz + anchor;
 
     // <<MATCH_WINDOW>>

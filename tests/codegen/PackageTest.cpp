@@ -44,7 +44,7 @@ TEST_F(codegen_Package, CompilingAndWritingTwiceGivesIdenticalBytes) {
     writePackage(compileProgram(program), (root_ / "b").string(), program.sourcePath);
     const auto a = readTree(root_ / "a");
     const auto b = readTree(root_ / "b");
-    EXPECT_EQ(a.size(), 11u); // manifest + 5 kernels x (.comp, .spv)
+    EXPECT_EQ(a.size(), 19u); // manifest + 9 kernels x (.comp, .spv)
     EXPECT_EQ(a, b);
     EXPECT_TRUE(a.contains("kernels/overhang_sweep0.spv"));
     EXPECT_TRUE(a.contains("kernels/start.comp"));
@@ -90,6 +90,8 @@ TEST_F(codegen_Package, ManifestDescribesKernelsAndDispatch) {
     EXPECT_EQ(sweep["bindings"][1]["name"], "chunkSlot");
     EXPECT_EQ(sweep["bindings"][2]["binding"], kBindingNoiseTables);
     EXPECT_EQ(sweep["bindings"][2]["name"], "perlinPermutation");
+    ASSERT_EQ(sweep["bindings"].size(), 8u);
+    EXPECT_EQ(sweep["bindings"][kBindingActiveDispatch]["name"], "activeDispatch");
     EXPECT_EQ(sweep["anchors_per_invocation"], nlohmann::json::array({1, 1, 1}));
     // The start kernel walks whole columns along y.
     EXPECT_EQ(kernels[0]["anchors_per_invocation"], nlohmann::json::array({1, package.world.size.y, 1}));
@@ -98,6 +100,7 @@ TEST_F(codegen_Package, ManifestDescribesKernelsAndDispatch) {
     EXPECT_EQ(sweep["push_constants"][6]["name"], "anchorCount");
     EXPECT_EQ(sweep["push_constants"][6]["offset"], 96);
 
+    EXPECT_EQ(m["dispatch"]["tile_ranges_kernel"], "tile_ranges");
     const auto& stages = m["dispatch"]["stages"];
     ASSERT_EQ(stages.size(), 3u);
     EXPECT_EQ(stages[0]["kind"], "start");
@@ -106,6 +109,8 @@ TEST_F(codegen_Package, ManifestDescribesKernelsAndDispatch) {
     EXPECT_EQ(stages[1]["iterations"], 4);
     const auto& smooth = stages[2]["sweeps"][0];
     EXPECT_EQ(smooth["kernel"], "smooth_sweep0");
+    EXPECT_EQ(smooth["active_tiles_kernel"], "smooth_sweep0_active_tiles");
+    EXPECT_TRUE(stages[2]["sweeps"][1]["active_tiles_kernel"].is_null()); // no live rule
     EXPECT_EQ(smooth["window"], nlohmann::json::array({2, 1, 2}));
     ASSERT_EQ(smooth["phases"].size(), 1u); // stride [2,1,2] covers a [2,1,2] window in one phase
     EXPECT_EQ(smooth["phases"][0]["start"], nlohmann::json::array({1, 2, 0}));
@@ -124,7 +129,7 @@ TEST_F(codegen_Package, SpirvValAcceptsEveryWrittenModule) {
         const std::string command = spirvVal + " --target-env vulkan1.1 '" + entry.path().string() + "' 2>&1";
         EXPECT_EQ(std::system(command.c_str()), 0) << command;
     }
-    EXPECT_EQ(modules, 5);
+    EXPECT_EQ(modules, 9);
 }
 
 } // namespace

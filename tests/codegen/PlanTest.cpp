@@ -17,8 +17,11 @@ std::vector<std::string> kernelNames(const KernelPackage& package) {
 TEST(codegen_Plan, OneKernelPerSweepAndPhasesFromSemantics) {
     const Program program = test::sampleProgram();
     const KernelPackage package = compileProgram(program);
-    EXPECT_EQ(kernelNames(package), (std::vector<std::string>{"start", "overhang_sweep0", "overhang_sweep1",
-                                                              "smooth_sweep0", "smooth_sweep1"}));
+    EXPECT_EQ(kernelNames(package),
+              (std::vector<std::string>{"start", "overhang_sweep0", "overhang_sweep1", "smooth_sweep0", "smooth_sweep1",
+                                        "overhang_sweep0_active_tiles", "overhang_sweep1_active_tiles",
+                                        "smooth_sweep0_active_tiles", "tile_ranges"}));
+    EXPECT_EQ(package.tileRangesKernel, 8u);
     ASSERT_EQ(package.stages.size(), 3u);
     EXPECT_EQ(package.stages[0].kind, Stage::Kind::Start);
     EXPECT_EQ(package.kernels[package.stages[0].startKernel].name, "start");
@@ -33,6 +36,13 @@ TEST(codegen_Plan, OneKernelPerSweepAndPhasesFromSemantics) {
         for (size_t s = 0; s < sweeps.size(); ++s) {
             const SweepPlan& plan = stage.grammar.sweeps[s];
             EXPECT_EQ(package.kernels.at(plan.kernel).name, grammar.name + "_sweep" + std::to_string(s));
+            // smooth's second sweep has no live rule, so nothing to classify tiles for.
+            if (g == 1 && s == 1) {
+                EXPECT_EQ(plan.activeTilesKernel, kNoKernel);
+            } else {
+                EXPECT_EQ(package.kernels.at(plan.activeTilesKernel).name,
+                          grammar.name + "_sweep" + std::to_string(s) + "_active_tiles");
+            }
             EXPECT_EQ(plan.window, sweeps[s].window);
             EXPECT_EQ(plan.phaseCount, sweeps[s].phaseCount);
             ASSERT_EQ(plan.phaseStart.size(), size_t(sweeps[s].phases()));
@@ -54,10 +64,12 @@ TEST(codegen_Plan, GrammarRunTwiceSharesItsKernels) {
     Program program = test::sampleProgram();
     program.pipeline.push_back(Stage{Stage::Kind::Grammar, 0});
     const KernelPackage package = compileProgram(program);
-    EXPECT_EQ(package.kernels.size(), 5u);
+    EXPECT_EQ(package.kernels.size(), 9u);
     ASSERT_EQ(package.stages.size(), 4u);
     EXPECT_EQ(package.stages[3].grammar.name, "overhang");
     EXPECT_EQ(package.stages[3].grammar.sweeps.at(0).kernel, package.stages[1].grammar.sweeps.at(0).kernel);
+    EXPECT_EQ(package.stages[3].grammar.sweeps.at(0).activeTilesKernel,
+              package.stages[1].grammar.sweeps.at(0).activeTilesKernel);
 }
 
 TEST(codegen_Plan, SweepKernelsCarryTheirRulesAndWindow) {

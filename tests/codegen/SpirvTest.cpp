@@ -12,7 +12,8 @@ namespace {
 
 TEST(codegen_Spirv, EveryKernelOfTheSampleIsValid) {
     const KernelPackage package = compileProgram(test::sampleProgram());
-    ASSERT_EQ(package.kernels.size(), 5u); // start, overhang x2, smooth x2
+    // start, overhang x2, smooth x2, an active-tiles kernel per sweep with live rules, tile_ranges
+    ASSERT_EQ(package.kernels.size(), 9u);
     for (const Kernel& kernel : package.kernels) {
         ASSERT_GT(kernel.spirv.size(), 5u) << kernel.name;
         EXPECT_EQ(kernel.spirv[0], 0x07230203u) << kernel.name; // SPIR-V magic

@@ -75,6 +75,25 @@ KernelPackage compileProgram(const Program& program, const CompileOptions& optio
         grammarPlans.push_back(std::move(plan));
     }
 
+    // The tile-skipping kernels follow the sweep kernels; a sweep without live rules needs none.
+    for (size_t g = 0; g < module.grammars.size(); ++g) {
+        const ir::IrGrammar& grammar = module.grammars[g];
+        for (size_t s = 0; s < grammar.sweeps.size(); ++s) {
+            const ir::IrSweep& sweep = grammar.sweeps[s];
+            if (sweep.rules.empty()) continue;
+            const std::string name = fmt::format("{}_sweep{}_active_tiles", grammar.name, sweep.index);
+            const std::string origin = package.kernels[grammarPlans[g].sweeps[s].kernel].origin;
+            grammarPlans[g].sweeps[s].activeTilesKernel = uint32_t(package.kernels.size());
+            package.kernels.push_back(makeKernel(name, origin, activeTilesDispatchShape(),
+                                                 activeTilesKernelSource(grammar, sweep, name, sourceName)));
+        }
+    }
+    if (!module.grammars.empty()) {
+        package.tileRangesKernel = uint32_t(package.kernels.size());
+        package.kernels.push_back(makeKernel("tile_ranges", "voxc runtime: tile density ranges",
+                                             tileRangesDispatchShape(), tileRangesKernelSource()));
+    }
+
     for (const Stage& stage : module.pipeline) {
         StagePlan plan;
         plan.kind = stage.kind;

@@ -28,4 +28,12 @@ DispatchShape sweepDispatchShape(const ir::IrSweep& sweep);
 std::string sweepKernelSource(const ir::IrGrammar& grammar, const ir::IrSweep& sweep, std::string_view kernelName,
                               std::string_view sourceName);
 
+// Tile skipping: the per-sweep kernel that lists the tiles where a live rule may match
+// (active_tiles.glsl), and the kernel that recomputes stale tile ranges (tile_ranges.glsl).
+DispatchShape activeTilesDispatchShape();
+std::string activeTilesKernelSource(const ir::IrGrammar& grammar, const ir::IrSweep& sweep,
+                                     std::string_view kernelName, std::string_view sourceName);
+DispatchShape tileRangesDispatchShape();
+std::string tileRangesKernelSource();
+
 } // namespace voxc::codegen

@@ -25,7 +25,12 @@ std::string spirvPath(const Kernel& k) { return "kernels/" + k.name + ".spv"; }
 Json bindings() {
     return Json::array({Json{{"binding", kBindingVoxels}, {"name", "density"}, {"type", "float[]"}},
                         Json{{"binding", kBindingChunkTable}, {"name", "chunkSlot"}, {"type", "int[]"}},
-                        Json{{"binding", kBindingNoiseTables}, {"name", "perlinPermutation"}, {"type", "int[256]"}}});
+                        Json{{"binding", kBindingNoiseTables}, {"name", "perlinPermutation"}, {"type", "int[256]"}},
+                        Json{{"binding", kBindingTileRanges}, {"name", "tileRanges"}, {"type", "uint[2 per tile]"}},
+                        Json{{"binding", kBindingTileDirty}, {"name", "tileDirty"}, {"type", "uint[tiles]"}},
+                        Json{{"binding", kBindingActiveTiles}, {"name", "activeTiles"}, {"type", "uint[tiles]"}},
+                        Json{{"binding", kBindingActiveDispatch}, {"name", "activeDispatch"}, {"type", "uint[8]"}},
+                        Json{{"binding", kBindingSkipStats}, {"name", "skipStats"}, {"type", "uint[2]"}}});
 }
 
 Json pushConstants() {
@@ -50,6 +55,11 @@ Json kernelJson(const Kernel& k) {
                 {"push_constants", pushConstants()}};
 }
 
+// A kernel's name, or null for kNoKernel.
+Json kernelName(const KernelPackage& package, uint32_t kernel) {
+    return kernel == kNoKernel ? Json(nullptr) : Json(package.kernels.at(kernel).name);
+}
+
 Json sweepJson(const KernelPackage& package, const SweepPlan& sweep) {
     Json phases = Json::array();
     for (size_t p = 0; p < sweep.phaseStart.size(); ++p)
@@ -57,6 +67,7 @@ Json sweepJson(const KernelPackage& package, const SweepPlan& sweep) {
                               {"step", vec(sweep.phaseStep[p])},
                               {"count", vec(sweep.phaseCount3[p])}});
     return Json{{"kernel", package.kernels.at(sweep.kernel).name},
+                {"active_tiles_kernel", kernelName(package, sweep.activeTilesKernel)},
                 {"window", vec(sweep.window)},
                 {"phase_count", vec(sweep.phaseCount)},
                 {"phases", phases}};
@@ -102,7 +113,7 @@ std::string packageManifest(const KernelPackage& package, const std::string& sou
         {"source_file", sourceFile},
         {"world", Json{{"size", vec(w.size)}, {"origin", vec(w.origin)}, {"chunk", w.chunkSize}, {"seed", w.seed}}},
         {"kernels", kernels},
-        {"dispatch", Json{{"stages", stages}}}};
+        {"dispatch", Json{{"tile_ranges_kernel", kernelName(package, package.tileRangesKernel)}, {"stages", stages}}}};
     return manifest.dump(2) + "\n";
 }
 

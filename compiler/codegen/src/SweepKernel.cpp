@@ -261,7 +261,7 @@ std::string applyRule(const IrGrammar& g, const IrSweep& sweep, std::string_view
             s += fmt::format("    precise float next{} = {}; // {} {}\n", c,
                              info.glsl(fmt::format("cell{}", c), glslFloat(t.value)), printCell(sweep.cells[c].offset),
                              printTransform(t));
-            s += fmt::format("    voxels.density[address{0}] = {1}next{0}{2};\n", c, clamps ? "clampDensity(" : "",
+            s += fmt::format("    writeDensity(address{0}, {1}next{0}{2});\n", c, clamps ? "clampDensity(" : "",
                              clamps ? ")" : "");
         }
         if (!writes) s += "    // every cell NOP: the window stays as it is\n";
@@ -273,7 +273,8 @@ std::string applyRule(const IrGrammar& g, const IrSweep& sweep, std::string_view
 } // namespace
 
 DispatchShape sweepDispatchShape(const IrSweep&) {
-    // A workgroup of 8 x 8 anchors in x and y, one anchor per invocation (see sweep.glsl).
+    // A workgroup of 8 x 8 anchors in x and y, one anchor per invocation (see sweep.glsl); an
+    // indirect dispatch numbers a chunk's anchors by the local index instead.
     return DispatchShape{{8, 8, 1}, {1, 1, 1}};
 }
 

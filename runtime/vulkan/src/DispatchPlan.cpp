@@ -57,8 +57,31 @@ void validatePackage(const KernelPackage& package) {
     }
 }
 
-DispatchCursor::DispatchCursor(const KernelPackage& package, std::array<uint32_t, 3> maxGroups)
-    : package_(package), maxGroups_(maxGroups) {
+uint64_t tileCount(const KernelPackage& package, int32_t tileShift) {
+    const World& world = package.world;
+    const ChunkLayout layout = ChunkLayout::make(world.origin, world.size, world.chunkSize);
+    const uint64_t perAxis = uint64_t(world.chunkSize) >> tileShift;
+    return layout.chunkTotal() * perAxis * perAxis * perAxis;
+}
+
+int32_t skipTileShift(const KernelPackage& package, std::array<uint32_t, 3> maxGroups) {
+    if (package.tileRangesKernel == kNoKernel) return -1;
+    const World& world = package.world;
+    const ChunkLayout layout = ChunkLayout::make(world.origin, world.size, world.chunkSize);
+    // Tiles of 8^3 voxels: a finer grid costs more in the active-tiles kernels than it saves.
+    for (int32_t shift = std::min(3, layout.chunkShift); shift <= layout.chunkShift; ++shift) {
+        const uint64_t tiles = tileCount(package, shift);
+        // Workgroups of 64 invocations: the tile kernels' one per tile, the sweep's one per anchor
+        // (a tile holds at most 8^shift anchors).
+        const uint64_t groupsPerTile = ((uint64_t(1) << (3 * shift)) + 63) / 64;
+        if (tiles <= maxGroups[1] && (tiles + 63) / 64 <= maxGroups[0] && groupsPerTile <= maxGroups[0])
+            return shift;
+    }
+    return -1;
+}
+
+DispatchCursor::DispatchCursor(const KernelPackage& package, std::array<uint32_t, 3> maxGroups, int32_t tileShift)
+    : package_(package), maxGroups_(maxGroups), tileShift_(tileShift) {
     for (uint32_t& g : maxGroups_) g = std::max(g, 1u);
     const World& world = package.world;
     const ChunkLayout layout = ChunkLayout::make(world.origin, world.size, world.chunkSize);
@@ -68,6 +91,7 @@ DispatchCursor::DispatchCursor(const KernelPackage& package, std::array<uint32_t
     setXyz(base_.gridSize, world.size, seedBits);
     setXyz(base_.chunkBase, layout.chunkBase, 0);
     setXyz(base_.chunkCount, layout.chunkCount, 0);
+    if (skipping()) base_.anchorStep[3] = tileShift;
 }
 
 bool DispatchCursor::next(Dispatch& out) {
@@ -86,6 +110,11 @@ bool DispatchCursor::expandNextStep() {
         if (stage.kind == Stage::Kind::Start) {
             ++stage_;
             appendPhase(stage.startKernel, 0, 0, glm::ivec3(0), glm::ivec3(1), package_.world.size);
+            if (skipping()) {
+                Dispatch invalidate;
+                invalidate.kind = DispatchKind::InvalidateRanges;
+                step_.push_back(invalidate);
+            }
             return true;
         }
         const GrammarPlan& grammar = stage.grammar;
@@ -97,6 +126,10 @@ bool DispatchCursor::expandNextStep() {
         const int32_t iteration = int32_t(iteration_++);
         for (size_t s = 0; s < grammar.sweeps.size(); ++s) {
             const SweepPlan& sweep = grammar.sweeps[s];
+            if (skipping()) {
+                appendSkippingSweep(sweep, iteration, int32_t(s));
+                continue;
+            }
             for (size_t p = 0; p < sweep.phaseStart.size(); ++p)
                 appendPhase(sweep.kernel, iteration, int32_t(s), sweep.phaseStart[p], sweep.phaseStep[p],
                             sweep.phaseCount3[p]);
@@ -133,6 +166,43 @@ void DispatchCursor::appendPhase(uint32_t kernel, int32_t iteration, int32_t swe
                 for (int a = 0; a < 3; ++a) d.groups[a] = uint32_t((uint64_t(n[a]) + perGroup[a] - 1) / perGroup[a]);
                 step_.push_back(d);
             }
+}
+
+void DispatchCursor::appendSkippingSweep(const SweepPlan& sweep, int32_t iteration, int32_t sweepIndex) {
+    if (sweep.activeTilesKernel == kNoKernel) return; // no live rule: nothing can change
+    // Both tile kernels run one invocation per tile id along x.
+    const uint64_t tiles = tileCount(package_, tileShift_);
+    const auto groupsFor = [&](uint32_t kernel) {
+        const Kernel& k = package_.kernels[kernel];
+        const uint64_t perGroup = uint64_t(k.localSize[0]) * k.localSize[1] * k.localSize[2];
+        return uint32_t((tiles + perGroup - 1) / perGroup);
+    };
+    Dispatch ranges;
+    ranges.kernel = package_.tileRangesKernel;
+    ranges.push = base_;
+    ranges.groups[0] = groupsFor(ranges.kernel);
+    step_.push_back(ranges);
+
+    for (size_t p = 0; p < sweep.phaseStart.size(); ++p) {
+        const glm::ivec3 count = sweep.phaseCount3[p];
+        if (count.x <= 0 || count.y <= 0 || count.z <= 0) continue;
+        Dispatch d;
+        d.push = base_;
+        d.push.chunkBase[3] = iteration;
+        d.push.chunkCount[3] = sweepIndex;
+        setXyz(d.push.anchorStart, sweep.phaseStart[p], int32_t(record_));
+        setXyz(d.push.anchorStep, sweep.phaseStep[p], tileShift_);
+        setXyz(d.push.anchorCount, count, 1);
+        d.record = record_;
+        d.kernel = sweep.activeTilesKernel;
+        d.groups[0] = groupsFor(d.kernel);
+        step_.push_back(d);
+        d.kind = DispatchKind::Indirect;
+        d.kernel = sweep.kernel;
+        d.groups[0] = d.groups[1] = d.groups[2] = 0; // the active-tiles kernel writes them
+        step_.push_back(d);
+        record_ ^= 1u;
+    }
 }
 
 uint64_t countDispatches(const KernelPackage& package, std::array<uint32_t, 3> maxGroups) {

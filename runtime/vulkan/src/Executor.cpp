@@ -25,15 +25,16 @@ double millisecondsSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// The one hazard voxc has: every command touches the voxel buffer, so each waits on the last.
+// Every command touches the voxel buffer or the tile buffers, so each waits on the last; an
+// indirect dispatch also reads its arguments, written by the active-tiles kernel before it.
 struct Access {
     VkPipelineStageFlags stage;
     VkAccessFlags access;
 };
-constexpr Access kTransferWrite{VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT};
 constexpr Access kTransferRead{VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT};
-constexpr Access kShaderReadWrite{VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                                  VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
+constexpr Access kTransferWrite{VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT};
+constexpr Access kCompute{VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
+                          VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT};
 constexpr Access kShaderRead{VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT};
 constexpr Access kHostRead{VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT};
 
@@ -46,6 +47,14 @@ void barrier(const VulkanApi& api, VkCommandBuffer cmd, VkBuffer buffer, Access 
     b.buffer = buffer;
     b.size = VK_WHOLE_SIZE;
     api.vkCmdPipelineBarrier(cmd, before.stage, after.stage, 0, 0, nullptr, 1, &b, 0, nullptr);
+}
+
+// Over every buffer: the voxels and the tile buffers change hands between commands together.
+void memoryBarrier(const VulkanApi& api, VkCommandBuffer cmd, Access before, Access after) {
+    VkMemoryBarrier b{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    b.srcAccessMask = before.access;
+    b.dstAccessMask = after.access;
+    api.vkCmdPipelineBarrier(cmd, before.stage, after.stage, 0, 1, &b, 0, nullptr, 0, nullptr);
 }
 
 } // namespace
@@ -63,8 +72,11 @@ struct VulkanExecutor::Impl {
     ChunkLayout layout;
     std::array<uint32_t, 3> maxGroups{};
     bool staged = false; // results come back through `readback` instead of a mapped voxel buffer
+    int32_t tileShift = -1; // >= 0: sweeps run over active tiles only (DispatchCursor)
     KernelPipelines pipelines;
     DeviceBuffer voxels, chunkTable, noiseTables, readback;
+    // Tile skipping (kBindingTileRanges..kBindingSkipStats); small, so they exist either way.
+    DeviceBuffer tileRanges, tileDirty, activeTiles, activeDispatch, skipStats;
     VkCommandPool commandPool = VK_NULL_HANDLE;
     Frame frames[2];
     double setupMs = 0;
@@ -82,6 +94,8 @@ struct VulkanExecutor::Impl {
     void submit(Frame& frame);
     void wait(Frame& frame);
     void recordReadback(VkCommandBuffer cmd, Access last);
+    // Every tile range stale, no active-dispatch record in use, statistics zero.
+    void recordTileReset(VkCommandBuffer cmd);
 };
 
 VulkanExecutor::Impl::~Impl() {
@@ -89,6 +103,8 @@ VulkanExecutor::Impl::~Impl() {
     for (Frame& frame : frames)
         if (frame.fence) ctx.api.vkDestroyFence(ctx.device, frame.fence, nullptr);
     if (commandPool) ctx.api.vkDestroyCommandPool(ctx.device, commandPool, nullptr);
+    for (DeviceBuffer* b : {&skipStats, &activeDispatch, &activeTiles, &tileDirty, &tileRanges})
+        destroyBuffer(ctx, *b);
     destroyBuffer(ctx, readback);
     destroyBuffer(ctx, noiseTables);
     destroyBuffer(ctx, chunkTable);
@@ -117,6 +133,20 @@ void VulkanExecutor::Impl::createBuffers() {
     chunkTable = createTable(table);
     const std::span<const int, 256> permutation = perlinPermutation();
     noiseTables = createTable(std::vector<int32_t>(permutation.begin(), permutation.end()));
+
+    const VkDeviceSize tiles = tileShift >= 0 ? tileCount(package, tileShift) : 1;
+    const MemoryUse local = staged ? MemoryUse::Device : MemoryUse::HostAccess;
+    tileRanges = createBuffer(ctx, tiles * 2 * sizeof(uint32_t), storage, local);
+    tileDirty = createBuffer(ctx, tiles * sizeof(uint32_t), storage, local);
+    activeTiles = createBuffer(ctx, tiles * sizeof(uint32_t), storage, local);
+    activeDispatch = createBuffer(ctx, 8 * sizeof(uint32_t), storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, local);
+    skipStats = createBuffer(ctx, 2 * sizeof(uint32_t), storage, MemoryUse::HostAccess);
+}
+
+void VulkanExecutor::Impl::recordTileReset(VkCommandBuffer cmd) {
+    ctx.api.vkCmdFillBuffer(cmd, tileDirty.buffer, 0, VK_WHOLE_SIZE, 1);
+    ctx.api.vkCmdFillBuffer(cmd, activeDispatch.buffer, 0, VK_WHOLE_SIZE, 0);
+    ctx.api.vkCmdFillBuffer(cmd, skipStats.buffer, 0, VK_WHOLE_SIZE, 0);
 }
 
 DeviceBuffer VulkanExecutor::Impl::createTable(const std::vector<int32_t>& values) {
@@ -212,11 +242,21 @@ VulkanExecutor::VulkanExecutor(VulkanContext& context, const KernelPackage& pack
     const DeviceType type = s.ctx.info.type;
     s.staged = options.alwaysStage || !(type == DeviceType::Integrated || type == DeviceType::Cpu);
     if (s.options.dispatchesPerBatch == 0) s.options.dispatchesPerBatch = 1;
+    s.tileShift = options.skipInactiveTiles ? skipTileShift(s.package, s.maxGroups) : -1;
 
     createPipelines(s.ctx, s.package.kernels, s.pipelines);
     s.createFrames();
     s.createBuffers();
-    bindBuffers(s.ctx, s.pipelines, s.voxels.buffer, s.chunkTable.buffer, s.noiseTables.buffer);
+    std::array<VkBuffer, kKernelBindingCount> byBinding{};
+    byBinding[kBindingVoxels] = s.voxels.buffer;
+    byBinding[kBindingChunkTable] = s.chunkTable.buffer;
+    byBinding[kBindingNoiseTables] = s.noiseTables.buffer;
+    byBinding[kBindingTileRanges] = s.tileRanges.buffer;
+    byBinding[kBindingTileDirty] = s.tileDirty.buffer;
+    byBinding[kBindingActiveTiles] = s.activeTiles.buffer;
+    byBinding[kBindingActiveDispatch] = s.activeDispatch.buffer;
+    byBinding[kBindingSkipStats] = s.skipStats.buffer;
+    bindBuffers(s.ctx, s.pipelines, byBinding);
     s.setupMs = millisecondsSince(start);
 }
 
@@ -232,7 +272,7 @@ RunResult VulkanExecutor::run() {
     RunResult result{ChunkedGrid(s.layout), {}, 0};
     result.timings.setupMs = s.setupMs;
 
-    DispatchCursor cursor(s.package, s.maxGroups);
+    DispatchCursor cursor(s.package, s.maxGroups, s.tileShift);
     Dispatch next;
     bool more = cursor.next(next);
     Access last{};
@@ -248,25 +288,41 @@ RunResult VulkanExecutor::run() {
         if (batch == 0) {
             // Padding voxels outside the grid and grids without a start stage read as 0 on every run.
             api.vkCmdFillBuffer(frame.cmd, s.voxels.buffer, 0, VK_WHOLE_SIZE, 0);
+            if (s.tileShift >= 0) s.recordTileReset(frame.cmd);
             last = kTransferWrite;
         }
         api.vkCmdBindDescriptorSets(frame.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, s.pipelines.layout, 0, 1,
                                     &s.pipelines.set, 0, nullptr);
         uint32_t bound = UINT32_MAX;
         for (uint32_t n = 0; more && n < s.options.dispatchesPerBatch; ++n) {
-            barrier(api, frame.cmd, s.voxels.buffer, last, kShaderReadWrite);
-            last = kShaderReadWrite;
+            if (next.kind == DispatchKind::InvalidateRanges) {
+                memoryBarrier(api, frame.cmd, last, kTransferWrite);
+                api.vkCmdFillBuffer(frame.cmd, s.tileDirty.buffer, 0, VK_WHOLE_SIZE, 1);
+                last = kTransferWrite;
+                more = cursor.next(next);
+                continue;
+            }
+            memoryBarrier(api, frame.cmd, last, kCompute);
+            last = kCompute;
             if (next.kernel != bound) {
                 api.vkCmdBindPipeline(frame.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, s.pipelines.pipelines[next.kernel]);
                 bound = next.kernel;
             }
             api.vkCmdPushConstants(frame.cmd, s.pipelines.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(PushBlock),
                                    &next.push);
-            api.vkCmdDispatch(frame.cmd, next.groups[0], next.groups[1], next.groups[2]);
+            if (next.kind == DispatchKind::Indirect) {
+                api.vkCmdDispatchIndirect(frame.cmd, s.activeDispatch.buffer,
+                                          VkDeviceSize(next.record) * 4 * sizeof(uint32_t));
+            } else {
+                api.vkCmdDispatch(frame.cmd, next.groups[0], next.groups[1], next.groups[2]);
+            }
             ++result.dispatches;
             more = cursor.next(next);
         }
-        if (!more) s.recordReadback(frame.cmd, last);
+        if (!more) {
+            memoryBarrier(api, frame.cmd, last, kHostRead); // the skip statistics
+            s.recordReadback(frame.cmd, last);
+        }
         check(api.vkEndCommandBuffer(frame.cmd), "vkEndCommandBuffer");
         result.timings.recordMs += millisecondsSince(recordStart);
         if (batch == 0) executeStart = Clock::now();
@@ -284,6 +340,12 @@ RunResult VulkanExecutor::run() {
     VOXC_ASSERT(data.size() * sizeof(float) == source.size);
     std::memcpy(data.data(), source.mapped, source.size);
     result.timings.readbackMs = millisecondsSince(readStart);
+    if (s.tileShift >= 0) {
+        invalidateForHost(s.ctx, s.skipStats);
+        uint32_t counts[2];
+        std::memcpy(counts, s.skipStats.mapped, sizeof counts);
+        result.skip = TileSkipStats{true, 1 << s.tileShift, counts[1], counts[0]};
+    }
     return result;
 }
 

@@ -11,7 +11,10 @@ namespace voxc::vulkan_detail {
 namespace {
 
 // Descriptor set 0 of every kernel (compiler/shaders/common.glsl), all storage buffers.
-constexpr uint32_t kBindings[] = {kBindingVoxels, kBindingChunkTable, kBindingNoiseTables};
+constexpr uint32_t kBindings[] = {kBindingVoxels,       kBindingChunkTable,   kBindingNoiseTables,
+                                  kBindingTileRanges,  kBindingTileDirty,   kBindingActiveTiles,
+                                  kBindingActiveDispatch, kBindingSkipStats};
+static_assert(std::size(kBindings) == kKernelBindingCount);
 constexpr uint32_t kBindingCount = std::size(kBindings);
 
 } // namespace
@@ -75,12 +78,12 @@ void createPipelines(VulkanContext::Impl& ctx, const std::vector<Kernel>& kernel
     }
 }
 
-void bindBuffers(VulkanContext::Impl& ctx, const KernelPipelines& pipelines, VkBuffer voxels, VkBuffer chunkTable,
-                 VkBuffer noiseTables) {
-    const VkDescriptorBufferInfo buffers[kBindingCount] = {
-        {voxels, 0, VK_WHOLE_SIZE}, {chunkTable, 0, VK_WHOLE_SIZE}, {noiseTables, 0, VK_WHOLE_SIZE}};
+void bindBuffers(VulkanContext::Impl& ctx, const KernelPipelines& pipelines,
+                 const std::array<VkBuffer, kKernelBindingCount>& byBinding) {
+    VkDescriptorBufferInfo buffers[kBindingCount];
     VkWriteDescriptorSet writes[kBindingCount]{};
     for (uint32_t i = 0; i < kBindingCount; ++i) {
+        buffers[i] = {byBinding[kBindings[i]], 0, VK_WHOLE_SIZE};
         writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
         writes[i].dstSet = pipelines.set;
         writes[i].dstBinding = kBindings[i];

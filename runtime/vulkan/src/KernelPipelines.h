@@ -1,12 +1,15 @@
 #pragma once
 // The compute pipelines of a package and the one descriptor set they share
-// (binding 0: voxels, binding 1: chunk table, binding 2: noise tables; push constants: PushBlock).
+// (the kBinding* buffers of KernelPackage.h; push constants: PushBlock).
 #include "ContextImpl.h"
 #include "voxc/codegen/KernelPackage.h"
 
+#include <array>
 #include <vector>
 
 namespace voxc::vulkan_detail {
+
+constexpr uint32_t kKernelBindingCount = 8; // bindings 0..7
 
 struct KernelPipelines {
     VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
@@ -19,8 +22,9 @@ struct KernelPipelines {
 // Fills `out` step by step, so destroyPipelines cleans up after a failure part way.
 // A kernel the driver rejects is an InternalError naming the kernel.
 void createPipelines(VulkanContext::Impl& ctx, const std::vector<Kernel>& kernels, KernelPipelines& out);
-void bindBuffers(VulkanContext::Impl& ctx, const KernelPipelines& pipelines, VkBuffer voxels, VkBuffer chunkTable,
-                 VkBuffer noiseTables);
+// `byBinding[b]` is the buffer of binding b.
+void bindBuffers(VulkanContext::Impl& ctx, const KernelPipelines& pipelines,
+                 const std::array<VkBuffer, kKernelBindingCount>& byBinding);
 void destroyPipelines(VulkanContext::Impl& ctx, KernelPipelines& pipelines);
 
 } // namespace voxc::vulkan_detail

@@ -67,6 +67,7 @@ namespace voxc::vulkan_detail {
     X(vkCmdBindDescriptorSets)                   \
     X(vkCmdPushConstants)                        \
     X(vkCmdDispatch)                             \
+    X(vkCmdDispatchIndirect)                     \
     X(vkCmdPipelineBarrier)                      \
     X(vkCmdCopyBuffer)                           \
     X(vkCmdFillBuffer)

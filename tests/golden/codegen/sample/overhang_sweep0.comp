@@ -8,22 +8,28 @@
 //   never (sample.vox:28:3): removed, cell (1, 1, 0) passes no density so it never matches
 
 // One sweep of a grammar: all rules of one window size. One invocation per anchor of the
-// current phase; the windows of one phase never overlap, so every invocation owns its cells. The steps mirror the CPU interpreter: read the window, find the matching
-// rules, choose one (voxc::chooseRule), then apply its transform.
+// current phase; the windows of one phase never overlap, so every invocation owns its cells.
+// The steps mirror the CPU interpreter: read the window, find the matching rules, choose one
+// (voxc::chooseRule), then apply its transform.
+//
+// Two ways to dispatch it (push.anchorCount.w): 0, directly over every anchor of the phase;
+// 1, indirectly over the tiles the sweep's active-tiles kernel found (tiles.glsl), where
+// workgroup y picks the tile and workgroup x with the local index picks its anchor.
 
 // ---- begin common.glsl ----
 // Declarations every voxc kernel shares: the push block (voxc::PushBlock in
-// compiler/codegen/include/voxc/codegen/KernelPackage.h, field for field) and the three
-// storage buffers of descriptor set 0 (kBindingVoxels, kBindingChunkTable, kBindingNoiseTables).
+// compiler/codegen/include/voxc/codegen/KernelPackage.h, field for field) and the first three
+// storage buffers of descriptor set 0 (kBindingVoxels, kBindingChunkTable, kBindingNoiseTables;
+// the chunk-skipping buffers are in chunks.glsl).
 
 layout(push_constant, std430) uniform PushBlock {
     ivec4 gridOrigin;  // xyz: world coordinate of grid voxel (0,0,0); w: chunk size
     ivec4 gridSize;    // xyz: grid size in voxels; w: seed (bit pattern)
     ivec4 chunkBase;   // xyz: world chunk coordinate of chunk-table entry 0; w: iteration
     ivec4 chunkCount;  // xyz: chunk-table extents; w: sweep index within its grammar
-    ivec4 anchorStart; // xyz: grid-local first anchor of this dispatch
-    ivec4 anchorStep;  // xyz: distance between the anchors of one dispatch
-    ivec4 anchorCount; // xyz: anchors per axis in this dispatch
+    ivec4 anchorStart; // xyz: grid-local first anchor of this dispatch; w: active-dispatch record
+    ivec4 anchorStep;  // xyz: distance between the anchors of one dispatch; w: log2 tile size
+    ivec4 anchorCount; // xyz: anchors per axis in this dispatch; w: 1 = indirect over active tiles
 } push;
 
 // Densities, chunk-major: all voxels of one chunk slot, then the next slot.
@@ -88,6 +94,97 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 // (voxc::Kernel::anchorsPerInvocation; the runtime sizes the dispatch by it).
 const ivec3 ANCHORS_PER_INVOCATION = ivec3(1, 1, 1);
 
+// ---- begin tiles.glsl ----
+// Per-tile bookkeeping that lets the runtime dispatch a sweep only over the tiles where some
+// rule may match (bindings 3-7, kBindingTileRanges.. in KernelPackage.h). Include after the
+// kernel's local size layout.
+//
+// A tile is a cube of 2^push.anchorStep.w voxels per axis, aligned to world coordinates like
+// the chunks and never larger than one, so each chunk holds tilesPerChunk() tiles. Tile
+// buffers are indexed by tileIndex (chunk slot, then the tile inside it); the runtime
+// enumerates tiles by tile id (chunk-table entry, then the tile inside it).
+//
+// A density range is kept as two order-preserving keys (densityKey): a < b as floats implies
+// key(a) < key(b) as uints, so ranges widen with atomicMin/atomicMax and compare exactly in
+// integers. -0 sorts just below +0; NaNs sort beyond the infinities.
+
+layout(std430, set = 0, binding = 3) buffer TileRanges {
+    uint key[]; // per tile: lowest key, highest key (a superset of the tile's in-grid densities)
+} tileRanges;
+
+layout(std430, set = 0, binding = 4) buffer TileDirty {
+    uint flag[]; // per tile: written since its range was last computed exactly
+} tileDirty;
+
+layout(std430, set = 0, binding = 5) buffer ActiveTiles {
+    uint id[]; // tile ids the current phase runs on
+} activeTiles;
+
+layout(std430, set = 0, binding = 6) buffer ActiveDispatch {
+    uint args[]; // two VkDispatchIndirectCommand records (x, y, z, padding); y counts active tiles
+} activeDispatch;
+
+layout(std430, set = 0, binding = 7) buffer SkipStats {
+    uint activeTilePhases;    // (tile, phase) pairs dispatched in this run
+    uint candidateTilePhases; // (tile, phase) pairs holding anchors of a classified phase
+} skipStats;
+
+uint densityKey(float v) {
+    uint bits = floatBitsToUint(v);
+    return (bits & 0x80000000u) != 0u ? ~bits : bits | 0x80000000u;
+}
+
+int tileShift() { return push.anchorStep.w; }
+int tileSize() { return push.gridOrigin.w >> (findMSB(push.gridOrigin.w) - push.anchorStep.w); }
+int tilesPerAxis() { return push.gridOrigin.w >> push.anchorStep.w; } // per chunk
+int tilesPerChunk() { return tilesPerAxis() * tilesPerAxis() * tilesPerAxis(); }
+
+// Tile index of the tile at world tile coordinate `tile`.
+int tileIndex(ivec3 tile) {
+    int perAxis = tilesPerAxis();
+    ivec3 entry = (tile >> findMSB(perAxis)) - push.chunkBase.xyz;
+    int slot = chunkTable.chunkSlot[entry.x + push.chunkCount.x * (entry.y + push.chunkCount.y * entry.z)];
+    ivec3 inside = tile & (perAxis - 1);
+    return slot * tilesPerChunk() + inside.x + perAxis * (inside.y + perAxis * inside.z);
+}
+
+// World tile coordinate of a tile id.
+ivec3 tileOfId(uint id) {
+    int perAxis = tilesPerAxis();
+    int entry = int(id) / tilesPerChunk();
+    int inside = int(id) % tilesPerChunk();
+    ivec3 count = push.chunkCount.xyz;
+    ivec3 chunk = push.chunkBase.xyz + ivec3(entry % count.x, entry / count.x % count.y, entry / (count.x * count.y));
+    return chunk * perAxis + ivec3(inside % perAxis, inside / perAxis % perAxis, inside / (perAxis * perAxis));
+}
+
+// The anchors of the current phase (push.anchorStart + i * step, i < push.anchorCount) whose
+// anchor voxel lies in `tile`: indices first..last per axis, none when first > last on an
+// axis. Every anchor belongs to exactly one tile.
+struct TileAnchors {
+    ivec3 first;
+    ivec3 last;
+};
+
+TileAnchors tileAnchors(ivec3 tile) {
+    ivec3 step = push.anchorStep.xyz;
+    ivec3 low = tile * tileSize() - push.gridOrigin.xyz - push.anchorStart.xyz;
+    ivec3 high = low + (tileSize() - 1);
+    TileAnchors a;
+    a.first = (max(low, ivec3(0)) + step - 1) / step;
+    // floor(high / step), and -1 when the tile ends before the first anchor
+    a.last = min(mix(high / step, ivec3(-1), lessThan(high, ivec3(0))), push.anchorCount.xyz - 1);
+    return a;
+}
+
+// Most anchors of the current phase one tile can hold per axis: how the sweep's indirect
+// dispatch spreads a tile's anchors over workgroups.
+ivec3 anchorsPerTile() {
+    ivec3 step = push.anchorStep.xyz;
+    return min((ivec3(tileSize()) + step - 1) / step, push.anchorCount.xyz);
+}
+// ---- end tiles.glsl ----
+
 // The live rules of this sweep in declaration order (matchedN, weightN below):
 //   0: erode (rule 0 of grammar overhang, sample.vox:12:3)
 //   1: grow (rule 1 of grammar overhang, sample.vox:20:3)
@@ -129,12 +226,45 @@ int windowCellAddress(WindowAddressing window, ivec3 offset) {
     return voxelAddress(window.anchor + offset);
 }
 
+// Stores a written density and keeps its tile's range a superset of the tile's densities
+// (the range only widens; the next tile_ranges pass recomputes it exactly).
+void writeDensity(int address, float value) {
+    voxels.density[address] = value;
+    if (push.anchorCount.w == 0) return; // direct dispatch: no tile bookkeeping
+    int chunkSize = push.gridOrigin.w;
+    int chunkShift = findMSB(chunkSize);
+    int inside = address & (chunkSize * chunkSize * chunkSize - 1);
+    int perAxis = tilesPerAxis();
+    ivec3 tile = (ivec3(inside, inside >> chunkShift, inside >> (2 * chunkShift)) & (push.gridOrigin.w - 1)) >> tileShift();
+    int index = (address >> (3 * chunkShift)) * tilesPerChunk() + tile.x + perAxis * (tile.y + perAxis * tile.z);
+    uint key = densityKey(value);
+    atomicMin(tileRanges.key[2 * index], key);
+    atomicMax(tileRanges.key[2 * index + 1], key);
+    tileDirty.flag[index] = 1u;
+}
+
+// The anchor of this invocation in an indirect dispatch: false when it has none.
+bool activeTileAnchor(out ivec3 anchor) {
+    TileAnchors anchors = tileAnchors(tileOfId(activeTiles.id[gl_WorkGroupID.y]));
+    ivec3 n = anchorsPerTile();
+    int t = int(gl_WorkGroupID.x * (gl_WorkGroupSize.x * gl_WorkGroupSize.y * gl_WorkGroupSize.z) +
+                gl_LocalInvocationIndex);
+    ivec3 i = anchors.first + ivec3(t % n.x, t / n.x % n.y, t / (n.x * n.y));
+    anchor = push.anchorStart.xyz + i * push.anchorStep.xyz;
+    return all(lessThanEqual(i, anchors.last));
+}
+
 // One invocation per anchor (ANCHORS_PER_INVOCATION is 1): a loop over several anchors with
 // run-time bounds costs more than it saves on llvmpipe.
 void main() {
-    ivec3 id = ivec3(gl_GlobalInvocationID);
-    if (any(greaterThanEqual(id, push.anchorCount.xyz))) return;
-    ivec3 anchor = push.anchorStart.xyz + id * push.anchorStep.xyz;
+    ivec3 anchor;
+    if (push.anchorCount.w != 0) {
+        if (!activeTileAnchor(anchor)) return;
+    } else {
+        ivec3 id = ivec3(gl_GlobalInvocationID);
+        if (any(greaterThanEqual(id, push.anchorCount.xyz))) return;
+        anchor = push.anchorStart.xyz + id * push.anchorStep.xyz;
+    }
     ivec3 anchorWorld = push.gridOrigin.xyz + anchor;
 
     // Window [3, 3, 1]: cell i sits at anchor + (i % 3, i / 3 % 3, i / 9).
@@ -243,15 +373,15 @@ void main() {
     // Apply the chosen rule's transform; NOP cells are left untouched and every written value is clamped.
     if (chosen == 0) { // erode (sample.vox:12:3)
         precise float next0 = (cell0 + -0.5); // (0, 0, 0) ADD -0.5
-        voxels.density[address0] = clampDensity(next0);
+        writeDensity(address0, clampDensity(next0));
         address2 = windowCellAddress(window, ivec3(2, 0, 0));
         cell2 = voxels.density[address2];
         precise float next2 = 1.0; // (2, 0, 0) SET 1.0
-        voxels.density[address2] = clampDensity(next2);
+        writeDensity(address2, clampDensity(next2));
     } else if (chosen == 1) { // grow (sample.vox:20:3)
         precise float next2 = (cell2 + 0.100000001); // (2, 0, 0) ADD 0.100000001
-        voxels.density[address2] = clampDensity(next2);
+        writeDensity(address2, clampDensity(next2));
         precise float next4 = 0.25; // (1, 1, 0) SET 0.25
-        voxels.density[address4] = clampDensity(next4);
+        writeDensity(address4, clampDensity(next4));
     }
 }

@@ -10,17 +10,18 @@
 
 // ---- begin common.glsl ----
 // Declarations every voxc kernel shares: the push block (voxc::PushBlock in
-// compiler/codegen/include/voxc/codegen/KernelPackage.h, field for field) and the three
-// storage buffers of descriptor set 0 (kBindingVoxels, kBindingChunkTable, kBindingNoiseTables).
+// compiler/codegen/include/voxc/codegen/KernelPackage.h, field for field) and the first three
+// storage buffers of descriptor set 0 (kBindingVoxels, kBindingChunkTable, kBindingNoiseTables;
+// the chunk-skipping buffers are in chunks.glsl).
 
 layout(push_constant, std430) uniform PushBlock {
     ivec4 gridOrigin;  // xyz: world coordinate of grid voxel (0,0,0); w: chunk size
     ivec4 gridSize;    // xyz: grid size in voxels; w: seed (bit pattern)
     ivec4 chunkBase;   // xyz: world chunk coordinate of chunk-table entry 0; w: iteration
     ivec4 chunkCount;  // xyz: chunk-table extents; w: sweep index within its grammar
-    ivec4 anchorStart; // xyz: grid-local first anchor of this dispatch
-    ivec4 anchorStep;  // xyz: distance between the anchors of one dispatch
-    ivec4 anchorCount; // xyz: anchors per axis in this dispatch
+    ivec4 anchorStart; // xyz: grid-local first anchor of this dispatch; w: active-dispatch record
+    ivec4 anchorStep;  // xyz: distance between the anchors of one dispatch; w: log2 tile size
+    ivec4 anchorCount; // xyz: anchors per axis in this dispatch; w: 1 = indirect over active tiles
 } push;
 
 // Densities, chunk-major: all voxels of one chunk slot, then the next slot.

@@ -16,9 +16,10 @@ struct PushBlock {
     int32_t gridSize[4];    // xyz: grid size in voxels; w: seed (bit pattern)
     int32_t chunkBase[4];   // xyz: world chunk coordinate of chunk-table entry 0; w: iteration
     int32_t chunkCount[4];  // xyz: chunk-table extents; w: sweep index within its grammar
-    int32_t anchorStart[4]; // xyz: grid-local first anchor (start kernel: 0)
-    int32_t anchorStep[4];  // xyz: distance between anchors of one phase (start kernel: 1)
-    int32_t anchorCount[4]; // xyz: anchors per axis in this dispatch (start kernel: grid size)
+    int32_t anchorStart[4]; // xyz: grid-local first anchor (start kernel: 0); w: active-dispatch record
+    int32_t anchorStep[4];  // xyz: distance between anchors of one phase (start kernel: 1); w: log2 tile size
+    int32_t anchorCount[4]; // xyz: anchors per axis in this dispatch (start kernel: grid size);
+                            // w: 1 when the sweep runs indirectly over the active tiles, else 0
 };
 static_assert(sizeof(PushBlock) == 112, "must match common.glsl");
 
@@ -26,6 +27,15 @@ static_assert(sizeof(PushBlock) == 112, "must match common.glsl");
 constexpr uint32_t kBindingVoxels = 0;     // buffer of float densities, chunk-major (see runtime ChunkLayout)
 constexpr uint32_t kBindingChunkTable = 1; // buffer of int: chunk-table entry -> chunk slot
 constexpr uint32_t kBindingNoiseTables = 2; // buffer of int: Perlin's 256-entry permutation (voxc::perlinPermutation)
+// Tile skipping (compiler/shaders/tiles.glsl): a tile is a world-aligned cube of 2^anchorStep.w
+// voxels per axis inside one chunk, chosen by the runtime; buffers sized by the tile count.
+constexpr uint32_t kBindingTileRanges = 3;     // uint[2 per tile]: lowest, highest density key
+constexpr uint32_t kBindingTileDirty = 4;      // uint per tile: range stale (written since computed)
+constexpr uint32_t kBindingActiveTiles = 5;    // uint per tile: ids of the current phase's active tiles
+constexpr uint32_t kBindingActiveDispatch = 6; // uint[8]: two VkDispatchIndirectCommand records (+ padding)
+constexpr uint32_t kBindingSkipStats = 7;      // uint[2]: active and candidate (tile, phase) pairs of a run
+
+constexpr uint32_t kNoKernel = UINT32_MAX;
 
 struct Kernel {
     std::string name;               // e.g. "start", "overhang_sweep0"; also the file stem in a package
@@ -40,6 +50,9 @@ struct Kernel {
 
 struct SweepPlan {
     uint32_t kernel = 0;       // index into KernelPackage::kernels
+    // Run before each phase when tiles are skipped: lists the tiles where a rule may match and
+    // writes the sweep kernel's indirect dispatch. kNoKernel: the sweep has no live rule.
+    uint32_t activeTilesKernel = kNoKernel;
     glm::ivec3 window{1};
     glm::ivec3 phaseCount{1};  // as Sweep::phaseCount
     // Per phase p (x fastest): anchors start + i*step, i < count, as voxc::phaseAnchors computes.
@@ -62,6 +75,9 @@ struct KernelPackage {
     World world;
     std::vector<Kernel> kernels;
     std::vector<StagePlan> stages;
+    // Recomputes the density range of every stale tile, before each sweep when tiles are
+    // skipped. kNoKernel: the package cannot skip tiles (every sweep runs over every anchor).
+    uint32_t tileRangesKernel = kNoKernel;
 };
 
 } // namespace voxc

@@ -10,10 +10,18 @@
 
 namespace voxc {
 
+enum class DispatchKind : uint8_t {
+    Direct,           // vkCmdDispatch of `groups`
+    Indirect,         // vkCmdDispatchIndirect of active-dispatch record `record` (kBindingActiveDispatch)
+    InvalidateRanges, // no kernel: every tile's density range is stale (the start kernel rewrote the grid)
+};
+
 struct Dispatch {
+    DispatchKind kind = DispatchKind::Direct;
     uint32_t kernel = 0;
     PushBlock push{};
     uint32_t groups[3] = {1, 1, 1}; // workgroups: ceil(anchorCount / (localSize * anchorsPerInvocation)) per axis
+    uint32_t record = 0;            // Indirect: which of the two records the active-tiles kernel wrote
 };
 
 // Checks what the executor relies on (kernel indices, phase arrays of equal length, SPIR-V
@@ -21,14 +29,29 @@ struct Dispatch {
 // package is a compiler bug.
 void validatePackage(const KernelPackage& package);
 
+// How tile skipping would run the package: log2 of the tile size (the smallest of 8 voxels and
+// the chunk size, doubled while the tile-sized dispatches do not fit in `maxGroups`; an
+// indirect dispatch cannot be split), or -1 when the package lacks the kernels or no tile fits.
+int32_t skipTileShift(const KernelPackage& package, std::array<uint32_t, 3> maxGroups);
+
+// The number of tiles of 2^tileShift voxels per axis the package's chunk table holds.
+uint64_t tileCount(const KernelPackage& package, int32_t tileShift);
+
 class DispatchCursor {
 public:
     // `maxGroups`: the device's maxComputeWorkGroupCount; a phase needing more workgroups
     // along an axis is split into several dispatches over disjoint anchor ranges.
-    DispatchCursor(const KernelPackage& package, std::array<uint32_t, 3> maxGroups);
+    // `tileShift` >= 0 (skipTileShift's answer): sweeps run only over their phases' active tiles.
+    DispatchCursor(const KernelPackage& package, std::array<uint32_t, 3> maxGroups, int32_t tileShift = -1);
 
-    // Start stage: one dispatch of startKernel over the whole grid. Grammar stage: for each
-    // iteration, each sweep (index in GrammarPlan::sweeps), each phase with anchors, in order.
+    // Start stage: one dispatch of startKernel over the whole grid (then, when skipping tiles,
+    // InvalidateRanges). Grammar stage: for each iteration, each sweep (index in
+    // GrammarPlan::sweeps), each phase with anchors, in order. When skipping tiles a sweep
+    // without live rules is left out, and a sweep with some is the tile_ranges kernel (one
+    // invocation per tile), then per phase its active-tiles kernel (one invocation per tile,
+    // records alternating 0, 1, 0, ... over the run) and the sweep kernel indirectly; both
+    // carry the phase's push block with anchorStart.w = record and anchorCount.w = 1. Every
+    // push block then has anchorStep.w = tileShift.
     // Returns false when the plan is exhausted.
     bool next(Dispatch& out);
 
@@ -37,9 +60,13 @@ private:
     bool expandNextStep();
     void appendPhase(uint32_t kernel, int32_t iteration, int32_t sweep, glm::ivec3 start, glm::ivec3 step,
                      glm::ivec3 count);
+    void appendSkippingSweep(const SweepPlan& sweep, int32_t iteration, int32_t sweepIndex);
+    bool skipping() const { return tileShift_ >= 0; }
 
     const KernelPackage& package_;
     std::array<uint32_t, 3> maxGroups_;
+    int32_t tileShift_ = -1;
+    uint32_t record_ = 0;      // the next phase's active-dispatch record
     PushBlock base_{};         // the fields every dispatch shares
     size_t stage_ = 0;         // next stage to expand
     uint32_t iteration_ = 0;   // next iteration of the current grammar stage

@@ -24,6 +24,18 @@ struct ExecutorOptions {
     // Per-axis workgroup-count limit; 0 means the device's maxComputeWorkGroupCount. Tests
     // lower it to exercise split dispatches.
     std::array<uint32_t, 3> maxWorkGroups{0, 0, 0};
+    // Run each sweep phase only over the tiles (8^3 voxels) where some rule may match (see
+    // DispatchCursor); ignored where the package or the device limits do not allow it (skipTileShift).
+    bool skipInactiveTiles = true;
+};
+
+// How much tile skipping saved in one run: counts of (tile, phase) pairs, summed over every
+// phase of every sweep with live rules (32-bit counters on the device).
+struct TileSkipStats {
+    bool enabled = false;          // the run skipped tiles
+    int32_t tileSize = 0;          // voxels per axis of a tile
+    uint64_t tilePhases = 0;       // tiles holding anchors of a phase
+    uint64_t activeTilePhases = 0; // of those, the ones dispatched (some rule may match there)
 };
 
 struct RunTimings {
@@ -36,7 +48,8 @@ struct RunTimings {
 struct RunResult {
     ChunkedGrid grid;
     RunTimings timings;
-    uint64_t dispatches = 0; // vkCmdDispatch calls recorded
+    uint64_t dispatches = 0; // vkCmdDispatch and vkCmdDispatchIndirect calls recorded
+    TileSkipStats skip;
 };
 
 class VulkanExecutor {

@@ -1,0 +1,38 @@
+#version 450
+// voxc runtime kernel "tile_ranges": recomputes the exact density range of every tile whose
+// flag in TileDirty is set (after a start stage, or where a sweep wrote), so the next sweep
+// classifies tiles on tight ranges. One invocation per tile id (tiles.glsl); a workgroup per
+// tile would cost more in workgroup overhead (llvmpipe) than the tile's reads. Only voxels
+// inside the grid count, since windows never read the padding.
+
+#include "common.glsl"
+
+layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
+
+#include "tiles.glsl"
+
+void main() {
+    uint id = gl_GlobalInvocationID.x;
+    if (id >= uint(push.chunkCount.x * push.chunkCount.y * push.chunkCount.z * tilesPerChunk())) return;
+    ivec3 tile = tileOfId(id);
+    int index = tileIndex(tile);
+    if (tileDirty.flag[index] == 0u) return;
+    ivec3 tileLow = tile * tileSize() - push.gridOrigin.xyz; // grid-local
+    ivec3 low = max(tileLow, ivec3(0));
+    ivec3 high = min(tileLow + tileSize(), push.gridSize.xyz);
+    uint lo = 0xffffffffu;
+    uint hi = 0u;
+    for (int z = low.z; z < high.z; ++z) {
+        for (int y = low.y; y < high.y; ++y) {
+            int address = voxelAddress(ivec3(low.x, y, z));
+            for (int x = low.x; x < high.x; ++x, ++address) { // a tile row never leaves its chunk
+                uint key = densityKey(voxels.density[address]);
+                lo = min(lo, key);
+                hi = max(hi, key);
+            }
+        }
+    }
+    tileRanges.key[2 * index] = lo;
+    tileRanges.key[2 * index + 1] = hi;
+    tileDirty.flag[index] = 0u;
+}
