@@ -10,11 +10,27 @@ file
 
 item
     : constDecl
+    | functionDecl
+    | fieldDecl
     | block
     ;
 
 constDecl
     : CONST name=IDENT '=' expr ';'
+    ;
+
+// `fn ridge(v: float) -> float = 1 - abs(v);`
+functionDecl
+    : FN name=IDENT '(' (parameter (',' parameter)*)? ')' '->' result=IDENT '=' fieldExpr ';'
+    ;
+
+parameter
+    : name=IDENT ':' type=IDENT
+    ;
+
+// `field ground = clamp(24 - y, 0, 1);`
+fieldDecl
+    : FIELD name=IDENT '=' fieldExpr ';'
     ;
 
 // `world { ... }`, `grammar caves { ... }`, `rule r1 { ... }`, `layer { ... }`
@@ -33,9 +49,9 @@ assignment
     : key=IDENT '=' value ';'
     ;
 
-// A pipeline entry: `start;`
+// A pipeline entry: `start;`, `overhang;`, or a field stage with its mode: `subtract cave;`
 nameStatement
-    : IDENT ';'
+    : (combine=IDENT)? name=IDENT ';'
     ;
 
 value
@@ -65,7 +81,30 @@ expr
     | IDENT                                 # NameExpr
     ;
 
+// Field expressions (fields and function bodies). Alternatives are listed from the tightest
+// binding to the loosest; `let` and `?:` extend as far right as possible.
+fieldExpr
+    : '(' fieldExpr ')'                                         # FieldParen
+    | callee=IDENT '(' (fieldExpr (',' fieldExpr)*)? ')'        # FieldCall
+    | fieldExpr '.' swizzle=IDENT                               # FieldMember
+    | op=('-' | '!') fieldExpr                                  # FieldUnary
+    | fieldExpr op=('*' | '/') fieldExpr                        # FieldBinary
+    | fieldExpr op=('+' | '-') fieldExpr                        # FieldBinary
+    | fieldExpr op=('<' | '<=' | '>' | '>=') fieldExpr          # FieldBinary
+    | fieldExpr op=('==' | '!=') fieldExpr                      # FieldBinary
+    | fieldExpr op='&&' fieldExpr                               # FieldBinary
+    | fieldExpr op='||' fieldExpr                               # FieldBinary
+    | <assoc=right> fieldExpr '?' fieldExpr ':' fieldExpr       # FieldConditional
+    | LET name=IDENT '=' fieldExpr IN fieldExpr                 # FieldLet
+    | NUMBER                                                    # FieldNumber
+    | IDENT                                                     # FieldName
+    ;
+
 CONST  : 'const' ;
+FN     : 'fn' ;
+FIELD  : 'field' ;
+LET    : 'let' ;
+IN     : 'in' ;
 IDENT  : [a-zA-Z_] [a-zA-Z_0-9]* ;
 NUMBER : DIGITS ('.' DIGITS?)? EXPONENT? | '.' DIGITS EXPONENT? ;
 

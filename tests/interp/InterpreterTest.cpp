@@ -150,10 +150,10 @@ TEST(interp_Interpreter, PipelineRunsGrammarsInItsOrder) {
     const Grammar bump = makeGrammar("bump", {4, 1, 1}, {makeRule("bump", {"EQ 1"}, {"SET 2"})});
     Program program = makeProgram({4, 1, 1}, {fill, bump});
     EXPECT_EQ(gridRows(interpret(program)), Rows{"2 2 2 2"});
-    program.pipeline = {{Stage::Kind::Start, 0}, {Stage::Kind::Grammar, 1}, {Stage::Kind::Grammar, 0}};
+    program.pipeline = {{Stage::Kind::Start, 0, FieldMode::Set, {}}, {Stage::Kind::Grammar, 1, FieldMode::Set, {}}, {Stage::Kind::Grammar, 0, FieldMode::Set, {}}};
     EXPECT_EQ(gridRows(interpret(program)), Rows{"1 1 1 1"});
     // A start stage after a grammar resets the grid to the start state.
-    program.pipeline = {{Stage::Kind::Grammar, 0}, {Stage::Kind::Start, 0}, {Stage::Kind::Grammar, 1}};
+    program.pipeline = {{Stage::Kind::Grammar, 0, FieldMode::Set, {}}, {Stage::Kind::Start, 0, FieldMode::Set, {}}, {Stage::Kind::Grammar, 1, FieldMode::Set, {}}};
     EXPECT_EQ(gridRows(interpret(program)), Rows{"0 0 0 0"});
 }
 

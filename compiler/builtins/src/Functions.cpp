@@ -20,7 +20,8 @@ std::string_view typeName(Type type) {
 std::span<const FunctionInfo> functions() {
     static const std::vector<FunctionInfo> all = [] {
         std::vector<FunctionInfo> records;
-        for (auto group : {function_records::mathFunctions(), function_records::noiseFunctions()})
+        for (auto group : {function_records::mathFunctions(), function_records::noiseFunctions(),
+                           function_records::operatorFunctions()})
             records.insert(records.end(), group.begin(), group.end());
         return records;
     }();

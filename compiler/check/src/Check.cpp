@@ -23,7 +23,7 @@ namespace {
 
 constexpr std::string_view kTopLevelBlocks[] = {"world", "start", "grammar", "pipeline"};
 // Later parts of the language; using one is E0013 rather than "unknown block".
-constexpr std::string_view kReservedBlocks[] = {"lsystem", "feature", "field", "material"};
+constexpr std::string_view kReservedBlocks[] = {"lsystem", "feature", "material"};
 
 // The first block of a kind that may appear once; later ones are E0003.
 const ast::Block* uniqueBlock(Context& context, const ast::File& file, std::string_view kind) {
@@ -92,14 +92,19 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
     std::vector<CheckedGrammar> grammars = checkGrammars(context, file, world ? &*world : nullptr);
     for (const CheckedGrammar& grammar : grammars) program.grammars.push_back(grammar.grammar);
 
-    program.pipeline.push_back({Stage::Kind::Start, 0});
+    std::vector<std::string> grammarNames;
+    for (const ast::Block& grammarBlock : file.blocks)
+        if (grammarBlock.kind == "grammar" && grammarBlock.label) grammarNames.push_back(*grammarBlock.label);
+    program.fields = checkFields(context, file, grammarNames);
+
+    program.pipeline.push_back({Stage::Kind::Start, 0, FieldMode::Set, {}});
     if (const ast::Block* block = uniqueBlock(context, file, "pipeline")) {
-        std::vector<std::string> grammarNames;
-        for (const ast::Block& grammarBlock : file.blocks)
-            if (grammarBlock.kind == "grammar" && grammarBlock.label) grammarNames.push_back(*grammarBlock.label);
-        for (const Stage& stage : checkPipeline(context, *block, grammarNames)) program.pipeline.push_back(stage);
+        std::vector<std::string> fieldNames;
+        for (const ast::FieldDecl& field : file.fields) fieldNames.push_back(field.name);
+        for (const Stage& stage : checkPipeline(context, *block, grammarNames, fieldNames))
+            program.pipeline.push_back(stage);
     } else {
-        for (uint32_t i = 0; i < program.grammars.size(); ++i) program.pipeline.push_back({Stage::Kind::Grammar, i});
+        for (uint32_t i = 0; i < program.grammars.size(); ++i) program.pipeline.push_back({Stage::Kind::Grammar, i, FieldMode::Set, {}});
     }
     // Warnings only make sense about a program that is otherwise correct.
     if (!context.diagnostics.hasErrors())

@@ -33,10 +33,16 @@ std::vector<StartShape> checkStart(Context& context, const ast::Block& block);
 // against the grid.
 std::optional<CheckedGrammar> checkGrammar(Context& context, const ast::Block& block, const World* world);
 
-// The stages after Start, as indices into `grammarNames`: every grammar declared, in order,
-// including those with errors, so that their names are not reported as unknown as well.
+// The stages after Start, as indices into `grammarNames` / `fieldNames`: every grammar and
+// field declared, in order, including those with errors, so that their names are not
+// reported as unknown as well. Field stages need a mode word: `subtract cave;`.
 std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
-                                 const std::vector<std::string>& grammarNames);
+                                 const std::vector<std::string>& grammarNames,
+                                 const std::vector<std::string>& fieldNames);
+
+// User functions and fields: every field's DAG in declaration order. Field names must differ
+// from each other, from `start` and from `grammarNames` (one namespace for pipeline stages).
+std::vector<Field> checkFields(Context& context, const ast::File& file, const std::vector<std::string>& grammarNames);
 
 // W0201-W0204 for one checked grammar.
 void analyseGrammar(Context& context, const CheckedGrammar& grammar);

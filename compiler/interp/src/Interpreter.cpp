@@ -3,6 +3,7 @@
 #include "voxc/builtins/Ops.h"
 #include "voxc/builtins/Shapes.h"
 #include "voxc/core/Errors.h"
+#include "voxc/interp/FieldEval.h"
 #include "voxc/program/Semantics.h"
 
 #include <algorithm>
@@ -135,6 +136,9 @@ DenseGrid interpret(const Program& program, const InterpOptions& options) {
             break;
         case Stage::Kind::Grammar:
             runGrammar(program, stage.index, grid, options);
+            break;
+        case Stage::Kind::Field:
+            runField(program, stage, grid);
             break;
         }
     }

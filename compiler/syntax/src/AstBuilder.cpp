@@ -21,10 +21,6 @@ SourceLoc contextLoc(antlr4::ParserRuleContext& ctx) {
     return loc;
 }
 
-SourceLoc nodeLoc(antlr4::tree::TerminalNode* node) {
-    return node && node->getSymbol() ? tokenLoc(*node->getSymbol()) : SourceLoc{};
-}
-
 std::string nodeText(antlr4::tree::TerminalNode* node) { return node ? node->getText() : std::string(); }
 
 double parseNumber(const std::string& text) {
@@ -65,6 +61,67 @@ std::unique_ptr<const ast::Expr> buildExpr(P::ExprContext* ctx) {
     } else if (auto* add = dynamic_cast<P::AddExprContext*>(ctx)) {
         bool subtract = add->op && add->op->getText() == "-";
         return binary(subtract ? ast::Expr::Kind::Subtract : ast::Expr::Kind::Add, ctx, add->expr(0), add->expr(1));
+    }
+    return expr;
+}
+
+std::unique_ptr<const ast::Expr> buildFieldExpr(P::FieldExprContext* ctx);
+
+ast::Expr::Kind binaryKind(const std::string& op) {
+    using K = ast::Expr::Kind;
+    static const std::pair<const char*, K> kinds[] = {
+        {"+", K::Add},   {"-", K::Subtract},     {"*", K::Multiply}, {"/", K::Divide},
+        {"<", K::Less},  {"<=", K::LessEqual},   {">", K::Greater},  {">=", K::GreaterEqual},
+        {"==", K::Equal}, {"!=", K::NotEqual},   {"&&", K::And},     {"||", K::Or}};
+    for (const auto& [text, kind] : kinds)
+        if (op == text) return kind;
+    return K::Add; // unreachable for a tree the parser accepted; error recovery may leave no operator
+}
+
+std::unique_ptr<const ast::Expr> buildFieldExpr(P::FieldExprContext* ctx) {
+    if (ctx == nullptr) return std::make_unique<ast::Expr>();
+    if (auto* paren = dynamic_cast<P::FieldParenContext*>(ctx)) return buildFieldExpr(paren->fieldExpr());
+    auto expr = std::make_unique<ast::Expr>();
+    expr->loc = contextLoc(*ctx);
+    using K = ast::Expr::Kind;
+    if (auto* number = dynamic_cast<P::FieldNumberContext*>(ctx)) {
+        expr->kind = K::Number;
+        expr->number = parseNumber(nodeText(number->NUMBER()));
+    } else if (auto* name = dynamic_cast<P::FieldNameContext*>(ctx)) {
+        expr->kind = K::Name;
+        expr->name = nodeText(name->IDENT());
+    } else if (auto* unary = dynamic_cast<P::FieldUnaryContext*>(ctx)) {
+        expr->kind = unary->op && unary->op->getText() == "!" ? K::Not : K::Negate;
+        expr->lhs = buildFieldExpr(unary->fieldExpr());
+    } else if (auto* binary = dynamic_cast<P::FieldBinaryContext*>(ctx)) {
+        expr->kind = binaryKind(binary->op ? binary->op->getText() : std::string());
+        expr->lhs = buildFieldExpr(binary->fieldExpr(0));
+        expr->rhs = buildFieldExpr(binary->fieldExpr(1));
+    } else if (auto* call = dynamic_cast<P::FieldCallContext*>(ctx)) {
+        expr->kind = K::Call;
+        if (call->callee) {
+            expr->name = call->callee->getText();
+            expr->nameLoc = tokenLoc(*call->callee);
+        }
+        for (P::FieldExprContext* arg : call->fieldExpr()) expr->operands.push_back(buildFieldExpr(arg));
+    } else if (auto* member = dynamic_cast<P::FieldMemberContext*>(ctx)) {
+        expr->kind = K::Member;
+        expr->lhs = buildFieldExpr(member->fieldExpr());
+        if (member->swizzle) {
+            expr->name = member->swizzle->getText();
+            expr->nameLoc = tokenLoc(*member->swizzle);
+        }
+    } else if (auto* conditional = dynamic_cast<P::FieldConditionalContext*>(ctx)) {
+        expr->kind = K::Conditional;
+        for (size_t i = 0; i < 3; ++i) expr->operands.push_back(buildFieldExpr(conditional->fieldExpr(i)));
+    } else if (auto* let = dynamic_cast<P::FieldLetContext*>(ctx)) {
+        expr->kind = K::Let;
+        if (let->name) {
+            expr->name = let->name->getText();
+            expr->nameLoc = tokenLoc(*let->name);
+        }
+        expr->lhs = buildFieldExpr(let->fieldExpr(0));
+        expr->rhs = buildFieldExpr(let->fieldExpr(1));
     }
     return expr;
 }
@@ -127,7 +184,16 @@ ast::Block buildBlock(P::BlockContext& ctx) {
         } else if (auto* row = member->row()) {
             block.rows.push_back(buildRow(*row));
         } else if (auto* name = member->nameStatement()) {
-            block.names.push_back({nodeLoc(name->IDENT()), nodeText(name->IDENT())});
+            ast::NameStatement statement;
+            if (name->name) {
+                statement.loc = tokenLoc(*name->name);
+                statement.name = name->name->getText();
+            }
+            if (name->combine) {
+                statement.mode = name->combine->getText();
+                statement.modeLoc = tokenLoc(*name->combine);
+            }
+            block.names.push_back(std::move(statement));
         }
     }
     return block;
@@ -144,6 +210,28 @@ ast::File buildAst(P::FileContext& file) {
             decl.name = constant->name ? constant->name->getText() : std::string();
             decl.value = buildExpr(constant->expr());
             out.constants.push_back(std::move(decl));
+        } else if (auto* function = item->functionDecl()) {
+            ast::FunctionDecl decl;
+            decl.loc = function->name ? tokenLoc(*function->name) : contextLoc(*function);
+            decl.name = function->name ? function->name->getText() : std::string();
+            for (P::ParameterContext* parameter : function->parameter()) {
+                ast::Parameter p;
+                p.loc = parameter->name ? tokenLoc(*parameter->name) : contextLoc(*parameter);
+                p.name = parameter->name ? parameter->name->getText() : std::string();
+                p.type = parameter->type ? parameter->type->getText() : std::string();
+                p.typeLoc = parameter->type ? tokenLoc(*parameter->type) : p.loc;
+                decl.parameters.push_back(std::move(p));
+            }
+            decl.result = function->result ? function->result->getText() : std::string();
+            decl.resultLoc = function->result ? tokenLoc(*function->result) : decl.loc;
+            decl.body = buildFieldExpr(function->fieldExpr());
+            out.functions.push_back(std::move(decl));
+        } else if (auto* field = item->fieldDecl()) {
+            ast::FieldDecl decl;
+            decl.loc = field->name ? tokenLoc(*field->name) : contextLoc(*field);
+            decl.name = field->name ? field->name->getText() : std::string();
+            decl.value = buildFieldExpr(field->fieldExpr());
+            out.fields.push_back(std::move(decl));
         } else if (auto* block = item->block()) {
             out.blocks.push_back(buildBlock(*block));
         }

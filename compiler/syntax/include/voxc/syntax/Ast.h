@@ -14,14 +14,25 @@
 
 namespace voxc::ast {
 
+// Constant expressions use the first seven kinds; field expressions (fields and function
+// bodies) use them all.
 struct Expr {
-    enum class Kind : uint8_t { Number, Name, Negate, Add, Subtract, Multiply, Divide };
+    enum class Kind : uint8_t {
+        Number, Name, Negate, Add, Subtract, Multiply, Divide,
+        Less, LessEqual, Greater, GreaterEqual, Equal, NotEqual, And, Or, Not,
+        Call,        // name(operands...)
+        Member,      // lhs.name: a swizzle such as `.x` or `.xz`
+        Conditional, // operands[0] ? operands[1] : operands[2]
+        Let          // let name = lhs in rhs
+    };
     Kind kind = Kind::Number;
     SourceLoc loc;                // the whole expression
     double number = 0.0;          // Number
-    std::string name;             // Name
-    std::unique_ptr<const Expr> lhs; // Negate: the operand; binary kinds: left operand
-    std::unique_ptr<const Expr> rhs; // binary kinds: right operand
+    std::string name;             // Name, Call (callee), Member (swizzle), Let (bound name)
+    SourceLoc nameLoc;            // Call, Member, Let: the name alone
+    std::unique_ptr<const Expr> lhs; // Negate, Not: the operand; binary kinds: left operand; Member: the vector; Let: the value
+    std::unique_ptr<const Expr> rhs; // binary kinds: right operand; Let: the body
+    std::vector<std::unique_ptr<const Expr>> operands; // Call arguments; Conditional's three parts
 };
 
 // The right-hand side of `key = value;`: a scalar expression or a bracketed list.
@@ -57,10 +68,13 @@ struct Row {
     std::vector<Cell> cells;
 };
 
-// A bare `name;` statement, as in `pipeline { start; caves; }`.
+// A bare `name;` statement, as in `pipeline { start; caves; }`, optionally preceded by a
+// mode word: `subtract cave;`.
 struct NameStatement {
     SourceLoc loc;
     std::string name;
+    std::optional<std::string> mode;
+    SourceLoc modeLoc;
 };
 
 // `kind label { ... }`. Members of each sort keep their written order.
@@ -81,9 +95,35 @@ struct ConstDecl {
     std::unique_ptr<const Expr> value;
 };
 
+struct Parameter {
+    SourceLoc loc; // the name
+    std::string name;
+    std::string type;
+    SourceLoc typeLoc;
+};
+
+// `fn name(params) -> result = body;`
+struct FunctionDecl {
+    SourceLoc loc; // the name
+    std::string name;
+    std::vector<Parameter> parameters;
+    std::string result;
+    SourceLoc resultLoc;
+    std::unique_ptr<const Expr> body;
+};
+
+// `field name = value;`
+struct FieldDecl {
+    SourceLoc loc; // the name
+    std::string name;
+    std::unique_ptr<const Expr> value;
+};
+
 struct File {
-    std::vector<ConstDecl> constants; // declaration order
-    std::vector<Block> blocks;        // declaration order
+    std::vector<ConstDecl> constants;    // declaration order
+    std::vector<FunctionDecl> functions; // declaration order
+    std::vector<FieldDecl> fields;       // declaration order
+    std::vector<Block> blocks;           // declaration order
 };
 
 } // namespace voxc::ast

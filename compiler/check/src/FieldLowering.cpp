@@ -1,0 +1,364 @@
+#include "FieldLowering.h"
+
+#include "Suggest.h"
+
+#include "voxc/builtins/Functions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+
+namespace voxc::check {
+
+namespace {
+
+using Kind = ast::Expr::Kind;
+
+// Position inputs by name; `p` and `wp` are vectors of the three.
+struct InputName {
+    std::string_view name;
+    FieldInput first;
+    bool vector;
+};
+constexpr InputName kInputs[] = {
+    {"x", FieldInput::LocalX, false}, {"y", FieldInput::LocalY, false}, {"z", FieldInput::LocalZ, false},
+    {"wx", FieldInput::WorldX, false}, {"wy", FieldInput::WorldY, false}, {"wz", FieldInput::WorldZ, false},
+    {"p", FieldInput::LocalX, true},  {"wp", FieldInput::WorldX, true}};
+
+// The registry record of each operator as written.
+std::string_view operatorFunction(Kind kind) {
+    switch (kind) {
+    case Kind::Add: return "add";
+    case Kind::Subtract: return "sub";
+    case Kind::Multiply: return "mul";
+    case Kind::Divide: return "div";
+    case Kind::Negate: return "neg";
+    case Kind::Less: return "lt";
+    case Kind::LessEqual: return "le";
+    case Kind::Greater: return "gt";
+    case Kind::GreaterEqual: return "ge";
+    case Kind::Equal: return "eq";
+    case Kind::NotEqual: return "ne";
+    case Kind::And: return "and";
+    case Kind::Or: return "or";
+    case Kind::Not: return "not";
+    default: return "";
+    }
+}
+
+std::string_view operatorText(Kind kind) {
+    switch (kind) {
+    case Kind::Add: return "+";
+    case Kind::Subtract: case Kind::Negate: return "-";
+    case Kind::Multiply: return "*";
+    case Kind::Divide: return "/";
+    case Kind::Less: return "<";
+    case Kind::LessEqual: return "<=";
+    case Kind::Greater: return ">";
+    case Kind::GreaterEqual: return ">=";
+    case Kind::Equal: return "==";
+    case Kind::NotEqual: return "!=";
+    case Kind::And: return "&&";
+    case Kind::Or: return "||";
+    case Kind::Not: return "!";
+    default: return "?";
+    }
+}
+
+bool fitsInt(double v) { return v == std::floor(v) && v >= -2147483648.0 && v <= 2147483647.0; }
+
+std::string typeList(const std::vector<Type>& types) {
+    std::string text;
+    for (size_t i = 0; i < types.size(); ++i) text += (i ? ", " : "") + std::string(typeName(types[i]));
+    return text;
+}
+
+} // namespace
+
+std::optional<Type> parseTypeName(std::string_view name) {
+    for (Type t : {Type::Float, Type::Int, Type::Bool, Type::Vec2, Type::Vec3})
+        if (typeName(t) == name) return t;
+    return std::nullopt;
+}
+
+Lowered FieldLowering::lowerField(const ast::Expr& expr) {
+    Scope scope;
+    scope.inputs = true;
+    return lower(expr, scope);
+}
+
+Lowered FieldLowering::lowerFunctionBody(const ast::FunctionDecl& function, const std::vector<Lowered>& arguments) {
+    Scope scope;
+    for (size_t i = 0; i < function.parameters.size() && i < arguments.size(); ++i)
+        scope.bindings.emplace_back(function.parameters[i].name, arguments[i]);
+    callStack_.push_back(function.name);
+    Lowered body = lower(*function.body, scope);
+    callStack_.pop_back();
+    if (!body.ok) return Lowered::failed();
+    const std::optional<Type> result = parseTypeName(function.result);
+    if (!result) return Lowered::failed(); // reported with the declaration
+    if (body.number) return materialize(body, *result, function.body->loc);
+    if (body.type != *result) {
+        context_.diagnostics.error("E0010", function.body->loc,
+                                   fmt::format("function '{}' is declared to return {} but its body is {}",
+                                               function.name, typeName(*result), typeName(body.type)),
+                                   {{function.resultLoc, "the result type is declared here"}});
+        return Lowered::failed();
+    }
+    return body;
+}
+
+Lowered FieldLowering::materialize(const Lowered& value, Type type, SourceLoc loc) {
+    if (!value.ok || !value.number) return value;
+    const double v = *value.number;
+    FieldNode node;
+    node.kind = FieldNode::Kind::Constant;
+    node.loc = loc;
+    if (type == Type::Int) {
+        if (!fitsInt(v)) {
+            context_.diagnostics.error("E0010", loc, fmt::format("expected an int, found the number {}", v));
+            return Lowered::failed();
+        }
+        node.type = Type::Int;
+        node.constantInt = int32_t(v);
+    } else if (type == Type::Float) {
+        if (std::fabs(v) > double(std::numeric_limits<float>::max())) {
+            context_.diagnostics.error("E0007", loc, "value is too large for a 32-bit float");
+            return Lowered::failed();
+        }
+        node.constant.x = float(v);
+    } else {
+        context_.diagnostics.error("E0010", loc, fmt::format("expected {}, found a number", typeName(type)));
+        return Lowered::failed();
+    }
+    return Lowered::ofNode(dag_.add(node), node.type);
+}
+
+Lowered FieldLowering::input(FieldInput which, SourceLoc loc) {
+    FieldNode node;
+    node.kind = FieldNode::Kind::Input;
+    node.input = which;
+    node.loc = loc;
+    return Lowered::ofNode(dag_.add(node), Type::Float);
+}
+
+Lowered FieldLowering::lower(const ast::Expr& expr, Scope& scope) {
+    switch (expr.kind) {
+    case Kind::Number: return Lowered::ofNumber(expr.number);
+    case Kind::Name: return lowerName(expr, scope);
+    case Kind::Add: case Kind::Subtract: case Kind::Multiply: case Kind::Divide: case Kind::Negate:
+        return lowerArithmetic(expr, scope);
+    case Kind::Not: return callBuiltin("not", {lower(*expr.lhs, scope)}, expr.loc, "!");
+    case Kind::Member: return lowerMember(expr, scope);
+    case Kind::Call: return lowerCall(expr, scope);
+    case Kind::Conditional: {
+        std::vector<Lowered> parts;
+        for (const auto& operand : expr.operands) parts.push_back(lower(*operand, scope));
+        return callBuiltin("select", std::move(parts), expr.loc, "?:");
+    }
+    case Kind::Let: {
+        Lowered value = lower(*expr.lhs, scope);
+        scope.bindings.emplace_back(expr.name, value);
+        Lowered body = lower(*expr.rhs, scope);
+        scope.bindings.pop_back();
+        return body;
+    }
+    default: // comparisons and logic
+        return callBuiltin(operatorFunction(expr.kind), {lower(*expr.lhs, scope), lower(*expr.rhs, scope)}, expr.loc,
+                           operatorText(expr.kind));
+    }
+}
+
+Lowered FieldLowering::lowerName(const ast::Expr& expr, Scope& scope) {
+    for (auto it = scope.bindings.rbegin(); it != scope.bindings.rend(); ++it)
+        if (it->first == expr.name) return it->second;
+    if (scope.inputs)
+        for (const InputName& in : kInputs) {
+            if (in.name != expr.name) continue;
+            if (!in.vector) return input(in.first, expr.loc);
+            std::vector<Lowered> parts;
+            for (int axis = 0; axis < 3; ++axis) parts.push_back(input(FieldInput(int(in.first) + axis), expr.loc));
+            return callBuiltin("vec3", std::move(parts), expr.loc, "vec3");
+        }
+    if (context_.constants.isDeclared(expr.name)) {
+        std::optional<double> value = context_.constants.evaluate(expr);
+        return value ? Lowered::ofNumber(*value) : Lowered::failed();
+    }
+    std::vector<std::string_view> known;
+    for (const auto& binding : scope.bindings) known.push_back(binding.first);
+    if (scope.inputs)
+        for (const InputName& in : kInputs) known.push_back(in.name);
+    const bool isInput = std::any_of(std::begin(kInputs), std::end(kInputs),
+                                     [&](const InputName& in) { return in.name == expr.name; });
+    context_.diagnostics.error(
+        "E0002", expr.loc,
+        isInput ? fmt::format("'{}' is a position input, which function bodies cannot see; pass it as an argument",
+                              expr.name)
+                : fmt::format("unknown name '{}'{}", expr.name, didYouMean(expr.name, known)));
+    return Lowered::failed();
+}
+
+// Numbers fold like constants; anything else becomes a call of the operator's record.
+Lowered FieldLowering::lowerArithmetic(const ast::Expr& expr, Scope& scope) {
+    const bool unary = expr.kind == Kind::Negate;
+    Lowered lhs = lower(*expr.lhs, scope);
+    Lowered rhs = unary ? Lowered::ofNumber(0.0) : lower(*expr.rhs, scope);
+    if (!lhs.ok || !rhs.ok) return Lowered::failed();
+    if (lhs.number && rhs.number) {
+        const double a = *lhs.number, b = *rhs.number;
+        double r = 0.0;
+        switch (expr.kind) {
+        case Kind::Negate: r = -a; break;
+        case Kind::Add: r = a + b; break;
+        case Kind::Subtract: r = a - b; break;
+        case Kind::Multiply: r = a * b; break;
+        default:
+            if (b == 0.0) {
+                context_.diagnostics.error("E0007", expr.rhs->loc, "division by zero");
+                return Lowered::failed();
+            }
+            r = a / b;
+        }
+        if (!std::isfinite(r)) {
+            context_.diagnostics.error("E0007", expr.loc, "value is too large to represent");
+            return Lowered::failed();
+        }
+        return Lowered::ofNumber(r);
+    }
+    std::vector<Lowered> args{lhs};
+    if (!unary) args.push_back(rhs);
+    return callBuiltin(operatorFunction(expr.kind), std::move(args), expr.loc, operatorText(expr.kind));
+}
+
+// `.x` is a Component node; `.xz`, `.zyx`, ... build a vec2/vec3 of components.
+Lowered FieldLowering::lowerMember(const ast::Expr& expr, Scope& scope) {
+    Lowered vector = lower(*expr.lhs, scope);
+    if (!vector.ok) return Lowered::failed();
+    const int width = vector.number ? 0 : vector.type == Type::Vec3 ? 3 : vector.type == Type::Vec2 ? 2 : 0;
+    if (width == 0) {
+        context_.diagnostics.error("E0010", expr.nameLoc,
+                                   fmt::format("'.{}' needs a vec2 or vec3, but this is {}", expr.name,
+                                               vector.number ? "a number" : typeName(vector.type)));
+        return Lowered::failed();
+    }
+    const std::string_view letters = width == 3 ? "xyz" : "xy";
+    if (expr.name.empty() || expr.name.size() > 3 ||
+        expr.name.find_first_not_of(letters) != std::string::npos) {
+        context_.diagnostics.error("E0010", expr.nameLoc,
+                                   fmt::format("'.{}' is not a swizzle of a {}: use up to three of {}", expr.name,
+                                               typeName(vector.type), fmt::join(letters, ", ")));
+        return Lowered::failed();
+    }
+    std::vector<Lowered> components;
+    for (char letter : expr.name) {
+        FieldNode node;
+        node.kind = FieldNode::Kind::Component;
+        node.loc = expr.loc;
+        node.component = uint32_t(letter - 'x');
+        node.operands = {vector.node};
+        components.push_back(Lowered::ofNode(dag_.add(node), Type::Float));
+    }
+    if (components.size() == 1) return components[0];
+    const std::string_view constructor = components.size() == 2 ? "vec2" : "vec3";
+    return callBuiltin(constructor, std::move(components), expr.loc, expr.name);
+}
+
+Lowered FieldLowering::lowerCall(const ast::Expr& expr, Scope& scope) {
+    std::vector<Lowered> args;
+    for (const auto& operand : expr.operands) args.push_back(lower(*operand, scope));
+    if (auto it = functions_.find(expr.name); it != functions_.end()) return callUser(*it->second, expr, std::move(args));
+    if (findFunction(expr.name)) return callBuiltin(expr.name, std::move(args), expr.loc, expr.name);
+    std::vector<std::string_view> known;
+    for (const FunctionInfo& f : functions()) known.push_back(f.name);
+    for (const auto& entry : functions_) known.push_back(entry.first);
+    context_.diagnostics.error("E0002", expr.nameLoc,
+                               fmt::format("unknown function '{}'{}", expr.name, didYouMean(expr.name, known)));
+    return Lowered::failed();
+}
+
+Lowered FieldLowering::callUser(const ast::FunctionDecl& function, const ast::Expr& at, std::vector<Lowered> args) {
+    if (std::find(callStack_.begin(), callStack_.end(), function.name) != callStack_.end()) {
+        context_.diagnostics.error("E0013", at.nameLoc,
+                                   fmt::format("'{}' calls itself (through {}): functions are inlined, so recursion "
+                                               "is not supported",
+                                               function.name, fmt::join(callStack_, " -> ")));
+        return Lowered::failed();
+    }
+    if (args.size() != function.parameters.size()) {
+        context_.diagnostics.error("E0006", at.nameLoc,
+                                   fmt::format("'{}' takes {} argument{} but {} {} given", function.name,
+                                               function.parameters.size(), function.parameters.size() == 1 ? "" : "s",
+                                               args.size(), args.size() == 1 ? "was" : "were"),
+                                   {{function.loc, "declared here"}});
+        return Lowered::failed();
+    }
+    bool ok = true;
+    for (size_t i = 0; i < args.size(); ++i) {
+        const ast::Parameter& parameter = function.parameters[i];
+        const std::optional<Type> type = parseTypeName(parameter.type);
+        if (!args[i].ok || !type) {
+            ok = false;
+            continue;
+        }
+        if (args[i].number) {
+            args[i] = materialize(args[i], *type, at.operands[i]->loc);
+            ok = ok && args[i].ok;
+        } else if (args[i].type != *type) {
+            context_.diagnostics.error("E0010", at.operands[i]->loc,
+                                       fmt::format("argument {} of '{}' is {} but the parameter '{}' is {}", i + 1,
+                                                   function.name, typeName(args[i].type), parameter.name,
+                                                   typeName(*type)),
+                                       {{parameter.loc, "the parameter is declared here"}});
+            ok = false;
+        }
+    }
+    return ok ? lowerFunctionBody(function, args) : Lowered::failed();
+}
+
+Lowered FieldLowering::callBuiltin(std::string_view name, std::vector<Lowered> args, SourceLoc loc,
+                                   std::string_view surface) {
+    for (const Lowered& a : args)
+        if (!a.ok) return Lowered::failed();
+    const FunctionInfo* info = findFunction(name);
+    std::vector<size_t> numbers;
+    for (size_t i = 0; i < args.size(); ++i)
+        if (args[i].number) numbers.push_back(i);
+    // Numbers are floats unless the rule needs an int there; the first assignment that fits wins.
+    std::vector<Type> types(args.size());
+    std::optional<Type> result;
+    const uint32_t assignments = numbers.size() < 8 ? 1u << numbers.size() : 1u;
+    for (uint32_t mask = 0; mask < assignments && !result; ++mask) {
+        bool possible = true;
+        for (size_t i = 0; i < args.size(); ++i) types[i] = args[i].type;
+        for (size_t n = 0; n < numbers.size(); ++n) {
+            const bool asInt = (mask >> n) & 1u;
+            types[numbers[n]] = asInt ? Type::Int : Type::Float;
+            if (asInt && !fitsInt(*args[numbers[n]].number)) possible = false;
+        }
+        if (possible) result = info->typeRule(types);
+    }
+    if (!result) {
+        for (size_t n : numbers) types[n] = Type::Float;
+        const bool isOperator = surface != name;
+        context_.diagnostics.error(
+            "E0010", loc,
+            fmt::format("{} cannot take ({}); {}", isOperator ? fmt::format("operator '{}'", surface)
+                                                               : fmt::format("'{}'", name),
+                        typeList(types), info->signature));
+        return Lowered::failed();
+    }
+    FieldNode node;
+    node.kind = FieldNode::Kind::Call;
+    node.type = *result;
+    node.loc = loc;
+    node.function = uint32_t(info - functions().data());
+    for (size_t i = 0; i < args.size(); ++i) {
+        if (args[i].number) args[i] = materialize(args[i], types[i], loc);
+        if (!args[i].ok) return Lowered::failed();
+        node.operands.push_back(args[i].node);
+    }
+    return Lowered::ofNode(dag_.add(node), node.type);
+}
+
+} // namespace voxc::check

@@ -1,0 +1,72 @@
+#pragma once
+// Lowers field expressions (ast::Expr) into a FieldDag: names resolve to let bindings,
+// parameters, position inputs or constants; operators and calls become builtin calls typed by
+// the registry's type rules; user functions are inlined at each call.
+//
+// Numbers (literals, constants, and + - * / and unary minus of numbers) are folded in double
+// precision like `const` expressions and stay untyped until used: an argument position whose
+// type rule wants an int takes an integral number as an int, anywhere else it is a float.
+#include "Context.h"
+#include "FieldDag.h"
+
+#include "voxc/syntax/Ast.h"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace voxc::check {
+
+// A lowered expression: a node, or a number not yet given a type. `ok` is false after an
+// error, which has then been reported; users of a failed value report nothing more.
+struct Lowered {
+    bool ok = true;
+    std::optional<double> number;
+    uint32_t node = 0;
+    Type type = Type::Float;
+
+    static Lowered failed() { return {false, std::nullopt, 0, Type::Float}; }
+    static Lowered ofNumber(double value) { return {true, value, 0, Type::Float}; }
+    static Lowered ofNode(uint32_t node, Type type) { return {true, std::nullopt, node, type}; }
+};
+
+using FunctionTable = std::map<std::string, const ast::FunctionDecl*, std::less<>>;
+
+std::optional<Type> parseTypeName(std::string_view name);
+
+class FieldLowering {
+public:
+    FieldLowering(Context& context, const FunctionTable& functions, FieldDag& dag)
+        : context_(context), functions_(functions), dag_(dag) {}
+
+    // A field's value: inputs are visible.
+    Lowered lowerField(const ast::Expr& expr);
+    // A function's body with its parameters bound to `arguments` (already of the parameter types).
+    Lowered lowerFunctionBody(const ast::FunctionDecl& function, const std::vector<Lowered>& arguments);
+    // The number as a node of `type` (Float, or Int when it is integral); reports E0007/E0010 at `loc`.
+    Lowered materialize(const Lowered& value, Type type, SourceLoc loc);
+
+private:
+    struct Scope {
+        std::vector<std::pair<std::string, Lowered>> bindings; // innermost last
+        bool inputs = false;                                   // fields see x, y, z, ...; functions do not
+    };
+
+    Lowered lower(const ast::Expr& expr, Scope& scope);
+    Lowered lowerName(const ast::Expr& expr, Scope& scope);
+    Lowered lowerArithmetic(const ast::Expr& expr, Scope& scope);
+    Lowered lowerMember(const ast::Expr& expr, Scope& scope);
+    Lowered lowerCall(const ast::Expr& expr, Scope& scope);
+    Lowered callUser(const ast::FunctionDecl& function, const ast::Expr& at, std::vector<Lowered> args);
+    // A call of builtin `name` on `args`; `surface` is how the user wrote it, for messages.
+    Lowered callBuiltin(std::string_view name, std::vector<Lowered> args, SourceLoc loc, std::string_view surface);
+    Lowered input(FieldInput which, SourceLoc loc);
+
+    Context& context_;
+    const FunctionTable& functions_;
+    FieldDag& dag_;
+    std::vector<std::string> callStack_; // user functions being inlined, outermost first
+};
+
+} // namespace voxc::check

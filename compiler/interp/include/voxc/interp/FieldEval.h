@@ -1,0 +1,37 @@
+#pragma once
+// Field stages on the CPU: a field's DAG evaluated per voxel with the builtin registry's
+// `eval`, combined with the grid's density by the stage's FieldMode.
+#include "voxc/builtins/Functions.h"
+#include "voxc/grid/Grid.h"
+#include "voxc/program/Program.h"
+
+#include <glm/vec3.hpp>
+#include <vector>
+
+namespace voxc {
+
+// Evaluates one field at voxels, reusing its buffers: no allocation per voxel.
+class FieldEvaluator {
+public:
+    FieldEvaluator(const Field& field, glm::ivec3 origin);
+
+    // The value of every node at grid-local voxel `local` (inputs: x = float(local.x),
+    // wx = float(origin.x + local.x), ...); the root's value is `values()[field.root]`.
+    const std::vector<Value>& evaluate(glm::ivec3 local);
+    float density(glm::ivec3 local) { return evaluate(local)[field_.root].v.x; }
+
+private:
+    const Field& field_;
+    glm::ivec3 origin_;
+    std::vector<const FunctionInfo*> functions_; // per node, Call nodes only
+    std::vector<Value> values_;
+    std::vector<Value> arguments_;
+};
+
+// d' for density d and field value f: Set f; Union max(d, f); Subtract min(d, 1 - f); Intersect min(d, f).
+float combineField(FieldMode mode, float d, float f);
+
+// Runs one field stage over the whole grid in place.
+void runField(const Program& program, const Stage& stage, DenseGrid& grid);
+
+} // namespace voxc

@@ -1,0 +1,79 @@
+#include "voxc/interp/FieldEval.h"
+
+#include "voxc/core/Errors.h"
+
+#include <algorithm>
+
+namespace voxc {
+
+FieldEvaluator::FieldEvaluator(const Field& field, glm::ivec3 origin)
+    : field_(field), origin_(origin), functions_(field.nodes.size(), nullptr), values_(field.nodes.size()) {
+    VOXC_ASSERT(field.root < field.nodes.size());
+    size_t maxOperands = 0;
+    for (size_t i = 0; i < field.nodes.size(); ++i) {
+        const FieldNode& node = field.nodes[i];
+        for (uint32_t operand : node.operands) VOXC_ASSERT(operand < i); // topological order
+        maxOperands = std::max(maxOperands, node.operands.size());
+        if (node.kind == FieldNode::Kind::Call) {
+            VOXC_ASSERT(node.function < functions().size());
+            functions_[i] = &functions()[node.function];
+        }
+    }
+    arguments_.reserve(maxOperands);
+}
+
+const std::vector<Value>& FieldEvaluator::evaluate(glm::ivec3 local) {
+    const glm::ivec3 world = origin_ + local;
+    for (size_t i = 0; i < field_.nodes.size(); ++i) {
+        const FieldNode& node = field_.nodes[i];
+        Value& out = values_[i];
+        switch (node.kind) {
+        case FieldNode::Kind::Constant:
+            out.type = node.type;
+            out.v = node.constant;
+            out.i = node.constantInt;
+            out.b = node.constantBool;
+            break;
+        case FieldNode::Kind::Input: {
+            const int axis = int(node.input) % 3;
+            const bool isWorld = node.input >= FieldInput::WorldX;
+            out = Value::makeFloat(float(isWorld ? world[axis] : local[axis]));
+            break;
+        }
+        case FieldNode::Kind::Component:
+            out = Value::makeFloat(values_[node.operands[0]].v[int(node.component)]);
+            break;
+        case FieldNode::Kind::Call:
+            arguments_.clear();
+            for (uint32_t operand : node.operands) arguments_.push_back(values_[operand]);
+            out = functions_[i]->eval(arguments_);
+            break;
+        }
+    }
+    return values_;
+}
+
+float combineField(FieldMode mode, float d, float f) {
+    switch (mode) {
+    case FieldMode::Set: return f;
+    case FieldMode::Union: return std::max(d, f);
+    case FieldMode::Subtract: return std::min(d, 1.0f - f);
+    case FieldMode::Intersect: return std::min(d, f);
+    }
+    return d;
+}
+
+void runField(const Program& program, const Stage& stage, DenseGrid& grid) {
+    VOXC_ASSERT(stage.kind == Stage::Kind::Field && stage.index < program.fields.size());
+    VOXC_ASSERT(grid.size() == program.world.size);
+    FieldEvaluator evaluator(program.fields[stage.index], program.world.origin);
+    const glm::ivec3 size = grid.size();
+    for (int z = 0; z < size.z; ++z)
+        for (int y = 0; y < size.y; ++y)
+            for (int x = 0; x < size.x; ++x) {
+                float& d = grid.at({x, y, z});
+                d = combineField(stage.mode, d, evaluator.density({x, y, z}));
+            }
+}
+
+} // namespace voxc
