@@ -93,6 +93,8 @@ int main(int argc, char** argv) {
         } else {
             benchmark::RunSpecifiedBenchmarks();
         }
+        // The registered benchmarks own executors that must be destroyed before the context.
+        benchmark::ClearRegisteredBenchmarks();
         benchmark::Shutdown();
     } catch (const UserError& error) {
         std::cerr << "voxc-bench: error: " << error.what() << "\n";

@@ -49,6 +49,11 @@ void run(const RunOptions& options) {
                              program.world.size.x, program.world.size.y, program.world.size.z,
                              program.world.chunkSize, program.world.seed, result.dispatches,
                              result.timings.executeMs);
+    if (result.skip.enabled && result.skip.tilePhases > 0)
+        std::cerr << fmt::format("ran sweeps on {} of {} ({:.1f}%) {}^3-voxel tile-phases; the rest provably could not match\n",
+                                 result.skip.activeTilePhases, result.skip.tilePhases,
+                                 100.0 * double(result.skip.activeTilePhases) / double(result.skip.tilePhases),
+                                 result.skip.tileSize);
 
     if (!options.voxelsPath.empty()) {
         writeNpy(options.voxelsPath, voxels.toDense());
