@@ -18,4 +18,13 @@ const std::vector<Case>& grammarCases();
 // Loads the example and resizes it to n^3 with whole-grid bounds, stride 1 and one iteration.
 Program loadCaseProgram(const Case& benchCase, int n);
 
+// The "fbm5" case: a 5-octave Perlin fBm density over n^3 voxels (frequency 0.02 per voxel,
+// lacunarity 2, gain 0.5, seed 0), written by a `set` field stage.
+Program fbm5Program(int n);
+
+// The same fBm computed by libnoise (noise::module::Perlin, standard quality) on every core,
+// one z slab per thread; returns the n^3 values.
+std::vector<float> libnoiseFbm5(int n);
+std::string libnoiseDescription();
+
 } // namespace voxc::bench

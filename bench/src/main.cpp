@@ -1,8 +1,9 @@
-// voxc-bench: times the grammar cases on the Vulkan path and in the interpreter.
+// voxc-bench: times the grammar cases and a 5-octave fBm field on the Vulkan path and in the
+// interpreter, and the same fBm with libnoise as a peer.
 // `voxc-bench --json` prints a JSON list of records; without it Google Benchmark's table.
 // Vulkan times cover execution and readback of an already-built package (pipelines compiled
 // once up front: that cost is printed to stderr, not included); interpreter times cover the
-// same work: start state plus one grammar iteration.
+// same work: start state plus one grammar iteration, or the field.
 #include "Cases.h"
 #include "JsonReporter.h"
 
@@ -15,6 +16,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <iostream>
+#include <algorithm>
 #include <memory>
 
 namespace {
@@ -24,13 +26,14 @@ using namespace voxc;
 struct BenchOptions {
     bool json = false;
     std::vector<int> sizes{64, 128, 256};
-    std::vector<std::string> backends{"vulkan", "interp"};
+    std::vector<int> fieldSizes{256};
+    std::vector<std::string> backends{"vulkan", "interp", "libnoise"};
     std::string device = "auto";
 };
 
-void registerVulkan(bench::JsonReporter& reporter, VulkanContext& context, const bench::Case& benchCase, int n) {
-    const std::string name = fmt::format("{}/{}/vulkan", benchCase.name, n);
-    auto program = std::make_shared<Program>(bench::loadCaseProgram(benchCase, n));
+void registerVulkan(bench::JsonReporter& reporter, VulkanContext& context, const std::string& caseName, int n,
+                    std::shared_ptr<const Program> program) {
+    const std::string name = fmt::format("{}/{}/vulkan", caseName, n);
     auto executor = std::make_shared<std::unique_ptr<VulkanExecutor>>();
     benchmark::RegisterBenchmark(name.c_str(), [&context, program, executor](benchmark::State& state) {
         if (!*executor) {
@@ -43,16 +46,24 @@ void registerVulkan(bench::JsonReporter& reporter, VulkanContext& context, const
             state.SetIterationTime((t.recordMs + t.executeMs + t.readbackMs) / 1000.0);
         }
     })->UseManualTime()->Unit(benchmark::kMillisecond);
-    reporter.describe(name + "/manual_time", {benchCase.name, n, "vulkan", context.device().name});
+    reporter.describe(name + "/manual_time", {caseName, n, "vulkan", context.device().name});
 }
 
-void registerInterp(bench::JsonReporter& reporter, const bench::Case& benchCase, int n) {
-    const std::string name = fmt::format("{}/{}/interp", benchCase.name, n);
-    auto program = std::make_shared<Program>(bench::loadCaseProgram(benchCase, n));
+void registerInterp(bench::JsonReporter& reporter, const std::string& caseName, int n,
+                    std::shared_ptr<const Program> program) {
+    const std::string name = fmt::format("{}/{}/interp", caseName, n);
     benchmark::RegisterBenchmark(name.c_str(), [program](benchmark::State& state) {
         for (auto _ : state) benchmark::DoNotOptimize(interpret(*program).data().data());
     })->Unit(benchmark::kMillisecond);
-    reporter.describe(name, {benchCase.name, n, "interp", "cpu (1 thread)"});
+    reporter.describe(name, {caseName, n, "interp", "cpu (1 thread)"});
+}
+
+void registerLibnoise(bench::JsonReporter& reporter, int n) {
+    const std::string name = fmt::format("fbm5/{}/libnoise", n);
+    benchmark::RegisterBenchmark(name.c_str(), [n](benchmark::State& state) {
+        for (auto _ : state) benchmark::DoNotOptimize(bench::libnoiseFbm5(n).data());
+    })->Unit(benchmark::kMillisecond)->UseRealTime();
+    reporter.describe(name + "/real_time", {"fbm5", n, "libnoise", bench::libnoiseDescription()});
 }
 
 } // namespace
@@ -63,7 +74,8 @@ int main(int argc, char** argv) {
     app.allow_extras(); // the rest goes to Google Benchmark (e.g. --benchmark_min_time=2)
     app.add_flag("--json", options.json, "Print a JSON list of records");
     app.add_option("--sizes", options.sizes, "Grid sizes n (n^3 voxels)")->delimiter(',');
-    app.add_option("--backends", options.backends, "vulkan, interp")->delimiter(',');
+    app.add_option("--field-sizes", options.fieldSizes, "Grid sizes n of the fbm5 field case")->delimiter(',');
+    app.add_option("--backends", options.backends, "vulkan, interp, libnoise")->delimiter(',');
     app.add_option("--device", options.device, "Vulkan device: auto, lavapipe, gpu or an index");
     try {
         app.parse(argc, argv);
@@ -79,14 +91,22 @@ int main(int argc, char** argv) {
     try {
         bench::JsonReporter reporter;
         std::unique_ptr<VulkanContext> context;
-        const bool useVulkan = std::find(options.backends.begin(), options.backends.end(), "vulkan") != options.backends.end();
-        const bool useInterp = std::find(options.backends.begin(), options.backends.end(), "interp") != options.backends.end();
-        if (useVulkan) context = std::make_unique<VulkanContext>(ContextOptions{.device = options.device});
+        auto uses = [&](const char* backend) {
+            return std::find(options.backends.begin(), options.backends.end(), backend) != options.backends.end();
+        };
+        if (uses("vulkan")) context = std::make_unique<VulkanContext>(ContextOptions{.device = options.device});
         for (const bench::Case& benchCase : bench::grammarCases()) {
             for (int n : options.sizes) {
-                if (useVulkan) registerVulkan(reporter, *context, benchCase, n);
-                if (useInterp) registerInterp(reporter, benchCase, n);
+                auto program = std::make_shared<const Program>(bench::loadCaseProgram(benchCase, n));
+                if (uses("vulkan")) registerVulkan(reporter, *context, benchCase.name, n, program);
+                if (uses("interp")) registerInterp(reporter, benchCase.name, n, program);
             }
+        }
+        for (int n : options.fieldSizes) {
+            auto program = std::make_shared<const Program>(bench::fbm5Program(n));
+            if (uses("vulkan")) registerVulkan(reporter, *context, "fbm5", n, program);
+            if (uses("interp")) registerInterp(reporter, "fbm5", n, program);
+            if (uses("libnoise")) registerLibnoise(reporter, n);
         }
         if (options.json) {
             benchmark::RunSpecifiedBenchmarks(&reporter);
