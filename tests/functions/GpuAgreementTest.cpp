@@ -37,6 +37,7 @@ Domain domainFor(std::string_view name, const std::vector<Type>& args, size_t in
     if (name == "length") return {Domain::Range, -100.0f, 100.0f};
     if (name == "pow") return index == 0 ? Domain{Domain::Range, 0.1f, 10.0f} : Domain{Domain::Range, -3.0f, 3.0f};
     if (name == "sin" || name == "cos") return {Domain::Range, -3.14159265f, 3.14159265f};
+    if (name.starts_with("sdf_") || name == "density") return {Domain::Range, -50.0f, 50.0f};
     if (fractal && index == 1) return {Domain::IntRange, 1, 16};
     if (fractal && index == 2) return {Domain::Range, 1.5f, 3.0f};
     if (fractal && index == 3) return {Domain::Range, 0.2f, 0.8f};

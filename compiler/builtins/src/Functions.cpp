@@ -21,7 +21,7 @@ std::span<const FunctionInfo> functions() {
     static const std::vector<FunctionInfo> all = [] {
         std::vector<FunctionInfo> records;
         for (auto group : {function_records::mathFunctions(), function_records::noiseFunctions(),
-                           function_records::operatorFunctions()})
+                           function_records::operatorFunctions(), function_records::sdfFunctions()})
             records.insert(records.end(), group.begin(), group.end());
         return records;
     }();

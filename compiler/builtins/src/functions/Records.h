@@ -9,6 +9,7 @@ namespace voxc::function_records {
 std::span<const FunctionInfo> mathFunctions();  // Math.cpp
 std::span<const FunctionInfo> noiseFunctions(); // NoiseRecords.cpp
 std::span<const FunctionInfo> operatorFunctions(); // Operators.cpp
+std::span<const FunctionInfo> sdfFunctions();      // Sdf.cpp
 
 inline bool isFloatLike(Type t) { return t == Type::Float || t == Type::Vec2 || t == Type::Vec3; }
 inline bool isVector(Type t) { return t == Type::Vec2 || t == Type::Vec3; }
