@@ -72,6 +72,14 @@ TEST(codegen_Golden, OverhangExample) {
     checked.program->sourcePath = "examples/overhang.vox"; // the golden must not depend on the checkout's path
     expectProgramGoldens(*checked.program, "overhang");
 }
+
+TEST(codegen_Golden, FieldsExample) {
+    const std::string path = std::string(VOXC_EXAMPLES_DIR) + "/fields.vox";
+    CheckResult checked = checkFile(path);
+    ASSERT_TRUE(checked.program) << checked.rendered();
+    checked.program->sourcePath = "examples/fields.vox";
+    expectProgramGoldens(*checked.program, "fields");
+}
 #endif
 
 } // namespace

@@ -1,6 +1,9 @@
 #include "SamplePrograms.h"
 #include "voxc/codegen/Codegen.h"
 #include "voxc/codegen/PackageWriter.h"
+#ifdef VOXC_HAVE_CHECK
+#include "voxc/check/Check.h"
+#endif
 
 #include <cstdlib>
 #include <filesystem>
@@ -117,6 +120,21 @@ TEST_F(codegen_Package, ManifestDescribesKernelsAndDispatch) {
     EXPECT_EQ(smooth["phases"][0]["step"], nlohmann::json::array({2, 1, 2}));
     EXPECT_EQ(smooth["phases"][0]["count"], nlohmann::json::array({9, 9, 5}));
 }
+
+#ifdef VOXC_HAVE_CHECK
+TEST_F(codegen_Package, ManifestListsFieldStages) {
+    CheckResult checked = checkFile(std::string(VOXC_EXAMPLES_DIR) + "/fields.vox");
+    ASSERT_TRUE(checked.program) << checked.rendered();
+    const nlohmann::json m = nlohmann::json::parse(packageManifest(compileProgram(*checked.program), "fields.vox"));
+    const auto& stages = m["dispatch"]["stages"];
+    // `start` is a dead stage: `set ground` overwrites every voxel.
+    ASSERT_EQ(stages.size(), 4u);
+    EXPECT_EQ(stages[0], (nlohmann::json{{"kind", "field"}, {"field", "ground"}, {"mode", "set"}, {"kernel", "ground_set"}}));
+    EXPECT_EQ(stages[1]["kernel"], "tunnel_subtract");
+    EXPECT_EQ(stages[2]["mode"], "union");
+    EXPECT_EQ(stages[3]["kind"], "grammar");
+}
+#endif
 
 TEST_F(codegen_Package, SpirvValAcceptsEveryWrittenModule) {
     const std::string spirvVal = VOXC_SPIRV_VAL;

@@ -1,6 +1,9 @@
 // Every example, run by the interpreter and by the Vulkan path at chunk sizes 8, 16 and 32 and
 // with the grid origin shifted by zero, a negative and a far offset (so chunks straddle and floor division
-// of negative coordinates matters), must give bit-identical voxels.
+// of negative coordinates matters), must give bit-identical voxels. Field stages too: every
+// record they use is exact on lavapipe except sin and cos, which FieldsWithinRecordTolerance
+// compares within the records' tolerances.
+#include "voxc/builtins/Functions.h"
 #include "voxc/check/Check.h"
 #include "voxc/codegen/Codegen.h"
 #include "voxc/grid/Grid.h"
@@ -9,6 +12,7 @@
 #include "voxc/vulkan/Executor.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -70,9 +74,34 @@ TEST_P(InterpVsVulkan, BitIdenticalAtEveryChunkSize) {
     }
 }
 
+// cases/field_trig.vox: its field is 0.5 + 0.25 * sin(..) * cos(..), so each voxel may differ by
+// at most the sum of the tolerances of the inexact calls in the field (the factors are <= 1).
+TEST(InterpVsVulkanFields, FieldsWithinRecordTolerance) {
+    Program program = loadExample("cases/field_trig");
+    ASSERT_EQ(program.fields.size(), 1u);
+    float bound = 0.0f;
+    for (const FieldNode& node : program.fields[0].nodes)
+        if (node.kind == FieldNode::Kind::Call) bound += functions()[node.function].tolerance;
+    ASSERT_GT(bound, 0.0f); // sin and cos promise no exactness
+    const DenseGrid expected = interpret(program);
+    for (int chunk : {8, 32}) {
+        SCOPED_TRACE(fmt::format("chunk {}", chunk));
+        program.world.chunkSize = chunk;
+        VulkanExecutor executor(lavapipe(), codegen::compileProgram(program, {}));
+        const DenseGrid actual = executor.run().grid.toDense();
+        float largest = 0.0f;
+        const glm::ivec3 size = expected.size();
+        for (int z = 0; z < size.z; ++z)
+            for (int y = 0; y < size.y; ++y)
+                for (int x = 0; x < size.x; ++x)
+                    largest = std::max(largest, std::fabs(expected.at({x, y, z}) - actual.at({x, y, z})));
+        EXPECT_LE(largest, bound);
+    }
+}
+
 std::vector<Case> cases() {
     std::vector<Case> all;
-    for (const char* example : {"overhang", "cave_grammar", "terrain", "cases/priorities"})
+    for (const char* example : {"overhang", "cave_grammar", "terrain", "fields", "cases/priorities", "cases/field_modes"})
         for (glm::ivec3 origin : {glm::ivec3(0, 0, 0), glm::ivec3(-37, -5, -100), glm::ivec3(100003, 7, -65541)})
             all.push_back({example, origin});
     return all;

@@ -166,3 +166,26 @@ TEST(vulkan_DispatchPlan, MalformedPackagesAreInternalErrors) {
     oddChunk.world.chunkSize = 12;
     EXPECT_THROW(validatePackage(oddChunk), InternalError);
 }
+
+TEST(vulkan_DispatchPlan, FieldStagesCoverTheGridThenInvalidateTileRanges) {
+    const World world = makeWorld({20, 12, 9}, {-37, -5, -100}, 8);
+    KernelPackage package = makePackage(world, true, {});
+    StagePlan field;
+    field.kind = Stage::Kind::Field;
+    field.fieldKernel = package.stages[0].startKernel;
+    field.fieldName = "f";
+    field.fieldMode = FieldMode::Union;
+    package.stages.push_back(field);
+    validatePackage(package);
+    DispatchCursor cursor(package, kNoLimit, 3);
+    std::vector<Dispatch> all;
+    Dispatch d;
+    while (cursor.next(d)) all.push_back(d);
+    // start, invalidate, field, invalidate: a field rewrites densities, so every tile range is stale.
+    ASSERT_EQ(all.size(), 4u);
+    EXPECT_EQ(all[2].kind, DispatchKind::Direct);
+    EXPECT_EQ(all[2].kernel, field.fieldKernel);
+    EXPECT_EQ(xyz(all[2].push.anchorStart), glm::ivec3(0));
+    EXPECT_EQ(xyz(all[2].push.anchorCount), world.size);
+    EXPECT_EQ(all[3].kind, DispatchKind::InvalidateRanges);
+}

@@ -6,6 +6,7 @@
 #include "voxc/program/Semantics.h"
 
 #include <filesystem>
+#include <map>
 #include <fmt/format.h>
 
 namespace voxc::codegen {
@@ -56,6 +57,22 @@ KernelPackage compileProgram(const Program& program, const CompileOptions& optio
         makeKernel("start", fmt::format("{} start", sourceName), startDispatchShape(module),
                    startKernelSource(module, sourceName)));
 
+    // One kernel per (field, mode) the pipeline runs, however often.
+    std::map<std::pair<uint32_t, FieldMode>, std::vector<Stage>> fieldStages;
+    for (const Stage& stage : module.pipeline)
+        if (stage.kind == Stage::Kind::Field) fieldStages[{stage.index, stage.mode}].push_back(stage);
+    std::map<std::pair<uint32_t, FieldMode>, uint32_t> fieldKernels;
+    for (const auto& [key, stages] : fieldStages) {
+        const ir::IrField& field = module.fields.at(key.first);
+        const std::string name = fmt::format("{}_{}", field.name, ir::fieldModeName(key.second));
+        const std::string origin = fmt::format("{}:{}:{} field {}, {}", sourceName, field.loc.line, field.loc.column,
+                                               field.name, ir::fieldModeName(key.second));
+        fieldKernels[key] = uint32_t(package.kernels.size());
+        package.kernels.push_back(
+            makeKernel(name, origin, fieldDispatchShape(module),
+                       fieldKernelSource(module, field, key.second, stages, name, sourceName)));
+    }
+
     // Kernels of a grammar are generated once, even if the pipeline runs it more than once.
     std::vector<GrammarPlan> grammarPlans;
     for (const ir::IrGrammar& grammar : module.grammars) {
@@ -100,6 +117,11 @@ KernelPackage compileProgram(const Program& program, const CompileOptions& optio
         switch (stage.kind) {
         case Stage::Kind::Start: plan.startKernel = 0; break;
         case Stage::Kind::Grammar: plan.grammar = grammarPlans.at(stage.index); break;
+        case Stage::Kind::Field:
+            plan.fieldKernel = fieldKernels.at({stage.index, stage.mode});
+            plan.fieldName = module.fields.at(stage.index).name;
+            plan.fieldMode = stage.mode;
+            break;
         }
         package.stages.push_back(std::move(plan));
     }

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace voxc::codegen {
 
@@ -23,6 +24,13 @@ std::string dispatchShapeGlsl(const DispatchShape& shape);
 // depend on the directory it was compiled from).
 DispatchShape startDispatchShape(const ir::IrModule& module);
 std::string startKernelSource(const ir::IrModule& module, std::string_view sourceName);
+
+// A field stage's kernel "<field>_<mode>": column-walking like the start kernel (same shape).
+// `stages` are the pipeline stages that run it (for the header comment).
+DispatchShape fieldDispatchShape(const ir::IrModule& module);
+std::string fieldKernelSource(const ir::IrModule& module, const ir::IrField& field, FieldMode mode,
+                              const std::vector<Stage>& stages, std::string_view kernelName,
+                              std::string_view sourceName);
 
 DispatchShape sweepDispatchShape(const ir::IrSweep& sweep);
 std::string sweepKernelSource(const ir::IrGrammar& grammar, const ir::IrSweep& sweep, std::string_view kernelName,

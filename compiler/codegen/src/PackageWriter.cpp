@@ -2,6 +2,7 @@
 
 #include "voxc/core/AtomicWrite.h"
 #include "voxc/core/Errors.h"
+#include "voxc/ir/Ir.h"
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -85,6 +86,11 @@ Json stageJson(const KernelPackage& package, const StagePlan& stage) {
                     {"iterations", stage.grammar.iterations},
                     {"sweeps", sweeps}};
     }
+    case Stage::Kind::Field:
+        return Json{{"kind", "field"},
+                    {"field", stage.fieldName},
+                    {"mode", ir::fieldModeName(stage.fieldMode)},
+                    {"kernel", package.kernels.at(stage.fieldKernel).name}};
     }
     throw InternalError("unknown stage kind");
 }

@@ -21,8 +21,34 @@ std::string_view trimLeft(std::string_view s) {
     return first == std::string_view::npos ? std::string_view{} : s.substr(first);
 }
 
-void expand(Expansion& e, std::string_view file, int depth) {
-    const std::string_view source = shaderSource(file);
+void expandText(Expansion& e, std::string_view file, std::string_view source, int depth);
+
+void includeOnce(Expansion& e, std::string_view name, int depth) {
+    if (!e.included.insert(std::string(name)).second) return;
+    e.out += "// ---- begin " + std::string(name) + " ----\n";
+    expandText(e, name, shaderSource(name), depth);
+    e.out += "// ---- end " + std::string(name) + " ----\n";
+}
+
+// A generated section: its `#include` lines paste templates like the template's own (each file
+// once per kernel); nothing else in it is interpreted.
+void expandSection(Expansion& e, std::string_view text, int depth) {
+    size_t pos = 0;
+    while (pos < text.size()) {
+        size_t end = text.find('\n', pos);
+        if (end == std::string_view::npos) end = text.size();
+        const std::string_view line = text.substr(pos, end - pos);
+        pos = end + 1;
+        const std::string_view body = trimLeft(line);
+        if (body.starts_with("#include \"") && body.ends_with("\"")) {
+            includeOnce(e, body.substr(10, body.size() - 11), depth + 1);
+        } else {
+            e.out.append(line).append("\n");
+        }
+    }
+}
+
+void expandText(Expansion& e, std::string_view file, std::string_view source, int depth) {
     size_t pos = 0;
     while (pos < source.size()) {
         size_t end = source.find('\n', pos);
@@ -32,12 +58,7 @@ void expand(Expansion& e, std::string_view file, int depth) {
         const std::string_view body = trimLeft(line);
         const std::string_view indent = line.substr(0, line.size() - body.size());
         if (body.starts_with("#include \"") && body.ends_with("\"")) {
-            const std::string_view name = body.substr(10, body.size() - 11);
-            if (e.included.insert(std::string(name)).second) {
-                e.out += "// ---- begin " + std::string(name) + " ----\n";
-                expand(e, name, depth + 1);
-                e.out += "// ---- end " + std::string(name) + " ----\n";
-            }
+            includeOnce(e, body.substr(10, body.size() - 11), depth + 1);
         } else if (depth > 0 && body.starts_with("#version")) {
             throw InternalError(std::string(file) + ": an included template may not declare #version");
         } else if (body.starts_with("// <<") && body.ends_with(">>")) {
@@ -47,7 +68,7 @@ void expand(Expansion& e, std::string_view file, int depth) {
                 throw InternalError(std::string(file) + ": no section for marker " + std::string(name));
             if (!e.used.insert(it->first).second)
                 throw InternalError(std::string(file) + ": marker " + std::string(name) + " appears twice");
-            e.out += prefixLines(it->second, indent);
+            expandSection(e, prefixLines(it->second, indent), depth);
         } else {
             e.out.append(line).append("\n");
         }
@@ -72,7 +93,7 @@ std::string prefixLines(std::string_view text, std::string_view prefix) {
 
 std::string instantiateTemplate(std::string_view templateFile, const TemplateSections& sections) {
     Expansion e{sections, {std::string(templateFile)}, {}, {}};
-    expand(e, templateFile, 0);
+    expandText(e, templateFile, shaderSource(templateFile), 0);
     for (const auto& [name, text] : sections)
         if (!e.used.contains(name))
             throw InternalError(std::string(templateFile) + ": section " + name + " has no marker");

@@ -1,7 +1,8 @@
 #pragma once
 // Instantiates a GLSL template of compiler/shaders: `#include "file.glsl"` lines paste that
 // template (each file once per kernel), and a line `// <<NAME>>` is replaced by the generated
-// section NAME, indented like the marker. Every section must be used exactly once.
+// section NAME, indented like the marker (an `#include` line in a section pastes that template
+// too, still once per kernel). Every section must be used exactly once.
 #include <map>
 #include <string>
 #include <string_view>

@@ -1,3 +1,4 @@
+#include "voxc/builtins/Functions.h"
 #include "voxc/builtins/Ops.h"
 #include "voxc/builtins/Shapes.h"
 #include "voxc/ir/Ir.h"
@@ -62,7 +63,67 @@ void printSweep(std::string& out, const IrSweep& sweep) {
                            loc(removed.loc), removed.cell);
 }
 
+const char* inputName(FieldInput input) {
+    static const char* const names[] = {"x", "y", "z", "wx", "wy", "wz"};
+    return names[int(input)];
+}
+
+std::string printConstant(const FieldNode& node) {
+    switch (node.type) {
+    case Type::Float: return glslFloat(node.constant.x);
+    case Type::Int: return std::to_string(node.constantInt);
+    case Type::Bool: return node.constantBool ? "true" : "false";
+    case Type::Vec2: return fmt::format("vec2({}, {})", glslFloat(node.constant.x), glslFloat(node.constant.y));
+    case Type::Vec3:
+        return fmt::format("vec3({}, {}, {})", glslFloat(node.constant.x), glslFloat(node.constant.y),
+                           glslFloat(node.constant.z));
+    }
+    return "?";
+}
+
+// One line per node: "%4 = call add(%2, %3) : float column".
+void printField(std::string& out, const IrField& field) {
+    out += fmt::format("field {} ({}) root %{}\n", field.name, loc(field.loc), field.root);
+    for (uint32_t i = 0; i < field.nodes.size(); ++i) {
+        const FieldNode& node = field.nodes[i];
+        std::string value;
+        switch (node.kind) {
+        case FieldNode::Kind::Constant: value = "const " + printConstant(node); break;
+        case FieldNode::Kind::Input: value = fmt::format("input {}", inputName(node.input)); break;
+        case FieldNode::Kind::Component: value = fmt::format("%{}.{}", node.operands[0], "xyz"[node.component]); break;
+        case FieldNode::Kind::Call: {
+            std::vector<std::string> operands;
+            for (uint32_t o : node.operands) operands.push_back(fmt::format("%{}", o));
+            value = fmt::format("call {}({})", functions()[node.function].name, fmt::join(operands, ", "));
+            break;
+        }
+        }
+        const bool column = !field.perColumn.empty() && field.perColumn[i];
+        out += fmt::format("  %{} = {} : {}{}\n", i, value, typeName(node.type), column ? " column" : "");
+    }
+}
+
 } // namespace
+
+std::string_view fieldModeName(FieldMode mode) {
+    switch (mode) {
+    case FieldMode::Set: return "set";
+    case FieldMode::Union: return "union";
+    case FieldMode::Subtract: return "subtract";
+    case FieldMode::Intersect: return "intersect";
+    }
+    return "?";
+}
+
+std::string printStage(const IrModule& module, const Stage& stage) {
+    switch (stage.kind) {
+    case Stage::Kind::Start: return "start";
+    case Stage::Kind::Grammar: return module.grammars.at(stage.index).name;
+    case Stage::Kind::Field:
+        return fmt::format("{} {}", fieldModeName(stage.mode), module.fields.at(stage.index).name);
+    }
+    return "?";
+}
 
 std::string printPredicate(const Predicate& p) {
     const SymbolOpInfo& info = symbolOpInfo(p.op);
@@ -92,8 +153,14 @@ std::string printIr(const IrModule& module) {
         out += fmt::format("  {} value {} ({})\n", shapeInfo(shape.kind).name, glslFloat(shape.value), loc(shape.loc));
     out += "pipeline";
     for (const Stage& stage : module.pipeline)
-        out += stage.kind == Stage::Kind::Start ? std::string(" start") : " " + module.grammars[stage.index].name;
+        out += " " + printStage(module, stage);
     out += "\n";
+    if (!module.deadStages.empty()) {
+        out += "dead stages";
+        for (const Stage& stage : module.deadStages)
+            out += " " + printStage(module, stage);
+        out += "\n";
+    }
     for (const IrGrammar& g : module.grammars) {
         out += fmt::format("grammar {} ({}) stride {} bounds {}..{} iterations {}", g.name, loc(g.loc),
                            printVec(g.stride), printVec(g.boundsMin), printVec(g.boundsMax), g.iterations);
@@ -104,6 +171,8 @@ std::string printIr(const IrModule& module) {
         for (const IrSweep& sweep : g.sweeps)
             printSweep(out, sweep);
     }
+    for (const IrField& field : module.fields)
+        printField(out, field);
     return out;
 }
 

@@ -49,6 +49,10 @@ void validatePackage(const KernelPackage& package) {
             checkKernel(stage.startKernel);
             continue;
         }
+        if (stage.kind == Stage::Kind::Field) {
+            checkKernel(stage.fieldKernel);
+            continue;
+        }
         for (const SweepPlan& sweep : stage.grammar.sweeps) {
             checkKernel(sweep.kernel);
             if (sweep.phaseStep.size() != sweep.phaseStart.size() || sweep.phaseCount3.size() != sweep.phaseStart.size())
@@ -107,9 +111,11 @@ bool DispatchCursor::expandNextStep() {
     position_ = 0;
     while (stage_ < package_.stages.size()) {
         const StagePlan& stage = package_.stages[stage_];
-        if (stage.kind == Stage::Kind::Start) {
+        if (stage.kind == Stage::Kind::Start || stage.kind == Stage::Kind::Field) {
+            // Both rewrite every voxel: one dispatch over the grid, then every tile range is stale.
             ++stage_;
-            appendPhase(stage.startKernel, 0, 0, glm::ivec3(0), glm::ivec3(1), package_.world.size);
+            const uint32_t kernel = stage.kind == Stage::Kind::Start ? stage.startKernel : stage.fieldKernel;
+            appendPhase(kernel, 0, 0, glm::ivec3(0), glm::ivec3(1), package_.world.size);
             if (skipping()) {
                 Dispatch invalidate;
                 invalidate.kind = DispatchKind::InvalidateRanges;

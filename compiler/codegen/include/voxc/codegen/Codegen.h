@@ -15,7 +15,8 @@ struct CompileOptions {
     std::function<void(std::string_view passName, const ir::IrModule& module)> afterPass;
 };
 
-// One "start" kernel and one kernel per (grammar, sweep), named "<grammar>_sweep<i>".
+// One "start" kernel, one kernel per (field, mode) the pipeline runs, named "<field>_<mode>"
+// (e.g. "ground_set"), and one kernel per (grammar, sweep), named "<grammar>_sweep<i>".
 // The result is the same, byte for byte, on every run.
 KernelPackage compileProgram(const Program& program, const CompileOptions& options = {});
 

@@ -69,6 +69,11 @@ struct StagePlan {
     Stage::Kind kind = Stage::Kind::Start;
     uint32_t startKernel = 0; // Start
     GrammarPlan grammar;      // Grammar
+    // Field: one dispatch over the whole grid like the start kernel; it rewrites densities, so
+    // tile ranges go stale afterwards.
+    uint32_t fieldKernel = 0;
+    std::string fieldName;
+    FieldMode fieldMode = FieldMode::Set;
 };
 
 struct KernelPackage {

@@ -1,5 +1,6 @@
 #pragma once
-// The grammar-stage IR: what the kernels of one program must do, in execution order.
+// The IR: what the kernels of one program must do, in execution order (grammar sweeps and
+// field expressions).
 // Lowering fills it from a checked Program; the passes in voxc/ir/passes refine it; codegen
 // turns each sweep into one compute kernel. printIr gives a stable text form for tests and
 // `voxc compile --print-ir`.
@@ -8,6 +9,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace voxc::ir {
@@ -73,13 +75,31 @@ struct IrGrammar {
     std::vector<IrSweep> sweeps; // execution order
 };
 
+// A field expression as the kernels evaluate it. Lowering copies Program::fields; the field
+// passes fold, share and hoist its nodes (still topological: operands precede users).
+struct IrField {
+    std::string name;
+    SourceLoc loc;
+    std::vector<FieldNode> nodes;
+    uint32_t root = 0;
+    // Per node: true when it does not depend on y (LocalY/WorldY), so a column-walking kernel
+    // computes it once per (x, z) column. Empty until the hoist-column-values pass runs.
+    std::vector<bool> perColumn;
+};
+
 struct IrModule {
     std::string sourcePath;
     World world;
     std::vector<StartShape> start;
     std::vector<IrGrammar> grammars; // Program::grammars order
-    std::vector<Stage> pipeline;
+    std::vector<IrField> fields;     // Program::fields order; a Field stage's index points here
+    std::vector<Stage> pipeline;     // the stages that run
+    // Stages removed because a later stage overwrites everything they wrote; printed only.
+    std::vector<Stage> deadStages;
 };
+
+// "set", "union", "subtract", "intersect": the pipeline keyword and kernel-name suffix.
+std::string_view fieldModeName(FieldMode mode);
 
 // Window cell position of a cellIndex.
 glm::ivec3 cellOffset(glm::ivec3 window, uint32_t cell);
@@ -93,5 +113,7 @@ std::string printPredicate(const Predicate& predicate);
 std::string printTransform(const TransformCell& transform);
 std::string printCell(glm::ivec3 offset);
 std::string printVec(glm::ivec3 v);
+// "start", a grammar's name, or "set ground".
+std::string printStage(const IrModule& module, const Stage& stage);
 
 } // namespace voxc::ir

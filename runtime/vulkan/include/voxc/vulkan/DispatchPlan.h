@@ -44,8 +44,8 @@ public:
     // `tileShift` >= 0 (skipTileShift's answer): sweeps run only over their phases' active tiles.
     DispatchCursor(const KernelPackage& package, std::array<uint32_t, 3> maxGroups, int32_t tileShift = -1);
 
-    // Start stage: one dispatch of startKernel over the whole grid (then, when skipping tiles,
-    // InvalidateRanges). Grammar stage: for each iteration, each sweep (index in
+    // Start (and field) stage: one dispatch of startKernel (fieldKernel) over the whole grid
+    // (then, when skipping tiles, InvalidateRanges). Grammar stage: for each iteration, each sweep (index in
     // GrammarPlan::sweeps), each phase with anchors, in order. When skipping tiles a sweep
     // without live rules is left out, and a sweep with some is the tile_ranges kernel (one
     // invocation per tile), then per phase its active-tiles kernel (one invocation per tile,
@@ -56,7 +56,7 @@ public:
     bool next(Dispatch& out);
 
 private:
-    // Queues the dispatches of the next stage step (a start stage, or one grammar iteration).
+    // Queues the dispatches of the next stage step (a start or field stage, or one grammar iteration).
     bool expandNextStep();
     void appendPhase(uint32_t kernel, int32_t iteration, int32_t sweep, glm::ivec3 start, glm::ivec3 step,
                      glm::ivec3 count);

@@ -1,0 +1,143 @@
+// GLSL for a field stage: the field's DAG as straight-line SSA code (one variable per node,
+// constants written inline), the per-column nodes before the y loop, then the combine of
+// FieldMode written exactly as voxc::combineField computes it with std::min / std::max.
+#include "KernelSources.h"
+#include "Template.h"
+
+#include "voxc/builtins/Functions.h"
+#include "voxc/builtins/Ops.h"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <set>
+
+namespace voxc::codegen {
+
+namespace {
+
+bool isFloatType(Type t) { return t == Type::Float || t == Type::Vec2 || t == Type::Vec3; }
+
+std::string constantGlsl(const FieldNode& node) {
+    const glm::vec3 c = node.constant;
+    switch (node.type) {
+    case Type::Float: return glslFloat(c.x);
+    case Type::Int:
+        // -2147483648 is not a GLSL literal (unary minus of an out-of-range int).
+        return node.constantInt == INT32_MIN ? "(-2147483647 - 1)" : std::to_string(node.constantInt);
+    case Type::Bool: return node.constantBool ? "true" : "false";
+    case Type::Vec2: return fmt::format("vec2({}, {})", glslFloat(c.x), glslFloat(c.y));
+    case Type::Vec3: return fmt::format("vec3({}, {}, {})", glslFloat(c.x), glslFloat(c.y), glslFloat(c.z));
+    }
+    return "?";
+}
+
+std::string inputGlsl(FieldInput input) {
+    const int axis = int(input) % 3;
+    const bool world = input >= FieldInput::WorldX;
+    const bool perColumn = axis != 1;
+    const char* vector = world ? (perColumn ? "columnWorld" : "world") : (perColumn ? "columnLocal" : "local");
+    return fmt::format("float({}.{})", vector, "xyz"[axis]);
+}
+
+// Each node's GLSL: a variable name, or the literal of a constant.
+struct FieldCode {
+    std::vector<std::string> names;
+    std::string column, voxel; // statements before and inside the y loop
+    std::vector<std::string_view> libraries;
+};
+
+FieldCode emitField(const ir::IrField& field, std::string_view sourceName) {
+    FieldCode code;
+    code.names.resize(field.nodes.size());
+    std::set<std::string_view> seenLibraries;
+    for (size_t i = 0; i < field.nodes.size(); ++i) {
+        const FieldNode& node = field.nodes[i];
+        if (node.kind == FieldNode::Kind::Constant) {
+            code.names[i] = constantGlsl(node);
+            continue;
+        }
+        std::string value, what;
+        switch (node.kind) {
+        case FieldNode::Kind::Constant: break;
+        case FieldNode::Kind::Input:
+            value = inputGlsl(node.input);
+            what = std::array{"x", "y", "z", "wx", "wy", "wz"}[int(node.input)];
+            break;
+        case FieldNode::Kind::Component:
+            value = code.names[node.operands[0]] + "." + "xyz"[node.component];
+            what = "component";
+            break;
+        case FieldNode::Kind::Call: {
+            const FunctionInfo& info = functions()[node.function];
+            std::vector<std::string> args;
+            std::vector<Type> types;
+            for (uint32_t o : node.operands) {
+                args.push_back(code.names[o]);
+                types.push_back(field.nodes[o].type);
+            }
+            value = info.glsl(args, types);
+            what = info.name;
+            for (std::string_view library : info.glslLibraries)
+                if (seenLibraries.insert(library).second) code.libraries.push_back(library);
+            break;
+        }
+        }
+        code.names[i] = fmt::format("n{}", i);
+        const std::string line =
+            fmt::format("{}{} {} = {}; // {} ({}:{}:{})\n", isFloatType(node.type) ? "precise " : "",
+                        typeName(node.type), code.names[i], value, what, sourceName, node.loc.line, node.loc.column);
+        (field.perColumn.at(i) ? code.column : code.voxel) += line;
+    }
+    return code;
+}
+
+// d = f, max(d, f), min(d, 1 - f), min(d, f), with std::max(a, b) = a < b ? b : a and
+// std::min(a, b) = b < a ? b : a, so ties and signed zeros resolve as in the interpreter.
+std::string combineGlsl(FieldMode mode, const std::string& f) {
+    const std::string store = "voxels.density[address] = ";
+    const std::string load = "float density = voxels.density[address];\n";
+    switch (mode) {
+    case FieldMode::Set: return fmt::format("// set: d = f\n{}{};\n", store, f);
+    case FieldMode::Union:
+        return fmt::format("// union: d = max(d, f)\n{}{}density < {} ? {} : density;\n", load, store, f, f);
+    case FieldMode::Subtract:
+        return fmt::format("// subtract: d = min(d, 1 - f)\n{}precise float carved = 1.0 - {};\n"
+                           "{}carved < density ? carved : density;\n",
+                           load, f, store);
+    case FieldMode::Intersect:
+        return fmt::format("// intersect: d = min(d, f)\n{}{}{} < density ? {} : density;\n", load, store, f, f);
+    }
+    return {};
+}
+
+} // namespace
+
+DispatchShape fieldDispatchShape(const ir::IrModule& module) { return startDispatchShape(module); }
+
+std::string fieldKernelSource(const ir::IrModule& module, const ir::IrField& field, FieldMode mode,
+                              const std::vector<Stage>& stages, std::string_view kernelName,
+                              std::string_view sourceName) {
+    const FieldCode code = emitField(field, sourceName);
+    std::string header = fmt::format("voxc generated kernel \"{}\": field {} ({}:{}:{}), mode {}.\nPipeline stage",
+                                     kernelName, field.name, sourceName, field.loc.line, field.loc.column,
+                                     ir::fieldModeName(mode));
+    header += stages.size() == 1 ? "" : "s";
+    for (const Stage& stage : stages)
+        header += fmt::format(" `{}` ({}:{}:{})", ir::printStage(module, stage), sourceName, stage.loc.line,
+                              stage.loc.column);
+    header += ".\n";
+    std::string libraries;
+    for (std::string_view library : code.libraries) libraries += fmt::format("#include \"{}\"\n", library);
+    if (libraries.empty()) libraries = "// No function library needed.\n";
+    return instantiateTemplate(
+        "field.glsl",
+        {{"HEADER", prefixLines(header, "// ")},
+         {"LIBRARIES", libraries},
+         {"DISPATCH_SHAPE", dispatchShapeGlsl(fieldDispatchShape(module))},
+         {"COLUMN_VALUES", code.column.empty() ? "// No value is the same along the column.\n" : code.column},
+         {"VOXEL_VALUES", code.voxel.empty() ? "// Every value is the same along the column.\n" : code.voxel},
+         {"COMBINE", combineGlsl(mode, code.names.at(field.root))}});
+}
+
+} // namespace voxc::codegen

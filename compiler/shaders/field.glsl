@@ -1,0 +1,41 @@
+#version 450
+// <<HEADER>>
+
+// A field stage: every grid voxel's density d is combined with the field's value f there.
+// One invocation owns a column of voxels along y, like the start kernel, so the nodes that do
+// not depend on y are computed once per column; the rest are straight-line code per voxel,
+// every float result `precise`, in the interpreter's operation order (voxc::FieldEvaluator).
+
+#include "common.glsl"
+// <<LIBRARIES>>
+
+// <<DISPATCH_SHAPE>>
+
+void main() {
+    ivec3 first = ivec3(gl_GlobalInvocationID) * ANCHORS_PER_INVOCATION;
+    if (any(greaterThanEqual(first, push.anchorCount.xyz))) return;
+    ivec3 last = min(first + ANCHORS_PER_INVOCATION, push.anchorCount.xyz);
+    int chunkSize = push.gridOrigin.w;
+
+    for (int z = first.z; z < last.z; ++z) {
+        for (int x = first.x; x < last.x; ++x) {
+            ivec3 columnLocal = push.anchorStart.xyz + ivec3(x, first.y, z) * push.anchorStep.xyz;
+            // Integer sum first, then one conversion, as the interpreter does.
+            ivec3 columnWorld = push.gridOrigin.xyz + columnLocal;
+            // <<COLUMN_VALUES>>
+            int address = 0;
+            for (int y = first.y; y < last.y; ++y) {
+                ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                ivec3 world = push.gridOrigin.xyz + local;
+                // Inside a chunk the next voxel along y lies chunkSize entries further on.
+                if (y == first.y || (world.y & (chunkSize - 1)) == 0) {
+                    address = voxelAddress(local);
+                } else {
+                    address += chunkSize;
+                }
+                // <<VOXEL_VALUES>>
+                // <<COMBINE>>
+            }
+        }
+    }
+}

@@ -1,0 +1,319 @@
+#version 450
+// voxc generated kernel "ground_set": field ground (fields.vox:27:7), mode set.
+// Pipeline stage `set ground` (fields.vox:60:7).
+
+// A field stage: every grid voxel's density d is combined with the field's value f there.
+// One invocation owns a column of voxels along y, like the start kernel, so the nodes that do
+// not depend on y are computed once per column; the rest are straight-line code per voxel,
+// every float result `precise`, in the interpreter's operation order (voxc::FieldEvaluator).
+
+// ---- begin common.glsl ----
+// Declarations every voxc kernel shares: the push block (voxc::PushBlock in
+// compiler/codegen/include/voxc/codegen/KernelPackage.h, field for field) and the first three
+// storage buffers of descriptor set 0 (kBindingVoxels, kBindingChunkTable, kBindingNoiseTables;
+// the chunk-skipping buffers are in chunks.glsl).
+
+layout(push_constant, std430) uniform PushBlock {
+    ivec4 gridOrigin;  // xyz: world coordinate of grid voxel (0,0,0); w: chunk size
+    ivec4 gridSize;    // xyz: grid size in voxels; w: seed (bit pattern)
+    ivec4 chunkBase;   // xyz: world chunk coordinate of chunk-table entry 0; w: iteration
+    ivec4 chunkCount;  // xyz: chunk-table extents; w: sweep index within its grammar
+    ivec4 anchorStart; // xyz: grid-local first anchor of this dispatch; w: active-dispatch record
+    ivec4 anchorStep;  // xyz: distance between the anchors of one dispatch; w: log2 tile size
+    ivec4 anchorCount; // xyz: anchors per axis in this dispatch; w: 1 = indirect over active tiles
+} push;
+
+// Densities, chunk-major: all voxels of one chunk slot, then the next slot.
+layout(std430, set = 0, binding = 0) buffer Voxels {
+    float density[];
+} voxels;
+
+// Chunk-table entry -> chunk slot; entries run x fastest over push.chunkCount.xyz.
+layout(std430, set = 0, binding = 1) readonly buffer ChunkTable {
+    int chunkSlot[];
+} chunkTable;
+
+// Ken Perlin's 256-entry permutation (voxc::perlinPermutation), read by perlin.glsl.
+layout(std430, set = 0, binding = 2) readonly buffer NoiseTables {
+    int perlinPermutation[];
+} noiseTables;
+
+// Buffer index of a grid-local voxel, exactly as voxc::ChunkLayout::address computes it.
+// Chunks are aligned to world coordinates and their size is a power of two, so the
+// arithmetic shift and the mask are floor division and remainder, negatives included.
+int voxelAddress(ivec3 local) {
+    int chunkSize = push.gridOrigin.w;
+    int chunkShift = findMSB(chunkSize);
+    ivec3 world = push.gridOrigin.xyz + local;
+    ivec3 chunk = world >> chunkShift;
+    ivec3 inside = world & (chunkSize - 1);
+    ivec3 entry = chunk - push.chunkBase.xyz;
+    int slot = chunkTable.chunkSlot[entry.x + push.chunkCount.x * (entry.y + push.chunkCount.y * entry.z)];
+    return slot * chunkSize * chunkSize * chunkSize + inside.x + chunkSize * (inside.y + chunkSize * inside.z);
+}
+
+// ---- end common.glsl ----
+// ---- begin random.glsl ----
+// Counter-based randomness: mirrors compiler/program/src/Random.cpp bit for bit.
+
+// Chris Wellons' "lowbias32" integer finaliser.
+uint mix32(uint x) {
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    x ^= x >> 16;
+    return x;
+}
+
+const uint STREAM_RULE_CHOICE = 0u;
+const uint STREAM_PROBABILITY = 1u;
+
+uint anchorHash(uint seed, uint iteration, uint sweep, ivec3 anchorWorld, uint stream) {
+    uint h = mix32(stream);
+    h = mix32(uint(anchorWorld.z) ^ h);
+    h = mix32(uint(anchorWorld.y) ^ h);
+    h = mix32(uint(anchorWorld.x) ^ h);
+    h = mix32(sweep ^ h);
+    h = mix32(iteration ^ h);
+    return mix32(seed ^ h);
+}
+// ---- end random.glsl ----
+// ---- begin noise_common.glsl ----
+// Lattice helpers of the noise builtins: mirrors compiler/builtins/src/functions/NoiseCommon.h.
+// Every float result is `precise` (no fused multiply-add), so the GPU performs the
+// interpreter's IEEE operations in the interpreter's order.
+// Requires common.glsl (noiseTables) and random.glsl (mix32).
+
+int noisePerm(int i) { return noiseTables.perlinPermutation[i & 255]; }
+
+float noiseFade(float t) {
+    precise float r = t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
+    return r;
+}
+
+float noiseLerp(float t, float a, float b) {
+    precise float r = a + t * (b - a);
+    return r;
+}
+
+// Perlin's reference gradient: 12 cube-edge directions, four of them repeated (hash & 15).
+float noiseGrad(int hash, float x, float y, float z) {
+    int h = hash & 15;
+    float u = h < 8 ? x : y;
+    float v = h < 4 ? y : (h == 12 || h == 14 ? x : z);
+    precise float r = ((h & 1) == 0 ? u : -u) + ((h & 2) == 0 ? v : -v);
+    return r;
+}
+
+// An integer-valued float reduced modulo 256, exact for every finite value.
+int noiseLatticeIndex(float floored) {
+    precise float r = floored - 256.0 * floor(floored * 0.00390625);
+    return int(r);
+}
+
+// Seed-derived lattice translation, 8 bits per axis; seed 0 is untranslated.
+ivec3 noiseSeedOffset(uint seed) {
+    uint h = mix32(seed);
+    return ivec3(int(h & 255u), int((h >> 8) & 255u), int((h >> 16) & 255u));
+}
+
+uint noiseSubstream(uint seed, uint stream) { return seed + stream * 0x9E3779B9u; }
+
+// A float lattice coordinate as an int for hashing, saturated at +-2^30.
+ivec3 noiseHashCoordinate(vec3 floored) {
+    return ivec3(min(max(floored, vec3(-1073741824.0)), vec3(1073741824.0)));
+}
+
+uint noiseCellHash(ivec3 c, uint seed) {
+    return mix32(uint(c.x) ^ mix32(uint(c.y) ^ mix32(uint(c.z) ^ mix32(seed))));
+}
+
+// 24 hash bits as a float in [0, 1).
+float noiseUnitFloat(uint h) {
+    precise float r = float(h >> 8) * 5.9604644775390625e-8;
+    return r;
+}
+// ---- end noise_common.glsl ----
+// ---- begin noise_perlin3.glsl ----
+// Ken Perlin's improved noise (2002) with a seed-derived lattice translation: mirrors
+// voxc::noise::perlin3 (compiler/builtins/src/functions/GradientNoise.cpp).
+// Requires noise_common.glsl.
+
+float noisePerlin3(vec3 p, uint seed) {
+    precise vec3 f = floor(p);
+    ivec3 offset = noiseSeedOffset(seed);
+    int X = (noiseLatticeIndex(f.x) + offset.x) & 255;
+    int Y = (noiseLatticeIndex(f.y) + offset.y) & 255;
+    int Z = (noiseLatticeIndex(f.z) + offset.z) & 255;
+    precise float x = p.x - f.x;
+    precise float y = p.y - f.y;
+    precise float z = p.z - f.z;
+    float u = noiseFade(x);
+    float v = noiseFade(y);
+    float w = noiseFade(z);
+    int A = noisePerm(X) + Y;
+    int AA = noisePerm(A) + Z;
+    int AB = noisePerm(A + 1) + Z;
+    int B = noisePerm(X + 1) + Y;
+    int BA = noisePerm(B) + Z;
+    int BB = noisePerm(B + 1) + Z;
+    precise float x1 = x - 1.0;
+    precise float y1 = y - 1.0;
+    precise float z1 = z - 1.0;
+    float l00 = noiseLerp(u, noiseGrad(noisePerm(AA), x, y, z), noiseGrad(noisePerm(BA), x1, y, z));
+    float l10 = noiseLerp(u, noiseGrad(noisePerm(AB), x, y1, z), noiseGrad(noisePerm(BB), x1, y1, z));
+    float l01 = noiseLerp(u, noiseGrad(noisePerm(AA + 1), x, y, z1), noiseGrad(noisePerm(BA + 1), x1, y, z1));
+    float l11 = noiseLerp(u, noiseGrad(noisePerm(AB + 1), x, y1, z1), noiseGrad(noisePerm(BB + 1), x1, y1, z1));
+    return noiseLerp(w, noiseLerp(v, l00, l10), noiseLerp(v, l01, l11));
+}
+
+float noisePerlin3(vec3 p, int seed) { return noisePerlin3(p, uint(seed)); }
+// ---- end noise_perlin3.glsl ----
+// ---- begin noise_fractal.glsl ----
+// Fractals, domain warps and curl over perlin3: mirrors compiler/builtins/src/functions/Fractal.cpp.
+// Requires noise_common.glsl and noise_perlin3.glsl.
+
+// kind 0: fbm (sum of n), 1: turbulence (sum of |n|), 2: ridged (see voxc::noise::ridged).
+float noiseOctaveSum(vec3 p, int octaves, float lacunarity, float gain, uint seed, int kind) {
+    precise float sum = 0.0;
+    precise float amplitude = 1.0;
+    precise float frequency = 1.0;
+    precise float weight = 1.0;
+    int count = min(max(octaves, 1), 16);
+    for (int k = 0; k < count; ++k) {
+        precise vec3 q = p * frequency;
+        float n = noisePerlin3(q, noiseSubstream(seed, uint(k)));
+        precise float term;
+        if (kind == 0) {
+            term = n;
+        } else if (kind == 1) {
+            term = abs(n);
+        } else {
+            precise float s = 1.0 - abs(n);
+            s = s * s;
+            s = s * weight;
+            weight = min(max(s * 2.0, 0.0), 1.0);
+            term = s;
+        }
+        sum = sum + amplitude * term;
+        amplitude = amplitude * gain;
+        frequency = frequency * lacunarity;
+    }
+    return sum;
+}
+
+float noiseFbm(vec3 p, int octaves, float lacunarity, float gain, int seed) {
+    return noiseOctaveSum(p, octaves, lacunarity, gain, uint(seed), 0);
+}
+float noiseTurbulence(vec3 p, int octaves, float lacunarity, float gain, int seed) {
+    return noiseOctaveSum(p, octaves, lacunarity, gain, uint(seed), 1);
+}
+float noiseRidged(vec3 p, int octaves, float lacunarity, float gain, int seed) {
+    return noiseOctaveSum(p, octaves, lacunarity, gain, uint(seed), 2);
+}
+
+vec3 noiseWarp(vec3 p, float amount, int seedBits) {
+    uint seed = uint(seedBits);
+    float wx = noiseOctaveSum(p, 4, 2.0, 0.5, noiseSubstream(seed, 101u), 0);
+    float wy = noiseOctaveSum(p, 4, 2.0, 0.5, noiseSubstream(seed, 102u), 0);
+    float wz = noiseOctaveSum(p, 4, 2.0, 0.5, noiseSubstream(seed, 103u), 0);
+    precise vec3 r = vec3(p.x + amount * wx, p.y + amount * wy, p.z + amount * wz);
+    return r;
+}
+
+vec3 noiseCurl3(vec3 p, int seedBits) {
+    uint seed = uint(seedBits);
+    uint s1 = noiseSubstream(seed, 201u);
+    uint s2 = noiseSubstream(seed, 202u);
+    uint s3 = noiseSubstream(seed, 203u);
+    const float e = 0.00390625;
+    const float inv = 128.0;
+    precise vec3 px = vec3(p.x + e, p.y, p.z);
+    precise vec3 mx = vec3(p.x - e, p.y, p.z);
+    precise vec3 py = vec3(p.x, p.y + e, p.z);
+    precise vec3 my = vec3(p.x, p.y - e, p.z);
+    precise vec3 pz = vec3(p.x, p.y, p.z + e);
+    precise vec3 mz = vec3(p.x, p.y, p.z - e);
+    precise float d3dy = (noisePerlin3(py, s3) - noisePerlin3(my, s3)) * inv;
+    precise float d2dz = (noisePerlin3(pz, s2) - noisePerlin3(mz, s2)) * inv;
+    precise float d1dz = (noisePerlin3(pz, s1) - noisePerlin3(mz, s1)) * inv;
+    precise float d3dx = (noisePerlin3(px, s3) - noisePerlin3(mx, s3)) * inv;
+    precise float d2dx = (noisePerlin3(px, s2) - noisePerlin3(mx, s2)) * inv;
+    precise float d1dy = (noisePerlin3(py, s1) - noisePerlin3(my, s1)) * inv;
+    precise vec3 r = vec3(d3dy - d2dz, d1dz - d3dx, d2dx - d1dy);
+    return r;
+}
+
+// Layer k of Mathisen's Eq 3.11 with T_pre of Eq 3.12 (see docs/functions.md).
+float noiseWarpedLayer(vec3 q, float k, float invOnePlusK, float warpLow, float warpHigh, uint seed) {
+    precise float w = k * warpHigh + warpLow * invOnePlusK;
+    float ox = noisePerlin3(q + vec3(50.0), seed);
+    float oy = noisePerlin3(q + vec3(150.0), seed);
+    float oz = noisePerlin3(q + vec3(250.0), seed);
+    precise vec3 t = vec3(q.x + w * ox, q.y + w * oy, q.z + w * oz);
+    return noisePerlin3(t, seed);
+}
+
+float noiseWarpedFbm(vec3 p, float roughness, float warpLow, float warpHigh, int seedBits) {
+    uint seed = uint(seedBits);
+    precise float a = exp2(-(1.0 - roughness));
+    precise float sum = 0.0;
+    precise float amplitude = 1.0;
+    sum = sum + amplitude * noiseWarpedLayer(p, 0.0, 1.0, warpLow, warpHigh, seed);
+    amplitude = amplitude * a;
+    sum = sum + amplitude * noiseWarpedLayer(p * 2.0, 1.0, 0.5, warpLow, warpHigh, seed);
+    amplitude = amplitude * a;
+    sum = sum + amplitude * noiseWarpedLayer(p * 4.0, 2.0, 0.333333343, warpLow, warpHigh, seed);
+    amplitude = amplitude * a;
+    sum = sum + amplitude * noiseWarpedLayer(p * 8.0, 3.0, 0.25, warpLow, warpHigh, seed);
+    amplitude = amplitude * a;
+    sum = sum + amplitude * noiseWarpedLayer(p * 16.0, 4.0, 0.2, warpLow, warpHigh, seed);
+    return sum;
+}
+
+float noiseWarpedFbm(vec3 p, int seed) { return noiseWarpedFbm(p, 0.0, 1.0, 0.5, seed); }
+// ---- end noise_fractal.glsl ----
+
+layout(local_size_x = 8, local_size_y = 1, local_size_z = 8) in;
+// Each invocation handles this many consecutive anchors of its dispatch per axis
+// (voxc::Kernel::anchorsPerInvocation; the runtime sizes the dispatch by it).
+const ivec3 ANCHORS_PER_INVOCATION = ivec3(1, 64, 1);
+
+void main() {
+    ivec3 first = ivec3(gl_GlobalInvocationID) * ANCHORS_PER_INVOCATION;
+    if (any(greaterThanEqual(first, push.anchorCount.xyz))) return;
+    ivec3 last = min(first + ANCHORS_PER_INVOCATION, push.anchorCount.xyz);
+    int chunkSize = push.gridOrigin.w;
+
+    for (int z = first.z; z < last.z; ++z) {
+        for (int x = first.x; x < last.x; ++x) {
+            ivec3 columnLocal = push.anchorStart.xyz + ivec3(x, first.y, z) * push.anchorStep.xyz;
+            // Integer sum first, then one conversion, as the interpreter does.
+            ivec3 columnWorld = push.gridOrigin.xyz + columnLocal;
+            precise float n0 = float(columnWorld.x); // wx (fields.vox:28:35)
+            precise float n1 = float(columnWorld.z); // wz (fields.vox:28:42)
+            precise vec3 n3 = vec3(n0, 0.0, n1); // vec3 (fields.vox:28:30)
+            precise vec3 n5 = (n3 * 0.0199999996); // mul (fields.vox:28:30)
+            precise float n10 = noiseFbm(n5, 5, 2.0, 0.5, 11); // fbm (fields.vox:28:26)
+            precise float n12 = (10.0 * n10); // mul (fields.vox:28:21)
+            precise float n14 = (24.0 + n12); // add (fields.vox:28:16)
+            int address = 0;
+            for (int y = first.y; y < last.y; ++y) {
+                ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                ivec3 world = push.gridOrigin.xyz + local;
+                // Inside a chunk the next voxel along y lies chunkSize entries further on.
+                if (y == first.y || (world.y & (chunkSize - 1)) == 0) {
+                    address = voxelAddress(local);
+                } else {
+                    address += chunkSize;
+                }
+                precise float n15 = float(local.y); // y (fields.vox:29:18)
+                precise float n16 = (n14 - n15); // sub (fields.vox:29:9)
+                precise float n18 = min(max(n16, 0.0), 1.0); // clamp (fields.vox:29:3)
+                // set: d = f
+                voxels.density[address] = n18;
+            }
+        }
+    }
+}

@@ -1,0 +1,145 @@
+#version 450
+// voxc generated kernel "pillar_union": field pillar (fields.vox:35:7), mode union.
+// Pipeline stage `union pillar` (fields.vox:62:9).
+
+// A field stage: every grid voxel's density d is combined with the field's value f there.
+// One invocation owns a column of voxels along y, like the start kernel, so the nodes that do
+// not depend on y are computed once per column; the rest are straight-line code per voxel,
+// every float result `precise`, in the interpreter's operation order (voxc::FieldEvaluator).
+
+// ---- begin common.glsl ----
+// Declarations every voxc kernel shares: the push block (voxc::PushBlock in
+// compiler/codegen/include/voxc/codegen/KernelPackage.h, field for field) and the first three
+// storage buffers of descriptor set 0 (kBindingVoxels, kBindingChunkTable, kBindingNoiseTables;
+// the chunk-skipping buffers are in chunks.glsl).
+
+layout(push_constant, std430) uniform PushBlock {
+    ivec4 gridOrigin;  // xyz: world coordinate of grid voxel (0,0,0); w: chunk size
+    ivec4 gridSize;    // xyz: grid size in voxels; w: seed (bit pattern)
+    ivec4 chunkBase;   // xyz: world chunk coordinate of chunk-table entry 0; w: iteration
+    ivec4 chunkCount;  // xyz: chunk-table extents; w: sweep index within its grammar
+    ivec4 anchorStart; // xyz: grid-local first anchor of this dispatch; w: active-dispatch record
+    ivec4 anchorStep;  // xyz: distance between the anchors of one dispatch; w: log2 tile size
+    ivec4 anchorCount; // xyz: anchors per axis in this dispatch; w: 1 = indirect over active tiles
+} push;
+
+// Densities, chunk-major: all voxels of one chunk slot, then the next slot.
+layout(std430, set = 0, binding = 0) buffer Voxels {
+    float density[];
+} voxels;
+
+// Chunk-table entry -> chunk slot; entries run x fastest over push.chunkCount.xyz.
+layout(std430, set = 0, binding = 1) readonly buffer ChunkTable {
+    int chunkSlot[];
+} chunkTable;
+
+// Ken Perlin's 256-entry permutation (voxc::perlinPermutation), read by perlin.glsl.
+layout(std430, set = 0, binding = 2) readonly buffer NoiseTables {
+    int perlinPermutation[];
+} noiseTables;
+
+// Buffer index of a grid-local voxel, exactly as voxc::ChunkLayout::address computes it.
+// Chunks are aligned to world coordinates and their size is a power of two, so the
+// arithmetic shift and the mask are floor division and remainder, negatives included.
+int voxelAddress(ivec3 local) {
+    int chunkSize = push.gridOrigin.w;
+    int chunkShift = findMSB(chunkSize);
+    ivec3 world = push.gridOrigin.xyz + local;
+    ivec3 chunk = world >> chunkShift;
+    ivec3 inside = world & (chunkSize - 1);
+    ivec3 entry = chunk - push.chunkBase.xyz;
+    int slot = chunkTable.chunkSlot[entry.x + push.chunkCount.x * (entry.y + push.chunkCount.y * entry.z)];
+    return slot * chunkSize * chunkSize * chunkSize + inside.x + chunkSize * (inside.y + chunkSize * inside.z);
+}
+
+// ---- end common.glsl ----
+// ---- begin math_functions.glsl ----
+// Math builtins of field expressions whose GLSL built-in may be computed in another operation
+// order (or with a fused multiply-add): written out with `precise` exactly as the interpreter
+// computes them (compiler/builtins/src/functions/Math.cpp). GLSL's own min, max, abs, floor,
+// sqrt, pow, sin and cos are used directly.
+
+// mix(x, y, a) = x * (1 - a) + y * a, GLSL's definition.
+float mathMix(float x, float y, float a) { precise float r = x * (1.0 - a) + y * a; return r; }
+vec2 mathMix(vec2 x, vec2 y, vec2 a) { precise vec2 r = x * (1.0 - a) + y * a; return r; }
+vec3 mathMix(vec3 x, vec3 y, vec3 a) { precise vec3 r = x * (1.0 - a) + y * a; return r; }
+vec2 mathMix(vec2 x, vec2 y, float a) { return mathMix(x, y, vec2(a)); }
+vec3 mathMix(vec3 x, vec3 y, float a) { return mathMix(x, y, vec3(a)); }
+
+// smoothstep: t = clamp((x - e0) / (e1 - e0), 0, 1); t * t * (3 - 2 t), GLSL's definition,
+// also defined (as written) when e0 >= e1.
+float mathSmoothstep(float e0, float e1, float x) {
+    precise float t = min(max((x - e0) / (e1 - e0), 0.0), 1.0);
+    precise float r = t * t * (3.0 - 2.0 * t);
+    return r;
+}
+vec2 mathSmoothstep(vec2 e0, vec2 e1, vec2 x) {
+    return vec2(mathSmoothstep(e0.x, e1.x, x.x), mathSmoothstep(e0.y, e1.y, x.y));
+}
+vec3 mathSmoothstep(vec3 e0, vec3 e1, vec3 x) {
+    return vec3(mathSmoothstep(e0.x, e1.x, x.x), mathSmoothstep(e0.y, e1.y, x.y), mathSmoothstep(e0.z, e1.z, x.z));
+}
+vec2 mathSmoothstep(float e0, float e1, vec2 x) { return mathSmoothstep(vec2(e0), vec2(e1), x); }
+vec3 mathSmoothstep(float e0, float e1, vec3 x) { return mathSmoothstep(vec3(e0), vec3(e1), x); }
+
+// fract(x) = x - floor(x), GLSL's definition (1.0 for tiny negative x, as on the CPU).
+float mathFract(float x) { precise float r = x - floor(x); return r; }
+vec2 mathFract(vec2 x) { precise vec2 r = x - floor(x); return r; }
+vec3 mathFract(vec3 x) { precise vec3 r = x - floor(x); return r; }
+
+// dot and length summed left to right.
+float mathDot(vec2 a, vec2 b) { precise float r = a.x * b.x + a.y * b.y; return r; }
+float mathDot(vec3 a, vec3 b) { precise float r = a.x * b.x + a.y * b.y + a.z * b.z; return r; }
+float mathLength(vec2 a) { return sqrt(mathDot(a, a)); }
+float mathLength(vec3 a) { return sqrt(mathDot(a, a)); }
+// ---- end math_functions.glsl ----
+
+layout(local_size_x = 8, local_size_y = 1, local_size_z = 8) in;
+// Each invocation handles this many consecutive anchors of its dispatch per axis
+// (voxc::Kernel::anchorsPerInvocation; the runtime sizes the dispatch by it).
+const ivec3 ANCHORS_PER_INVOCATION = ivec3(1, 64, 1);
+
+void main() {
+    ivec3 first = ivec3(gl_GlobalInvocationID) * ANCHORS_PER_INVOCATION;
+    if (any(greaterThanEqual(first, push.anchorCount.xyz))) return;
+    ivec3 last = min(first + ANCHORS_PER_INVOCATION, push.anchorCount.xyz);
+    int chunkSize = push.gridOrigin.w;
+
+    for (int z = first.z; z < last.z; ++z) {
+        for (int x = first.x; x < last.x; ++x) {
+            ivec3 columnLocal = push.anchorStart.xyz + ivec3(x, first.y, z) * push.anchorStep.xyz;
+            // Integer sum first, then one conversion, as the interpreter does.
+            ivec3 columnWorld = push.gridOrigin.xyz + columnLocal;
+            precise float n10 = float(columnLocal.x); // x (fields.vox:37:25)
+            precise float n11 = float(columnLocal.z); // z (fields.vox:37:25)
+            int address = 0;
+            for (int y = first.y; y < last.y; ++y) {
+                ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                ivec3 world = push.gridOrigin.xyz + local;
+                // Inside a chunk the next voxel along y lies chunkSize entries further on.
+                if (y == first.y || (world.y & (chunkSize - 1)) == 0) {
+                    address = voxelAddress(local);
+                } else {
+                    address += chunkSize;
+                }
+                precise float n0 = float(local.y); // y (fields.vox:36:16)
+                bool n2 = (n0 > 40.0); // gt (fields.vox:36:16)
+                precise float n5 = (n2 ? 2.0 : 0.0); // select (fields.vox:36:16)
+                precise float n7 = (4.0 + n5); // add (fields.vox:36:11)
+                bool n9 = (n0 < 52.0); // lt (fields.vox:37:3)
+                precise vec3 n12 = vec3(n10, n0, n11); // vec3 (fields.vox:37:25)
+                precise float n13 = n12.x; // component (fields.vox:37:25)
+                precise float n14 = n12.z; // component (fields.vox:37:25)
+                precise vec2 n15 = vec2(n13, n14); // vec2 (fields.vox:37:25)
+                precise vec2 n17 = (n15 - vec2(44.0, 16.0)); // sub (fields.vox:37:25)
+                precise float n18 = mathLength(n17); // length (fields.vox:37:18)
+                precise float n19 = (n7 - n18); // sub (fields.vox:19:54)
+                precise float n21 = min(max(n19, 0.0), 1.0); // clamp (fields.vox:19:48)
+                precise float n22 = (n9 ? n21 : 0.0); // select (fields.vox:37:3)
+                // union: d = max(d, f)
+                float density = voxels.density[address];
+                voxels.density[address] = density < n22 ? n22 : density;
+            }
+        }
+    }
+}

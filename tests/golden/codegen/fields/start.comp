@@ -1,0 +1,192 @@
+#version 450
+// voxc generated kernel "start": the start state of fields.vox.
+// The start block is empty: the grid starts as air.
+
+// The start state: every grid voxel gets the start block's shapes in order over air
+// (density 0), as voxc::startDensity does on the CPU. One invocation owns a column of voxels
+// along y, so per-column values (a heightfield's height) are computed once, and the chunk
+// table is consulted once per chunk the column enters instead of once per voxel.
+
+// ---- begin common.glsl ----
+// Declarations every voxc kernel shares: the push block (voxc::PushBlock in
+// compiler/codegen/include/voxc/codegen/KernelPackage.h, field for field) and the first three
+// storage buffers of descriptor set 0 (kBindingVoxels, kBindingChunkTable, kBindingNoiseTables;
+// the chunk-skipping buffers are in chunks.glsl).
+
+layout(push_constant, std430) uniform PushBlock {
+    ivec4 gridOrigin;  // xyz: world coordinate of grid voxel (0,0,0); w: chunk size
+    ivec4 gridSize;    // xyz: grid size in voxels; w: seed (bit pattern)
+    ivec4 chunkBase;   // xyz: world chunk coordinate of chunk-table entry 0; w: iteration
+    ivec4 chunkCount;  // xyz: chunk-table extents; w: sweep index within its grammar
+    ivec4 anchorStart; // xyz: grid-local first anchor of this dispatch; w: active-dispatch record
+    ivec4 anchorStep;  // xyz: distance between the anchors of one dispatch; w: log2 tile size
+    ivec4 anchorCount; // xyz: anchors per axis in this dispatch; w: 1 = indirect over active tiles
+} push;
+
+// Densities, chunk-major: all voxels of one chunk slot, then the next slot.
+layout(std430, set = 0, binding = 0) buffer Voxels {
+    float density[];
+} voxels;
+
+// Chunk-table entry -> chunk slot; entries run x fastest over push.chunkCount.xyz.
+layout(std430, set = 0, binding = 1) readonly buffer ChunkTable {
+    int chunkSlot[];
+} chunkTable;
+
+// Ken Perlin's 256-entry permutation (voxc::perlinPermutation), read by perlin.glsl.
+layout(std430, set = 0, binding = 2) readonly buffer NoiseTables {
+    int perlinPermutation[];
+} noiseTables;
+
+// Buffer index of a grid-local voxel, exactly as voxc::ChunkLayout::address computes it.
+// Chunks are aligned to world coordinates and their size is a power of two, so the
+// arithmetic shift and the mask are floor division and remainder, negatives included.
+int voxelAddress(ivec3 local) {
+    int chunkSize = push.gridOrigin.w;
+    int chunkShift = findMSB(chunkSize);
+    ivec3 world = push.gridOrigin.xyz + local;
+    ivec3 chunk = world >> chunkShift;
+    ivec3 inside = world & (chunkSize - 1);
+    ivec3 entry = chunk - push.chunkBase.xyz;
+    int slot = chunkTable.chunkSlot[entry.x + push.chunkCount.x * (entry.y + push.chunkCount.y * entry.z)];
+    return slot * chunkSize * chunkSize * chunkSize + inside.x + chunkSize * (inside.y + chunkSize * inside.z);
+}
+
+// ---- end common.glsl ----
+// ---- begin random.glsl ----
+// Counter-based randomness: mirrors compiler/program/src/Random.cpp bit for bit.
+
+// Chris Wellons' "lowbias32" integer finaliser.
+uint mix32(uint x) {
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    x ^= x >> 16;
+    return x;
+}
+
+const uint STREAM_RULE_CHOICE = 0u;
+const uint STREAM_PROBABILITY = 1u;
+
+uint anchorHash(uint seed, uint iteration, uint sweep, ivec3 anchorWorld, uint stream) {
+    uint h = mix32(stream);
+    h = mix32(uint(anchorWorld.z) ^ h);
+    h = mix32(uint(anchorWorld.y) ^ h);
+    h = mix32(uint(anchorWorld.x) ^ h);
+    h = mix32(sweep ^ h);
+    h = mix32(iteration ^ h);
+    return mix32(seed ^ h);
+}
+// ---- end random.glsl ----
+// ---- begin perlin.glsl ----
+// 2D improved Perlin noise and the start state's heightfield: mirrors
+// compiler/builtins/src/Perlin.cpp. Every float result is `precise` so the compiler may not fuse
+// multiply-adds, which keeps the GPU bit-identical to the interpreter.
+// Requires random.glsl (mix32).
+
+// Ken Perlin's reference permutation comes from the noise-table buffer (common.glsl), which the
+// runtime fills from voxc::perlinPermutation: one table for both sides. A constant array here
+// would be materialised on every call by some drivers (llvmpipe), costing ~1000x.
+int perlinPerm(int i) { return noiseTables.perlinPermutation[i & 255]; }
+
+float perlinFade(float t) {
+    precise float r = t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
+    return r;
+}
+
+float perlinLerp(float t, float a, float b) {
+    precise float r = a + t * (b - a);
+    return r;
+}
+
+// Eight 2D gradient directions: the four diagonals and the four axes.
+float perlinGradient(int hash, float x, float y) {
+    precise float r;
+    switch (hash & 7) {
+    case 0: r = x + y; break;
+    case 1: r = -x + y; break;
+    case 2: r = x - y; break;
+    case 3: r = -x - y; break;
+    case 4: r = x; break;
+    case 5: r = -x; break;
+    case 6: r = y; break;
+    default: r = -y; break;
+    }
+    return r;
+}
+
+float perlin2(float x, float y) {
+    precise float fx = floor(x);
+    precise float fy = floor(y);
+    int X = int(fx) & 255;
+    int Y = int(fy) & 255;
+    precise float xf = x - fx;
+    precise float yf = y - fy;
+    precise float u = perlinFade(xf);
+    precise float v = perlinFade(yf);
+    int aa = perlinPerm(perlinPerm(X) + Y);
+    int ab = perlinPerm(perlinPerm(X) + Y + 1);
+    int ba = perlinPerm(perlinPerm(X + 1) + Y);
+    int bb = perlinPerm(perlinPerm(X + 1) + Y + 1);
+    precise float x1 = perlinLerp(u, perlinGradient(aa, xf, yf), perlinGradient(ba, xf - 1.0, yf));
+    precise float x2 = perlinLerp(u, perlinGradient(ab, xf, yf - 1.0), perlinGradient(bb, xf - 1.0, yf - 1.0));
+    precise float r = perlinLerp(v, x1, x2);
+    return r;
+}
+
+float heightfieldHeight(int worldX, int worldZ, uint seed, float base, float amplitude0, float frequency0,
+                        int octaves, float lacunarity, float gain) {
+    precise float height = base;
+    precise float amplitude = amplitude0;
+    precise float frequency = frequency0;
+    for (int octave = 0; octave < octaves; ++octave) {
+        uint h = mix32(seed ^ mix32(uint(octave) + 0x68u));
+        float offsetX = float(h & 1023u);
+        float offsetZ = float((h >> 10) & 1023u);
+        precise float sx = float(worldX) * frequency + offsetX;
+        precise float sz = float(worldZ) * frequency + offsetZ;
+        precise float n = perlin2(sx, sz);
+        height = height + amplitude * n;
+        amplitude = amplitude * gain;
+        frequency = frequency * lacunarity;
+    }
+    return height;
+}
+// ---- end perlin.glsl ----
+
+layout(local_size_x = 8, local_size_y = 1, local_size_z = 8) in;
+// Each invocation handles this many consecutive anchors of its dispatch per axis
+// (voxc::Kernel::anchorsPerInvocation; the runtime sizes the dispatch by it).
+const ivec3 ANCHORS_PER_INVOCATION = ivec3(1, 64, 1);
+
+void main() {
+    ivec3 first = ivec3(gl_GlobalInvocationID) * ANCHORS_PER_INVOCATION;
+    if (any(greaterThanEqual(first, push.anchorCount.xyz))) return;
+    ivec3 last = min(first + ANCHORS_PER_INVOCATION, push.anchorCount.xyz);
+    uint seed = uint(push.gridSize.w);
+    int chunkSize = push.gridOrigin.w;
+
+    for (int z = first.z; z < last.z; ++z) {
+        for (int x = first.x; x < last.x; ++x) {
+            ivec3 columnLocal = push.anchorStart.xyz + ivec3(x, first.y, z) * push.anchorStep.xyz;
+            ivec3 world = push.gridOrigin.xyz + columnLocal;
+            // No shape has a per-column value.
+            int address = 0;
+            for (int y = first.y; y < last.y; ++y) {
+                ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                world = push.gridOrigin.xyz + local;
+                // Inside a chunk the next voxel along y (the start dispatch steps by 1) lies chunkSize
+                // entries further on.
+                if (y == first.y || (world.y & (chunkSize - 1)) == 0) {
+                    address = voxelAddress(local);
+                } else {
+                    address += chunkSize;
+                }
+                float density = 0.0;
+                // No shapes: every voxel stays air.
+                voxels.density[address] = density;
+            }
+        }
+    }
+}

@@ -1,0 +1,269 @@
+#version 450
+// voxc generated kernel "tunnel_subtract": field tunnel (fields.vox:31:7), mode subtract.
+// Pipeline stage `subtract tunnel` (fields.vox:61:12).
+
+// A field stage: every grid voxel's density d is combined with the field's value f there.
+// One invocation owns a column of voxels along y, like the start kernel, so the nodes that do
+// not depend on y are computed once per column; the rest are straight-line code per voxel,
+// every float result `precise`, in the interpreter's operation order (voxc::FieldEvaluator).
+
+// ---- begin common.glsl ----
+// Declarations every voxc kernel shares: the push block (voxc::PushBlock in
+// compiler/codegen/include/voxc/codegen/KernelPackage.h, field for field) and the first three
+// storage buffers of descriptor set 0 (kBindingVoxels, kBindingChunkTable, kBindingNoiseTables;
+// the chunk-skipping buffers are in chunks.glsl).
+
+layout(push_constant, std430) uniform PushBlock {
+    ivec4 gridOrigin;  // xyz: world coordinate of grid voxel (0,0,0); w: chunk size
+    ivec4 gridSize;    // xyz: grid size in voxels; w: seed (bit pattern)
+    ivec4 chunkBase;   // xyz: world chunk coordinate of chunk-table entry 0; w: iteration
+    ivec4 chunkCount;  // xyz: chunk-table extents; w: sweep index within its grammar
+    ivec4 anchorStart; // xyz: grid-local first anchor of this dispatch; w: active-dispatch record
+    ivec4 anchorStep;  // xyz: distance between the anchors of one dispatch; w: log2 tile size
+    ivec4 anchorCount; // xyz: anchors per axis in this dispatch; w: 1 = indirect over active tiles
+} push;
+
+// Densities, chunk-major: all voxels of one chunk slot, then the next slot.
+layout(std430, set = 0, binding = 0) buffer Voxels {
+    float density[];
+} voxels;
+
+// Chunk-table entry -> chunk slot; entries run x fastest over push.chunkCount.xyz.
+layout(std430, set = 0, binding = 1) readonly buffer ChunkTable {
+    int chunkSlot[];
+} chunkTable;
+
+// Ken Perlin's 256-entry permutation (voxc::perlinPermutation), read by perlin.glsl.
+layout(std430, set = 0, binding = 2) readonly buffer NoiseTables {
+    int perlinPermutation[];
+} noiseTables;
+
+// Buffer index of a grid-local voxel, exactly as voxc::ChunkLayout::address computes it.
+// Chunks are aligned to world coordinates and their size is a power of two, so the
+// arithmetic shift and the mask are floor division and remainder, negatives included.
+int voxelAddress(ivec3 local) {
+    int chunkSize = push.gridOrigin.w;
+    int chunkShift = findMSB(chunkSize);
+    ivec3 world = push.gridOrigin.xyz + local;
+    ivec3 chunk = world >> chunkShift;
+    ivec3 inside = world & (chunkSize - 1);
+    ivec3 entry = chunk - push.chunkBase.xyz;
+    int slot = chunkTable.chunkSlot[entry.x + push.chunkCount.x * (entry.y + push.chunkCount.y * entry.z)];
+    return slot * chunkSize * chunkSize * chunkSize + inside.x + chunkSize * (inside.y + chunkSize * inside.z);
+}
+
+// ---- end common.glsl ----
+// ---- begin random.glsl ----
+// Counter-based randomness: mirrors compiler/program/src/Random.cpp bit for bit.
+
+// Chris Wellons' "lowbias32" integer finaliser.
+uint mix32(uint x) {
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    x ^= x >> 16;
+    return x;
+}
+
+const uint STREAM_RULE_CHOICE = 0u;
+const uint STREAM_PROBABILITY = 1u;
+
+uint anchorHash(uint seed, uint iteration, uint sweep, ivec3 anchorWorld, uint stream) {
+    uint h = mix32(stream);
+    h = mix32(uint(anchorWorld.z) ^ h);
+    h = mix32(uint(anchorWorld.y) ^ h);
+    h = mix32(uint(anchorWorld.x) ^ h);
+    h = mix32(sweep ^ h);
+    h = mix32(iteration ^ h);
+    return mix32(seed ^ h);
+}
+// ---- end random.glsl ----
+// ---- begin noise_common.glsl ----
+// Lattice helpers of the noise builtins: mirrors compiler/builtins/src/functions/NoiseCommon.h.
+// Every float result is `precise` (no fused multiply-add), so the GPU performs the
+// interpreter's IEEE operations in the interpreter's order.
+// Requires common.glsl (noiseTables) and random.glsl (mix32).
+
+int noisePerm(int i) { return noiseTables.perlinPermutation[i & 255]; }
+
+float noiseFade(float t) {
+    precise float r = t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
+    return r;
+}
+
+float noiseLerp(float t, float a, float b) {
+    precise float r = a + t * (b - a);
+    return r;
+}
+
+// Perlin's reference gradient: 12 cube-edge directions, four of them repeated (hash & 15).
+float noiseGrad(int hash, float x, float y, float z) {
+    int h = hash & 15;
+    float u = h < 8 ? x : y;
+    float v = h < 4 ? y : (h == 12 || h == 14 ? x : z);
+    precise float r = ((h & 1) == 0 ? u : -u) + ((h & 2) == 0 ? v : -v);
+    return r;
+}
+
+// An integer-valued float reduced modulo 256, exact for every finite value.
+int noiseLatticeIndex(float floored) {
+    precise float r = floored - 256.0 * floor(floored * 0.00390625);
+    return int(r);
+}
+
+// Seed-derived lattice translation, 8 bits per axis; seed 0 is untranslated.
+ivec3 noiseSeedOffset(uint seed) {
+    uint h = mix32(seed);
+    return ivec3(int(h & 255u), int((h >> 8) & 255u), int((h >> 16) & 255u));
+}
+
+uint noiseSubstream(uint seed, uint stream) { return seed + stream * 0x9E3779B9u; }
+
+// A float lattice coordinate as an int for hashing, saturated at +-2^30.
+ivec3 noiseHashCoordinate(vec3 floored) {
+    return ivec3(min(max(floored, vec3(-1073741824.0)), vec3(1073741824.0)));
+}
+
+uint noiseCellHash(ivec3 c, uint seed) {
+    return mix32(uint(c.x) ^ mix32(uint(c.y) ^ mix32(uint(c.z) ^ mix32(seed))));
+}
+
+// 24 hash bits as a float in [0, 1).
+float noiseUnitFloat(uint h) {
+    precise float r = float(h >> 8) * 5.9604644775390625e-8;
+    return r;
+}
+// ---- end noise_common.glsl ----
+// ---- begin noise_perlin3.glsl ----
+// Ken Perlin's improved noise (2002) with a seed-derived lattice translation: mirrors
+// voxc::noise::perlin3 (compiler/builtins/src/functions/GradientNoise.cpp).
+// Requires noise_common.glsl.
+
+float noisePerlin3(vec3 p, uint seed) {
+    precise vec3 f = floor(p);
+    ivec3 offset = noiseSeedOffset(seed);
+    int X = (noiseLatticeIndex(f.x) + offset.x) & 255;
+    int Y = (noiseLatticeIndex(f.y) + offset.y) & 255;
+    int Z = (noiseLatticeIndex(f.z) + offset.z) & 255;
+    precise float x = p.x - f.x;
+    precise float y = p.y - f.y;
+    precise float z = p.z - f.z;
+    float u = noiseFade(x);
+    float v = noiseFade(y);
+    float w = noiseFade(z);
+    int A = noisePerm(X) + Y;
+    int AA = noisePerm(A) + Z;
+    int AB = noisePerm(A + 1) + Z;
+    int B = noisePerm(X + 1) + Y;
+    int BA = noisePerm(B) + Z;
+    int BB = noisePerm(B + 1) + Z;
+    precise float x1 = x - 1.0;
+    precise float y1 = y - 1.0;
+    precise float z1 = z - 1.0;
+    float l00 = noiseLerp(u, noiseGrad(noisePerm(AA), x, y, z), noiseGrad(noisePerm(BA), x1, y, z));
+    float l10 = noiseLerp(u, noiseGrad(noisePerm(AB), x, y1, z), noiseGrad(noisePerm(BB), x1, y1, z));
+    float l01 = noiseLerp(u, noiseGrad(noisePerm(AA + 1), x, y, z1), noiseGrad(noisePerm(BA + 1), x1, y, z1));
+    float l11 = noiseLerp(u, noiseGrad(noisePerm(AB + 1), x, y1, z1), noiseGrad(noisePerm(BB + 1), x1, y1, z1));
+    return noiseLerp(w, noiseLerp(v, l00, l10), noiseLerp(v, l01, l11));
+}
+
+float noisePerlin3(vec3 p, int seed) { return noisePerlin3(p, uint(seed)); }
+// ---- end noise_perlin3.glsl ----
+// ---- begin math_functions.glsl ----
+// Math builtins of field expressions whose GLSL built-in may be computed in another operation
+// order (or with a fused multiply-add): written out with `precise` exactly as the interpreter
+// computes them (compiler/builtins/src/functions/Math.cpp). GLSL's own min, max, abs, floor,
+// sqrt, pow, sin and cos are used directly.
+
+// mix(x, y, a) = x * (1 - a) + y * a, GLSL's definition.
+float mathMix(float x, float y, float a) { precise float r = x * (1.0 - a) + y * a; return r; }
+vec2 mathMix(vec2 x, vec2 y, vec2 a) { precise vec2 r = x * (1.0 - a) + y * a; return r; }
+vec3 mathMix(vec3 x, vec3 y, vec3 a) { precise vec3 r = x * (1.0 - a) + y * a; return r; }
+vec2 mathMix(vec2 x, vec2 y, float a) { return mathMix(x, y, vec2(a)); }
+vec3 mathMix(vec3 x, vec3 y, float a) { return mathMix(x, y, vec3(a)); }
+
+// smoothstep: t = clamp((x - e0) / (e1 - e0), 0, 1); t * t * (3 - 2 t), GLSL's definition,
+// also defined (as written) when e0 >= e1.
+float mathSmoothstep(float e0, float e1, float x) {
+    precise float t = min(max((x - e0) / (e1 - e0), 0.0), 1.0);
+    precise float r = t * t * (3.0 - 2.0 * t);
+    return r;
+}
+vec2 mathSmoothstep(vec2 e0, vec2 e1, vec2 x) {
+    return vec2(mathSmoothstep(e0.x, e1.x, x.x), mathSmoothstep(e0.y, e1.y, x.y));
+}
+vec3 mathSmoothstep(vec3 e0, vec3 e1, vec3 x) {
+    return vec3(mathSmoothstep(e0.x, e1.x, x.x), mathSmoothstep(e0.y, e1.y, x.y), mathSmoothstep(e0.z, e1.z, x.z));
+}
+vec2 mathSmoothstep(float e0, float e1, vec2 x) { return mathSmoothstep(vec2(e0), vec2(e1), x); }
+vec3 mathSmoothstep(float e0, float e1, vec3 x) { return mathSmoothstep(vec3(e0), vec3(e1), x); }
+
+// fract(x) = x - floor(x), GLSL's definition (1.0 for tiny negative x, as on the CPU).
+float mathFract(float x) { precise float r = x - floor(x); return r; }
+vec2 mathFract(vec2 x) { precise vec2 r = x - floor(x); return r; }
+vec3 mathFract(vec3 x) { precise vec3 r = x - floor(x); return r; }
+
+// dot and length summed left to right.
+float mathDot(vec2 a, vec2 b) { precise float r = a.x * b.x + a.y * b.y; return r; }
+float mathDot(vec3 a, vec3 b) { precise float r = a.x * b.x + a.y * b.y + a.z * b.z; return r; }
+float mathLength(vec2 a) { return sqrt(mathDot(a, a)); }
+float mathLength(vec3 a) { return sqrt(mathDot(a, a)); }
+// ---- end math_functions.glsl ----
+
+layout(local_size_x = 8, local_size_y = 1, local_size_z = 8) in;
+// Each invocation handles this many consecutive anchors of its dispatch per axis
+// (voxc::Kernel::anchorsPerInvocation; the runtime sizes the dispatch by it).
+const ivec3 ANCHORS_PER_INVOCATION = ivec3(1, 64, 1);
+
+void main() {
+    ivec3 first = ivec3(gl_GlobalInvocationID) * ANCHORS_PER_INVOCATION;
+    if (any(greaterThanEqual(first, push.anchorCount.xyz))) return;
+    ivec3 last = min(first + ANCHORS_PER_INVOCATION, push.anchorCount.xyz);
+    int chunkSize = push.gridOrigin.w;
+
+    for (int z = first.z; z < last.z; ++z) {
+        for (int x = first.x; x < last.x; ++x) {
+            ivec3 columnLocal = push.anchorStart.xyz + ivec3(x, first.y, z) * push.anchorStep.xyz;
+            // Integer sum first, then one conversion, as the interpreter does.
+            ivec3 columnWorld = push.gridOrigin.xyz + columnLocal;
+            precise float n0 = float(columnWorld.x); // wx (fields.vox:32:28)
+            precise float n2 = float(columnWorld.z); // wz (fields.vox:32:28)
+            precise float n10 = float(columnLocal.x); // x (fields.vox:33:17)
+            precise float n12 = float(columnLocal.z); // z (fields.vox:33:17)
+            int address = 0;
+            for (int y = first.y; y < last.y; ++y) {
+                ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                ivec3 world = push.gridOrigin.xyz + local;
+                // Inside a chunk the next voxel along y lies chunkSize entries further on.
+                if (y == first.y || (world.y & (chunkSize - 1)) == 0) {
+                    address = voxelAddress(local);
+                } else {
+                    address += chunkSize;
+                }
+                precise float n1 = float(world.y); // wy (fields.vox:32:28)
+                precise vec3 n3 = vec3(n0, n1, n2); // vec3 (fields.vox:32:28)
+                precise vec3 n5 = (n3 * 0.0799999982); // mul (fields.vox:32:28)
+                precise float n7 = noisePerlin3(n5, 12); // perlin3 (fields.vox:32:20)
+                precise float n9 = (3.0 * n7); // mul (fields.vox:32:16)
+                precise float n11 = float(local.y); // y (fields.vox:33:17)
+                precise vec3 n13 = vec3(n10, n11, n12); // vec3 (fields.vox:33:17)
+                precise vec3 n17 = (n13 - vec3(0.0, 16.0, 20.0)); // sub (fields.vox:24:21)
+                precise float n18 = mathDot(n17, vec3(64.0, 6.0, 24.0)); // dot (fields.vox:24:17)
+                precise float n20 = (n18 / 4708.0); // div (fields.vox:24:17)
+                precise float n22 = min(max(n20, 0.0), 1.0); // clamp (fields.vox:24:11)
+                precise vec3 n23 = (vec3(64.0, 6.0, 24.0) * n22); // mul (fields.vox:25:19)
+                precise vec3 n24 = (vec3(0.0, 16.0, 20.0) + n23); // add (fields.vox:25:15)
+                precise vec3 n25 = (n13 - n24); // sub (fields.vox:25:10)
+                precise float n26 = mathLength(n25); // length (fields.vox:25:3)
+                precise float n27 = (n26 + n9); // add (fields.vox:33:9)
+                precise float n29 = (5.0 - n27); // sub (fields.vox:19:54)
+                precise float n30 = min(max(n29, 0.0), 1.0); // clamp (fields.vox:19:48)
+                // subtract: d = min(d, 1 - f)
+                float density = voxels.density[address];
+                precise float carved = 1.0 - n30;
+                voxels.density[address] = carved < density ? carved : density;
+            }
+        }
+    }
+}
