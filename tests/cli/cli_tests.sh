@@ -36,7 +36,7 @@ expect_no_file() {
 }
 
 # --help on every verb
-for verb in check compile run interp; do
+for verb in check compile run interp explore; do
     expect "help_$verb" 0 "Usage" -- "$voxc" "$verb" --help
 done
 expect no_verb 1 "" -- "$voxc"
@@ -95,6 +95,18 @@ expect validation_layer 0 "validation layer: 0 messages" -- "$voxc" run "$src/ex
 # interp trace and slice
 expect trace 0 "iter 0 sweep [0-9]+ phase [0-9]+ anchor" -- "$voxc" interp "$src/examples/overhang.vox" --trace --trace-limit 5
 expect slice 0 "#" -- "$voxc" interp "$src/examples/overhang.vox" --slice y=12
+
+# explore: a cheap sweep writes both CSVs and a PNG; an unknown const is a clear error
+expect explore 0 "pairwise IoU" -- "$voxc" explore "$src/examples/terrain.vox" --param ROCK --range 0.3:0.7:0.2 \
+    --runs 2 --size 32,32,32 --csv "$work/explore.csv" --summary "$work/explore_summary.csv" --png "$work/explore.png"
+expect explore_csv 0 "^ROCK,0.7,1,2025," -- cat "$work/explore.csv"
+expect explore_summary 0 "^ROCK,0.5,2," -- cat "$work/explore_summary.csv"
+expect explore_png 0 "PNG" -- head -c 4 "$work/explore.png"
+expect explore_unknown_param 1 "E0002.*no such constant; did you mean 'ROCK'" -- "$voxc" explore \
+    "$src/examples/terrain.vox" --param ROK --range 0:1:0.5 --png "$work/explore_bad.png"
+expect_no_file explore_no_png_after_error "$work/explore_bad.png"
+expect explore_bad_range 1 "STEP must be greater than 0" -- "$voxc" explore "$src/examples/terrain.vox" \
+    --param ROCK --range 0:1:0
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -77,6 +77,7 @@ std::vector<CheckedGrammar> checkGrammars(Context& context, const ast::File& fil
 
 Program checkProgram(Context& context, const ast::File& file, const std::string& path) {
     for (const ast::ConstDecl& decl : file.constants) context.constants.declare(decl);
+    context.constants.reportUnknownOverrides();
     reportUnknownBlocks(context, file);
 
     Program program;
@@ -116,13 +117,17 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
 } // namespace check
 
 CheckResult checkSource(const SourceFile& source, const Limits& limits) {
+    return checkSource(source, CheckOptions{limits, {}});
+}
+
+CheckResult checkSource(const SourceFile& source, const CheckOptions& options) {
     Diagnostics diagnostics;
     CheckResult result;
     result.source = source;
     if (!reportIfNotText(source, diagnostics)) {
         ast::File file = parse(source, diagnostics);
         if (!diagnostics.hasErrors()) {
-            check::Context context{diagnostics, limits, check::Constants(diagnostics)};
+            check::Context context{diagnostics, options.limits, check::Constants(diagnostics, options.constOverrides)};
             Program program = check::checkProgram(context, file, source.path());
             if (!diagnostics.hasErrors()) result.program = std::move(program);
         }
@@ -132,6 +137,10 @@ CheckResult checkSource(const SourceFile& source, const Limits& limits) {
 }
 
 CheckResult checkFile(const std::string& path, const Limits& limits) {
+    return checkFile(path, CheckOptions{limits, {}});
+}
+
+CheckResult checkFile(const std::string& path, const CheckOptions& options) {
     Diagnostics diagnostics;
     std::optional<SourceFile> source = loadSourceFile(path, diagnostics);
     if (!source) {
@@ -140,7 +149,7 @@ CheckResult checkFile(const std::string& path, const Limits& limits) {
         result.diagnostics = diagnostics.take();
         return result;
     }
-    return checkSource(*source, limits);
+    return checkSource(*source, options);
 }
 
 } // namespace voxc

@@ -15,7 +15,19 @@ void Constants::declare(const ast::ConstDecl& decl) {
         return;
     }
     std::optional<double> value = decl.value ? evaluate(*decl.value) : std::nullopt;
+    if (auto it = overrides_.find(decl.name); it != overrides_.end()) value = it->second;
     entries_.emplace(decl.name, Entry{decl.loc, value});
+}
+
+void Constants::reportUnknownOverrides() const {
+    std::vector<std::string_view> names;
+    for (const auto& entry : entries_) names.push_back(entry.first);
+    for (const auto& [name, value] : overrides_) {
+        if (isDeclared(name)) continue;
+        diagnostics_.error("E0002", {},
+                           fmt::format("cannot override constant '{}': the file declares no such constant{}", name,
+                                       names.empty() ? std::string(" (it declares none)") : suggestOrList(name, names)));
+    }
 }
 
 std::optional<double> Constants::evaluate(const ast::Expr& expr) const {

@@ -13,10 +13,16 @@ namespace voxc::check {
 
 class Constants {
 public:
-    explicit Constants(Diagnostics& diagnostics) : diagnostics_(diagnostics) {}
+    using Overrides = std::map<std::string, double, std::less<>>;
 
-    // Folds the declaration's expression and records it (E0003 for a second declaration).
+    Constants(Diagnostics& diagnostics, const Overrides& overrides) : diagnostics_(diagnostics), overrides_(overrides) {}
+
+    // Folds the declaration's expression and records it (E0003 for a second declaration);
+    // an override of the name replaces the folded value.
     void declare(const ast::ConstDecl& decl);
+
+    // E0002 for every override whose name no declaration used; call after every declare().
+    void reportUnknownOverrides() const;
 
     // Folds `expr`, reporting unknown names (E0002), division by zero and non-finite
     // results (E0007). Returns nothing after an error.
@@ -32,6 +38,7 @@ private:
     std::optional<double> fold(const ast::Expr& expr, bool& failed) const;
 
     Diagnostics& diagnostics_;
+    const Overrides& overrides_;
     std::map<std::string, Entry, std::less<>> entries_;
 };
 

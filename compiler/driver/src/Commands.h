@@ -8,5 +8,6 @@ void addCheckCommand(CLI::App& app);
 void addCompileCommand(CLI::App& app);
 void addRunCommand(CLI::App& app);
 void addInterpCommand(CLI::App& app);
+void addExploreCommand(CLI::App& app);
 
 } // namespace voxc::driver

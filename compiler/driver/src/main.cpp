@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
     voxc::driver::addCompileCommand(app);
     voxc::driver::addRunCommand(app);
     voxc::driver::addInterpCommand(app);
+    voxc::driver::addExploreCommand(app);
     try {
         app.parse(argc, argv);
         return 0;

@@ -7,6 +7,7 @@
 #include "voxc/syntax/Diagnostics.h"
 #include "voxc/syntax/SourceFile.h"
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,8 +24,19 @@ struct CheckResult {
     std::string rendered() const;
 };
 
+struct CheckOptions {
+    Limits limits;
+    // Replaces the value of each named `const`, as if its declaration said `const NAME = value;`
+    // (its own expression is still checked), so every use sees the new value: constants folded
+    // from it, grammar cells, world and shape keys, field expressions. A name the file does not
+    // declare is error E0002 without a location. `voxc explore` sweeps a constant this way.
+    std::map<std::string, double, std::less<>> constOverrides;
+};
+
 CheckResult checkSource(const SourceFile& source, const Limits& limits = {});
+CheckResult checkSource(const SourceFile& source, const CheckOptions& options);
 // Reads `path` (E0100 when it cannot, E0101 when it is not UTF-8 text) and checks it.
 CheckResult checkFile(const std::string& path, const Limits& limits = {});
+CheckResult checkFile(const std::string& path, const CheckOptions& options);
 
 } // namespace voxc
