@@ -7,7 +7,7 @@ packages=(
   glslang-dev glslang-tools spirv-tools
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
   libglm-dev libfmt-dev libcli11-dev nlohmann-json3-dev
-  libgtest-dev libbenchmark-dev libnoise-dev
+  libgtest-dev libbenchmark-dev libnoise-dev zlib1g-dev
 )
 missing=()
 for p in "${packages[@]}"; do
