@@ -12,6 +12,7 @@ item
     : constDecl
     | functionDecl
     | fieldDecl
+    | featureDecl
     | block
     ;
 
@@ -31,6 +32,11 @@ parameter
 // `field ground = clamp(24 - y, 0, 1);`
 fieldDecl
     : FIELD name=IDENT '=' fieldExpr ';'
+    ;
+
+// `feature arch1 = arch { start = [16, 16, 16]; }`: a parametric generator (compiler/check)
+featureDecl
+    : FEATURE name=IDENT '=' block
     ;
 
 // `world { ... }`, `grammar caves { ... }`, `rule r1 { ... }`, `layer { ... }`
@@ -103,6 +109,7 @@ fieldExpr
 CONST  : 'const' ;
 FN     : 'fn' ;
 FIELD  : 'field' ;
+FEATURE : 'feature' ;
 LET    : 'let' ;
 IN     : 'in' ;
 IDENT  : [a-zA-Z_] [a-zA-Z_0-9]* ;

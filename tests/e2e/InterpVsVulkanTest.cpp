@@ -101,7 +101,8 @@ TEST(InterpVsVulkanFields, FieldsWithinRecordTolerance) {
 
 std::vector<Case> cases() {
     std::vector<Case> all;
-    for (const char* example : {"overhang", "cave_grammar", "terrain", "fields", "cases/priorities", "cases/field_modes"})
+    for (const char* example : {"overhang", "cave_grammar", "terrain", "fields", "arch", "cave", "cliff", "cases/priorities",
+                                "cases/field_modes"})
         for (glm::ivec3 origin : {glm::ivec3(0, 0, 0), glm::ivec3(-37, -5, -100), glm::ivec3(100003, 7, -65541)})
             all.push_back({example, origin});
     return all;

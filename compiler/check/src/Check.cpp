@@ -23,7 +23,7 @@ namespace {
 
 constexpr std::string_view kTopLevelBlocks[] = {"world", "start", "grammar", "pipeline"};
 // Later parts of the language; using one is E0013 rather than "unknown block".
-constexpr std::string_view kReservedBlocks[] = {"lsystem", "feature", "material"};
+constexpr std::string_view kReservedBlocks[] = {"lsystem", "material"};
 
 // The first block of a kind that may appear once; later ones are E0003.
 const ast::Block* uniqueBlock(Context& context, const ast::File& file, std::string_view kind) {
@@ -97,11 +97,14 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
     for (const ast::Block& grammarBlock : file.blocks)
         if (grammarBlock.kind == "grammar" && grammarBlock.label) grammarNames.push_back(*grammarBlock.label);
     program.fields = checkFields(context, file, grammarNames);
+    for (Field& feature : checkFeatures(context, file, grammarNames, program.world.seed))
+        program.fields.push_back(std::move(feature));
 
     program.pipeline.push_back({Stage::Kind::Start, 0, FieldMode::Set, {}});
     if (const ast::Block* block = uniqueBlock(context, file, "pipeline")) {
         std::vector<std::string> fieldNames;
         for (const ast::FieldDecl& field : file.fields) fieldNames.push_back(field.name);
+        for (const ast::FeatureDecl& feature : file.features) fieldNames.push_back(feature.name);
         for (const Stage& stage : checkPipeline(context, *block, grammarNames, fieldNames))
             program.pipeline.push_back(stage);
     } else {

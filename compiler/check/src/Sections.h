@@ -44,6 +44,12 @@ std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
 // from each other, from `start` and from `grammarNames` (one namespace for pipeline stages).
 std::vector<Field> checkFields(Context& context, const ast::File& file, const std::vector<std::string>& grammarNames);
 
+// Features (`feature name = arch { ... }`), each expanded into a field, in declaration order.
+// Their names share the namespace of fields and of `stageNames` (grammars); `seed` is the
+// world's, for generators that draw noise at check time.
+std::vector<Field> checkFeatures(Context& context, const ast::File& file, const std::vector<std::string>& stageNames,
+                                 uint32_t seed);
+
 // W0201-W0204 for one checked grammar.
 void analyseGrammar(Context& context, const CheckedGrammar& grammar);
 

@@ -232,6 +232,12 @@ ast::File buildAst(P::FileContext& file) {
             decl.name = field->name ? field->name->getText() : std::string();
             decl.value = buildFieldExpr(field->fieldExpr());
             out.fields.push_back(std::move(decl));
+        } else if (auto* feature = item->featureDecl()) {
+            ast::FeatureDecl decl;
+            decl.loc = feature->name ? tokenLoc(*feature->name) : contextLoc(*feature);
+            decl.name = feature->name ? feature->name->getText() : std::string();
+            if (feature->block()) decl.body = buildBlock(*feature->block());
+            out.features.push_back(std::move(decl));
         } else if (auto* block = item->block()) {
             out.blocks.push_back(buildBlock(*block));
         }

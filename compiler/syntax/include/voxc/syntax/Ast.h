@@ -119,10 +119,18 @@ struct FieldDecl {
     std::unique_ptr<const Expr> value;
 };
 
+// `feature name = generator { key = value; ... }`: `body.kind` names the generator.
+struct FeatureDecl {
+    SourceLoc loc; // the name
+    std::string name;
+    Block body;
+};
+
 struct File {
     std::vector<ConstDecl> constants;    // declaration order
     std::vector<FunctionDecl> functions; // declaration order
     std::vector<FieldDecl> fields;       // declaration order
+    std::vector<FeatureDecl> features;   // declaration order
     std::vector<Block> blocks;           // declaration order
 };
 

@@ -1,0 +1,114 @@
+// `feature name = generator { key = value; ... }`: each feature becomes a field whose DAG the
+// generator's record builds (compiler/check/src/generators).
+#include "Sections.h"
+#include "Suggest.h"
+#include "Values.h"
+#include "generators/Generators.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <map>
+
+namespace voxc::check {
+
+namespace {
+
+std::optional<std::array<double, 3>> readKey(Context& context, const ast::Assignment& a, const GeneratorKey& key) {
+    switch (key.type) {
+    case GeneratorKeyType::Number:
+        if (auto v = readNumber(context, a, key.min, key.max)) return std::array<double, 3>{*v, 0, 0};
+        return std::nullopt;
+    case GeneratorKeyType::Integer:
+        if (auto v = readInteger(context, a, int64_t(key.min), int64_t(key.max)))
+            return std::array<double, 3>{double(*v), 0, 0};
+        return std::nullopt;
+    case GeneratorKeyType::Vec3: return readNumberVec3(context, a, key.min, key.max);
+    }
+    return std::nullopt;
+}
+
+// The thesis samples each parameter on a grid from its minimum; other values work but are
+// outside the ranges it evaluated, so they warn rather than fail.
+void warnOffGrid(Context& context, const ast::Assignment& a, const GeneratorKey& key, double value) {
+    if (key.step <= 0) return;
+    const double steps = (value - key.min) / key.step;
+    if (std::fabs(steps - std::round(steps)) <= 1e-6 * std::max(1.0, std::fabs(steps))) return;
+    context.diagnostics.warning("W0205", a.value.loc,
+                                fmt::format("'{}' = {} is off the thesis's sampling grid ({} + n * {})", key.name,
+                                            formatNumber(value), formatNumber(key.min), formatNumber(key.step)));
+}
+
+std::optional<Field> checkFeature(Context& context, const ast::FeatureDecl& decl, uint32_t seed) {
+    const ast::Block& body = decl.body;
+    const GeneratorInfo* info = findGenerator(body.kind);
+    if (info == nullptr) {
+        std::vector<std::string_view> names;
+        for (const GeneratorInfo& generator : generators()) names.push_back(generator.name);
+        context.diagnostics.error("E0002", body.loc,
+                                  fmt::format("unknown generator '{}'{}", body.kind, suggestOrList(body.kind, names)));
+        return std::nullopt;
+    }
+    const std::string where = fmt::format("'{}' feature", info->name);
+    checkLabel(context, body, false);
+    rejectUnexpectedMembers(context, body, where, {});
+    std::vector<std::string_view> keyNames;
+    for (const GeneratorKey& key : info->keys) keyNames.push_back(key.name);
+    BlockKeys keys(context, body, where, keyNames);
+
+    GeneratorParams params;
+    bool ok = true;
+    for (const GeneratorKey& key : info->keys) {
+        const ast::Assignment* a = key.required ? keys.require(key.name) : keys.find(key.name);
+        if (a == nullptr) {
+            ok = ok && !key.required;
+            if (!key.required && !key.override) params.set(key.name, key.value);
+            continue;
+        }
+        auto value = readKey(context, *a, key);
+        if (!value) {
+            ok = false;
+            continue;
+        }
+        if (key.type != GeneratorKeyType::Vec3) warnOffGrid(context, *a, key, (*value)[0]);
+        params.set(key.name, *value);
+    }
+    if (!ok) return std::nullopt;
+    if (auto problem = info->validate(params)) {
+        const ast::Assignment* a = keys.find(problem->key);
+        context.diagnostics.error("E0007", a ? a->value.loc : body.loc, problem->message);
+        return std::nullopt;
+    }
+    FieldDag dag;
+    const uint32_t root = info->build(params, seed, dag);
+    Field field;
+    field.name = decl.name;
+    field.loc = decl.loc;
+    field.nodes = dag.reachableFrom(root, field.root);
+    for (FieldNode& node : field.nodes) node.loc = body.loc;
+    return field;
+}
+
+} // namespace
+
+std::vector<Field> checkFeatures(Context& context, const ast::File& file, const std::vector<std::string>& stageNames,
+                                 uint32_t seed) {
+    std::vector<Field> fields;
+    std::map<std::string, SourceLoc> names;
+    for (const ast::FieldDecl& field : file.fields) names.emplace(field.name, field.loc);
+    for (const ast::FeatureDecl& decl : file.features) {
+        auto [it, inserted] = names.emplace(decl.name, decl.loc);
+        if (!inserted)
+            context.diagnostics.error("E0003", decl.loc,
+                                      fmt::format("a field or feature named '{}' already exists", decl.name),
+                                      {{it->second, "first declared here"}});
+        else if (decl.name == "start" || std::find(stageNames.begin(), stageNames.end(), decl.name) != stageNames.end())
+            context.diagnostics.error("E0003", decl.loc,
+                                      fmt::format("'{}' already names a pipeline stage (a grammar or 'start')",
+                                                  decl.name));
+        if (auto field = checkFeature(context, decl, seed)) fields.push_back(std::move(*field));
+    }
+    return fields;
+}
+
+} // namespace voxc::check
