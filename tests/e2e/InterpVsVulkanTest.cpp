@@ -4,6 +4,7 @@
 // record they use is exact on lavapipe except sin and cos, which FieldsWithinRecordTolerance
 // compares within the records' tolerances.
 #include "voxc/builtins/Functions.h"
+#include "GridCompare.h"
 #include "voxc/check/Check.h"
 #include "voxc/codegen/Codegen.h"
 #include "voxc/grid/Grid.h"
@@ -34,22 +35,6 @@ Program loadExample(const std::string& name) {
     return std::move(*result.program);
 }
 
-// Number of voxels whose bit patterns differ; reports the first few.
-size_t countDifferences(const DenseGrid& expected, const DenseGrid& actual) {
-    EXPECT_EQ(expected.size(), actual.size());
-    size_t differences = 0;
-    const glm::ivec3 size = expected.size();
-    for (int z = 0; z < size.z; ++z)
-        for (int y = 0; y < size.y; ++y)
-            for (int x = 0; x < size.x; ++x) {
-                const float a = expected.at({x, y, z});
-                const float b = actual.at({x, y, z});
-                if (std::memcmp(&a, &b, sizeof(float)) != 0 && differences++ < 5)
-                    ADD_FAILURE() << fmt::format("voxel ({},{},{}): interpreter {} vulkan {}", x, y, z, a, b);
-            }
-    return differences;
-}
-
 struct Case {
     std::string example;
     glm::ivec3 origin;
@@ -70,7 +55,7 @@ TEST_P(InterpVsVulkan, BitIdenticalAtEveryChunkSize) {
         program.world.chunkSize = chunk;
         VulkanExecutor executor(lavapipe(), codegen::compileProgram(program, {}));
         const DenseGrid actual = executor.run().grid.toDense();
-        EXPECT_EQ(countDifferences(expected, actual), 0u);
+        EXPECT_EQ(test::countBitDifferences(expected, actual), 0u);
     }
 }
 
@@ -101,7 +86,7 @@ TEST(InterpVsVulkanFields, FieldsWithinRecordTolerance) {
 
 std::vector<Case> cases() {
     std::vector<Case> all;
-    for (const char* example : {"overhang", "cave_grammar", "terrain", "fields", "arch", "cave", "cliff", "cases/priorities",
+    for (const char* example : {"overhang", "cave_grammar", "terrain", "scene", "fields", "arch", "cave", "cliff", "cases/priorities",
                                 "cases/field_modes"})
         for (glm::ivec3 origin : {glm::ivec3(0, 0, 0), glm::ivec3(-37, -5, -100), glm::ivec3(100003, 7, -65541)})
             all.push_back({example, origin});

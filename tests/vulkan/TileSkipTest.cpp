@@ -1,6 +1,7 @@
 // Tile skipping (DispatchCursor with a tile shift, tiles.glsl): sweeps run only over the tiles
 // where some rule may match, and the result stays bit-identical to the interpreter and to a
 // run that dispatches every anchor.
+#include "GridCompare.h"
 #include "voxc/check/Check.h"
 #include "voxc/codegen/Codegen.h"
 #include "voxc/interp/Interpreter.h"
@@ -25,20 +26,6 @@ Program checked(const std::string& text) {
     return std::move(*result.program);
 }
 
-size_t countDifferences(const DenseGrid& expected, const DenseGrid& actual) {
-    EXPECT_EQ(expected.size(), actual.size());
-    size_t differences = 0;
-    const glm::ivec3 size = expected.size();
-    for (int z = 0; z < size.z; ++z)
-        for (int y = 0; y < size.y; ++y)
-            for (int x = 0; x < size.x; ++x) {
-                const float a = expected.at({x, y, z});
-                const float b = actual.at({x, y, z});
-                if (std::memcmp(&a, &b, sizeof(float)) != 0 && differences++ < 5)
-                    ADD_FAILURE() << fmt::format("voxel ({},{},{}): expected {} got {}", x, y, z, a, b);
-            }
-    return differences;
-}
 
 RunResult run(const Program& program, bool skip) {
     ExecutorOptions options;
@@ -60,10 +47,10 @@ TEST(vulkan_TileSkip, OverhangDispatchesFewTilesAndMatchesTheInterpreter) {
     // Only the two columns of tiles along the wall face at x = 24 (of eight) can hold a match.
     EXPECT_LT(skipping.skip.activeTilePhases * 3, skipping.skip.tilePhases);
     EXPECT_GT(skipping.skip.activeTilePhases, 0u);
-    EXPECT_EQ(countDifferences(interpret(program), skipping.grid.toDense()), 0u);
+    EXPECT_EQ(test::countBitDifferences(interpret(program), skipping.grid.toDense()), 0u);
     const RunResult direct = run(program, false);
     EXPECT_FALSE(direct.skip.enabled);
-    EXPECT_EQ(countDifferences(direct.grid.toDense(), skipping.grid.toDense()), 0u);
+    EXPECT_EQ(test::countBitDifferences(direct.grid.toDense(), skipping.grid.toDense()), 0u);
 }
 
 // A seed of rock grows into uniform air along +x, -x, +y and +z, crossing many tile and chunk
@@ -93,7 +80,7 @@ TEST(vulkan_TileSkip, GrowthAcrossTileBordersMatchesTheInterpreter) {
     const RunResult skipping = run(program, true);
     ASSERT_TRUE(skipping.skip.enabled);
     EXPECT_LT(skipping.skip.activeTilePhases, skipping.skip.tilePhases);
-    EXPECT_EQ(countDifferences(expected, skipping.grid.toDense()), 0u);
+    EXPECT_EQ(test::countBitDifferences(expected, skipping.grid.toDense()), 0u);
     // The rock reached tiles far from the seed.
     EXPECT_GE(expected.at({20, 2, 2}), 0.5f);
     EXPECT_GE(expected.at({3, 2, 15}), 0.5f);
