@@ -15,12 +15,32 @@ const std::vector<Case>& grammarCases() {
     return cases;
 }
 
-Program loadCaseProgram(const Case& benchCase, int n) {
+const std::vector<Case>& featureCases() {
+    static const std::vector<Case> cases = {
+        {"feature_arch", "examples/arch.vox"},
+        {"feature_cave", "examples/cave.vox"},
+        {"feature_overhang", "examples/cliff.vox"},
+    };
+    return cases;
+}
+
+namespace {
+
+Program loadResized(const Case& benchCase, int n) {
     const std::string path = fmt::format("{}/{}", VOXC_SOURCE_DIR, benchCase.example);
     CheckResult result = checkFile(path);
     if (result.hasErrors() || !result.program) throw UserError(fmt::format("{} does not check", path));
     Program program = std::move(*result.program);
     program.world.size = glm::ivec3(n);
+    return program;
+}
+
+} // namespace
+
+Program loadFeatureProgram(const Case& benchCase, int n) { return loadResized(benchCase, n); }
+
+Program loadCaseProgram(const Case& benchCase, int n) {
+    Program program = loadResized(benchCase, n);
     program.world.origin = glm::ivec3(0);
     for (Grammar& grammar : program.grammars) {
         grammar.boundsMin = glm::ivec3(0);

@@ -18,6 +18,11 @@ const std::vector<Case>& grammarCases();
 // Loads the example and resizes it to n^3 with whole-grid bounds, stride 1 and one iteration.
 Program loadCaseProgram(const Case& benchCase, int n);
 
+// The generator cases: examples/arch.vox, cave.vox and cliff.vox (Dey's thesis defaults) on an
+// n^3 grid; the features keep their default size and place, as in the thesis's timings.
+const std::vector<Case>& featureCases();
+Program loadFeatureProgram(const Case& benchCase, int n);
+
 // The "fbm5" case: a 5-octave Perlin fBm density over n^3 voxels (frequency 0.02 per voxel,
 // lacunarity 2, gain 0.5, seed 0), written by a `set` field stage.
 Program fbm5Program(int n);

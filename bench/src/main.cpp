@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
     app.allow_extras(); // the rest goes to Google Benchmark (e.g. --benchmark_min_time=2)
     app.add_flag("--json", options.json, "Print a JSON list of records");
     app.add_option("--sizes", options.sizes, "Grid sizes n (n^3 voxels)")->delimiter(',');
-    app.add_option("--field-sizes", options.fieldSizes, "Grid sizes n of the fbm5 field case")->delimiter(',');
+    app.add_option("--field-sizes", options.fieldSizes, "Grid sizes n of the fbm5 and feature cases")->delimiter(',');
     app.add_option("--backends", options.backends, "vulkan, interp, libnoise")->delimiter(',');
     app.add_option("--device", options.device, "Vulkan device: auto, lavapipe, gpu or an index");
     try {
@@ -98,6 +98,13 @@ int main(int argc, char** argv) {
         for (const bench::Case& benchCase : bench::grammarCases()) {
             for (int n : options.sizes) {
                 auto program = std::make_shared<const Program>(bench::loadCaseProgram(benchCase, n));
+                if (uses("vulkan")) registerVulkan(reporter, *context, benchCase.name, n, program);
+                if (uses("interp")) registerInterp(reporter, benchCase.name, n, program);
+            }
+        }
+        for (const bench::Case& benchCase : bench::featureCases()) {
+            for (int n : options.fieldSizes) {
+                auto program = std::make_shared<const Program>(bench::loadFeatureProgram(benchCase, n));
                 if (uses("vulkan")) registerVulkan(reporter, *context, benchCase.name, n, program);
                 if (uses("interp")) registerInterp(reporter, benchCase.name, n, program);
             }
