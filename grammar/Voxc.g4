@@ -1,7 +1,8 @@
 // The .vox surface syntax. Deliberately generic: a file is constants and named blocks, and a
 // block holds assignments, nested blocks, bare names and rows. Which block may hold what is
 // the checker's business (compiler/check), so that a misspelt key gets a "did you mean"
-// instead of a parse error, and new blocks (lsystem, feature, ...) need no grammar change.
+// instead of a parse error, and new blocks (lsystem, ...) need no grammar change. Expressions
+// (fields, functions) and `feature NAME = generator { ... }` have rules of their own.
 grammar Voxc;
 
 file
