@@ -1,6 +1,7 @@
 #include "voxc/syntax/Diagnostics.h"
 
 #include <algorithm>
+#include <tuple>
 #include <fmt/format.h>
 
 namespace voxc {
@@ -46,6 +47,17 @@ void Diagnostics::error(std::string_view code, SourceLoc loc, std::string messag
 void Diagnostics::warning(std::string_view code, SourceLoc loc, std::string message,
                           std::vector<DiagnosticNote> notes) {
     report({Severity::Warning, std::string(code), loc, std::move(message), std::move(notes)});
+}
+
+std::vector<Diagnostic> Diagnostics::take() {
+    // The cap line has neither a code nor a location; it stays last.
+    auto key = [](const Diagnostic& d) {
+        const bool capLine = d.code.empty() && d.loc.line == 0;
+        return std::make_tuple(capLine, d.loc.line, d.loc.column);
+    };
+    std::stable_sort(diagnostics_.begin(), diagnostics_.end(),
+                     [&](const Diagnostic& a, const Diagnostic& b) { return key(a) < key(b); });
+    return std::move(diagnostics_);
 }
 
 } // namespace voxc

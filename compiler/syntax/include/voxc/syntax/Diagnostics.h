@@ -30,8 +30,10 @@ struct Diagnostic {
     std::vector<DiagnosticNote> notes;
 };
 
-// Collects diagnostics in report order, drops exact duplicates, and stops recording errors
-// after kMaxErrors, appending one final "too many errors" diagnostic instead.
+// Collects diagnostics, drops exact duplicates, and stops recording errors after kMaxErrors,
+// appending one final "too many errors" diagnostic instead. take() hands them over in source
+// order (file-level ones first, the "too many errors" line last), whatever order the checker's
+// passes found them in.
 class Diagnostics {
 public:
     static constexpr int kMaxErrors = 20;
@@ -43,7 +45,7 @@ public:
     bool hasErrors() const { return errorCount_ > 0; }
     int errorCount() const { return errorCount_; }
     const std::vector<Diagnostic>& all() const { return diagnostics_; }
-    std::vector<Diagnostic> take() { return std::move(diagnostics_); }
+    std::vector<Diagnostic> take();
 
 private:
     std::vector<Diagnostic> diagnostics_;
