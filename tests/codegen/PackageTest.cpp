@@ -129,10 +129,31 @@ TEST_F(codegen_Package, ManifestListsFieldStages) {
     const auto& stages = m["dispatch"]["stages"];
     // `start` is a dead stage: `set ground` overwrites every voxel.
     ASSERT_EQ(stages.size(), 4u);
-    EXPECT_EQ(stages[0], (nlohmann::json{{"kind", "field"}, {"field", "ground"}, {"mode", "set"}, {"kernel", "ground_set"}}));
+    nlohmann::json ground = stages[0];
+    // The ground is evaluated in every chunk of fields.vox's grid: the chunks merge into one box.
+    EXPECT_EQ(ground["boxes"], nlohmann::json::parse("[[[0, 0, 0], [64, 64, 64]]]"));
+    ground.erase("boxes");
+    EXPECT_EQ(ground, (nlohmann::json{{"kind", "field"}, {"field", "ground"}, {"mode", "set"}, {"kernel", "ground_set"}}));
     EXPECT_EQ(stages[1]["kernel"], "tunnel_subtract");
     EXPECT_EQ(stages[2]["mode"], "union");
     EXPECT_EQ(stages[3]["kind"], "grammar");
+}
+
+TEST_F(codegen_Package, ArchUnionSkipsChunksItCannotChange) {
+    CheckResult checked = checkFile(std::string(VOXC_EXAMPLES_DIR) + "/arch.vox");
+    ASSERT_TRUE(checked.program) << checked.rendered();
+    checked.program->world.chunkSize = 8;
+    const KernelPackage package = compileProgram(*checked.program);
+    ASSERT_EQ(package.stages.size(), 2u);
+    // The start box writes 1 over 0, so union with the arch's exact 0 far from it changes nothing.
+    size_t evaluated = 0, unchanged = 0;
+    for (const FieldBox& box : package.stages[1].fieldBoxes) {
+        evaluated += !box.constant;
+        unchanged += box.unchanged;
+        if (box.unchanged) EXPECT_EQ(box.value, 0.0f);
+    }
+    EXPECT_GT(evaluated, 0u);
+    EXPECT_GT(unchanged, evaluated);
 }
 #endif
 

@@ -189,3 +189,39 @@ TEST(vulkan_DispatchPlan, FieldStagesCoverTheGridThenInvalidateTileRanges) {
     EXPECT_EQ(xyz(all[2].push.anchorCount), world.size);
     EXPECT_EQ(all[3].kind, DispatchKind::InvalidateRanges);
 }
+
+TEST(vulkan_DispatchPlan, FieldBoxesDispatchOneByOneAndCarryTheirConstant) {
+    const World world = makeWorld({20, 12, 9}, {-37, -5, -100}, 8);
+    KernelPackage package = makePackage(world, true, {});
+    StagePlan field;
+    field.kind = Stage::Kind::Field;
+    field.fieldKernel = package.stages[0].startKernel;
+    field.fieldName = "f";
+    field.fieldMode = FieldMode::Set;
+    field.fieldBoxes = {FieldBox{{0, 0, 0}, {20, 12, 4}, false, 0.0f}, FieldBox{{0, 0, 4}, {20, 12, 9}, true, -0.0f}};
+    package.stages.push_back(field);
+    validatePackage(package);
+    DispatchCursor cursor(package, kNoLimit);
+    std::vector<Dispatch> all;
+    Dispatch d;
+    while (cursor.next(d)) all.push_back(d);
+    ASSERT_EQ(all.size(), 3u); // start, then one dispatch per box
+    EXPECT_EQ(xyz(all[1].push.anchorStart), glm::ivec3(0));
+    EXPECT_EQ(xyz(all[1].push.anchorCount), glm::ivec3(20, 12, 4));
+    EXPECT_EQ(all[1].push.anchorCount[3], 0);
+    EXPECT_EQ(xyz(all[2].push.anchorStart), glm::ivec3(0, 0, 4));
+    EXPECT_EQ(xyz(all[2].push.anchorCount), glm::ivec3(20, 12, 5));
+    EXPECT_EQ(all[2].push.anchorCount[3], 1);
+    EXPECT_EQ(uint32_t(all[2].push.anchorStart[3]), 0x80000000u); // -0.0's bits: the sign survives
+
+    KernelPackage skipped = package;
+    skipped.stages.back().fieldBoxes.back().unchanged = true;
+    DispatchCursor skippedCursor(skipped, kNoLimit);
+    size_t dispatches = 0;
+    while (skippedCursor.next(d)) ++dispatches;
+    EXPECT_EQ(dispatches, 2u); // the unchanged box is not dispatched
+
+    KernelPackage gap = package;
+    gap.stages.back().fieldBoxes.pop_back();
+    EXPECT_THROW(validatePackage(gap), InternalError);
+}

@@ -5,6 +5,7 @@
 #include "voxc/ir/Lower.h"
 #include "voxc/program/Semantics.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <fmt/format.h>
@@ -111,16 +112,29 @@ KernelPackage compileProgram(const Program& program, const CompileOptions& optio
                                              tileRangesDispatchShape(), tileRangesKernelSource()));
     }
 
+    // Every density is 0 before the pipeline; the start stage writes only its shapes' values.
+    // After a grammar or field stage the bounds are not tracked.
+    std::optional<DensityBounds> densities = DensityBounds{};
     for (const Stage& stage : module.pipeline) {
         StagePlan plan;
         plan.kind = stage.kind;
         switch (stage.kind) {
-        case Stage::Kind::Start: plan.startKernel = 0; break;
-        case Stage::Kind::Grammar: plan.grammar = grammarPlans.at(stage.index); break;
+        case Stage::Kind::Start:
+            plan.startKernel = 0;
+            if (densities)
+                for (const StartShape& shape : module.start)
+                    densities = DensityBounds{std::min(densities->lo, shape.value), std::max(densities->hi, shape.value)};
+            break;
+        case Stage::Kind::Grammar:
+            plan.grammar = grammarPlans.at(stage.index);
+            densities.reset();
+            break;
         case Stage::Kind::Field:
             plan.fieldKernel = fieldKernels.at({stage.index, stage.mode});
             plan.fieldName = module.fields.at(stage.index).name;
             plan.fieldMode = stage.mode;
+            plan.fieldBoxes = fieldBoxes(module, module.fields.at(stage.index), stage.mode, densities);
+            densities.reset();
             break;
         }
         package.stages.push_back(std::move(plan));

@@ -6,11 +6,15 @@
 
 #include "voxc/builtins/Functions.h"
 #include "voxc/builtins/Ops.h"
+#include "voxc/ir/passes/ClassifyFieldChunks.h"
 
 #include <fmt/format.h>
 
 #include <array>
+#include <bit>
+#include <map>
 #include <set>
+#include <tuple>
 
 namespace voxc::codegen {
 
@@ -115,6 +119,65 @@ std::string combineGlsl(FieldMode mode, const std::string& f) {
 
 DispatchShape fieldDispatchShape(const ir::IrModule& module) { return startDispatchShape(module); }
 
+namespace {
+
+// The combine returns d itself for every d in `before` (combineGlsl's comparisons, NaN-free).
+bool combineKeepsDensity(FieldMode mode, float c, DensityBounds before) {
+    switch (mode) {
+    case FieldMode::Set: return false;
+    case FieldMode::Union: return !(before.lo < c);              // d < c ? c : d
+    case FieldMode::Subtract: return !(1.0f - c < before.hi);    // carved < d ? carved : d
+    case FieldMode::Intersect: return !(c < before.hi);          // c < d ? c : d
+    }
+    return false;
+}
+
+// Merges boxes that touch along `axis` and agree on everything else (the other axes' extents,
+// class, constant bits), so uniform regions become few large dispatches.
+std::vector<FieldBox> mergeAlong(const std::vector<FieldBox>& boxes, int axis) {
+    using Key = std::tuple<int, int, int, int, int, bool, uint32_t, bool>;
+    const auto keyOf = [axis](const FieldBox& b, int end) {
+        const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+        return Key{b.min[u], b.max[u], b.min[v], b.max[v], end, b.constant, std::bit_cast<uint32_t>(b.value),
+                   b.unchanged};
+    };
+    std::vector<FieldBox> merged;
+    std::map<Key, size_t> openEnds; // a merged box by where it ends along the axis
+    for (const FieldBox& box : boxes) {
+        const auto it = openEnds.find(keyOf(box, box.min[axis]));
+        if (it == openEnds.end()) {
+            openEnds[keyOf(box, box.max[axis])] = merged.size();
+            merged.push_back(box);
+            continue;
+        }
+        const size_t index = it->second;
+        openEnds.erase(it);
+        merged[index].max[axis] = box.max[axis];
+        openEnds[keyOf(merged[index], box.max[axis])] = index;
+    }
+    return merged;
+}
+
+} // namespace
+
+std::vector<FieldBox> fieldBoxes(const ir::IrModule& module, const ir::IrField& field, FieldMode mode,
+                                 std::optional<DensityBounds> before) {
+    std::vector<FieldBox> boxes;
+    glm::ivec3 lastChunk{0};
+    for (const ir::FieldChunk& chunk : ir::classifyFieldChunks(module.world, field)) {
+        const bool extends = !boxes.empty() && chunk.chunk.x == lastChunk.x + 1 && chunk.chunk.y == lastChunk.y &&
+                             chunk.chunk.z == lastChunk.z && boxes.back().constant == chunk.constant &&
+                             std::bit_cast<uint32_t>(boxes.back().value) == std::bit_cast<uint32_t>(chunk.value);
+        if (extends)
+            boxes.back().max.x = chunk.localMax.x;
+        else
+            boxes.push_back(FieldBox{chunk.localMin, chunk.localMax, chunk.constant, chunk.value,
+                                     chunk.constant && before && combineKeepsDensity(mode, chunk.value, *before)});
+        lastChunk = chunk.chunk;
+    }
+    return mergeAlong(mergeAlong(boxes, 1), 2);
+}
+
 std::string fieldKernelSource(const ir::IrModule& module, const ir::IrField& field, FieldMode mode,
                               const std::vector<Stage>& stages, std::string_view kernelName,
                               std::string_view sourceName) {
@@ -137,6 +200,7 @@ std::string fieldKernelSource(const ir::IrModule& module, const ir::IrField& fie
          {"DISPATCH_SHAPE", dispatchShapeGlsl(fieldDispatchShape(module))},
          {"COLUMN_VALUES", code.column.empty() ? "// No value is the same along the column.\n" : code.column},
          {"VOXEL_VALUES", code.voxel.empty() ? "// Every value is the same along the column.\n" : code.voxel},
+         {"CONSTANT_COMBINE", combineGlsl(mode, "constantValue")},
          {"COMBINE", combineGlsl(mode, code.names.at(field.root))}});
 }
 

@@ -1,8 +1,10 @@
 #pragma once
 // Generated GLSL for each kind of kernel, built from the templates in compiler/shaders.
+#include "voxc/codegen/KernelPackage.h"
 #include "voxc/ir/Ir.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,6 +29,16 @@ std::string startKernelSource(const ir::IrModule& module, std::string_view sourc
 
 // A field stage's kernel "<field>_<mode>": column-walking like the start kernel (same shape).
 // `stages` are the pipeline stages that run it (for the header comment).
+// Bounds of every grid density before a stage, when known.
+struct DensityBounds {
+    float lo = 0.0f, hi = 0.0f;
+};
+
+// The boxes a field stage dispatches: its chunks classified by interval analysis, runs of
+// neighbours with the same class (and constant) merged into boxes, along x, then y, then z; with `before`
+// known, constant boxes whose combine cannot change a density in it are marked unchanged.
+std::vector<FieldBox> fieldBoxes(const ir::IrModule& module, const ir::IrField& field, FieldMode mode,
+                                 std::optional<DensityBounds> before);
 DispatchShape fieldDispatchShape(const ir::IrModule& module);
 std::string fieldKernelSource(const ir::IrModule& module, const ir::IrField& field, FieldMode mode,
                               const std::vector<Stage>& stages, std::string_view kernelName,

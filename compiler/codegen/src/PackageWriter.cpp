@@ -86,11 +86,22 @@ Json stageJson(const KernelPackage& package, const StagePlan& stage) {
                     {"iterations", stage.grammar.iterations},
                     {"sweeps", sweeps}};
     }
-    case Stage::Kind::Field:
+    case Stage::Kind::Field: {
+        // Each box: [min, max] where the DAG is evaluated, [min, max, value] where the field is
+        // that constant, [min, max, value, "unchanged"] where it is not dispatched at all.
+        Json boxes = Json::array();
+        for (const FieldBox& box : stage.fieldBoxes) {
+            Json entry = Json::array({{box.min.x, box.min.y, box.min.z}, {box.max.x, box.max.y, box.max.z}});
+            if (box.constant) entry.push_back(box.value);
+            if (box.unchanged) entry.push_back("unchanged");
+            boxes.push_back(entry);
+        }
         return Json{{"kind", "field"},
                     {"field", stage.fieldName},
                     {"mode", ir::fieldModeName(stage.fieldMode)},
-                    {"kernel", package.kernels.at(stage.fieldKernel).name}};
+                    {"kernel", package.kernels.at(stage.fieldKernel).name},
+                    {"boxes", boxes}};
+    }
     }
     throw InternalError("unknown stage kind");
 }

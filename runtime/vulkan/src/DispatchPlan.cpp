@@ -5,8 +5,10 @@
 
 #include <fmt/format.h>
 #include <glm/common.hpp>
+#include <glm/vector_relational.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 
 namespace voxc {
@@ -51,6 +53,19 @@ void validatePackage(const KernelPackage& package) {
         }
         if (stage.kind == Stage::Kind::Field) {
             checkKernel(stage.fieldKernel);
+            // Boxes inside the grid whose volumes sum to the grid's (the codegen tiles it with chunks).
+            uint64_t volume = 0;
+            for (const FieldBox& box : stage.fieldBoxes) {
+                if (glm::any(glm::lessThan(box.min, glm::ivec3(0))) ||
+                    glm::any(glm::greaterThan(box.max, package.world.size)) ||
+                    glm::any(glm::greaterThanEqual(box.min, box.max)))
+                    packageError(fmt::format("field '{}': a box lies outside the grid or is empty", stage.fieldName));
+                const glm::i64vec3 extent = glm::i64vec3(box.max - box.min);
+                volume += uint64_t(extent.x * extent.y * extent.z);
+            }
+            const glm::i64vec3 grid = glm::i64vec3(package.world.size);
+            if (!stage.fieldBoxes.empty() && volume != uint64_t(grid.x * grid.y * grid.z))
+                packageError(fmt::format("field '{}': its boxes do not cover the grid", stage.fieldName));
             continue;
         }
         for (const SweepPlan& sweep : stage.grammar.sweeps) {
@@ -115,7 +130,20 @@ bool DispatchCursor::expandNextStep() {
             // Both rewrite every voxel: one dispatch over the grid, then every tile range is stale.
             ++stage_;
             const uint32_t kernel = stage.kind == Stage::Kind::Start ? stage.startKernel : stage.fieldKernel;
-            appendPhase(kernel, 0, 0, glm::ivec3(0), glm::ivec3(1), package_.world.size);
+            if (stage.kind == Stage::Kind::Field && !stage.fieldBoxes.empty()) {
+                for (const FieldBox& box : stage.fieldBoxes) {
+                    if (box.unchanged) continue;
+                    const size_t first = step_.size();
+                    appendPhase(kernel, 0, 0, box.min, glm::ivec3(1), box.max - box.min);
+                    // The field kernel reads a constant box's value from the w lanes.
+                    for (size_t i = first; i < step_.size(); ++i) {
+                        step_[i].push.anchorStart[3] = box.constant ? std::bit_cast<int32_t>(box.value) : 0;
+                        step_[i].push.anchorCount[3] = box.constant ? 1 : 0;
+                    }
+                }
+            } else {
+                appendPhase(kernel, 0, 0, glm::ivec3(0), glm::ivec3(1), package_.world.size);
+            }
             if (skipping()) {
                 Dispatch invalidate;
                 invalidate.kind = DispatchKind::InvalidateRanges;

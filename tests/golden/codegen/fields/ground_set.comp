@@ -6,6 +6,9 @@
 // One invocation owns a column of voxels along y, like the start kernel, so the nodes that do
 // not depend on y are computed once per column; the rest are straight-line code per voxel,
 // every float result `precise`, in the interpreter's operation order (voxc::FieldEvaluator).
+// The runtime dispatches it per box of chunks (KernelPackage StagePlan::fieldBoxes); in a box
+// where interval analysis proved the field one exact float (anchorCount.w == 1, the float's
+// bits in anchorStart.w) only the combine runs, in a loop of its own so no DAG code is near it.
 
 // ---- begin common.glsl ----
 // Declarations every voxc kernel shares: the push block (voxc::PushBlock in
@@ -285,6 +288,27 @@ void main() {
     if (any(greaterThanEqual(first, push.anchorCount.xyz))) return;
     ivec3 last = min(first + ANCHORS_PER_INVOCATION, push.anchorCount.xyz);
     int chunkSize = push.gridOrigin.w;
+
+    if (push.anchorCount.w == 1) {
+        float constantValue = intBitsToFloat(push.anchorStart.w);
+        for (int z = first.z; z < last.z; ++z) {
+            for (int x = first.x; x < last.x; ++x) {
+                int address = 0;
+                for (int y = first.y; y < last.y; ++y) {
+                    ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                    ivec3 world = push.gridOrigin.xyz + local;
+                    if (y == first.y || (world.y & (chunkSize - 1)) == 0) {
+                        address = voxelAddress(local);
+                    } else {
+                        address += chunkSize;
+                    }
+                    // set: d = f
+                    voxels.density[address] = constantValue;
+                }
+            }
+        }
+        return;
+    }
 
     for (int z = first.z; z < last.z; ++z) {
         for (int x = first.x; x < last.x; ++x) {

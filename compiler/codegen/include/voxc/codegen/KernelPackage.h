@@ -17,9 +17,11 @@ struct PushBlock {
     int32_t chunkBase[4];   // xyz: world chunk coordinate of chunk-table entry 0; w: iteration
     int32_t chunkCount[4];  // xyz: chunk-table extents; w: sweep index within its grammar
     int32_t anchorStart[4]; // xyz: grid-local first anchor (start kernel: 0); w: active-dispatch record
+                            // (field kernel: the constant box's float bits)
     int32_t anchorStep[4];  // xyz: distance between anchors of one phase (start kernel: 1); w: log2 tile size
     int32_t anchorCount[4]; // xyz: anchors per axis in this dispatch (start kernel: grid size);
                             // w: 1 when the sweep runs indirectly over the active tiles, else 0
+                            // (field kernel: 1 in a constant box)
 };
 static_assert(sizeof(PushBlock) == 112, "must match common.glsl");
 
@@ -65,13 +67,26 @@ struct GrammarPlan {
     std::vector<SweepPlan> sweeps; // in execution order; index = sweep index for hashing
 };
 
+// A box of grid voxels a field stage dispatches on its own: min <= local < max. Constant: interval
+// analysis (ir::classifyFieldChunks) proved the field exactly `value` there, so the kernel only
+// combines with it. Unchanged: a constant box whose combine provably leaves every density as it
+// is (e.g. union with 0 where every density is >= 0); it is not dispatched at all.
+struct FieldBox {
+    glm::ivec3 min{0}, max{0};
+    bool constant = false;
+    float value = 0.0f;
+    bool unchanged = false;
+};
+
 struct StagePlan {
     Stage::Kind kind = Stage::Kind::Start;
     uint32_t startKernel = 0; // Start
     GrammarPlan grammar;      // Grammar
-    // Field: one dispatch over the whole grid like the start kernel; it rewrites densities, so
-    // tile ranges go stale afterwards.
+    // Field: one dispatch per box of fieldBoxes (disjoint, covering the grid), or over the whole
+    // grid like the start kernel when it is empty; it rewrites densities, so tile ranges go
+    // stale afterwards.
     uint32_t fieldKernel = 0;
+    std::vector<FieldBox> fieldBoxes;
     std::string fieldName;
     FieldMode fieldMode = FieldMode::Set;
 };

@@ -45,7 +45,9 @@ public:
     DispatchCursor(const KernelPackage& package, std::array<uint32_t, 3> maxGroups, int32_t tileShift = -1);
 
     // Start (and field) stage: one dispatch of startKernel (fieldKernel) over the whole grid
-    // (then, when skipping tiles, InvalidateRanges). Grammar stage: for each iteration, each sweep (index in
+    // (then, when skipping tiles, InvalidateRanges); a field stage with fieldBoxes dispatches per
+    // box instead (skipping `unchanged` ones), a constant box with anchorCount.w = 1 and the
+    // value's bits in anchorStart.w. Grammar stage: for each iteration, each sweep (index in
     // GrammarPlan::sweeps), each phase with anchors, in order. When skipping tiles a sweep
     // without live rules is left out, and a sweep with some is the tile_ranges kernel (one
     // invocation per tile), then per phase its active-tiles kernel (one invocation per tile,
