@@ -18,7 +18,6 @@ void main() {
     ivec3 first = ivec3(gl_GlobalInvocationID) * ANCHORS_PER_INVOCATION;
     if (any(greaterThanEqual(first, push.anchorCount.xyz))) return;
     ivec3 last = min(first + ANCHORS_PER_INVOCATION, push.anchorCount.xyz);
-    int chunkSize = push.gridOrigin.w;
 
     if (push.anchorCount.w == 1) {
         float constantValue = intBitsToFloat(push.anchorStart.w);
@@ -27,12 +26,7 @@ void main() {
                 int address = 0;
                 for (int y = first.y; y < last.y; ++y) {
                     ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
-                    ivec3 world = push.gridOrigin.xyz + local;
-                    if (y == first.y || (world.y & (chunkSize - 1)) == 0) {
-                        address = voxelAddress(local);
-                    } else {
-                        address += chunkSize;
-                    }
+                    address = nextColumnAddress(address, y == first.y, local);
                     // <<CONSTANT_COMBINE>>
                 }
             }
@@ -50,12 +44,7 @@ void main() {
             for (int y = first.y; y < last.y; ++y) {
                 ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
                 ivec3 world = push.gridOrigin.xyz + local;
-                // Inside a chunk the next voxel along y lies chunkSize entries further on.
-                if (y == first.y || (world.y & (chunkSize - 1)) == 0) {
-                    address = voxelAddress(local);
-                } else {
-                    address += chunkSize;
-                }
+                address = nextColumnAddress(address, y == first.y, local);
                 // <<VOXEL_VALUES>>
                 // <<COMBINE>>
             }

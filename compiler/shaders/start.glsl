@@ -17,7 +17,6 @@ void main() {
     if (any(greaterThanEqual(first, push.anchorCount.xyz))) return;
     ivec3 last = min(first + ANCHORS_PER_INVOCATION, push.anchorCount.xyz);
     uint seed = uint(push.gridSize.w);
-    int chunkSize = push.gridOrigin.w;
 
     for (int z = first.z; z < last.z; ++z) {
         for (int x = first.x; x < last.x; ++x) {
@@ -28,13 +27,7 @@ void main() {
             for (int y = first.y; y < last.y; ++y) {
                 ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
                 world = push.gridOrigin.xyz + local;
-                // Inside a chunk the next voxel along y (the start dispatch steps by 1) lies chunkSize
-                // entries further on.
-                if (y == first.y || (world.y & (chunkSize - 1)) == 0) {
-                    address = voxelAddress(local);
-                } else {
-                    address += chunkSize;
-                }
+                address = nextColumnAddress(address, y == first.y, local);
                 float density = 0.0;
                 // <<SHAPES>>
                 voxels.density[address] = density;

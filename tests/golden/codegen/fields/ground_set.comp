@@ -55,6 +55,14 @@ int voxelAddress(ivec3 local) {
     return slot * chunkSize * chunkSize * chunkSize + inside.x + chunkSize * (inside.y + chunkSize * inside.z);
 }
 
+// The address of the next voxel of a column walk along y (anchor step 1): looked up through the
+// chunk table at the column's first voxel and wherever the column enters a new chunk, otherwise
+// the previous voxel's address plus chunkSize (the next voxel along y inside a chunk).
+int nextColumnAddress(int previous, bool columnStart, ivec3 local) {
+    int chunkSize = push.gridOrigin.w;
+    int worldY = push.gridOrigin.y + local.y;
+    return (columnStart || (worldY & (chunkSize - 1)) == 0) ? voxelAddress(local) : previous + chunkSize;
+}
 // ---- end common.glsl ----
 // ---- begin random.glsl ----
 // Counter-based randomness: mirrors compiler/program/src/Random.cpp bit for bit.
@@ -287,7 +295,6 @@ void main() {
     ivec3 first = ivec3(gl_GlobalInvocationID) * ANCHORS_PER_INVOCATION;
     if (any(greaterThanEqual(first, push.anchorCount.xyz))) return;
     ivec3 last = min(first + ANCHORS_PER_INVOCATION, push.anchorCount.xyz);
-    int chunkSize = push.gridOrigin.w;
 
     if (push.anchorCount.w == 1) {
         float constantValue = intBitsToFloat(push.anchorStart.w);
@@ -296,12 +303,7 @@ void main() {
                 int address = 0;
                 for (int y = first.y; y < last.y; ++y) {
                     ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
-                    ivec3 world = push.gridOrigin.xyz + local;
-                    if (y == first.y || (world.y & (chunkSize - 1)) == 0) {
-                        address = voxelAddress(local);
-                    } else {
-                        address += chunkSize;
-                    }
+                    address = nextColumnAddress(address, y == first.y, local);
                     // set: d = f
                     voxels.density[address] = constantValue;
                 }
@@ -326,12 +328,7 @@ void main() {
             for (int y = first.y; y < last.y; ++y) {
                 ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
                 ivec3 world = push.gridOrigin.xyz + local;
-                // Inside a chunk the next voxel along y lies chunkSize entries further on.
-                if (y == first.y || (world.y & (chunkSize - 1)) == 0) {
-                    address = voxelAddress(local);
-                } else {
-                    address += chunkSize;
-                }
+                address = nextColumnAddress(address, y == first.y, local);
                 precise float n15 = float(local.y); // y (fields.vox:29:18)
                 precise float n16 = (n14 - n15); // sub (fields.vox:29:9)
                 precise float n18 = min(max(n16, 0.0), 1.0); // clamp (fields.vox:29:3)

@@ -55,6 +55,14 @@ int voxelAddress(ivec3 local) {
     return slot * chunkSize * chunkSize * chunkSize + inside.x + chunkSize * (inside.y + chunkSize * inside.z);
 }
 
+// The address of the next voxel of a column walk along y (anchor step 1): looked up through the
+// chunk table at the column's first voxel and wherever the column enters a new chunk, otherwise
+// the previous voxel's address plus chunkSize (the next voxel along y inside a chunk).
+int nextColumnAddress(int previous, bool columnStart, ivec3 local) {
+    int chunkSize = push.gridOrigin.w;
+    int worldY = push.gridOrigin.y + local.y;
+    return (columnStart || (worldY & (chunkSize - 1)) == 0) ? voxelAddress(local) : previous + chunkSize;
+}
 // ---- end common.glsl ----
 // ---- begin math_functions.glsl ----
 // Math builtins of field expressions whose GLSL built-in may be computed in another operation
@@ -106,7 +114,6 @@ void main() {
     ivec3 first = ivec3(gl_GlobalInvocationID) * ANCHORS_PER_INVOCATION;
     if (any(greaterThanEqual(first, push.anchorCount.xyz))) return;
     ivec3 last = min(first + ANCHORS_PER_INVOCATION, push.anchorCount.xyz);
-    int chunkSize = push.gridOrigin.w;
 
     if (push.anchorCount.w == 1) {
         float constantValue = intBitsToFloat(push.anchorStart.w);
@@ -115,12 +122,7 @@ void main() {
                 int address = 0;
                 for (int y = first.y; y < last.y; ++y) {
                     ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
-                    ivec3 world = push.gridOrigin.xyz + local;
-                    if (y == first.y || (world.y & (chunkSize - 1)) == 0) {
-                        address = voxelAddress(local);
-                    } else {
-                        address += chunkSize;
-                    }
+                    address = nextColumnAddress(address, y == first.y, local);
                     // union: d = max(d, f)
                     float density = voxels.density[address];
                     voxels.density[address] = density < constantValue ? constantValue : density;
@@ -141,12 +143,7 @@ void main() {
             for (int y = first.y; y < last.y; ++y) {
                 ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
                 ivec3 world = push.gridOrigin.xyz + local;
-                // Inside a chunk the next voxel along y lies chunkSize entries further on.
-                if (y == first.y || (world.y & (chunkSize - 1)) == 0) {
-                    address = voxelAddress(local);
-                } else {
-                    address += chunkSize;
-                }
+                address = nextColumnAddress(address, y == first.y, local);
                 precise float n0 = float(local.y); // y (fields.vox:36:16)
                 bool n2 = (n0 > 40.0); // gt (fields.vox:36:16)
                 precise float n5 = (n2 ? 2.0 : 0.0); // select (fields.vox:36:16)

@@ -52,6 +52,14 @@ int voxelAddress(ivec3 local) {
     return slot * chunkSize * chunkSize * chunkSize + inside.x + chunkSize * (inside.y + chunkSize * inside.z);
 }
 
+// The address of the next voxel of a column walk along y (anchor step 1): looked up through the
+// chunk table at the column's first voxel and wherever the column enters a new chunk, otherwise
+// the previous voxel's address plus chunkSize (the next voxel along y inside a chunk).
+int nextColumnAddress(int previous, bool columnStart, ivec3 local) {
+    int chunkSize = push.gridOrigin.w;
+    int worldY = push.gridOrigin.y + local.y;
+    return (columnStart || (worldY & (chunkSize - 1)) == 0) ? voxelAddress(local) : previous + chunkSize;
+}
 // ---- end common.glsl ----
 // ---- begin random.glsl ----
 // Counter-based randomness: mirrors compiler/program/src/Random.cpp bit for bit.
@@ -165,7 +173,6 @@ void main() {
     if (any(greaterThanEqual(first, push.anchorCount.xyz))) return;
     ivec3 last = min(first + ANCHORS_PER_INVOCATION, push.anchorCount.xyz);
     uint seed = uint(push.gridSize.w);
-    int chunkSize = push.gridOrigin.w;
 
     for (int z = first.z; z < last.z; ++z) {
         for (int x = first.x; x < last.x; ++x) {
@@ -176,13 +183,7 @@ void main() {
             for (int y = first.y; y < last.y; ++y) {
                 ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
                 world = push.gridOrigin.xyz + local;
-                // Inside a chunk the next voxel along y (the start dispatch steps by 1) lies chunkSize
-                // entries further on.
-                if (y == first.y || (world.y & (chunkSize - 1)) == 0) {
-                    address = voxelAddress(local);
-                } else {
-                    address += chunkSize;
-                }
+                address = nextColumnAddress(address, y == first.y, local);
                 float density = 0.0;
                 // No shapes: every voxel stays air.
                 voxels.density[address] = density;

@@ -55,6 +55,14 @@ int voxelAddress(ivec3 local) {
     return slot * chunkSize * chunkSize * chunkSize + inside.x + chunkSize * (inside.y + chunkSize * inside.z);
 }
 
+// The address of the next voxel of a column walk along y (anchor step 1): looked up through the
+// chunk table at the column's first voxel and wherever the column enters a new chunk, otherwise
+// the previous voxel's address plus chunkSize (the next voxel along y inside a chunk).
+int nextColumnAddress(int previous, bool columnStart, ivec3 local) {
+    int chunkSize = push.gridOrigin.w;
+    int worldY = push.gridOrigin.y + local.y;
+    return (columnStart || (worldY & (chunkSize - 1)) == 0) ? voxelAddress(local) : previous + chunkSize;
+}
 // ---- end common.glsl ----
 // ---- begin random.glsl ----
 // Counter-based randomness: mirrors compiler/program/src/Random.cpp bit for bit.
@@ -223,7 +231,6 @@ void main() {
     ivec3 first = ivec3(gl_GlobalInvocationID) * ANCHORS_PER_INVOCATION;
     if (any(greaterThanEqual(first, push.anchorCount.xyz))) return;
     ivec3 last = min(first + ANCHORS_PER_INVOCATION, push.anchorCount.xyz);
-    int chunkSize = push.gridOrigin.w;
 
     if (push.anchorCount.w == 1) {
         float constantValue = intBitsToFloat(push.anchorStart.w);
@@ -232,12 +239,7 @@ void main() {
                 int address = 0;
                 for (int y = first.y; y < last.y; ++y) {
                     ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
-                    ivec3 world = push.gridOrigin.xyz + local;
-                    if (y == first.y || (world.y & (chunkSize - 1)) == 0) {
-                        address = voxelAddress(local);
-                    } else {
-                        address += chunkSize;
-                    }
+                    address = nextColumnAddress(address, y == first.y, local);
                     // subtract: d = min(d, 1 - f)
                     float density = voxels.density[address];
                     precise float carved = 1.0 - constantValue;
@@ -261,12 +263,7 @@ void main() {
             for (int y = first.y; y < last.y; ++y) {
                 ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
                 ivec3 world = push.gridOrigin.xyz + local;
-                // Inside a chunk the next voxel along y lies chunkSize entries further on.
-                if (y == first.y || (world.y & (chunkSize - 1)) == 0) {
-                    address = voxelAddress(local);
-                } else {
-                    address += chunkSize;
-                }
+                address = nextColumnAddress(address, y == first.y, local);
                 precise float n1 = float(world.y); // wy (fields.vox:32:28)
                 precise vec3 n3 = vec3(n0, n1, n2); // vec3 (fields.vox:32:28)
                 precise vec3 n5 = (n3 * 0.0799999982); // mul (fields.vox:32:28)

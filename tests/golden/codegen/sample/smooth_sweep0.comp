@@ -59,6 +59,14 @@ int voxelAddress(ivec3 local) {
     return slot * chunkSize * chunkSize * chunkSize + inside.x + chunkSize * (inside.y + chunkSize * inside.z);
 }
 
+// The address of the next voxel of a column walk along y (anchor step 1): looked up through the
+// chunk table at the column's first voxel and wherever the column enters a new chunk, otherwise
+// the previous voxel's address plus chunkSize (the next voxel along y inside a chunk).
+int nextColumnAddress(int previous, bool columnStart, ivec3 local) {
+    int chunkSize = push.gridOrigin.w;
+    int worldY = push.gridOrigin.y + local.y;
+    return (columnStart || (worldY & (chunkSize - 1)) == 0) ? voxelAddress(local) : previous + chunkSize;
+}
 // ---- end common.glsl ----
 // ---- begin random.glsl ----
 // Counter-based randomness: mirrors compiler/program/src/Random.cpp bit for bit.
