@@ -1,22 +1,10 @@
 // 2D improved Perlin noise and the start state's heightfield: mirrors
 // compiler/builtins/src/Perlin.cpp. Every float result is `precise` so the compiler may not fuse
 // multiply-adds, which keeps the GPU bit-identical to the interpreter.
-// Requires random.glsl (mix32).
+// Requires common.glsl and random.glsl; shares the lattice helpers of noise_common.glsl
+// (the permutation comes from the noise-table buffer, one table for both sides).
 
-// Ken Perlin's reference permutation comes from the noise-table buffer (common.glsl), which the
-// runtime fills from voxc::perlinPermutation: one table for both sides. A constant array here
-// would be materialised on every call by some drivers (llvmpipe), costing ~1000x.
-int perlinPerm(int i) { return noiseTables.perlinPermutation[i & 255]; }
-
-float perlinFade(float t) {
-    precise float r = t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
-    return r;
-}
-
-float perlinLerp(float t, float a, float b) {
-    precise float r = a + t * (b - a);
-    return r;
-}
+#include "noise_common.glsl"
 
 // Eight 2D gradient directions: the four diagonals and the four axes.
 float perlinGradient(int hash, float x, float y) {
@@ -41,15 +29,15 @@ float perlin2(float x, float y) {
     int Y = int(fy) & 255;
     precise float xf = x - fx;
     precise float yf = y - fy;
-    precise float u = perlinFade(xf);
-    precise float v = perlinFade(yf);
-    int aa = perlinPerm(perlinPerm(X) + Y);
-    int ab = perlinPerm(perlinPerm(X) + Y + 1);
-    int ba = perlinPerm(perlinPerm(X + 1) + Y);
-    int bb = perlinPerm(perlinPerm(X + 1) + Y + 1);
-    precise float x1 = perlinLerp(u, perlinGradient(aa, xf, yf), perlinGradient(ba, xf - 1.0, yf));
-    precise float x2 = perlinLerp(u, perlinGradient(ab, xf, yf - 1.0), perlinGradient(bb, xf - 1.0, yf - 1.0));
-    precise float r = perlinLerp(v, x1, x2);
+    precise float u = noiseFade(xf);
+    precise float v = noiseFade(yf);
+    int aa = noisePerm(noisePerm(X) + Y);
+    int ab = noisePerm(noisePerm(X) + Y + 1);
+    int ba = noisePerm(noisePerm(X + 1) + Y);
+    int bb = noisePerm(noisePerm(X + 1) + Y + 1);
+    precise float x1 = noiseLerp(u, perlinGradient(aa, xf, yf), perlinGradient(ba, xf - 1.0, yf));
+    precise float x2 = noiseLerp(u, perlinGradient(ab, xf, yf - 1.0), perlinGradient(bb, xf - 1.0, yf - 1.0));
+    precise float r = noiseLerp(v, x1, x2);
     return r;
 }
 

@@ -1,4 +1,6 @@
 #include "voxc/builtins/Shapes.h"
+
+#include "functions/NoiseCommon.h"
 #include "voxc/program/Random.h"
 
 #include <cmath>
@@ -21,12 +23,6 @@ const int kPermutation[256] = {
     242, 193, 238, 210, 144, 12,  191, 179, 162, 241, 81,  51,  145, 235, 249, 14,  239, 107, 49,  192, 214, 31,
     181, 199, 106, 157, 184, 84,  204, 176, 115, 121, 50,  45,  127, 4,   150, 254, 138, 236, 205, 93,  222, 114,
     67,  29,  24,  72,  243, 141, 128, 195, 78,  66,  215, 61,  156, 180};
-
-int perm(int i) { return kPermutation[i & 255]; }
-
-float fade(float t) { return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f); }
-
-float lerp(float t, float a, float b) { return a + t * (b - a); }
 
 // Eight 2D gradient directions: the four diagonals and the four axes.
 float gradient(int hash, float x, float y) {
@@ -53,15 +49,15 @@ float perlin2(float x, float y) {
     const int Y = int(fy) & 255;
     const float xf = x - fx;
     const float yf = y - fy;
-    const float u = fade(xf);
-    const float v = fade(yf);
-    const int aa = perm(perm(X) + Y);
-    const int ab = perm(perm(X) + Y + 1);
-    const int ba = perm(perm(X + 1) + Y);
-    const int bb = perm(perm(X + 1) + Y + 1);
-    const float x1 = lerp(u, gradient(aa, xf, yf), gradient(ba, xf - 1.0f, yf));
-    const float x2 = lerp(u, gradient(ab, xf, yf - 1.0f), gradient(bb, xf - 1.0f, yf - 1.0f));
-    return lerp(v, x1, x2);
+    const float u = noise::fade(xf);
+    const float v = noise::fade(yf);
+    const int aa = noise::perm(noise::perm(X) + Y);
+    const int ab = noise::perm(noise::perm(X) + Y + 1);
+    const int ba = noise::perm(noise::perm(X + 1) + Y);
+    const int bb = noise::perm(noise::perm(X + 1) + Y + 1);
+    const float x1 = noise::lerp(u, gradient(aa, xf, yf), gradient(ba, xf - 1.0f, yf));
+    const float x2 = noise::lerp(u, gradient(ab, xf, yf - 1.0f), gradient(bb, xf - 1.0f, yf - 1.0f));
+    return noise::lerp(v, x1, x2);
 }
 
 float heightfieldHeight(const HeightfieldParams& params, uint32_t seed, int worldX, int worldZ) {

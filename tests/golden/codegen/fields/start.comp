@@ -33,7 +33,9 @@ layout(std430, set = 0, binding = 1) readonly buffer ChunkTable {
     int chunkSlot[];
 } chunkTable;
 
-// Ken Perlin's 256-entry permutation (voxc::perlinPermutation), read by perlin.glsl.
+// Ken Perlin's 256-entry permutation (voxc::perlinPermutation), read by noise_common.glsl. It is a
+// buffer, not a constant array, because some drivers (llvmpipe) materialise a dynamically indexed
+// constant array on every call, which cost ~1000x.
 layout(std430, set = 0, binding = 2) readonly buffer NoiseTables {
     int perlinPermutation[];
 } noiseTables;
@@ -91,22 +93,65 @@ uint anchorHash(uint seed, uint iteration, uint sweep, ivec3 anchorWorld, uint s
 // 2D improved Perlin noise and the start state's heightfield: mirrors
 // compiler/builtins/src/Perlin.cpp. Every float result is `precise` so the compiler may not fuse
 // multiply-adds, which keeps the GPU bit-identical to the interpreter.
-// Requires random.glsl (mix32).
+// Requires common.glsl and random.glsl; shares the lattice helpers of noise_common.glsl
+// (the permutation comes from the noise-table buffer, one table for both sides).
 
-// Ken Perlin's reference permutation comes from the noise-table buffer (common.glsl), which the
-// runtime fills from voxc::perlinPermutation: one table for both sides. A constant array here
-// would be materialised on every call by some drivers (llvmpipe), costing ~1000x.
-int perlinPerm(int i) { return noiseTables.perlinPermutation[i & 255]; }
+// ---- begin noise_common.glsl ----
+// Lattice helpers of the noise builtins: mirrors compiler/builtins/src/functions/NoiseCommon.h.
+// Every float result is `precise` (no fused multiply-add), so the GPU performs the
+// interpreter's IEEE operations in the interpreter's order.
+// Requires common.glsl (noiseTables) and random.glsl (mix32).
 
-float perlinFade(float t) {
+int noisePerm(int i) { return noiseTables.perlinPermutation[i & 255]; }
+
+float noiseFade(float t) {
     precise float r = t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
     return r;
 }
 
-float perlinLerp(float t, float a, float b) {
+float noiseLerp(float t, float a, float b) {
     precise float r = a + t * (b - a);
     return r;
 }
+
+// Perlin's reference gradient: 12 cube-edge directions, four of them repeated (hash & 15).
+float noiseGrad(int hash, float x, float y, float z) {
+    int h = hash & 15;
+    float u = h < 8 ? x : y;
+    float v = h < 4 ? y : (h == 12 || h == 14 ? x : z);
+    precise float r = ((h & 1) == 0 ? u : -u) + ((h & 2) == 0 ? v : -v);
+    return r;
+}
+
+// An integer-valued float reduced modulo 256, exact for every finite value.
+int noiseLatticeIndex(float floored) {
+    precise float r = floored - 256.0 * floor(floored * 0.00390625);
+    return int(r);
+}
+
+// Seed-derived lattice translation, 8 bits per axis; seed 0 is untranslated.
+ivec3 noiseSeedOffset(uint seed) {
+    uint h = mix32(seed);
+    return ivec3(int(h & 255u), int((h >> 8) & 255u), int((h >> 16) & 255u));
+}
+
+uint noiseSubstream(uint seed, uint stream) { return seed + stream * 0x9E3779B9u; }
+
+// A float lattice coordinate as an int for hashing, saturated at +-2^30.
+ivec3 noiseHashCoordinate(vec3 floored) {
+    return ivec3(min(max(floored, vec3(-1073741824.0)), vec3(1073741824.0)));
+}
+
+uint noiseCellHash(ivec3 c, uint seed) {
+    return mix32(uint(c.x) ^ mix32(uint(c.y) ^ mix32(uint(c.z) ^ mix32(seed))));
+}
+
+// 24 hash bits as a float in [0, 1).
+float noiseUnitFloat(uint h) {
+    precise float r = float(h >> 8) * 5.9604644775390625e-8;
+    return r;
+}
+// ---- end noise_common.glsl ----
 
 // Eight 2D gradient directions: the four diagonals and the four axes.
 float perlinGradient(int hash, float x, float y) {
@@ -131,15 +176,15 @@ float perlin2(float x, float y) {
     int Y = int(fy) & 255;
     precise float xf = x - fx;
     precise float yf = y - fy;
-    precise float u = perlinFade(xf);
-    precise float v = perlinFade(yf);
-    int aa = perlinPerm(perlinPerm(X) + Y);
-    int ab = perlinPerm(perlinPerm(X) + Y + 1);
-    int ba = perlinPerm(perlinPerm(X + 1) + Y);
-    int bb = perlinPerm(perlinPerm(X + 1) + Y + 1);
-    precise float x1 = perlinLerp(u, perlinGradient(aa, xf, yf), perlinGradient(ba, xf - 1.0, yf));
-    precise float x2 = perlinLerp(u, perlinGradient(ab, xf, yf - 1.0), perlinGradient(bb, xf - 1.0, yf - 1.0));
-    precise float r = perlinLerp(v, x1, x2);
+    precise float u = noiseFade(xf);
+    precise float v = noiseFade(yf);
+    int aa = noisePerm(noisePerm(X) + Y);
+    int ab = noisePerm(noisePerm(X) + Y + 1);
+    int ba = noisePerm(noisePerm(X + 1) + Y);
+    int bb = noisePerm(noisePerm(X + 1) + Y + 1);
+    precise float x1 = noiseLerp(u, perlinGradient(aa, xf, yf), perlinGradient(ba, xf - 1.0, yf));
+    precise float x2 = noiseLerp(u, perlinGradient(ab, xf, yf - 1.0), perlinGradient(bb, xf - 1.0, yf - 1.0));
+    precise float r = noiseLerp(v, x1, x2);
     return r;
 }
 

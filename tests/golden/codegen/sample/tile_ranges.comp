@@ -31,7 +31,9 @@ layout(std430, set = 0, binding = 1) readonly buffer ChunkTable {
     int chunkSlot[];
 } chunkTable;
 
-// Ken Perlin's 256-entry permutation (voxc::perlinPermutation), read by perlin.glsl.
+// Ken Perlin's 256-entry permutation (voxc::perlinPermutation), read by noise_common.glsl. It is a
+// buffer, not a constant array, because some drivers (llvmpipe) materialise a dynamically indexed
+// constant array on every call, which cost ~1000x.
 layout(std430, set = 0, binding = 2) readonly buffer NoiseTables {
     int perlinPermutation[];
 } noiseTables;
