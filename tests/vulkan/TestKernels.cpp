@@ -164,12 +164,7 @@ KernelPackage makePackage(const World& world, bool withStart, const std::vector<
             plan.kernel = kernelIndex(spec.sweeps[sweep.rules.front()].kernel);
             plan.window = sweep.window;
             plan.phaseCount = sweep.phaseCount;
-            for (int p = 0; p < sweep.phases(); ++p) {
-                const PhaseAnchors anchors = phaseAnchors(grammar, sweep, p);
-                plan.phaseStart.push_back(anchors.start);
-                plan.phaseStep.push_back(anchors.step);
-                plan.phaseCount3.push_back(anchors.count);
-            }
+            fillPhaseAnchors(plan, grammar, sweep);
             stage.grammar.sweeps.push_back(plan);
         }
         package.stages.push_back(stage);

@@ -36,12 +36,7 @@ SweepPlan planSweep(const Grammar& grammar, const ir::IrSweep& irSweep, uint32_t
     plan.kernel = kernel;
     plan.window = irSweep.window;
     plan.phaseCount = irSweep.phaseCount;
-    for (int p = 0; p < sweep.phases(); ++p) {
-        const PhaseAnchors anchors = phaseAnchors(grammar, sweep, p);
-        plan.phaseStart.push_back(anchors.start);
-        plan.phaseStep.push_back(anchors.step);
-        plan.phaseCount3.push_back(anchors.count);
-    }
+    fillPhaseAnchors(plan, grammar, sweep);
     return plan;
 }
 

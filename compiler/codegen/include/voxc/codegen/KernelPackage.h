@@ -2,6 +2,7 @@
 // What the compiler hands the runtime: generated kernels plus the plan that orders their
 // dispatches. `voxc compile` writes it out as GLSL + SPIR-V files and manifest.json.
 #include "voxc/program/Program.h"
+#include "voxc/program/Semantics.h"
 
 #include <cstdint>
 #include <string>
@@ -60,6 +61,17 @@ struct SweepPlan {
     // Per phase p (x fastest): anchors start + i*step, i < count, as voxc::phaseAnchors computes.
     std::vector<glm::ivec3> phaseStart, phaseStep, phaseCount3;
 };
+
+// Fills plan.phaseStart/phaseStep/phaseCount3 from voxc::phaseAnchors, one entry per phase of
+// `sweep` in execution order, so every plan builder expands phases the one way.
+inline void fillPhaseAnchors(SweepPlan& plan, const Grammar& grammar, const Sweep& sweep) {
+    for (int p = 0; p < sweep.phases(); ++p) {
+        const PhaseAnchors anchors = phaseAnchors(grammar, sweep, p);
+        plan.phaseStart.push_back(anchors.start);
+        plan.phaseStep.push_back(anchors.step);
+        plan.phaseCount3.push_back(anchors.count);
+    }
+}
 
 struct GrammarPlan {
     std::string name;
