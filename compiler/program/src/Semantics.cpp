@@ -75,3 +75,27 @@ int chooseRule(const Grammar& grammar, const std::vector<uint32_t>& matched, uin
 }
 
 } // namespace voxc
+
+namespace voxc {
+
+VoxelState combineField(FieldMode mode, std::optional<uint8_t> material, float f, VoxelState voxel) {
+    const float d = voxel.density;
+    float result = d;
+    bool wins = false;
+    switch (mode) {
+    case FieldMode::Set: result = f, wins = true; break;
+    case FieldMode::Union: wins = d < f, result = wins ? f : d; break;
+    case FieldMode::Subtract: {
+        const float carved = 1.0f - f;
+        wins = carved < d, result = wins ? carved : d;
+        break;
+    }
+    case FieldMode::Intersect: wins = f < d, result = wins ? f : d; break;
+    case FieldMode::Paint: wins = f >= kSolidDensity; break;
+    }
+    VoxelState out{result, voxel.material};
+    if (material && wins && result >= kSolidDensity) out.material = *material;
+    return out;
+}
+
+} // namespace voxc

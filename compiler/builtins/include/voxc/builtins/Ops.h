@@ -31,7 +31,20 @@ struct TransformOpInfo {
     std::string (*glsl)(const std::string& density, const std::string& value);
 };
 
+// Material tests (MAT m, NMAT m) in symbol cells. A transform cell's `MAT m` is not a record of
+// its own: it always writes m (TransformCell::material).
+struct MaterialOpInfo {
+    MaterialOp op;
+    std::string_view name;
+    bool (*eval)(uint8_t material, uint8_t id);
+    // A GLSL bool expression; `material` and `id` are GLSL uint expressions.
+    std::string (*glsl)(const std::string& material, const std::string& id);
+};
+
 std::span<const SymbolOpInfo> symbolOps();
+std::span<const MaterialOpInfo> materialOps();
+const MaterialOpInfo& materialOpInfo(MaterialOp op);
+std::optional<MaterialOp> findMaterialOp(std::string_view name);
 std::span<const TransformOpInfo> transformOps();
 const SymbolOpInfo& symbolOpInfo(SymbolOp op);
 const TransformOpInfo& transformOpInfo(TransformOp op);
@@ -42,7 +55,7 @@ std::optional<TransformOp> findTransformOp(std::string_view name);
 std::string glslFloat(float v);
 
 // Interpreter helpers built from the records.
-bool cellPasses(const SymbolCell& cell, float density);
+bool cellPasses(const SymbolCell& cell, float density, uint8_t material);
 // The value a transform cell writes, clamped to [clampMin, clampMax] where given; NOP returns density.
 float applyTransform(const TransformCell& cell, float density, const Grammar& grammar);
 

@@ -5,6 +5,7 @@
 #include "voxc/program/Semantics.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,10 @@ constexpr uint32_t kBindingTileDirty = 4;      // uint per tile: range stale (wr
 constexpr uint32_t kBindingActiveTiles = 5;    // uint per tile: ids of the current phase's active tiles
 constexpr uint32_t kBindingActiveDispatch = 6; // uint[8]: two VkDispatchIndirectCommand records (+ padding)
 constexpr uint32_t kBindingSkipStats = 7;      // uint[2]: active and candidate (tile, phase) pairs of a run
+// uint per voxel, same chunk-major addresses as kBindingVoxels: the voxel's material id (0..255).
+// Allocated at grid size only when KernelPackage::usesMaterials; otherwise a one-element buffer
+// that no kernel declares.
+constexpr uint32_t kBindingMaterials = 8;
 
 constexpr uint32_t kNoKernel = UINT32_MAX;
 
@@ -101,10 +106,12 @@ struct StagePlan {
     std::vector<FieldBox> fieldBoxes;
     std::string fieldName;
     FieldMode fieldMode = FieldMode::Set;
+    std::optional<uint8_t> fieldMaterial; // Stage::material
 };
 
 struct KernelPackage {
     World world;
+    bool usesMaterials = false; // Program::usesMaterials(): kernels read/write kBindingMaterials
     std::vector<Kernel> kernels;
     std::vector<StagePlan> stages;
     // Recomputes the density range of every stale tile, before each sweep when tiles are

@@ -21,14 +21,29 @@ struct Predicate {
     float value = 0.0f; // unused by IGN, PRES, ABS
 };
 
-// A symbol cell passes when every predicate passes; an empty list is IGN.
+// Materials: every voxel carries an 8-bit material id beside its density. Id 0 is the builtin
+// `none` (every voxel's material before anything writes one); declared materials use 1..255.
+constexpr uint8_t kMaterialNone = 0;
+
+// Tests of a cell's material: MAT m passes when the material is m, NMAT m when it is not.
+enum class MaterialOp : uint8_t { MAT, NMAT };
+struct MaterialPredicate {
+    MaterialOp op = MaterialOp::MAT;
+    uint8_t material = kMaterialNone;
+};
+
+// A symbol cell passes when every predicate passes (density and material alike); a cell with
+// neither is IGN.
 struct SymbolCell {
     std::vector<Predicate> predicates;
+    std::vector<MaterialPredicate> materialPredicates;
 };
 
 struct TransformCell {
     TransformOp op = TransformOp::NOP;
     float value = 0.0f; // unused by NOP
+    // `& MAT m` in a transform cell: the cell's material becomes m (after any density write).
+    std::optional<uint8_t> material;
 };
 
 // Cells of a window are stored x fastest, then y (up), then z:
@@ -92,6 +107,7 @@ struct StartShape {
     glm::vec3 normal{0.0f, 1.0f, 0.0f}; // HalfSpace: dot(p, normal) <= offset
     float offset = 0.0f;
     HeightfieldParams heightfield;  // Heightfield: p.y < height(world x, world z)
+    std::optional<uint8_t> material; // written wherever the shape writes its value; absent: untouched
 };
 
 struct World {
@@ -102,12 +118,14 @@ struct World {
 };
 
 // How a field stage combines the field's value f with the grid's density d at each voxel.
-// Densities follow the grammar's convention (1 rock, 0 air).
+// Densities follow the grammar's convention (1 rock, 0 air). The material rule is
+// voxc::combineField (Semantics.h).
 enum class FieldMode : uint8_t {
-    Set,      // d = f
-    Union,    // d = max(d, f): add material
-    Subtract, // d = min(d, 1 - f): carve material away
-    Intersect // d = min(d, f)
+    Set,       // d = f
+    Union,     // d = max(d, f): add rock
+    Subtract,  // d = min(d, 1 - f): carve rock away
+    Intersect, // d = min(d, f)
+    Paint      // d unchanged; only writes the stage's material (which it requires)
 };
 
 // One step of the pipeline. Later parts of the language add kinds here.
@@ -117,6 +135,17 @@ struct Stage {
     uint32_t index = 0;               // Grammar: index into Program::grammars; Field: into Program::fields
     FieldMode mode = FieldMode::Set;  // Field only
     SourceLoc loc;
+    // Field only: the material written where the field wins (combineField); from the stage's
+    // `material NAME` clause, else the feature's `material` key; absent: materials untouched.
+    std::optional<uint8_t> material;
+};
+
+// A declared material: `material rock { id = 1; color = [0.45, 0.42, 0.4]; }`.
+struct Material {
+    std::string name;
+    SourceLoc loc;
+    uint8_t id = 1;                         // 1..255, unique
+    glm::vec3 color{0.6f, 0.6f, 0.6f};      // linear RGB in [0, 1], for mesh export
 };
 
 struct Program {
@@ -126,6 +155,13 @@ struct Program {
     std::vector<Grammar> grammars;
     std::vector<Field> fields;     // named density fields, declaration order
     std::vector<Stage> pipeline;   // Start first, then grammars and field stages in pipeline order
+    std::vector<Material> materials; // declared materials, declaration order (`none` is implicit)
+
+    // True when anything reads or writes a material: only then do backends store the channel
+    // (a program without materials leaves every voxel `none`).
+    bool usesMaterials() const;
+    // The declared material with this id, or nullptr (id 0 and undeclared ids).
+    const Material* findMaterial(uint8_t id) const;
 };
 
 // Limits enforced by the checker so a bad file fails with a message, not an OOM kill.

@@ -12,6 +12,7 @@
 #include "voxc/program/Program.h"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace voxc {
@@ -41,5 +42,24 @@ PhaseAnchors phaseAnchors(const Grammar& grammar, const Sweep& sweep, int phase)
 // Returns the rule that fires, or -1 when none does (no match, or the probability draw failed).
 int chooseRule(const Grammar& grammar, const std::vector<uint32_t>& matched, uint32_t seed, uint32_t iteration,
                uint32_t sweepIndex, glm::ivec3 anchorWorld);
+
+// Densities at or above this are solid for the grammar's thresholds and for material writes.
+constexpr float kSolidDensity = 0.5f;
+
+// One voxel's channels.
+struct VoxelState {
+    float density = 0.0f;
+    uint8_t material = kMaterialNone;
+};
+
+// A field stage at one voxel: the field's value `f` combined with the voxel by `mode`
+// (d = f, max(d, f), min(d, 1 - f), min(d, f); Paint keeps d), with max(a, b) = a < b ? b : a
+// and min(a, b) = b < a ? b : a so ties and signed zeros resolve identically on every backend.
+// When the stage has a material it is written where the field *wins* and the voxel ends solid:
+//   set: always wins; union: f > d; subtract: 1 - f < d; intersect: f < d; paint: f >= 0.5;
+// and then the resulting density >= kSolidDensity. So `union arch material stone` paints the
+// arch's new rock, `subtract cave material sand` paints the rock left in the cave's density ramp
+// (its walls), and `paint low material rock` paints solid voxels where `low` is >= 0.5.
+VoxelState combineField(FieldMode mode, std::optional<uint8_t> material, float f, VoxelState voxel);
 
 } // namespace voxc

@@ -10,6 +10,8 @@
 
 namespace voxc {
 
+// Every grid carries two channels per voxel, at the same index: a float density and an 8-bit
+// material id (voxc::Material; kMaterialNone = 0 until something writes one).
 class DenseGrid {
 public:
     explicit DenseGrid(glm::ivec3 size, float fill = 0.0f);
@@ -21,10 +23,15 @@ public:
     bool inside(glm::ivec3 p) const;
     const std::vector<float>& data() const { return data_; }
     std::vector<float>& data() { return data_; }
+    uint8_t materialAt(glm::ivec3 p) const { return materials_[index(p)]; }
+    uint8_t& materialAt(glm::ivec3 p) { return materials_[index(p)]; }
+    const std::vector<uint8_t>& materials() const { return materials_; }
+    std::vector<uint8_t>& materials() { return materials_; }
 
 private:
     glm::ivec3 size_;
     std::vector<float> data_;
+    std::vector<uint8_t> materials_;
 };
 
 // Maps grid-local voxels to (slot, offset) in a chunk-major buffer.
@@ -52,17 +59,28 @@ public:
     float& at(glm::ivec3 local) { return data_[layout_.address(local)]; }
     std::vector<float>& data() { return data_; }
     const std::vector<float>& data() const { return data_; }
+    uint8_t materialAt(glm::ivec3 local) const { return materials_[layout_.address(local)]; }
+    uint8_t& materialAt(glm::ivec3 local) { return materials_[layout_.address(local)]; }
+    std::vector<uint8_t>& materials() { return materials_; }
+    const std::vector<uint8_t>& materials() const { return materials_; }
 
-    DenseGrid toDense() const;
+    DenseGrid toDense() const;  // both channels
     static ChunkedGrid fromDense(const DenseGrid& grid, const ChunkLayout& layout);
 
 private:
     ChunkLayout layout_;
     std::vector<float> data_;
+    std::vector<uint8_t> materials_; // same addresses as data_
 };
 
 // NumPy .npy, float32, C order, shape (sx, sy, sz): arr[x,y,z] is voxel (x,y,z). Written atomically.
+// Densities only; materials are a file of their own.
 void writeNpy(const std::string& path, const DenseGrid& grid);
-DenseGrid readNpy(const std::string& path);
+DenseGrid readNpy(const std::string& path); // materials all kMaterialNone
+
+// The material channel as NumPy .npy, uint8 ('|u1'), same shape and order. Written atomically.
+void writeMaterialNpy(const std::string& path, const DenseGrid& grid);
+// Reads such a file into the materials of `grid` (UserError when the shape differs).
+void readMaterialNpy(const std::string& path, DenseGrid& grid);
 
 } // namespace voxc

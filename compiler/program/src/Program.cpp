@@ -1,0 +1,27 @@
+#include "voxc/program/Program.h"
+
+#include <algorithm>
+
+namespace voxc {
+
+bool Program::usesMaterials() const {
+    const auto startWrites = std::any_of(start.begin(), start.end(), [](const StartShape& s) { return s.material.has_value(); });
+    const auto stageWrites = std::any_of(pipeline.begin(), pipeline.end(), [](const Stage& s) { return s.material.has_value(); });
+    const auto grammarUses = std::any_of(grammars.begin(), grammars.end(), [](const Grammar& g) {
+        return std::any_of(g.rules.begin(), g.rules.end(), [](const Rule& rule) {
+            const bool tests = std::any_of(rule.symbol.begin(), rule.symbol.end(),
+                                           [](const SymbolCell& c) { return !c.materialPredicates.empty(); });
+            const bool writes = std::any_of(rule.transform.begin(), rule.transform.end(),
+                                            [](const TransformCell& c) { return c.material.has_value(); });
+            return tests || writes;
+        });
+    });
+    return startWrites || stageWrites || grammarUses;
+}
+
+const Material* Program::findMaterial(uint8_t id) const {
+    const auto it = std::find_if(materials.begin(), materials.end(), [id](const Material& m) { return m.id == id; });
+    return it == materials.end() ? nullptr : &*it;
+}
+
+} // namespace voxc
