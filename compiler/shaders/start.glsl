@@ -29,6 +29,7 @@ void main() {
                 world = push.gridOrigin.xyz + local;
                 address = nextColumnAddress(address, y == first.y, local);
                 float density = 0.0;
+                uint material = 0u;
                 // <<SHAPES>>
                 voxels.density[address] = density;
             }

@@ -74,10 +74,10 @@ TEST(builtins_shapes, BoxIsHalfOpen) {
     box.max = {4, 4, 4};
     box.value = 0.75f;
     const Program program = programWith(box);
-    EXPECT_EQ(startDensity(program, {2, 2, 2}), 0.75f);
-    EXPECT_EQ(startDensity(program, {3, 3, 3}), 0.75f);
-    EXPECT_EQ(startDensity(program, {4, 3, 3}), 0.0f);
-    EXPECT_EQ(startDensity(program, {1, 3, 3}), 0.0f);
+    EXPECT_EQ(startVoxel(program, {2, 2, 2}).density, 0.75f);
+    EXPECT_EQ(startVoxel(program, {3, 3, 3}).density, 0.75f);
+    EXPECT_EQ(startVoxel(program, {4, 3, 3}).density, 0.0f);
+    EXPECT_EQ(startVoxel(program, {1, 3, 3}).density, 0.0f);
 }
 
 TEST(builtins_shapes, SphereIncludesItsRadius) {
@@ -86,10 +86,10 @@ TEST(builtins_shapes, SphereIncludesItsRadius) {
     sphere.center = {10, 10, 10};
     sphere.radius = 3;
     const Program program = programWith(sphere);
-    EXPECT_EQ(startDensity(program, {13, 10, 10}), 1.0f);
-    EXPECT_EQ(startDensity(program, {14, 10, 10}), 0.0f);
-    EXPECT_EQ(startDensity(program, {12, 12, 11}), 1.0f); // 4 + 4 + 1 == 9: on the sphere
-    EXPECT_EQ(startDensity(program, {12, 12, 12}), 0.0f); // 4 + 4 + 4 > 9
+    EXPECT_EQ(startVoxel(program, {13, 10, 10}).density, 1.0f);
+    EXPECT_EQ(startVoxel(program, {14, 10, 10}).density, 0.0f);
+    EXPECT_EQ(startVoxel(program, {12, 12, 11}).density, 1.0f); // 4 + 4 + 1 == 9: on the sphere
+    EXPECT_EQ(startVoxel(program, {12, 12, 12}).density, 0.0f); // 4 + 4 + 4 > 9
 }
 
 TEST(builtins_shapes, WallAndHalfSpace) {
@@ -99,18 +99,18 @@ TEST(builtins_shapes, WallAndHalfSpace) {
     wall.at = 5;
     wall.thickness = 2;
     const Program walls = programWith(wall);
-    EXPECT_EQ(startDensity(walls, {0, 0, 4}), 0.0f);
-    EXPECT_EQ(startDensity(walls, {0, 0, 5}), 1.0f);
-    EXPECT_EQ(startDensity(walls, {0, 0, 6}), 1.0f);
-    EXPECT_EQ(startDensity(walls, {0, 0, 7}), 0.0f);
+    EXPECT_EQ(startVoxel(walls, {0, 0, 4}).density, 0.0f);
+    EXPECT_EQ(startVoxel(walls, {0, 0, 5}).density, 1.0f);
+    EXPECT_EQ(startVoxel(walls, {0, 0, 6}).density, 1.0f);
+    EXPECT_EQ(startVoxel(walls, {0, 0, 7}).density, 0.0f);
 
     StartShape half;
     half.kind = ShapeKind::HalfSpace;
     half.normal = {0, 1, 0};
     half.offset = 3;
     const Program halves = programWith(half);
-    EXPECT_EQ(startDensity(halves, {9, 3, 9}), 1.0f);
-    EXPECT_EQ(startDensity(halves, {9, 4, 9}), 0.0f);
+    EXPECT_EQ(startVoxel(halves, {9, 3, 9}).density, 1.0f);
+    EXPECT_EQ(startVoxel(halves, {9, 4, 9}).density, 0.0f);
 }
 
 TEST(builtins_shapes, LaterShapesOverwriteEarlierOnes) {
@@ -124,8 +124,8 @@ TEST(builtins_shapes, LaterShapesOverwriteEarlierOnes) {
     hole.max = {1, 1, 1};
     hole.value = 0.0f;
     program.start = {fill, hole};
-    EXPECT_EQ(startDensity(program, {0, 0, 0}), 0.0f);
-    EXPECT_EQ(startDensity(program, {1, 0, 0}), 1.0f);
+    EXPECT_EQ(startVoxel(program, {0, 0, 0}).density, 0.0f);
+    EXPECT_EQ(startVoxel(program, {1, 0, 0}).density, 1.0f);
 }
 
 TEST(builtins_shapes, HeightfieldUsesWorldColumns) {
@@ -135,8 +135,8 @@ TEST(builtins_shapes, HeightfieldUsesWorldColumns) {
     program.world.origin = {1000, 0, -2000};
     const float h = heightfieldHeight(ground.heightfield, program.world.seed, 1003, -1995);
     const int below = int(std::ceil(h)) - 1;
-    EXPECT_EQ(startDensity(program, {3, below, 5}), 1.0f);
-    EXPECT_EQ(startDensity(program, {3, below + 1, 5}), 0.0f);
+    EXPECT_EQ(startVoxel(program, {3, below, 5}).density, 1.0f);
+    EXPECT_EQ(startVoxel(program, {3, below + 1, 5}).density, 0.0f);
 }
 
 } // namespace

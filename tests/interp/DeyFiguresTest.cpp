@@ -45,7 +45,7 @@ std::vector<std::string> marks(const Rule& rule) {
     for (int y = 2; y >= 0; --y) {
         std::string row;
         for (int x = 0; x < 3; ++x)
-            row += cellPasses(rule.symbol[size_t(cellIndex(rule.size, x, y, 0))], input.at({x, y, 0})) ? 'v' : 'x';
+            row += cellPasses(rule.symbol[size_t(cellIndex(rule.size, x, y, 0))], input.at({x, y, 0}), kMaterialNone) ? 'v' : 'x';
         rows.push_back(row);
     }
     return rows;

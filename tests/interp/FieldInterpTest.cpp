@@ -3,6 +3,7 @@
 #include "voxc/check/Check.h"
 #include "voxc/interp/FieldEval.h"
 #include "voxc/interp/Interpreter.h"
+#include "voxc/program/Semantics.h"
 
 #include <gtest/gtest.h>
 
@@ -62,13 +63,35 @@ TEST(interp_Fields, LetAndInlinedFunctionsEvaluateAsWritten) {
 }
 
 TEST(interp_Fields, ModesCombineWithTheDensity) {
-    EXPECT_EQ(combineField(FieldMode::Set, 0.3f, 0.7f), 0.7f);
-    EXPECT_EQ(combineField(FieldMode::Union, 0.3f, 0.7f), 0.7f);
-    EXPECT_EQ(combineField(FieldMode::Union, 0.9f, 0.7f), 0.9f);
-    EXPECT_EQ(combineField(FieldMode::Subtract, 0.9f, 0.25f), 0.75f);
-    EXPECT_EQ(combineField(FieldMode::Subtract, 0.5f, 0.25f), 0.5f);
-    EXPECT_EQ(combineField(FieldMode::Intersect, 0.9f, 0.25f), 0.25f);
-    EXPECT_EQ(combineField(FieldMode::Intersect, 0.1f, 0.25f), 0.1f);
+    const auto density = [](FieldMode mode, float d, float f) { return combineField(mode, std::nullopt, f, {d, 0}).density; };
+    EXPECT_EQ(density(FieldMode::Set, 0.3f, 0.7f), 0.7f);
+    EXPECT_EQ(density(FieldMode::Union, 0.3f, 0.7f), 0.7f);
+    EXPECT_EQ(density(FieldMode::Union, 0.9f, 0.7f), 0.9f);
+    EXPECT_EQ(density(FieldMode::Subtract, 0.9f, 0.25f), 0.75f);
+    EXPECT_EQ(density(FieldMode::Subtract, 0.5f, 0.25f), 0.5f);
+    EXPECT_EQ(density(FieldMode::Intersect, 0.9f, 0.25f), 0.25f);
+    EXPECT_EQ(density(FieldMode::Intersect, 0.1f, 0.25f), 0.1f);
+    EXPECT_EQ(density(FieldMode::Paint, 0.1f, 1.0f), 0.1f);
+}
+
+// A stage's material lands where the field wins and the voxel ends solid (Semantics.h).
+TEST(interp_Fields, MaterialsLandWhereTheFieldWinsAndTheVoxelEndsSolid) {
+    static constexpr uint8_t kOld = 3, kNew = 7;
+    const auto material = [](FieldMode mode, float d, float f) { return combineField(mode, kNew, f, {d, kOld}).material; };
+    EXPECT_EQ(material(FieldMode::Set, 0.0f, 0.7f), kNew);
+    EXPECT_EQ(material(FieldMode::Set, 1.0f, 0.2f), kOld);        // ends air
+    EXPECT_EQ(material(FieldMode::Union, 0.3f, 0.7f), kNew);
+    EXPECT_EQ(material(FieldMode::Union, 0.9f, 0.7f), kOld);      // the rock was there already
+    EXPECT_EQ(material(FieldMode::Union, 0.7f, 0.7f), kOld);      // a tie is no win
+    EXPECT_EQ(material(FieldMode::Subtract, 1.0f, 0.25f), kNew);  // the cave's ramp: still rock, now lined
+    EXPECT_EQ(material(FieldMode::Subtract, 1.0f, 0.9f), kOld);   // carved to air
+    EXPECT_EQ(material(FieldMode::Subtract, 0.5f, 0.25f), kOld);  // 0.75 does not beat 0.5
+    EXPECT_EQ(material(FieldMode::Intersect, 0.9f, 0.6f), kNew);
+    EXPECT_EQ(material(FieldMode::Intersect, 0.9f, 0.4f), kOld);  // ends air
+    EXPECT_EQ(material(FieldMode::Paint, 0.5f, 0.5f), kNew);
+    EXPECT_EQ(material(FieldMode::Paint, 0.4f, 1.0f), kOld);      // air is not painted
+    EXPECT_EQ(material(FieldMode::Paint, 1.0f, 0.4f), kOld);
+    EXPECT_EQ(combineField(FieldMode::Union, std::nullopt, 0.9f, {0.0f, kOld}).material, kOld);
 }
 
 // start (box x < 4) -> set/union/subtract/intersect fields -> a grammar that sees the result.

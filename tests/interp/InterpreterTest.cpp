@@ -188,7 +188,7 @@ TEST(interp_Interpreter, StartShapesInOrder) {
     EXPECT_EQ(grid.at({3, 3, 1}), 0.25f); // box max is exclusive
     for (int z = 0; z < 4; ++z)
         for (int y = 0; y < 5; ++y)
-            for (int x = 0; x < 6; ++x) EXPECT_EQ(grid.at({x, y, z}), startDensity(program, {x, y, z}));
+            for (int x = 0; x < 6; ++x) EXPECT_EQ(grid.at({x, y, z}), startVoxel(program, {x, y, z}).density);
     // The Start stage of the pipeline is exactly evaluateStart.
     EXPECT_EQ(interpret(program).data(), grid.data());
 }

@@ -13,7 +13,7 @@ namespace {
 using test::parseSymbolCell;
 using test::parseTransformCell;
 
-bool passes(const char* cell, float density) { return cellPasses(parseSymbolCell(cell), density); }
+bool passes(const char* cell, float density) { return cellPasses(parseSymbolCell(cell), density, kMaterialNone); }
 
 TEST(program_Ops, IgnPassesEverything) {
     for (float d : {0.0f, -1.0f, 1e30f, std::numeric_limits<float>::quiet_NaN()}) EXPECT_TRUE(passes("IGN", d));

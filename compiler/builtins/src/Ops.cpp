@@ -51,9 +51,29 @@ const TransformOpInfo kTransformOps[] = {
      [](const std::string& d, const std::string& v) { return fmt::format("({} + {})", d, v); }},
 };
 
+const MaterialOpInfo kMaterialOps[] = {
+    {MaterialOp::MAT, "MAT", [](uint8_t m, uint8_t id) { return m == id; },
+     [](const std::string& m, const std::string& id) { return compare(m, "==", id); }},
+    {MaterialOp::NMAT, "NMAT", [](uint8_t m, uint8_t id) { return m != id; },
+     [](const std::string& m, const std::string& id) { return compare(m, "!=", id); }},
+};
+
 } // namespace
 
 std::span<const SymbolOpInfo> symbolOps() { return kSymbolOps; }
+std::span<const MaterialOpInfo> materialOps() { return kMaterialOps; }
+
+const MaterialOpInfo& materialOpInfo(MaterialOp op) {
+    for (const MaterialOpInfo& info : kMaterialOps)
+        if (info.op == op) return info;
+    throw InternalError("unknown material operator");
+}
+
+std::optional<MaterialOp> findMaterialOp(std::string_view name) {
+    for (const MaterialOpInfo& info : kMaterialOps)
+        if (info.name == name) return info.op;
+    return std::nullopt;
+}
 std::span<const TransformOpInfo> transformOps() { return kTransformOps; }
 
 const SymbolOpInfo& symbolOpInfo(SymbolOp op) {
@@ -88,9 +108,11 @@ std::string glslFloat(float v) {
     return s;
 }
 
-bool cellPasses(const SymbolCell& cell, float density) {
+bool cellPasses(const SymbolCell& cell, float density, uint8_t material) {
     return std::all_of(cell.predicates.begin(), cell.predicates.end(),
-                       [&](const Predicate& p) { return symbolOpInfo(p.op).eval(density, p.value); });
+                       [&](const Predicate& p) { return symbolOpInfo(p.op).eval(density, p.value); }) &&
+           std::all_of(cell.materialPredicates.begin(), cell.materialPredicates.end(),
+                       [&](const MaterialPredicate& p) { return materialOpInfo(p.op).eval(material, p.material); });
 }
 
 float applyTransform(const TransformCell& cell, float density, const Grammar& grammar) {

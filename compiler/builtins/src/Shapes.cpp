@@ -24,9 +24,9 @@ constexpr KeySpec kValueKey{"value", KeyType::Number, false, -kCoord, kCoord,
 // Fill: every voxel.
 const KeySpec kFillKeys[] = {kValueKey};
 
-float fillEval(const StartShape& s, glm::ivec3, glm::ivec3, uint32_t, float) { return s.value; }
+bool fillInside(const StartShape&, glm::ivec3, glm::ivec3, uint32_t) { return true; }
 
-std::string fillGlsl(const StartShape& s) { return fmt::format("density = {};", glslFloat(s.value)); }
+std::string fillGlsl(const StartShape&) { return "inside = true;"; }
 
 // Box: min <= p < max, per axis.
 const KeySpec kBoxKeys[] = {
@@ -35,16 +35,14 @@ const KeySpec kBoxKeys[] = {
     kValueKey,
 };
 
-float boxEval(const StartShape& s, glm::ivec3 local, glm::ivec3, uint32_t, float current) {
+bool boxInside(const StartShape& s, glm::ivec3 local, glm::ivec3, uint32_t) {
     const glm::vec3 p(local);
-    const bool inside = p.x >= s.min.x && p.y >= s.min.y && p.z >= s.min.z && p.x < s.max.x && p.y < s.max.y &&
-                        p.z < s.max.z;
-    return inside ? s.value : current;
+    return p.x >= s.min.x && p.y >= s.min.y && p.z >= s.min.z && p.x < s.max.x && p.y < s.max.y && p.z < s.max.z;
 }
 
 std::string boxGlsl(const StartShape& s) {
-    return fmt::format("if (all(greaterThanEqual(vec3(local), {})) && all(lessThan(vec3(local), {}))) density = {};",
-                       glslVec3(s.min), glslVec3(s.max), glslFloat(s.value));
+    return fmt::format("inside = all(greaterThanEqual(vec3(local), {})) && all(lessThan(vec3(local), {}));",
+                       glslVec3(s.min), glslVec3(s.max));
 }
 
 // Sphere: |p - center|^2 <= radius^2 (squared, so no sqrt can differ between devices).
@@ -54,19 +52,17 @@ const KeySpec kSphereKeys[] = {
     kValueKey,
 };
 
-float sphereEval(const StartShape& s, glm::ivec3 local, glm::ivec3, uint32_t, float current) {
+bool sphereInside(const StartShape& s, glm::ivec3 local, glm::ivec3, uint32_t) {
     const glm::vec3 d = glm::vec3(local) - s.center;
     const float distanceSquared = d.x * d.x + d.y * d.y + d.z * d.z;
-    return distanceSquared <= s.radius * s.radius ? s.value : current;
+    return distanceSquared <= s.radius * s.radius;
 }
 
 std::string sphereGlsl(const StartShape& s) {
-    return fmt::format("{{\n"
-                       "        precise vec3 d = vec3(local) - {};\n"
-                       "        precise float distanceSquared = d.x * d.x + d.y * d.y + d.z * d.z;\n"
-                       "        if (distanceSquared <= {}) density = {};\n"
-                       "    }}",
-                       glslVec3(s.center), glslFloat(s.radius * s.radius), glslFloat(s.value));
+    return fmt::format("precise vec3 d = vec3(local) - {};\n"
+                       "precise float distanceSquared = d.x * d.x + d.y * d.y + d.z * d.z;\n"
+                       "inside = distanceSquared <= {};",
+                       glslVec3(s.center), glslFloat(s.radius * s.radius));
 }
 
 // Wall: at <= p[axis] < at + thickness.
@@ -78,15 +74,15 @@ const KeySpec kWallKeys[] = {
     kValueKey,
 };
 
-float wallEval(const StartShape& s, glm::ivec3 local, glm::ivec3, uint32_t, float current) {
+bool wallInside(const StartShape& s, glm::ivec3 local, glm::ivec3, uint32_t) {
     const float p = float(local[s.axis]);
-    return p >= s.at && p < s.at + s.thickness ? s.value : current;
+    return p >= s.at && p < s.at + s.thickness;
 }
 
 std::string wallGlsl(const StartShape& s) {
     const char axis = "xyz"[s.axis];
-    return fmt::format("if (float(local.{0}) >= {1} && float(local.{0}) < {2}) density = {3};", axis, glslFloat(s.at),
-                       glslFloat(s.at + s.thickness), glslFloat(s.value));
+    return fmt::format("inside = float(local.{0}) >= {1} && float(local.{0}) < {2};", axis, glslFloat(s.at),
+                       glslFloat(s.at + s.thickness));
 }
 
 // Half-space: dot(p, normal) <= offset.
@@ -96,19 +92,17 @@ const KeySpec kHalfSpaceKeys[] = {
     kValueKey,
 };
 
-float halfSpaceEval(const StartShape& s, glm::ivec3 local, glm::ivec3, uint32_t, float current) {
+bool halfSpaceInside(const StartShape& s, glm::ivec3 local, glm::ivec3, uint32_t) {
     const glm::vec3 p(local);
     const float d = p.x * s.normal.x + p.y * s.normal.y + p.z * s.normal.z;
-    return d <= s.offset ? s.value : current;
+    return d <= s.offset;
 }
 
 std::string halfSpaceGlsl(const StartShape& s) {
-    return fmt::format("{{\n"
-                       "        precise vec3 p = vec3(local) * {};\n"
-                       "        precise float d = p.x + p.y + p.z;\n"
-                       "        if (d <= {}) density = {};\n"
-                       "    }}",
-                       glslVec3(s.normal), glslFloat(s.offset), glslFloat(s.value));
+    return fmt::format("precise vec3 p = vec3(local) * {};\n"
+                       "precise float d = p.x + p.y + p.z;\n"
+                       "inside = d <= {};",
+                       glslVec3(s.normal), glslFloat(s.offset));
 }
 
 // Heightfield: solid below a fractal Perlin surface sampled at world (x, z) (Dey §3.2).
@@ -127,13 +121,11 @@ const KeySpec kHeightfieldKeys[] = {
     kValueKey,
 };
 
-float heightfieldEval(const StartShape& s, glm::ivec3 local, glm::ivec3 world, uint32_t seed, float current) {
-    return float(local.y) < heightfieldHeight(s.heightfield, seed, world.x, world.z) ? s.value : current;
+bool heightfieldInside(const StartShape& s, glm::ivec3 local, glm::ivec3 world, uint32_t seed) {
+    return float(local.y) < heightfieldHeight(s.heightfield, seed, world.x, world.z);
 }
 
-std::string heightfieldGlsl(const StartShape& s) {
-    return fmt::format("if (float(local.y) < column) density = {};", glslFloat(s.value));
-}
+std::string heightfieldGlsl(const StartShape&) { return "inside = float(local.y) < column;"; }
 
 std::string heightfieldColumnGlsl(const StartShape& s) {
     const HeightfieldParams& h = s.heightfield;
@@ -143,12 +135,12 @@ std::string heightfieldColumnGlsl(const StartShape& s) {
 }
 
 const ShapeInfo kShapes[] = {
-    {ShapeKind::Fill, "fill", kFillKeys, fillEval, fillGlsl},
-    {ShapeKind::Box, "box", kBoxKeys, boxEval, boxGlsl},
-    {ShapeKind::Sphere, "sphere", kSphereKeys, sphereEval, sphereGlsl},
-    {ShapeKind::Wall, "wall", kWallKeys, wallEval, wallGlsl},
-    {ShapeKind::HalfSpace, "halfspace", kHalfSpaceKeys, halfSpaceEval, halfSpaceGlsl},
-    {ShapeKind::Heightfield, "heightfield", kHeightfieldKeys, heightfieldEval, heightfieldGlsl, heightfieldColumnGlsl},
+    {ShapeKind::Fill, "fill", kFillKeys, fillInside, fillGlsl},
+    {ShapeKind::Box, "box", kBoxKeys, boxInside, boxGlsl},
+    {ShapeKind::Sphere, "sphere", kSphereKeys, sphereInside, sphereGlsl},
+    {ShapeKind::Wall, "wall", kWallKeys, wallInside, wallGlsl},
+    {ShapeKind::HalfSpace, "halfspace", kHalfSpaceKeys, halfSpaceInside, halfSpaceGlsl},
+    {ShapeKind::Heightfield, "heightfield", kHeightfieldKeys, heightfieldInside, heightfieldGlsl, heightfieldColumnGlsl},
 };
 
 } // namespace
@@ -167,12 +159,15 @@ std::optional<ShapeKind> findShape(std::string_view name) {
     return std::nullopt;
 }
 
-float startDensity(const Program& program, glm::ivec3 local) {
+VoxelState startVoxel(const Program& program, glm::ivec3 local) {
     const glm::ivec3 world = program.world.origin + local;
-    float density = 0.0f;
-    for (const StartShape& shape : program.start)
-        density = shapeInfo(shape.kind).eval(shape, local, world, program.world.seed, density);
-    return density;
+    VoxelState voxel;
+    for (const StartShape& shape : program.start) {
+        if (!shapeInfo(shape.kind).inside(shape, local, world, program.world.seed)) continue;
+        voxel.density = shape.value;
+        if (shape.material) voxel.material = *shape.material;
+    }
+    return voxel;
 }
 
 } // namespace voxc

@@ -4,6 +4,7 @@
 #include "voxc/builtins/Ops.h"
 #include "voxc/builtins/Shapes.h"
 
+#include <algorithm>
 #include <fmt/format.h>
 
 namespace voxc::codegen {
@@ -16,6 +17,8 @@ DispatchShape startDispatchShape(const ir::IrModule& module) {
 std::string startKernelSource(const ir::IrModule& module, std::string_view sourceName) {
     std::string header = fmt::format("voxc generated kernel \"start\": the start state of {}.\n", sourceName);
     std::string columns, shapes;
+    const bool writesMaterials =
+        std::any_of(module.start.begin(), module.start.end(), [](const StartShape& s) { return s.material.has_value(); });
     if (module.start.empty()) {
         header += "The start block is empty: the grid starts as air.\n";
         shapes = "// No shapes: every voxel stays air.\n";
@@ -26,14 +29,20 @@ std::string startKernelSource(const ir::IrModule& module, std::string_view sourc
         const StartShape& shape = module.start[i];
         const ShapeInfo& info = shapeInfo(shape.kind);
         const std::string where = fmt::format("{}:{}:{}", sourceName, shape.loc.line, shape.loc.column);
-        header += fmt::format("  {} value {} ({})\n", info.name, glslFloat(shape.value), where);
+        const std::string material = shape.material ? fmt::format(" material {}", *shape.material) : "";
+        header += fmt::format("  {} value {}{} ({})\n", info.name, glslFloat(shape.value), material, where);
         shapes += fmt::format("// {} ({})\n{{\n", info.name, where);
         if (info.columnGlsl) {
             columns += fmt::format("float column{} = {}; // {} ({})\n", i, info.columnGlsl(shape), info.name, where);
             shapes += fmt::format("    float column = column{};\n", i);
         }
-        shapes += prefixLines(info.glsl(shape), "    ") + "}\n";
+        shapes += "    bool inside = false;\n" + prefixLines(info.glsl(shape), "    ");
+        shapes += fmt::format("    if (inside) {{\n        density = {};\n", glslFloat(shape.value));
+        if (shape.material) shapes += fmt::format("        material = {}u;\n", *shape.material);
+        shapes += "    }\n}\n";
     }
+    // Materials are stored only when a shape writes one: the run clears the buffer to none.
+    shapes += writesMaterials ? "materials.material[address] = material;\n" : "";
     if (columns.empty()) columns = "// No shape has a per-column value.\n";
     return instantiateTemplate("start.glsl", {{"HEADER", prefixLines(header, "// ")},
                                               {"DISPATCH_SHAPE", dispatchShapeGlsl(startDispatchShape(module))},

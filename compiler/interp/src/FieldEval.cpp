@@ -1,5 +1,7 @@
 #include "voxc/interp/FieldEval.h"
 
+#include "voxc/program/Semantics.h"
+
 #include "voxc/core/Errors.h"
 
 #include <algorithm>
@@ -53,16 +55,6 @@ const std::vector<Value>& FieldEvaluator::evaluate(glm::ivec3 local) {
     return values_;
 }
 
-float combineField(FieldMode mode, float d, float f) {
-    switch (mode) {
-    case FieldMode::Set: return f;
-    case FieldMode::Union: return std::max(d, f);
-    case FieldMode::Subtract: return std::min(d, 1.0f - f);
-    case FieldMode::Intersect: return std::min(d, f);
-    }
-    return d;
-}
-
 void runField(const Program& program, const Stage& stage, DenseGrid& grid) {
     VOXC_ASSERT(stage.kind == Stage::Kind::Field && stage.index < program.fields.size());
     VOXC_ASSERT(grid.size() == program.world.size);
@@ -72,7 +64,10 @@ void runField(const Program& program, const Stage& stage, DenseGrid& grid) {
         for (int y = 0; y < size.y; ++y)
             for (int x = 0; x < size.x; ++x) {
                 float& d = grid.at({x, y, z});
-                d = combineField(stage.mode, d, evaluator.density({x, y, z}));
+                uint8_t& m = grid.materialAt({x, y, z});
+                const VoxelState voxel = combineField(stage.mode, stage.material, evaluator.density({x, y, z}), {d, m});
+                d = voxel.density;
+                m = voxel.material;
             }
 }
 

@@ -34,16 +34,24 @@ PreparedSweep prepareSweep(const Grammar& grammar, const Sweep& sweep, const Den
     return prepared;
 }
 
-bool windowMatches(const Rule& rule, const float* anchor, const std::vector<ptrdiff_t>& offsets) {
+// A window in the grid's two channels: the anchor's density and material; cells at offsets.
+struct WindowView {
+    float* density = nullptr;
+    uint8_t* material = nullptr;
+};
+
+bool windowMatches(const Rule& rule, WindowView anchor, const std::vector<ptrdiff_t>& offsets) {
     for (size_t c = 0; c < offsets.size(); ++c)
-        if (!cellPasses(rule.symbol[c], anchor[offsets[c]])) return false;
+        if (!cellPasses(rule.symbol[c], anchor.density[offsets[c]], anchor.material[offsets[c]])) return false;
     return true;
 }
 
-void applyRule(const Rule& rule, const Grammar& grammar, float* anchor, const std::vector<ptrdiff_t>& offsets) {
+void applyRule(const Rule& rule, const Grammar& grammar, WindowView anchor, const std::vector<ptrdiff_t>& offsets) {
     for (size_t c = 0; c < offsets.size(); ++c) {
-        float& cell = anchor[offsets[c]];
-        cell = applyTransform(rule.transform[c], cell, grammar);
+        const TransformCell& transform = rule.transform[c];
+        float& cell = anchor.density[offsets[c]];
+        cell = applyTransform(transform, cell, grammar);
+        if (transform.material) anchor.material[offsets[c]] = *transform.material;
     }
 }
 
@@ -66,7 +74,11 @@ DenseGrid evaluateStart(const Program& program) {
     const glm::ivec3 size = program.world.size;
     for (int z = 0; z < size.z; ++z)
         for (int y = 0; y < size.y; ++y)
-            for (int x = 0; x < size.x; ++x) grid.at({x, y, z}) = startDensity(program, {x, y, z});
+            for (int x = 0; x < size.x; ++x) {
+                const VoxelState voxel = startVoxel(program, {x, y, z});
+                grid.at({x, y, z}) = voxel.density;
+                grid.materialAt({x, y, z}) = voxel.material;
+            }
     return grid;
 }
 
@@ -92,6 +104,7 @@ void runGrammar(const Program& program, uint32_t grammarIndex, DenseGrid& grid, 
     std::vector<uint32_t> matched;
     matched.reserve(maxRules);
     float* data = grid.data().data();
+    uint8_t* materials = grid.materials().data();
     const uint32_t seed = program.world.seed;
     const glm::ivec3 origin = program.world.origin;
 
@@ -107,7 +120,8 @@ void runGrammar(const Program& program, uint32_t grammarIndex, DenseGrid& grid, 
                     for (int j = 0; j < anchors.count.y; ++j) {
                         for (int i = 0; i < anchors.count.x; ++i) {
                             const glm::ivec3 anchor = anchors.start + glm::ivec3(i, j, k) * anchors.step;
-                            float* base = data + grid.index(anchor);
+                            const size_t index = grid.index(anchor);
+                            const WindowView base{data + index, materials + index};
                             matched.clear();
                             for (uint32_t r : sweep.sweep->rules)
                                 if (windowMatches(grammar.rules[r], base, sweep.cellOffsets)) matched.push_back(r);

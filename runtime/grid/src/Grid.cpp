@@ -9,6 +9,7 @@ namespace voxc {
 DenseGrid::DenseGrid(glm::ivec3 size, float fill) : size_(size) {
     VOXC_ASSERT(size.x >= 0 && size.y >= 0 && size.z >= 0);
     data_.assign(size_t(size.x) * size_t(size.y) * size_t(size.z), fill);
+    materials_.assign(data_.size(), kMaterialNone);
 }
 
 bool DenseGrid::inside(glm::ivec3 p) const {
@@ -48,14 +49,18 @@ size_t ChunkLayout::address(glm::ivec3 local) const {
     return slot * chunkVoxels() + size_t(inside.x) + c * (size_t(inside.y) + c * size_t(inside.z));
 }
 
-ChunkedGrid::ChunkedGrid(const ChunkLayout& layout) : layout_(layout), data_(layout.chunkTotal() * layout.chunkVoxels(), 0.0f) {}
+ChunkedGrid::ChunkedGrid(const ChunkLayout& layout)
+    : layout_(layout), data_(layout.chunkTotal() * layout.chunkVoxels(), 0.0f), materials_(data_.size(), kMaterialNone) {}
 
 DenseGrid ChunkedGrid::toDense() const {
     DenseGrid dense(layout_.gridSize);
     const glm::ivec3 s = layout_.gridSize;
     for (int z = 0; z < s.z; ++z)
         for (int y = 0; y < s.y; ++y)
-            for (int x = 0; x < s.x; ++x) dense.at({x, y, z}) = at({x, y, z});
+            for (int x = 0; x < s.x; ++x) {
+                dense.at({x, y, z}) = at({x, y, z});
+                dense.materialAt({x, y, z}) = materialAt({x, y, z});
+            }
     return dense;
 }
 
@@ -65,7 +70,10 @@ ChunkedGrid ChunkedGrid::fromDense(const DenseGrid& grid, const ChunkLayout& lay
     const glm::ivec3 s = layout.gridSize;
     for (int z = 0; z < s.z; ++z)
         for (int y = 0; y < s.y; ++y)
-            for (int x = 0; x < s.x; ++x) chunked.at({x, y, z}) = grid.at({x, y, z});
+            for (int x = 0; x < s.x; ++x) {
+                chunked.at({x, y, z}) = grid.at({x, y, z});
+                chunked.materialAt({x, y, z}) = grid.materialAt({x, y, z});
+            }
     return chunked;
 }
 

@@ -88,6 +88,10 @@ SymbolCell parseSymbolCell(std::string_view text) {
     SymbolCell cell;
     for (std::string_view part : split(text, '&')) {
         auto [name, value] = splitOperator(part);
+        if (const auto materialOp = findMaterialOp(name)) { // "MAT 3": material ids are numbers here
+            cell.materialPredicates.push_back({*materialOp, uint8_t(std::stoi(value))});
+            continue;
+        }
         const auto op = findSymbolOp(name);
         if (!op) throw std::invalid_argument("unknown symbol operator: " + name);
         if (*op == SymbolOp::IGN) continue; // IGN is the empty predicate list
@@ -98,11 +102,20 @@ SymbolCell parseSymbolCell(std::string_view text) {
 }
 
 TransformCell parseTransformCell(std::string_view text) {
-    auto [name, value] = splitOperator(text);
-    const auto op = findTransformOp(name);
-    if (!op) throw std::invalid_argument("unknown transform operator: " + name);
-    if (transformOpInfo(*op).takesValue != !value.empty()) throw std::invalid_argument("arity: " + std::string(text));
-    return TransformCell{*op, value.empty() ? 0.0f : parseFloat(value)};
+    TransformCell cell;
+    for (std::string_view part : split(text, '&')) {
+        auto [name, value] = splitOperator(part);
+        if (name == "MAT") {
+            cell.material = uint8_t(std::stoi(value));
+            continue;
+        }
+        const auto op = findTransformOp(name);
+        if (!op) throw std::invalid_argument("unknown transform operator: " + name);
+        if (transformOpInfo(*op).takesValue != !value.empty()) throw std::invalid_argument("arity: " + std::string(part));
+        cell.op = *op;
+        cell.value = value.empty() ? 0.0f : parseFloat(value);
+    }
+    return cell;
 }
 
 Rule makeRule(std::string name, const std::vector<std::string>& symbolRows,

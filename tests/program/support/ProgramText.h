@@ -13,8 +13,8 @@
 
 namespace voxc::test {
 
-SymbolCell parseSymbolCell(std::string_view text);       // "GEQ 0.5 & LT 1.0", "IGN"
-TransformCell parseTransformCell(std::string_view text); // "ADD -0.2", "NOP"
+SymbolCell parseSymbolCell(std::string_view text);       // "GEQ 0.5 & LT 1.0", "IGN", "GEQ 0.5 & MAT 2"
+TransformCell parseTransformCell(std::string_view text); // "ADD -0.2", "NOP", "SET 1 & MAT 2", "MAT 2"
 
 Rule makeRule(std::string name, const std::vector<std::string>& symbolRows,
               const std::vector<std::string>& transformRows);

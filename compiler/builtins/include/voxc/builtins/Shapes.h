@@ -2,6 +2,7 @@
 // The start block's shapes, one registry record each: the keys the checker accepts (type,
 // range, default), the interpreter's evaluation and the GLSL emission side by side.
 #include "voxc/program/Program.h"
+#include "voxc/program/Semantics.h"
 
 #include <cstdint>
 #include <optional>
@@ -27,10 +28,10 @@ struct ShapeInfo {
     ShapeKind kind;
     std::string_view name;
     std::span<const KeySpec> keys;
-    // Density after this shape at one voxel: `current` where the shape is not solid.
-    float (*eval)(const StartShape& shape, glm::ivec3 local, glm::ivec3 world, uint32_t seed, float current);
-    // GLSL statements that update `float density` from `ivec3 local`, `ivec3 world` and `uint seed`
-    // (and `float column`, see below).
+    // Whether the shape is solid at one voxel; there it writes its value (and material).
+    bool (*inside)(const StartShape& shape, glm::ivec3 local, glm::ivec3 world, uint32_t seed);
+    // GLSL statements that set `bool inside` from `ivec3 local`, `ivec3 world` and `uint seed`
+    // (and `float column`, see below), as `inside` computes it.
     std::string (*glsl)(const StartShape& shape);
     // Optional: a GLSL float expression of `world.x`, `world.z` and `seed` only, which the start
     // kernel evaluates once per (x, z) column and hands to `glsl` as `column` (a heightfield's
@@ -42,8 +43,9 @@ std::span<const ShapeInfo> shapes();
 const ShapeInfo& shapeInfo(ShapeKind kind);
 std::optional<ShapeKind> findShape(std::string_view name);
 
-// The start state's density at one voxel: every shape in order over air (0).
-float startDensity(const Program& program, glm::ivec3 local);
+// The start state at one voxel: every shape in order over air (density 0, material none); a
+// shape writes its value, and its material if it has one, where it is inside.
+VoxelState startVoxel(const Program& program, glm::ivec3 local);
 
 // 2D improved Perlin noise with Perlin's reference permutation, range about [-1, 1].
 // compiler/shaders/perlin.glsl mirrors it; both avoid fused multiply-adds so they agree bit for bit.

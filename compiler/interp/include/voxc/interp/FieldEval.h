@@ -28,10 +28,7 @@ private:
     std::vector<Value> arguments_;
 };
 
-// d' for density d and field value f: Set f; Union max(d, f); Subtract min(d, 1 - f); Intersect min(d, f).
-float combineField(FieldMode mode, float d, float f);
-
-// Runs one field stage over the whole grid in place.
+// Runs one field stage over the whole grid in place (voxc::combineField at every voxel).
 void runField(const Program& program, const Stage& stage, DenseGrid& grid);
 
 } // namespace voxc

@@ -20,7 +20,7 @@ struct InterpOptions {
     FireStats* stats = nullptr;
 };
 
-// The start state: startDensity at every voxel of the world.
+// The start state: startVoxel at every voxel of the world.
 DenseGrid evaluateStart(const Program& program);
 
 // Runs every iteration of one grammar in place. `grid` must have the world's size.
