@@ -1,7 +1,7 @@
 // The .vox surface syntax. Deliberately generic: a file is constants and named blocks, and a
 // block holds assignments, nested blocks, bare names and rows. Which block may hold what is
 // the checker's business (compiler/check), so that a misspelt key gets a "did you mean"
-// instead of a parse error, and new blocks (lsystem, ...) need no grammar change. Expressions
+// instead of a parse error, and new blocks (material, lsystem, ...) need no grammar change. Expressions
 // (fields, functions) and `feature NAME = generator { ... }` have rules of their own.
 grammar Voxc;
 
@@ -56,9 +56,11 @@ assignment
     : key=IDENT '=' value ';'
     ;
 
-// A pipeline entry: `start;`, `overhang;`, or a field stage with its mode: `subtract cave;`
+// A pipeline entry: `start;`, `overhang;`, or a field stage with its mode: `subtract cave;`,
+// optionally followed by a clause word and its operand: `subtract cave material sand;`. The
+// clause word is an IDENT so `material` stays usable as a block kind and a key.
 nameStatement
-    : (combine=IDENT)? name=IDENT ';'
+    : (combine=IDENT)? name=IDENT (clause=IDENT operand=IDENT)? ';'
     ;
 
 value

@@ -112,6 +112,30 @@ TEST(syntax_Parser, ReadableMessages) {
     EXPECT_NE(comment.diagnostics[0].message.find("unterminated block comment"), std::string::npos);
 }
 
+TEST(syntax_Parser, PipelineStagesTakeAClause) {
+    Parsed parsed = parseText("material rock { material = rock; }\n"
+                              "pipeline { start; caves; subtract cave material sand; weather material rock; }");
+    ASSERT_TRUE(parsed.diagnostics.empty());
+    // `material` is an ordinary name: a block kind and a key.
+    EXPECT_EQ(parsed.file.blocks[0].kind, "material");
+    EXPECT_EQ(parsed.file.blocks[0].assignments.at(0).key, "material");
+    const std::vector<ast::NameStatement>& names = parsed.file.blocks[1].names;
+    ASSERT_EQ(names.size(), 4u);
+    EXPECT_FALSE(names[1].clause);
+    EXPECT_EQ(names[2].mode, "subtract");
+    EXPECT_EQ(names[2].name, "cave");
+    ASSERT_TRUE(names[2].clause);
+    EXPECT_EQ(names[2].clause->word, "material");
+    EXPECT_EQ(names[2].clause->operand, "sand");
+    EXPECT_EQ(names[2].clause->operandLoc.column, 51u);
+    // Three words are a stage and a clause; the checker rejects clauses on grammars.
+    EXPECT_FALSE(names[3].mode);
+    EXPECT_EQ(names[3].name, "weather");
+    ASSERT_TRUE(names[3].clause);
+    EXPECT_EQ(names[3].clause->wordLoc.column, 64u);
+    EXPECT_FALSE(parseText("pipeline { a b c d e; }").diagnostics.empty());
+}
+
 TEST(syntax_Parser, EmptyFileIsValidSyntax) {
     Parsed parsed = parseText("");
     EXPECT_TRUE(parsed.diagnostics.empty());

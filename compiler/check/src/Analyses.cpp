@@ -1,12 +1,14 @@
 // Warnings about rules that are legal but almost certainly not what the author meant.
-// Each symbol cell is turned into the set of densities it accepts (ValueSet, from the
-// operator registry), which makes "never matches" and "can match together" exact questions.
+// Each symbol cell is turned into the set of densities and the set of materials it accepts
+// (ValueSet, from the operator registry; a bitset of the 256 ids), which makes "never matches"
+// and "can match together" exact questions.
 #include "Sections.h"
 #include "Values.h"
 
 #include "voxc/builtins/Ops.h"
 #include "voxc/builtins/ValueSet.h"
 
+#include <bitset>
 #include <fmt/format.h>
 #include <glm/vector_relational.hpp>
 
@@ -14,10 +16,30 @@ namespace voxc::check {
 
 namespace {
 
-ValueSet acceptedDensities(const SymbolCell& cell) {
-    ValueSet set = ValueSet::all();
+using MaterialSet = std::bitset<256>;
+
+// What one symbol cell accepts; it passes for some voxel exactly when both sets are non-empty,
+// since density and material are independent.
+struct CellSet {
+    ValueSet densities = ValueSet::all();
+    MaterialSet materials = MaterialSet().set();
+
+    bool empty() const { return densities.empty() || materials.none(); }
+    CellSet intersect(const CellSet& other) const {
+        return {densities.intersect(other.densities), materials & other.materials};
+    }
+};
+
+CellSet acceptedValues(const SymbolCell& cell) {
+    CellSet set;
     for (const Predicate& predicate : cell.predicates)
-        set = set.intersect(symbolOpInfo(predicate.op).accepts(predicate.value));
+        set.densities = set.densities.intersect(symbolOpInfo(predicate.op).accepts(predicate.value));
+    for (const MaterialPredicate& predicate : cell.materialPredicates) {
+        MaterialSet accepted;
+        for (size_t id = 0; id < accepted.size(); ++id)
+            accepted[id] = materialOpInfo(predicate.op).eval(uint8_t(id), predicate.material);
+        set.materials &= accepted;
+    }
     return set;
 }
 
@@ -30,9 +52,10 @@ std::string printedPosition(glm::ivec3 size, int x, int y, int z) {
 
 // W0201 and W0202. Returns whether the rule can match at all.
 bool analyseSymbol(Context& context, const Rule& rule, const RuleSyntax& syntax,
-                   const std::vector<ValueSet>& cellSets) {
+                   const std::vector<CellSet>& cellSets) {
     bool allIgnore = true;
-    for (const SymbolCell& cell : rule.symbol) allIgnore = allIgnore && cell.predicates.empty();
+    for (const SymbolCell& cell : rule.symbol)
+        allIgnore = allIgnore && cell.predicates.empty() && cell.materialPredicates.empty();
     if (allIgnore)
         context.diagnostics.warning("W0201", syntax.symbolLoc,
                                     fmt::format("the symbol of rule '{}' is all IGN, so it matches every window "
@@ -46,15 +69,16 @@ bool analyseSymbol(Context& context, const Rule& rule, const RuleSyntax& syntax,
                 const int index = cellIndex(size, x, y, z);
                 if (!cellSets[index].empty()) continue;
                 canMatch = false;
+                const char* what = cellSets[index].densities.empty() ? "density" : "material";
                 context.diagnostics.warning("W0202", syntax.symbolCells[index],
-                                            fmt::format("rule '{}' can never match: no density passes every "
+                                            fmt::format("rule '{}' can never match: no {} passes every "
                                                         "predicate of the cell at {}",
-                                                        rule.name, printedPosition(size, x, y, z)));
+                                                        rule.name, what, printedPosition(size, x, y, z)));
             }
     return canMatch;
 }
 
-bool canMatchTogether(const std::vector<ValueSet>& a, const std::vector<ValueSet>& b) {
+bool canMatchTogether(const std::vector<CellSet>& a, const std::vector<CellSet>& b) {
     for (size_t i = 0; i < a.size(); ++i)
         if (a[i].intersect(b[i]).empty()) return false;
     return true;
@@ -64,11 +88,11 @@ bool canMatchTogether(const std::vector<ValueSet>& a, const std::vector<ValueSet
 
 void analyseGrammar(Context& context, const CheckedGrammar& checked) {
     const Grammar& grammar = checked.grammar;
-    std::vector<std::vector<ValueSet>> sets(grammar.rules.size());
+    std::vector<std::vector<CellSet>> sets(grammar.rules.size());
     std::vector<bool> canMatch(grammar.rules.size());
     for (size_t r = 0; r < grammar.rules.size(); ++r) {
         const Rule& rule = grammar.rules[r];
-        for (const SymbolCell& cell : rule.symbol) sets[r].push_back(acceptedDensities(cell));
+        for (const SymbolCell& cell : rule.symbol) sets[r].push_back(acceptedValues(cell));
         canMatch[r] = analyseSymbol(context, rule, checked.rules[r], sets[r]);
 
         const glm::ivec3 extent = grammar.boundsMax - grammar.boundsMin;

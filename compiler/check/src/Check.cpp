@@ -1,5 +1,6 @@
 #include "voxc/check/Check.h"
 
+#include "Materials.h"
 #include "Sections.h"
 #include "Suggest.h"
 
@@ -21,9 +22,9 @@ std::string CheckResult::rendered() const { return renderAll(diagnostics, source
 namespace check {
 namespace {
 
-constexpr std::string_view kTopLevelBlocks[] = {"world", "start", "grammar", "pipeline"};
+constexpr std::string_view kTopLevelBlocks[] = {"world", "start", "grammar", "pipeline", "material"};
 // Later parts of the language; using one is E0013 rather than "unknown block".
-constexpr std::string_view kReservedBlocks[] = {"lsystem", "material"};
+constexpr std::string_view kReservedBlocks[] = {"lsystem"};
 
 // The first block of a kind that may appear once; later ones are E0003.
 const ast::Block* uniqueBlock(Context& context, const ast::File& file, std::string_view kind) {
@@ -82,6 +83,8 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
 
     Program program;
     program.sourcePath = path;
+    // First: every other block may name a material.
+    program.materials = checkMaterials(context, file);
     std::optional<World> world;
     if (const ast::Block* block = uniqueBlock(context, file, "world"))
         world = checkWorld(context, *block);
@@ -97,18 +100,20 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
     for (const ast::Block& grammarBlock : file.blocks)
         if (grammarBlock.kind == "grammar" && grammarBlock.label) grammarNames.push_back(*grammarBlock.label);
     program.fields = checkFields(context, file, grammarNames);
-    for (Field& feature : checkFeatures(context, file, grammarNames, program.world.seed))
-        program.fields.push_back(std::move(feature));
+    CheckedFeatures features = checkFeatures(context, file, grammarNames, program.world.seed);
+    for (Field& feature : features.fields) program.fields.push_back(std::move(feature));
 
-    program.pipeline.push_back({Stage::Kind::Start, 0, FieldMode::Set, {}});
+    program.pipeline.push_back({Stage::Kind::Start, 0, FieldMode::Set, {}, std::nullopt});
     if (const ast::Block* block = uniqueBlock(context, file, "pipeline")) {
         std::vector<std::string> fieldNames;
         for (const ast::FieldDecl& field : file.fields) fieldNames.push_back(field.name);
         for (const ast::FeatureDecl& feature : file.features) fieldNames.push_back(feature.name);
-        for (const Stage& stage : checkPipeline(context, *block, grammarNames, fieldNames))
+        std::vector<std::optional<uint8_t>> fieldMaterials(file.fields.size()); // plain fields name none
+        fieldMaterials.insert(fieldMaterials.end(), features.materials.begin(), features.materials.end());
+        for (const Stage& stage : checkPipeline(context, *block, grammarNames, fieldNames, fieldMaterials))
             program.pipeline.push_back(stage);
     } else {
-        for (uint32_t i = 0; i < program.grammars.size(); ++i) program.pipeline.push_back({Stage::Kind::Grammar, i, FieldMode::Set, {}});
+        for (uint32_t i = 0; i < program.grammars.size(); ++i) program.pipeline.push_back({Stage::Kind::Grammar, i, FieldMode::Set, {}, std::nullopt});
     }
     // Warnings only make sense about a program that is otherwise correct.
     if (!context.diagnostics.hasErrors())
@@ -130,7 +135,7 @@ CheckResult checkSource(const SourceFile& source, const CheckOptions& options) {
     if (!reportIfNotText(source, diagnostics)) {
         ast::File file = parse(source, diagnostics);
         if (!diagnostics.hasErrors()) {
-            check::Context context{diagnostics, options.limits, check::Constants(diagnostics, options.constOverrides)};
+            check::Context context{diagnostics, options.limits, check::Constants(diagnostics, options.constOverrides), {}};
             Program program = check::checkProgram(context, file, source.path());
             if (!diagnostics.hasErrors()) result.program = std::move(program);
         }

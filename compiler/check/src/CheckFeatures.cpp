@@ -1,5 +1,6 @@
 // `feature name = generator { key = value; ... }`: each feature becomes a field whose DAG the
 // generator's record builds (compiler/check/src/generators).
+#include "Materials.h"
 #include "Sections.h"
 #include "Suggest.h"
 #include "Values.h"
@@ -39,7 +40,16 @@ void warnOffGrid(Context& context, const ast::Assignment& a, const GeneratorKey&
                                             formatNumber(value), formatNumber(key.min), formatNumber(key.step)));
 }
 
-std::optional<Field> checkFeature(Context& context, const ast::FeatureDecl& decl, uint32_t seed) {
+// Every generator takes `material = NAME;`: the material its pipeline stages write unless the
+// stage names its own.
+constexpr std::string_view kMaterialKey = "material";
+
+struct CheckedFeature {
+    Field field;
+    std::optional<uint8_t> material;
+};
+
+std::optional<CheckedFeature> checkFeature(Context& context, const ast::FeatureDecl& decl, uint32_t seed) {
     const ast::Block& body = decl.body;
     const GeneratorInfo* info = findGenerator(body.kind);
     if (info == nullptr) {
@@ -54,10 +64,16 @@ std::optional<Field> checkFeature(Context& context, const ast::FeatureDecl& decl
     rejectUnexpectedMembers(context, body, where, {});
     std::vector<std::string_view> keyNames;
     for (const GeneratorKey& key : info->keys) keyNames.push_back(key.name);
+    keyNames.push_back(kMaterialKey);
     BlockKeys keys(context, body, where, keyNames);
 
+    CheckedFeature out;
     GeneratorParams params;
     bool ok = true;
+    if (const ast::Assignment* a = keys.find(kMaterialKey)) {
+        out.material = readMaterialKey(context, *a);
+        ok = out.material.has_value();
+    }
     for (const GeneratorKey& key : info->keys) {
         const ast::Assignment* a = key.required ? keys.require(key.name) : keys.find(key.name);
         if (a == nullptr) {
@@ -81,19 +97,19 @@ std::optional<Field> checkFeature(Context& context, const ast::FeatureDecl& decl
     }
     FieldDag dag;
     const uint32_t root = info->build(params, seed, dag);
-    Field field;
+    Field& field = out.field;
     field.name = decl.name;
     field.loc = decl.loc;
     field.nodes = dag.reachableFrom(root, field.root);
     for (FieldNode& node : field.nodes) node.loc = body.loc;
-    return field;
+    return out;
 }
 
 } // namespace
 
-std::vector<Field> checkFeatures(Context& context, const ast::File& file, const std::vector<std::string>& stageNames,
-                                 uint32_t seed) {
-    std::vector<Field> fields;
+CheckedFeatures checkFeatures(Context& context, const ast::File& file, const std::vector<std::string>& stageNames,
+                              uint32_t seed) {
+    CheckedFeatures out;
     std::map<std::string, SourceLoc> names;
     for (const ast::FieldDecl& field : file.fields) names.emplace(field.name, field.loc);
     for (const ast::FeatureDecl& decl : file.features) {
@@ -106,9 +122,11 @@ std::vector<Field> checkFeatures(Context& context, const ast::File& file, const 
             context.diagnostics.error("E0003", decl.loc,
                                       fmt::format("'{}' already names a pipeline stage (a grammar or 'start')",
                                                   decl.name));
-        if (auto field = checkFeature(context, decl, seed)) fields.push_back(std::move(*field));
+        std::optional<CheckedFeature> feature = checkFeature(context, decl, seed);
+        out.materials.push_back(feature ? feature->material : std::nullopt);
+        if (feature) out.fields.push_back(std::move(feature->field));
     }
-    return fields;
+    return out;
 }
 
 } // namespace voxc::check

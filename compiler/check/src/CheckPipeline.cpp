@@ -1,4 +1,4 @@
-// `pipeline { start; caves; subtract tunnel; overhang; }`
+// `pipeline { start; caves; subtract tunnel material sand; paint low material rock; overhang; }`
 #include "Sections.h"
 #include "Suggest.h"
 #include "Values.h"
@@ -10,8 +10,10 @@ namespace voxc::check {
 
 namespace {
 
-constexpr std::string_view kModeNames[] = {"set", "union", "subtract", "intersect"};
-constexpr FieldMode kModes[] = {FieldMode::Set, FieldMode::Union, FieldMode::Subtract, FieldMode::Intersect};
+constexpr std::string_view kModeNames[] = {"set", "union", "subtract", "intersect", "paint"};
+constexpr FieldMode kModes[] = {FieldMode::Set, FieldMode::Union, FieldMode::Subtract, FieldMode::Intersect,
+                                FieldMode::Paint};
+constexpr std::string_view kClauses[] = {"material"};
 
 std::optional<FieldMode> parseMode(Context& context, const ast::NameStatement& entry) {
     for (size_t i = 0; i < std::size(kModeNames); ++i)
@@ -22,11 +24,40 @@ std::optional<FieldMode> parseMode(Context& context, const ast::NameStatement& e
     return std::nullopt;
 }
 
+// Only field stages take a clause (E0010 on `start` and grammars, as for a mode word).
+bool rejectClause(Context& context, const ast::NameStatement& entry, std::string_view why) {
+    if (!entry.clause) return true;
+    context.diagnostics.error("E0010", entry.clause->wordLoc,
+                              fmt::format("'{}' {}; only field stages take a '{}' clause", entry.name, why,
+                                          entry.clause->word));
+    return false;
+}
+
+// The material of a field stage: its own `material NAME` clause, else the feature's key.
+// Nothing when the clause has an error (reported) or neither names one; `ok` says which.
+std::optional<uint8_t> stageMaterial(Context& context, const ast::NameStatement& entry,
+                                     std::optional<uint8_t> fieldMaterial, bool& ok) {
+    ok = true;
+    if (!entry.clause) return fieldMaterial;
+    const ast::StageClause& clause = *entry.clause;
+    if (clause.word != kClauses[0]) {
+        context.diagnostics.error("E0008", clause.wordLoc,
+                                  fmt::format("unknown clause '{}' after stage '{}'{}", clause.word, entry.name,
+                                              suggestOrList(clause.word, kClauses)));
+        ok = false;
+        return std::nullopt;
+    }
+    std::optional<uint8_t> material = context.materials.resolve(context.diagnostics, clause.operand, clause.operandLoc);
+    ok = material.has_value();
+    return material;
+}
+
 } // namespace
 
 std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
                                  const std::vector<std::string>& grammarNames,
-                                 const std::vector<std::string>& fieldNames) {
+                                 const std::vector<std::string>& fieldNames,
+                                 const std::vector<std::optional<uint8_t>>& fieldMaterials) {
     const std::string where = "'pipeline' block";
     checkLabel(context, block, false);
     rejectUnexpectedMembers(context, block, where, {.names = true});
@@ -43,9 +74,19 @@ std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
     std::vector<Stage> stages;
     for (size_t i = 0; i < block.names.size(); ++i) {
         const ast::NameStatement& entry = block.names[i];
+        // Three words parse as a stage and a clause; `subtract cave material;` is a clause
+        // missing its name.
+        if (entry.clause && !entry.mode && entry.clause->operand == kClauses[0]) {
+            context.diagnostics.error("E0009", entry.clause->operandLoc,
+                                      fmt::format("'material' needs a material name, as in '{} {} material rock;'",
+                                                  entry.name, entry.clause->word));
+            continue;
+        }
         if (entry.name == "start") {
             if (i != 0 || entry.mode)
                 context.diagnostics.error("E0007", entry.loc, "'start' can only be the first stage of the pipeline");
+            else
+                rejectClause(context, entry, "is the start state (give its shapes a 'material' key instead)");
             continue;
         }
         auto grammar = std::find(grammarNames.begin(), grammarNames.end(), entry.name);
@@ -54,17 +95,31 @@ std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
             if (entry.mode)
                 context.diagnostics.error("E0010", entry.modeLoc,
                                           fmt::format("'{}' is a grammar; only field stages take a mode", entry.name));
-            else
-                stages.push_back({Stage::Kind::Grammar, uint32_t(grammar - grammarNames.begin()), FieldMode::Set, entry.loc});
+            else if (rejectClause(context, entry, "is a grammar"))
+                stages.push_back({Stage::Kind::Grammar, uint32_t(grammar - grammarNames.begin()), FieldMode::Set, entry.loc, std::nullopt});
         } else if (field != fieldNames.end()) {
+            const size_t index = size_t(field - fieldNames.begin());
             if (!entry.mode) {
                 context.diagnostics.error("E0009", entry.loc,
                                           fmt::format("field stage '{}' needs a mode: 'set {}', 'union {}', "
-                                                      "'subtract {}' or 'intersect {}'",
-                                                      entry.name, entry.name, entry.name, entry.name, entry.name));
+                                                      "'subtract {}', 'intersect {}' or 'paint {} material NAME'",
+                                                      entry.name, entry.name, entry.name, entry.name, entry.name,
+                                                      entry.name));
             } else if (std::optional<FieldMode> mode = parseMode(context, entry)) {
-                Stage stage{Stage::Kind::Field, uint32_t(field - fieldNames.begin()), *mode, entry.loc};
-                stages.push_back(stage);
+                bool ok = true;
+                std::optional<uint8_t> fieldMaterial = index < fieldMaterials.size() ? fieldMaterials[index] : std::nullopt;
+                std::optional<uint8_t> material = stageMaterial(context, entry, fieldMaterial, ok);
+                if (ok && *mode == FieldMode::Paint && !entry.clause) {
+                    context.diagnostics.error("E0009", entry.loc,
+                                              fmt::format("'paint {0}' only writes materials, so it needs a "
+                                                          "material clause: 'paint {0} material NAME;'",
+                                                          entry.name));
+                    ok = false;
+                }
+                if (ok) {
+                    Stage stage{Stage::Kind::Field, uint32_t(index), *mode, entry.loc, material};
+                    stages.push_back(stage);
+                }
             }
         } else {
             context.diagnostics.error("E0002", entry.loc,

@@ -1,4 +1,5 @@
 // The `world` block and the `start` block's shapes.
+#include "Materials.h"
 #include "Sections.h"
 #include "Suggest.h"
 #include "Values.h"
@@ -77,6 +78,10 @@ std::optional<std::array<double, 3>> readKey(Context& context, const ast::Assign
     return std::nullopt;
 }
 
+// Every shape takes `material = NAME;` besides its registry keys: materials are a property of
+// the start block, not of one shape.
+constexpr std::string_view kMaterialKey = "material";
+
 // One shape: its keys come from the Shapes registry, never from this file.
 std::optional<StartShape> checkShape(Context& context, const ast::Block& block) {
     std::optional<ShapeKind> kind = findShape(block.kind);
@@ -93,12 +98,17 @@ std::optional<StartShape> checkShape(Context& context, const ast::Block& block) 
     rejectUnexpectedMembers(context, block, where, {});
     std::vector<std::string_view> keyNames;
     for (const KeySpec& spec : info.keys) keyNames.push_back(spec.name);
+    keyNames.push_back(kMaterialKey);
     BlockKeys keys(context, block, where, keyNames);
 
     StartShape shape;
     shape.kind = *kind;
     shape.loc = block.loc;
     bool ok = true;
+    if (const ast::Assignment* a = keys.find(kMaterialKey)) {
+        shape.material = readMaterialKey(context, *a);
+        ok = shape.material.has_value();
+    }
     for (const KeySpec& spec : info.keys) {
         const ast::Assignment* a = spec.required ? keys.require(spec.name) : keys.find(spec.name);
         if (a == nullptr) {

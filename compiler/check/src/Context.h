@@ -1,6 +1,7 @@
 #pragma once
 // State shared by the checker's passes over one file.
 #include "Constants.h"
+#include "Materials.h"
 
 #include "voxc/program/Program.h"
 #include "voxc/syntax/Diagnostics.h"
@@ -11,6 +12,7 @@ struct Context {
     Diagnostics& diagnostics;
     const Limits& limits;
     Constants constants;
+    MaterialNames materials; // filled by checkMaterials before any other block is checked
 };
 
 } // namespace voxc::check

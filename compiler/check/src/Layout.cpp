@@ -141,10 +141,13 @@ bool checkArity(Context& context, const ast::Term& term, bool takesValue) {
 
 std::vector<std::string_view> opNames(bool symbol) {
     std::vector<std::string_view> names;
-    if (symbol)
+    if (symbol) {
         for (const SymbolOpInfo& info : symbolOps()) names.push_back(info.name);
-    else
+        for (const MaterialOpInfo& info : materialOps()) names.push_back(info.name);
+    } else {
         for (const TransformOpInfo& info : transformOps()) names.push_back(info.name);
+        names.push_back(materialOpInfo(MaterialOp::MAT).name);
+    }
     return names;
 }
 
@@ -162,12 +165,30 @@ void reportUnknownOp(Context& context, const ast::Term& term, bool symbol) {
                                           suggestOrList(term.op, opNames(symbol))));
 }
 
+// `MAT rock`: the operand is a material name (E0006 when missing).
+std::optional<uint8_t> readMaterialOperand(Context& context, const ast::Term& term) {
+    if (!term.value) {
+        context.diagnostics.error("E0006", term.opLoc,
+                                  fmt::format("'{}' needs a material name, as in '{} rock'", term.op, term.op));
+        return std::nullopt;
+    }
+    return context.materials.resolve(context.diagnostics, *term.value, fmt::format("'{}'", term.op));
+}
+
 } // namespace
 
 std::optional<SymbolCell> convertSymbolCell(Context& context, const ast::Cell& cell) {
     SymbolCell out;
     bool ok = true;
     for (const ast::Term& term : cell.terms) {
+        if (std::optional<MaterialOp> materialOp = findMaterialOp(term.op)) {
+            auto material = readMaterialOperand(context, term);
+            if (material)
+                out.materialPredicates.push_back({*materialOp, *material});
+            else
+                ok = false;
+            continue;
+        }
         std::optional<SymbolOp> op = findSymbolOp(term.op);
         if (!op) {
             reportUnknownOp(context, term, true);
@@ -194,23 +215,52 @@ std::optional<SymbolCell> convertSymbolCell(Context& context, const ast::Cell& c
 }
 
 std::optional<TransformCell> convertTransformCell(Context& context, const ast::Cell& cell) {
-    if (cell.terms.size() != 1) {
-        context.diagnostics.error("E0006", cell.terms[1].opLoc,
-                                  "a transform cell takes exactly one operator; '&' joins symbol predicates only");
-        return std::nullopt;
+    // One density operator and at most one `MAT m`, in either order; `MAT m` alone keeps the density.
+    const ast::Term* densityTerm = nullptr;
+    const ast::Term* materialTerm = nullptr;
+    for (const ast::Term& term : cell.terms) {
+        if (term.op == materialOpInfo(MaterialOp::MAT).name) {
+            if (materialTerm) {
+                context.diagnostics.error("E0003", term.opLoc, "a transform cell writes one material; this is a second 'MAT'",
+                                          {{materialTerm->opLoc, "the first 'MAT' is here"}});
+                return std::nullopt;
+            }
+            materialTerm = &term;
+            continue;
+        }
+        if (findMaterialOp(term.op)) {
+            context.diagnostics.error("E0011", term.opLoc,
+                                      fmt::format("'{}' is a symbol test and cannot appear in a transform; 'MAT' "
+                                                  "writes a material",
+                                                  term.op));
+            return std::nullopt;
+        }
+        if (densityTerm) {
+            context.diagnostics.error("E0006", term.opLoc,
+                                      "a transform cell takes one density operator; '&' joins it only with 'MAT NAME'");
+            return std::nullopt;
+        }
+        densityTerm = &term;
     }
-    const ast::Term& term = cell.terms.front();
-    std::optional<TransformOp> op = findTransformOp(term.op);
-    if (!op) {
-        reportUnknownOp(context, term, false);
-        return std::nullopt;
+    TransformCell out{TransformOp::NOP, 0.0f, std::nullopt};
+    if (densityTerm) {
+        std::optional<TransformOp> op = findTransformOp(densityTerm->op);
+        if (!op) {
+            reportUnknownOp(context, *densityTerm, false);
+            return std::nullopt;
+        }
+        if (!checkArity(context, *densityTerm, transformOpInfo(*op).takesValue)) return std::nullopt;
+        out.op = *op;
+        if (densityTerm->value) {
+            auto value = readFloat(context, *densityTerm->value);
+            if (!value) return std::nullopt;
+            out.value = *value;
+        }
     }
-    if (!checkArity(context, term, transformOpInfo(*op).takesValue)) return std::nullopt;
-    TransformCell out{*op, 0.0f};
-    if (term.value) {
-        auto value = readFloat(context, *term.value);
-        if (!value) return std::nullopt;
-        out.value = *value;
+    if (materialTerm) {
+        auto material = readMaterialOperand(context, *materialTerm);
+        if (!material) return std::nullopt;
+        out.material = *material;
     }
     return out;
 }

@@ -16,11 +16,12 @@ namespace voxc::check {
 // Reports ragged rows or layers (E0005) and counts that disagree with `size` (E0004).
 std::optional<std::vector<const ast::Cell*>> readLayout(Context& context, const ast::Block& block, glm::ivec3 size);
 
-// `GEQ 0.5 & LT 0.9`: operator names (E0011), arity (E0006) and values. IGN terms are
-// dropped, since an empty predicate list already means IGN.
+// `GEQ 0.5 & LT 0.9 & MAT rock`: operator names (E0011), arity (E0006), values and material
+// names (E0002). IGN terms are dropped, since an empty predicate list already means IGN.
 std::optional<SymbolCell> convertSymbolCell(Context& context, const ast::Cell& cell);
 
-// `ADD -0.5`: exactly one operator per cell.
+// `ADD -0.5`, `MAT sand` or `SET 1 & MAT sand`: one density operator (NOP when only a material
+// is written) and at most one `MAT` (E0003 for a second).
 std::optional<TransformCell> convertTransformCell(Context& context, const ast::Cell& cell);
 
 } // namespace voxc::check

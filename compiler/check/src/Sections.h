@@ -35,20 +35,28 @@ std::optional<CheckedGrammar> checkGrammar(Context& context, const ast::Block& b
 
 // The stages after Start, as indices into `grammarNames` / `fieldNames`: every grammar and
 // field declared, in order, including those with errors, so that their names are not
-// reported as unknown as well. Field stages need a mode word: `subtract cave;`.
+// reported as unknown as well. Field stages need a mode word: `subtract cave;`, and may name
+// a material: `subtract cave material sand;`; without one a stage writes the material in
+// `fieldMaterials` (parallel to fieldNames: a feature's `material` key), if any.
 std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
                                  const std::vector<std::string>& grammarNames,
-                                 const std::vector<std::string>& fieldNames);
+                                 const std::vector<std::string>& fieldNames,
+                                 const std::vector<std::optional<uint8_t>>& fieldMaterials);
 
 // User functions and fields: every field's DAG in declaration order. Field names must differ
 // from each other, from `start` and from `grammarNames` (one namespace for pipeline stages).
 std::vector<Field> checkFields(Context& context, const ast::File& file, const std::vector<std::string>& grammarNames);
 
+struct CheckedFeatures {
+    std::vector<Field> fields;                    // the features that checked, declaration order
+    std::vector<std::optional<uint8_t>> materials; // each declared feature's `material` key
+};
+
 // Features (`feature name = arch { ... }`), each expanded into a field, in declaration order.
 // Their names share the namespace of fields and of `stageNames` (grammars); `seed` is the
 // world's, for generators that draw noise at check time.
-std::vector<Field> checkFeatures(Context& context, const ast::File& file, const std::vector<std::string>& stageNames,
-                                 uint32_t seed);
+CheckedFeatures checkFeatures(Context& context, const ast::File& file, const std::vector<std::string>& stageNames,
+                              uint32_t seed);
 
 // W0201-W0204 for one checked grammar.
 void analyseGrammar(Context& context, const CheckedGrammar& grammar);

@@ -193,6 +193,9 @@ ast::Block buildBlock(P::BlockContext& ctx) {
                 statement.mode = name->combine->getText();
                 statement.modeLoc = tokenLoc(*name->combine);
             }
+            if (name->clause && name->operand)
+                statement.clause = ast::StageClause{name->clause->getText(), tokenLoc(*name->clause),
+                                                    name->operand->getText(), tokenLoc(*name->operand)};
             block.names.push_back(std::move(statement));
         }
     }

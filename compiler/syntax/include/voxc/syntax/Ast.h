@@ -68,13 +68,22 @@ struct Row {
     std::vector<Cell> cells;
 };
 
+// `material sand` after a pipeline stage's name: a clause word and the name it takes.
+struct StageClause {
+    std::string word;
+    SourceLoc wordLoc;
+    std::string operand;
+    SourceLoc operandLoc;
+};
+
 // A bare `name;` statement, as in `pipeline { start; caves; }`, optionally preceded by a
-// mode word: `subtract cave;`.
+// mode word and followed by a clause: `subtract cave material sand;`.
 struct NameStatement {
     SourceLoc loc;
     std::string name;
     std::optional<std::string> mode;
     SourceLoc modeLoc;
+    std::optional<StageClause> clause;
 };
 
 // `kind label { ... }`. Members of each sort keep their written order.
