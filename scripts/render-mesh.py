@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Renders a binary PLY written by `voxc run` to a PNG (standard library only), for a quick
-look at a result and for the pictures in docs/. Usage: render-mesh.py MESH.ply OUT.png [--size 480]
+look at a result and for the pictures in docs/. Vertex colours (materials) are used when present. Usage: render-mesh.py MESH.ply OUT.png [--size 480]
 [--yaw 35] [--pitch 30]."""
 import argparse
 import math
@@ -8,7 +8,11 @@ import struct
 import zlib
 
 
+PLY_TYPES = {"float": "f", "uchar": "B", "int": "i", "uint": "I"}
+
+
 def read_ply(path):
+    """Positions, triangles and per-vertex colours (None when the file has no red/green/blue)."""
     with open(path, "rb") as f:
         header = b""
         while not header.endswith(b"end_header\n"):
@@ -16,13 +20,26 @@ def read_ply(path):
         lines = header.decode().splitlines()
         vertices = int(next(l for l in lines if l.startswith("element vertex")).split()[-1])
         faces = int(next(l for l in lines if l.startswith("element face")).split()[-1])
-        data = f.read(vertices * 24)
-        positions = [struct.unpack_from("<3f", data, i * 24) for i in range(vertices)]
+        start = next(i for i, l in enumerate(lines) if l.startswith("element vertex")) + 1
+        names, fmt = [], "<"
+        for line in lines[start:]:
+            if not line.startswith("property "):
+                break
+            _, kind, name = line.split()
+            names.append(name)
+            fmt += PLY_TYPES[kind]
+        stride = struct.calcsize(fmt)
+        data = f.read(vertices * stride)
+        records = [struct.unpack_from(fmt, data, i * stride) for i in range(vertices)]
+        positions = [tuple(r[names.index(k)] for k in "xyz") for r in records]
+        colours = None
+        if "red" in names:
+            colours = [tuple(r[names.index(k)] for k in ("red", "green", "blue")) for r in records]
         triangles = []
         for _ in range(faces):
             count = f.read(1)[0]
             triangles.append(struct.unpack("<%di" % count, f.read(4 * count)))
-    return positions, triangles
+    return positions, triangles, colours
 
 
 def write_png(path, width, height, rgb_rows):
@@ -37,7 +54,7 @@ def write_png(path, width, height, rgb_rows):
         f.write(png)
 
 
-def render(positions, triangles, size, yaw, pitch):
+def render(positions, triangles, colours, size, yaw, pitch):
     lo = [min(p[i] for p in positions) for i in range(3)]
     hi = [max(p[i] for p in positions) for i in range(3)]
     centre = [(lo[i] + hi[i]) / 2 for i in range(3)]
@@ -71,7 +88,11 @@ def render(positions, triangles, size, yaw, pitch):
         area = ux * vy - uy * vx
         if abs(area) < 1e-12:
             continue
-        colour = [int(60 + 150 * shade), int(55 + 140 * shade), int(50 + 120 * shade)]
+        if colours:  # the material's colour, lit
+            base = [sum(colours[i][k] for i in tri) / 3.0 for k in range(3)]
+            colour = [min(255, int(channel * (0.3 + 0.8 * shade))) for channel in base]
+        else:
+            colour = [int(60 + 150 * shade), int(55 + 140 * shade), int(50 + 120 * shade)]
         x0, x1 = max(int(min(a[0], b[0], c[0])), 0), min(int(max(a[0], b[0], c[0])) + 1, size - 1)
         y0, y1 = max(int(min(a[1], b[1], c[1])), 0), min(int(max(a[1], b[1], c[1])) + 1, size - 1)
         for py in range(y0, y1 + 1):
@@ -96,8 +117,8 @@ def main():
     parser.add_argument("--yaw", type=float, default=35)
     parser.add_argument("--pitch", type=float, default=30)
     args = parser.parse_args()
-    positions, triangles = read_ply(args.mesh)
-    write_png(args.png, args.size, args.size, render(positions, triangles, args.size, args.yaw, args.pitch))
+    positions, triangles, colours = read_ply(args.mesh)
+    write_png(args.png, args.size, args.size, render(positions, triangles, colours, args.size, args.yaw, args.pitch))
 
 
 if __name__ == "__main__":
