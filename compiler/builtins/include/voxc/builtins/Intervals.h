@@ -3,8 +3,10 @@
 // argument intervals, the interpreter's result (FunctionInfo::eval, float rounding included)
 // lies inside the rule's result. Kept beside the registry rather than in FunctionInfo so the
 // records stay unchanged; a function without a rule is unknown (every component (-inf, +inf)).
-// Rules that only pick or clamp inputs (min, max, clamp, abs, floor, select, density's
-// saturation) are exact, so a degenerate result proves an exact float; arithmetic widens.
+// The result also holds the GPU's value within the record's tolerance. A rule answers unknown
+// wherever the float result could be NaN (a NaN lies in no interval). Rules that only pick or
+// clamp inputs (min, max, clamp, abs, floor, select, density's saturation) are exact, so a
+// degenerate result proves an exact float; arithmetic widens.
 #include "voxc/program/Field.h"
 
 #include <glm/vec3.hpp>
