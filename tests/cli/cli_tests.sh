@@ -108,5 +108,40 @@ expect_no_file explore_no_png_after_error "$work/explore_bad.png"
 expect explore_bad_range 1 "STEP must be greater than 0" -- "$voxc" explore "$src/examples/terrain.vox" \
     --param ROCK --range 0:1:0
 
+# materials: per-material counts, the uint8 .npy, PLY colours, OBJ groups with a .mtl beside it
+cat > "$work/mat.vox" <<'EOF'
+material rock { id = 1; color = [0.42, 0.40, 0.38]; }
+material sand { color = [0.86, 0.78, 0.55]; }
+world { size = [24, 24, 24]; chunk = 8; }
+start {
+  fill { value = 0; }
+  box { min = [2, 2, 2]; max = [20, 12, 20]; material = rock; }
+  sphere { center = [12, 14, 12]; radius = 5; material = sand; }
+}
+EOF
+expect mat_run 0 "solid voxels by material: rock [0-9]+, sand [0-9]+" -- "$voxc" run "$work/mat.vox" --device lavapipe \
+    -o "$work/mat.obj" --materials "$work/mat_run.npy"
+expect mat_skipped_chunks 0 "skipped [1-9][0-9]* of 64 chunks with no surface" -- "$voxc" run "$work/mat.vox" \
+    --device lavapipe -o "$work/mat.ply"
+expect mat_npy 0 "'descr': '\|u1'.*'shape': \(24, 24, 24\)" -- \
+    bash -c 'head -c 128 "$1" | tr -d "\\000"' _ "$work/mat_run.npy"
+expect mat_obj_mtllib 0 "^mtllib mat\.mtl$" -- cat "$work/mat.obj"
+expect mat_obj_usemtl 0 "^usemtl sand$" -- cat "$work/mat.obj"
+expect mat_mtl 0 "^newmtl rock$" -- cat "$work/mat.mtl"
+expect mat_ply_header 0 "property uchar material" -- sed '/^end_header$/q' "$work/mat.ply"
+expect mat_interp 0 "solid voxels by material: rock" -- "$voxc" interp "$work/mat.vox" --materials "$work/mat_interp.npy"
+if cmp -s "$work/mat_run.npy" "$work/mat_interp.npy"; then
+    echo "ok   same_materials"; passed=$((passed + 1))
+else
+    echo "FAIL same_materials: run and interp materials differ"; failed=$((failed + 1))
+fi
+expect mat_bad_ext 1 "must end in \.npy" -- "$voxc" interp "$work/mat.vox" --materials "$work/mat.txt"
+expect mat_unwritable_npy 1 "cannot write" -- "$voxc" run "$work/mat.vox" --device lavapipe \
+    --materials "$work/no-dir/m.npy"
+expect_no_file mat_no_partial_npy "$work/no-dir"
+mkdir "$work/taken.obj"
+expect mat_unwritable_obj 1 "cannot write" -- "$voxc" run "$work/mat.vox" --device lavapipe -o "$work/taken.obj"
+expect_no_file mat_no_partial_mtl "$work/taken.mtl"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

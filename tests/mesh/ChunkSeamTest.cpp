@@ -1,5 +1,5 @@
 // Chunking must not show in the mesh: shapes straddling chunk borders, at negative and far
-// origins, give the same vertices and triangles in the same order for every chunk size.
+// origins, give the same vertices, triangles and materials in the same order for every chunk size.
 #include "TestGrids.h"
 #include "voxc/mesh/SurfaceNets.h"
 
@@ -43,21 +43,34 @@ std::vector<Triangle> triangleSet(const Mesh& mesh) {
 
 class mesh_ChunkSeams : public testing::TestWithParam<glm::ivec3> {};
 
+// Materials in slanted bands, so every chunk border cuts through several of them.
+ChunkedGrid straddlingGrid(glm::ivec3 origin, int32_t chunkSize) {
+    ChunkedGrid grid = makeGrid(origin, kSize, chunkSize, straddlingShape(origin));
+    test::paintMaterials(grid, [&](glm::ivec3 p) {
+        const glm::ivec3 q = p - origin;
+        return uint8_t(1 + (q.x + 2 * q.y + q.z) / 7 % 5);
+    });
+    return grid;
+}
+
 TEST_P(mesh_ChunkSeams, meshIsIdenticalForEveryChunkSize) {
     const glm::ivec3 origin = GetParam();
-    const Mesh reference = meshSurfaceNets(makeGrid(origin, kSize, 8, straddlingShape(origin)), 0.5f);
+    const Mesh reference = meshSurfaceNets(straddlingGrid(origin, 8), 0.5f);
     const MeshTopology topology = analyzeTopology(reference);
     EXPECT_TRUE(topology.watertight());
     EXPECT_EQ(topology.duplicateTriangles, 0u);
     EXPECT_EQ(topology.misorientedEdges, 0u);
     ASSERT_GT(reference.triangles.size(), 1000u);
     const std::vector<Triangle> referenceSet = triangleSet(reference);
+    ASSERT_NE(std::count(reference.triangleMaterials.begin(), reference.triangleMaterials.end(), uint8_t(5)), 0);
     for (int32_t chunkSize : {16, 32}) {
-        const Mesh mesh = meshSurfaceNets(makeGrid(origin, kSize, chunkSize, straddlingShape(origin)), 0.5f);
+        const Mesh mesh = meshSurfaceNets(straddlingGrid(origin, chunkSize), 0.5f);
         EXPECT_EQ(triangleSet(mesh), referenceSet) << "chunk size " << chunkSize;
         EXPECT_EQ(mesh.positions, reference.positions) << "chunk size " << chunkSize;
         EXPECT_EQ(mesh.normals, reference.normals) << "chunk size " << chunkSize;
         EXPECT_EQ(mesh.triangles, reference.triangles) << "chunk size " << chunkSize;
+        EXPECT_EQ(mesh.vertexMaterials, reference.vertexMaterials) << "chunk size " << chunkSize;
+        EXPECT_EQ(mesh.triangleMaterials, reference.triangleMaterials) << "chunk size " << chunkSize;
     }
 }
 

@@ -4,9 +4,12 @@
 #include "voxc/mesh/Export.h"
 #include "voxc/mesh/SurfaceNets.h"
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <map>
+#include <set>
 #include <sstream>
 
 namespace voxc {
@@ -95,6 +98,127 @@ TEST(mesh_Export, malformedPlyIsAUserError) {
     writeFileAtomically(good, bytes.substr(0, bytes.size() - 5));
     EXPECT_THROW(readPly(good), UserError);
     EXPECT_THROW(readPly(dir + "mesh_missing.ply"), UserError);
+}
+
+// A ball whose lower half is rock (1) and upper half sand (2), plus one vertex of an undeclared id.
+Mesh materialBallMesh() {
+    ChunkedGrid grid = test::makeGrid({-4, 0, 7}, {12, 11, 13}, 8, test::coneBall({1.5f, 5.2f, 13.1f}, 9.0f));
+    test::paintMaterials(grid, [](glm::ivec3 p) { return uint8_t(p.y < 5 ? 1 : p.y < 8 ? 2 : 7); });
+    return meshSurfaceNets(grid, 0.5f);
+}
+
+std::vector<Material> rockAndSand() {
+    Material rock{.name = "rock", .loc = {}, .id = 1, .color = {1.0f, 0.5f, 0.0f}};
+    Material sand{.name = "sand", .loc = {}, .id = 2, .color = {0.2f, 0.4f, 0.6f}};
+    return {rock, sand};
+}
+
+TEST(mesh_Export, plyCarriesVertexMaterialsAndColours) {
+    const Mesh mesh = materialBallMesh();
+    const std::string path = testing::TempDir() + "mesh_materials.ply";
+    writePly(path, mesh, rockAndSand());
+    const std::string bytes = readText(path);
+    const std::string header = bytes.substr(0, bytes.find("end_header\n") + 11);
+    EXPECT_NE(header.find("property float nz\nproperty uchar material\nproperty uchar red\nproperty uchar green\n"
+                          "property uchar blue\nelement face"),
+              std::string::npos);
+    EXPECT_EQ(bytes.size(), header.size() + mesh.positions.size() * 28 + mesh.triangles.size() / 3 * 13);
+    const Mesh back = readPly(path);
+    EXPECT_EQ(back.positions, mesh.positions);
+    EXPECT_EQ(back.triangles, mesh.triangles);
+    EXPECT_EQ(back.vertexMaterials, mesh.vertexMaterials);
+    // Colours: rock (255,128,0), sand (51,102,153), undeclared id 7 grey (153,153,153).
+    const std::map<uint8_t, std::array<uint8_t, 3>> colors = {{1, {255, 128, 0}}, {2, {51, 102, 153}}, {7, {153, 153, 153}}};
+    std::set<uint8_t> seen;
+    for (size_t v = 0; v < mesh.positions.size(); ++v) {
+        const char* record = bytes.data() + header.size() + v * 28 + 24;
+        const uint8_t id = uint8_t(record[0]);
+        seen.insert(id);
+        ASSERT_TRUE(colors.count(id)) << int(id);
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(uint8_t(record[1 + c]), colors.at(id)[size_t(c)]);
+    }
+    EXPECT_EQ(seen, (std::set<uint8_t>{1, 2, 7}));
+}
+
+// A plain mesh and no material list keep the plain format; a material list alone turns it on.
+TEST(mesh_Export, materialPropertiesOnlyWhenUsed) {
+    const std::string path = testing::TempDir() + "mesh_plain.ply";
+    writePly(path, ballMesh());
+    EXPECT_EQ(readText(path).find("material"), std::string::npos);
+    EXPECT_TRUE(readPly(path).vertexMaterials.empty());
+    writePly(path, ballMesh(), rockAndSand());
+    EXPECT_NE(readText(path).find("property uchar material"), std::string::npos);
+    EXPECT_EQ(readPly(path).vertexMaterials, std::vector<uint8_t>(ballMesh().positions.size(), 0));
+    const std::string obj = testing::TempDir() + "mesh_plain.obj";
+    writeObj(obj, ballMesh());
+    EXPECT_EQ(readText(obj).find("mtllib"), std::string::npos);
+}
+
+TEST(mesh_Export, objGroupsFacesByMaterialWithALibraryBesideIt) {
+    const Mesh mesh = materialBallMesh();
+    const std::string dir = testing::TempDir() + "mesh_obj_materials/";
+    std::filesystem::create_directories(dir);
+    writeMesh(dir + "ball.OBJ", mesh, rockAndSand());
+    ASSERT_TRUE(std::filesystem::exists(dir + "ball.mtl"));
+    EXPECT_EQ(readText(dir + "ball.mtl"),
+              "# voxc materials\nnewmtl rock\nKd 1 0.5 0\nnewmtl sand\nKd 0.2 0.4 0.6\nnewmtl material7\nKd 0.6 0.6 0.6\n");
+
+    std::istringstream lines(readText(dir + "ball.OBJ"));
+    std::string line, group;
+    std::vector<std::string> groups;
+    std::map<std::string, uint8_t> ids = {{"rock", 1}, {"sand", 2}, {"material7", 7}};
+    size_t faces = 0;
+    bool libraryNamed = false;
+    while (std::getline(lines, line)) {
+        if (line == "mtllib ball.mtl") libraryNamed = true;
+        if (line.rfind("g ", 0) == 0) {
+            group = line.substr(2);
+            groups.push_back(group);
+            ASSERT_TRUE(std::getline(lines, line));
+            EXPECT_EQ(line, "usemtl " + group);
+        }
+        if (line.rfind("f ", 0) != 0) continue;
+        ASSERT_FALSE(group.empty()) << "a face before the first group";
+        // Faces keep their order within a group: find this face's triangle index.
+        std::istringstream words(line.substr(2));
+        std::string corner;
+        uint32_t indices[3];
+        for (uint32_t& index : indices) {
+            words >> corner;
+            index = uint32_t(std::stoul(corner.substr(0, corner.find("//")))) - 1;
+        }
+        size_t t = 0;
+        while (t < mesh.triangleMaterials.size() &&
+               !(mesh.triangles[t * 3] == indices[0] && mesh.triangles[t * 3 + 1] == indices[1] && mesh.triangles[t * 3 + 2] == indices[2]))
+            ++t;
+        ASSERT_LT(t, mesh.triangleMaterials.size()) << line;
+        EXPECT_EQ(mesh.triangleMaterials[t], ids.at(group)) << line;
+        ++faces;
+    }
+    EXPECT_TRUE(libraryNamed);
+    EXPECT_EQ(groups, (std::vector<std::string>{"rock", "sand", "material7"}));
+    EXPECT_EQ(faces, mesh.triangles.size() / 3);
+}
+
+TEST(mesh_Export, objMaterialGroupOfNoneWhenOnlyTheListIsGiven) {
+    const std::string path = testing::TempDir() + "mesh_none.obj";
+    writeObj(path, ballMesh(), rockAndSand());
+    const std::string text = readText(path);
+    EXPECT_NE(text.find("mtllib mesh_none.mtl\n"), std::string::npos);
+    EXPECT_NE(text.find("g none\nusemtl none\n"), std::string::npos);
+    EXPECT_EQ(readText(testing::TempDir() + "mesh_none.mtl"), "# voxc materials\nnewmtl none\nKd 0.6 0.6 0.6\n");
+}
+
+TEST(mesh_Export, unwritableObjLeavesNoFiles) {
+    const std::string dir = testing::TempDir() + "mesh_no_such_dir/";
+    EXPECT_THROW(writeObj(dir + "x.obj", materialBallMesh(), rockAndSand()), UserError);
+    EXPECT_THROW(writePly(dir + "x.ply", materialBallMesh(), rockAndSand()), UserError);
+    EXPECT_FALSE(std::filesystem::exists(dir));
+    // The OBJ's name is taken by a directory: the library written before it is removed again.
+    const std::string taken = testing::TempDir() + "mesh_taken.obj";
+    std::filesystem::create_directories(taken);
+    EXPECT_THROW(writeObj(taken, materialBallMesh(), rockAndSand()), UserError);
+    EXPECT_FALSE(std::filesystem::exists(testing::TempDir() + "mesh_taken.mtl"));
 }
 
 } // namespace

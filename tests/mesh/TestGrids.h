@@ -16,6 +16,14 @@ inline ChunkedGrid makeGrid(glm::ivec3 origin, glm::ivec3 size, int32_t chunkSiz
     return grid;
 }
 
+// Sets every voxel's material from its world position.
+inline void paintMaterials(ChunkedGrid& grid, const std::function<uint8_t(glm::ivec3)>& material) {
+    const ChunkLayout& layout = grid.layout();
+    for (int z = 0; z < layout.gridSize.z; ++z)
+        for (int y = 0; y < layout.gridSize.y; ++y)
+            for (int x = 0; x < layout.gridSize.x; ++x) grid.materialAt({x, y, z}) = material(layout.gridOrigin + glm::ivec3(x, y, z));
+}
+
 // Falls linearly from 1 at the centre to 0 at `falloff`, so the iso-level t sits at radius falloff*(1-t).
 inline std::function<float(glm::vec3)> coneBall(glm::vec3 centre, float falloff) {
     return [=](glm::vec3 p) { return glm::max(0.0f, 1.0f - glm::length(p - centre) / falloff); };

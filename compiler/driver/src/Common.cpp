@@ -4,6 +4,7 @@
 #include "voxc/core/Errors.h"
 #include "voxc/syntax/Diagnostics.h"
 
+#include <array>
 #include <fmt/format.h>
 #include <iostream>
 
@@ -35,6 +36,21 @@ Program loadProgram(const std::string& path, const WorldOverrides& overrides, bo
         program.world.chunkSize = c;
     }
     return program;
+}
+
+std::string formatMaterialCounts(const Program& program, const DenseGrid& grid, float iso) {
+    std::array<size_t, 256> counts{};
+    for (size_t i = 0; i < grid.data().size(); ++i)
+        if (grid.data()[i] > iso) ++counts[grid.materials()[i]];
+    std::string line = "solid voxels by material:";
+    for (size_t id = 0; id < counts.size(); ++id) {
+        if (counts[id] == 0) continue;
+        const Material* material = program.findMaterial(uint8_t(id));
+        const std::string name = id == kMaterialNone ? "none" : material ? material->name : fmt::format("material{}", id);
+        line += fmt::format("{} {} {}", line.back() == ':' ? "" : ",", name, counts[id]);
+    }
+    if (line.back() == ':') line += " (no solid voxels)";
+    return line + "\n";
 }
 
 void requireExtension(const std::string& path, std::initializer_list<const char*> extensions, const char* what) {

@@ -1,6 +1,7 @@
 #pragma once
 // Helpers every verb shares: loading and checking a file, printing diagnostics, and the
 // flags that override the file's world settings.
+#include "voxc/grid/Grid.h"
 #include "voxc/program/Program.h"
 
 #include <CLI/CLI.hpp>
@@ -19,6 +20,10 @@ void addWorldOverrideFlags(CLI::App& command, WorldOverrides& overrides);
 // Parses and checks `path`, prints every diagnostic to stderr and throws UserError when there
 // are errors (the message says how many). Applies the overrides to the checked program.
 Program loadProgram(const std::string& path, const WorldOverrides& overrides, bool warningsAsErrors = false);
+
+// One line counting the solid voxels (density > iso) of each material id, ascending id, e.g.
+// "solid voxels by material: none 12, rock 5120, sand 733"; materials with no solid voxel are left out.
+std::string formatMaterialCounts(const Program& program, const DenseGrid& grid, float iso);
 
 // Output file names: the extension must be one of `extensions` (e.g. {".ply", ".obj"}).
 void requireExtension(const std::string& path, std::initializer_list<const char*> extensions, const char* what);

@@ -15,6 +15,7 @@ namespace {
 struct InterpOptions {
     std::string file;
     std::string voxelsPath;
+    std::string materialsPath;
     bool trace = false;
     TraceFilter filter;
     std::optional<uint64_t> traceLimit;
@@ -70,9 +71,15 @@ void interpretFile(const InterpOptions& options) {
     if (trace)
         std::cout << fmt::format("{} firings matched the trace filter ({} printed)\n", fired, printed);
     if (slice) std::cout << renderSlice(grid, slice->axis, slice->index);
+    // Solid as the mesh of `voxc run` sees it at its default --iso.
+    if (program.usesMaterials()) std::cerr << formatMaterialCounts(program, grid, 0.5f);
     if (!options.voxelsPath.empty()) {
         writeNpy(options.voxelsPath, grid);
         std::cerr << "wrote " << options.voxelsPath << "\n";
+    }
+    if (!options.materialsPath.empty()) {
+        writeMaterialNpy(options.materialsPath, grid);
+        std::cerr << "wrote " << options.materialsPath << "\n";
     }
 }
 
@@ -83,7 +90,8 @@ void addInterpCommand(CLI::App& app) {
     CLI::App* command = app.add_subcommand(
         "interp", "Run a .vox file with the CPU interpreter (the reference), with tracing and slices");
     command->add_option("file", options->file, "The .vox file")->required();
-    command->add_option("--voxels", options->voxelsPath, "Write the densities as a NumPy .npy file");
+    command->add_option("--voxels", options->voxelsPath, "Write the densities as a NumPy .npy file (float32)");
+    command->add_option("--materials", options->materialsPath, "Write the material ids as a NumPy .npy file (uint8)");
     command->add_flag("--trace", options->trace, "Print every rule firing (iteration, sweep, phase, anchor, rule)");
     command->add_option("--trace-rule", options->filter.rule, "Trace only this rule");
     command->add_option("--trace-grammar", options->filter.grammar, "Trace only this grammar");
@@ -93,6 +101,7 @@ void addInterpCommand(CLI::App& app) {
     addWorldOverrideFlags(*command, options->overrides);
     command->callback([options] {
         if (!options->voxelsPath.empty()) requireExtension(options->voxelsPath, {".npy"}, "voxel file");
+        if (!options->materialsPath.empty()) requireExtension(options->materialsPath, {".npy"}, "material file");
         interpretFile(*options);
     });
 }

@@ -20,6 +20,7 @@ struct RunOptions {
     std::string file;
     std::string meshPath;
     std::string voxelsPath;
+    std::string materialsPath;
     std::string device = "auto";
     float iso = 0.5f;
     bool validate = false;
@@ -33,10 +34,11 @@ void run(const RunOptions& options) {
         return;
     }
     if (options.file.empty()) throw UserError("run: a .vox file is required");
-    if (options.meshPath.empty() && options.voxelsPath.empty())
-        throw UserError("run: nothing to write; give -o MESH.ply|.obj and/or --voxels FILE.npy");
+    if (options.meshPath.empty() && options.voxelsPath.empty() && options.materialsPath.empty())
+        throw UserError("run: nothing to write; give -o MESH.ply|.obj, --voxels FILE.npy and/or --materials FILE.npy");
     if (!options.meshPath.empty()) requireExtension(options.meshPath, {".ply", ".obj"}, "mesh file");
     if (!options.voxelsPath.empty()) requireExtension(options.voxelsPath, {".npy"}, "voxel file");
+    if (!options.materialsPath.empty()) requireExtension(options.materialsPath, {".npy"}, "material file");
 
     const Program program = loadProgram(options.file, options.overrides);
     const KernelPackage package = codegen::compileProgram(program, {});
@@ -55,22 +57,32 @@ void run(const RunOptions& options) {
                                  100.0 * double(result.skip.activeTilePhases) / double(result.skip.tilePhases),
                                  result.skip.tileSize);
 
-    if (!options.voxelsPath.empty()) {
-        writeNpy(options.voxelsPath, voxels.toDense());
-        std::cerr << "wrote " << options.voxelsPath << "\n";
+    if (!options.voxelsPath.empty() || !options.materialsPath.empty() || program.usesMaterials()) {
+        const DenseGrid dense = voxels.toDense();
+        if (program.usesMaterials()) std::cerr << formatMaterialCounts(program, dense, options.iso);
+        if (!options.voxelsPath.empty()) {
+            writeNpy(options.voxelsPath, dense);
+            std::cerr << "wrote " << options.voxelsPath << "\n";
+        }
+        if (!options.materialsPath.empty()) {
+            writeMaterialNpy(options.materialsPath, dense);
+            std::cerr << "wrote " << options.materialsPath << "\n";
+        }
     }
     if (!options.meshPath.empty()) {
-        const Mesh mesh = meshSurfaceNets(voxels, options.iso);
+        MeshStats stats;
+        const Mesh mesh = meshSurfaceNets(voxels, MeshOptions{.iso = options.iso}, &stats);
         // Naive surface nets joins four faces at a saddle of the density field, so "watertight"
         // here means closed (no boundary edge, no crack) without duplicate faces.
         const MeshTopology topology = analyzeTopology(mesh);
         if (!topology.closed() || topology.duplicateTriangles != 0)
             throw InternalError(fmt::format("the mesh has {} boundary edges and {} duplicate faces",
                                             topology.boundaryEdges, topology.duplicateTriangles));
-        writeMesh(options.meshPath, mesh);
-        std::cerr << fmt::format("wrote {}: {} vertices, {} triangles, watertight ({} non-manifold edges at saddles)\n",
+        writeMesh(options.meshPath, mesh, program.materials);
+        std::cerr << fmt::format("wrote {}: {} vertices, {} triangles, watertight ({} non-manifold edges at saddles); "
+                                 "skipped {} of {} chunks with no surface\n",
                                  options.meshPath, mesh.positions.size(), mesh.triangles.size() / 3,
-                                 topology.nonManifoldEdges);
+                                 topology.nonManifoldEdges, stats.skippedChunks, stats.chunks);
     }
     if (options.validate) {
         const std::vector<ValidationMessage> messages = context.validationMessages();
@@ -86,10 +98,12 @@ void run(const RunOptions& options) {
 void addRunCommand(CLI::App& app) {
     auto options = std::make_shared<RunOptions>();
     CLI::App* command =
-        app.add_subcommand("run", "Compile a .vox file, run it with Vulkan, mesh the result and export it");
+        app.add_subcommand("run", "Compile a .vox file, run it with Vulkan, mesh the result and export it "
+                                  "(with material names and colours)");
     command->add_option("file", options->file, "The .vox file");
     command->add_option("-o,--output", options->meshPath, "Mesh to write (.ply binary or .obj)");
-    command->add_option("--voxels", options->voxelsPath, "Also write the densities as a NumPy .npy file");
+    command->add_option("--voxels", options->voxelsPath, "Also write the densities as a NumPy .npy file (float32)");
+    command->add_option("--materials", options->materialsPath, "Also write the material ids as a NumPy .npy file (uint8)");
     command->add_option("--device", options->device, "auto (default: a GPU if present), lavapipe, gpu, or an index");
     command->add_option("--iso", options->iso, "Surface level for meshing (default 0.5)");
     command->add_flag("--validate", options->validate, "Enable the Khronos validation layer; fail on any message");

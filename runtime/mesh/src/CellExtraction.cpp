@@ -5,27 +5,28 @@
 namespace voxc::surface_nets {
 namespace {
 
-// Densities of a chunk's cells plus a one-sample margin on every side (the extra sample on
-// the low side and the second one on the high side feed the central-difference gradients).
+// Densities and materials of a chunk's cells plus a one-sample margin on every side (the extra
+// sample on the low side and the second one on the high side feed the central-difference gradients).
 class SampleBlock {
 public:
     SampleBlock(const ChunkedGrid& grid, glm::ivec3 first, glm::ivec3 extent) : first_(first), extent_(extent) {
-        values_.resize(size_t(extent.x) * size_t(extent.y) * size_t(extent.z));
+        const size_t count = size_t(extent.x) * size_t(extent.y) * size_t(extent.z);
+        values_.resize(count);
+        materials_.resize(count);
         const glm::ivec3 gridSize = grid.layout().gridSize;
         size_t i = 0;
         for (int z = 0; z < extent.z; ++z)
             for (int y = 0; y < extent.y; ++y)
-                for (int x = 0; x < extent.x; ++x) {
+                for (int x = 0; x < extent.x; ++x, ++i) {
                     const glm::ivec3 p = first + glm::ivec3(x, y, z);
                     const bool inside = glm::all(glm::greaterThanEqual(p, glm::ivec3(0))) && glm::all(glm::lessThan(p, gridSize));
-                    values_[i++] = inside ? grid.at(p) : 0.0f; // outside the grid is air
+                    values_[i] = inside ? grid.at(p) : 0.0f; // outside the grid is air
+                    materials_[i] = inside ? grid.materialAt(p) : kMaterialNone;
                 }
     }
 
-    float at(glm::ivec3 local) const {
-        const glm::ivec3 q = local - first_;
-        return values_[size_t(q.x) + size_t(extent_.x) * (size_t(q.y) + size_t(extent_.y) * size_t(q.z))];
-    }
+    float at(glm::ivec3 local) const { return values_[index(local)]; }
+    uint8_t materialAt(glm::ivec3 local) const { return materials_[index(local)]; }
 
     glm::vec3 gradient(glm::ivec3 p) const {
         return 0.5f * glm::vec3(at(p + glm::ivec3(1, 0, 0)) - at(p - glm::ivec3(1, 0, 0)),
@@ -34,8 +35,14 @@ public:
     }
 
 private:
+    size_t index(glm::ivec3 local) const {
+        const glm::ivec3 q = local - first_;
+        return size_t(q.x) + size_t(extent_.x) * (size_t(q.y) + size_t(extent_.y) * size_t(q.z));
+    }
+
     glm::ivec3 first_, extent_;
     std::vector<float> values_;
+    std::vector<uint8_t> materials_;
 };
 
 // Corner i of a cell is at offset (i&1, (i>>1)&1, (i>>2)&1).
@@ -65,19 +72,56 @@ CellVertex makeVertex(const SampleBlock& block, glm::ivec3 cell, glm::ivec3 worl
     }
     const float length = glm::length(gradient);
     const glm::vec3 normal = length > 0.0f ? -gradient / length : glm::vec3(0.0f);
-    return {0, glm::vec3(world) + inCell, normal};
+    return {0, glm::vec3(world) + inCell, normal, kMaterialNone};
+}
+
+// The most common material among the solid corners; ties go to the lowest id.
+uint8_t majorityMaterial(const SampleBlock& block, glm::ivec3 cell, unsigned solid) {
+    uint8_t materials[8];
+    int count = 0;
+    for (int i = 0; i < 8; ++i)
+        if ((solid >> i) & 1) materials[count++] = block.materialAt(cell + cornerOffset(i));
+    uint8_t best = kMaterialNone;
+    int bestVotes = 0;
+    for (int i = 0; i < count; ++i) {
+        int votes = 0;
+        for (int j = 0; j < count; ++j) votes += materials[j] == materials[i];
+        if (votes > bestVotes || (votes == bestVotes && materials[i] < best)) {
+            best = materials[i];
+            bestVotes = votes;
+        }
+    }
+    return best;
 }
 
 } // namespace
 
+CellRange chunkCells(const ChunkLayout& layout, glm::ivec3 worldChunk) {
+    const glm::ivec3 chunkFirst = worldChunk * layout.chunkSize - layout.gridOrigin; // grid-local
+    return {glm::max(chunkFirst, glm::ivec3(-1)), glm::min(chunkFirst + layout.chunkSize, layout.gridSize)};
+}
+
+bool cellsAreUniform(const ChunkedGrid& grid, float iso, const CellRange& cells) {
+    const glm::ivec3 gridSize = grid.layout().gridSize;
+    auto solidAt = [&](glm::ivec3 p) {
+        const bool inside = glm::all(glm::greaterThanEqual(p, glm::ivec3(0))) && glm::all(glm::lessThan(p, gridSize));
+        return (inside ? grid.at(p) : 0.0f) > iso; // outside the grid reads as density 0, as in SampleBlock
+    };
+    const bool first = solidAt(cells.begin);
+    for (int z = cells.begin.z; z <= cells.end.z; ++z)
+        for (int y = cells.begin.y; y <= cells.end.y; ++y)
+            for (int x = cells.begin.x; x <= cells.end.x; ++x)
+                if (solidAt({x, y, z}) != first) return false;
+    return true;
+}
+
 ChunkSurface extractChunk(const ChunkedGrid& grid, float iso, glm::ivec3 worldChunk) {
     const ChunkLayout& layout = grid.layout();
     const CellDomain domain{layout.gridSize};
-    const glm::ivec3 chunkFirst = worldChunk * layout.chunkSize - layout.gridOrigin; // grid-local
-    const glm::ivec3 cellBegin = glm::max(chunkFirst, glm::ivec3(-1));
-    const glm::ivec3 cellEnd = glm::min(chunkFirst + layout.chunkSize, layout.gridSize);
+    const CellRange cells = chunkCells(layout, worldChunk);
+    const glm::ivec3 cellBegin = cells.begin, cellEnd = cells.end;
     ChunkSurface surface;
-    if (glm::any(glm::greaterThanEqual(cellBegin, cellEnd))) return surface;
+    if (cells.empty()) return surface;
     const SampleBlock block(grid, cellBegin - 1, cellEnd - cellBegin + 3);
 
     for (int z = cellBegin.z; z < cellEnd.z; ++z)
@@ -93,6 +137,7 @@ ChunkSurface extractChunk(const ChunkedGrid& grid, float iso, glm::ivec3 worldCh
                 if (solid == 0 || solid == 0xffu) continue;
                 CellVertex vertex = makeVertex(block, cell, layout.gridOrigin + cell, density, solid, iso);
                 vertex.cell = domain.key(cell);
+                vertex.material = majorityMaterial(block, cell, solid);
                 surface.vertices.push_back(vertex);
 
                 // The three grid edges leaving this cell's minimum corner belong to this cell.
@@ -106,7 +151,8 @@ ChunkSurface extractChunk(const ChunkedGrid& grid, float iso, glm::ivec3 worldCh
                     // Edges on the grid's low faces lie wholly in the outside air (for iso >= 0);
                     // skipping them keeps every quad's four cells inside the cell domain.
                     if (cell[u] < 0 || cell[v] < 0) continue;
-                    EdgeQuad quad{domain.key(cell) * 3 + uint64_t(axis), {}};
+                    const glm::ivec3 solidVoxel = cell + (solidAtMin ? glm::ivec3(0) : cornerOffset(1 << axis));
+                    EdgeQuad quad{domain.key(cell) * 3 + uint64_t(axis), {}, block.materialAt(solidVoxel)};
                     // Counter-clockwise around +axis; reversed when the solid lies on the + side.
                     const glm::ivec3 ring[4] = {cell - eu - ev, cell - ev, cell, cell - eu};
                     for (int k = 0; k < 4; ++k) quad.cells[k] = domain.key(ring[solidAtMin ? k : (4 - k) % 4]);

@@ -4,6 +4,7 @@
 #include "voxc/grid/Grid.h"
 
 #include <cstdint>
+#include <glm/vector_relational.hpp>
 #include <vector>
 
 namespace voxc::surface_nets {
@@ -22,6 +23,7 @@ struct CellVertex {
     uint64_t cell;
     glm::vec3 position;
     glm::vec3 normal; // zero when the field gradient vanishes; the merge fills it from the faces
+    uint8_t material;  // most common among the cell's solid corners, ties to the lowest id
 };
 
 // The quad around a crossed grid edge, which starts at the minimum corner of `cells[2]`.
@@ -29,12 +31,25 @@ struct CellVertex {
 struct EdgeQuad {
     uint64_t edge; // cell key * 3 + axis: a global, chunk-independent order
     uint64_t cells[4];
+    uint8_t material; // of the edge's solid voxel
 };
 
 struct ChunkSurface {
     std::vector<CellVertex> vertices;
     std::vector<EdgeQuad> quads;
 };
+
+// Grid-local cells [begin, end) whose minimum corner lies in world chunk `worldChunk`; empty
+// (some begin >= end) when the chunk holds no cell.
+struct CellRange {
+    glm::ivec3 begin, end;
+    bool empty() const { return glm::any(glm::greaterThanEqual(begin, end)); }
+};
+CellRange chunkCells(const ChunkLayout& layout, glm::ivec3 worldChunk);
+
+// True when every voxel the cells read (their corners, [begin, end] inclusive, outside the grid
+// air) is on one side of iso: then no cell is crossed and the chunk has no surface.
+bool cellsAreUniform(const ChunkedGrid& grid, float iso, const CellRange& cells);
 
 // Extracts the cells whose minimum corner lies in world chunk `worldChunk` of the grid's layout.
 ChunkSurface extractChunk(const ChunkedGrid& grid, float iso, glm::ivec3 worldChunk);

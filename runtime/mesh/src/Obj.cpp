@@ -1,3 +1,4 @@
+#include "MaterialLook.h"
 #include "voxc/core/AtomicWrite.h"
 #include "voxc/core/Errors.h"
 #include "voxc/mesh/Export.h"
@@ -7,29 +8,75 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <iterator>
+#include <set>
 
 namespace voxc {
 
-void writeObj(const std::string& path, const Mesh& mesh) {
-    VOXC_ASSERT(mesh.normals.size() == mesh.positions.size() && mesh.triangles.size() % 3 == 0);
+namespace {
+
+void appendFace(fmt::memory_buffer& out, const Mesh& mesh, size_t triangle) {
+    const uint32_t a = mesh.triangles[triangle * 3] + 1, b = mesh.triangles[triangle * 3 + 1] + 1, c = mesh.triangles[triangle * 3 + 2] + 1;
+    fmt::format_to(std::back_inserter(out), "f {}//{} {}//{} {}//{}\n", a, a, b, b, c, c);
+}
+
+// One `newmtl` per id the faces use, ascending; Kd is the only property viewers need here.
+std::string materialLibrary(const std::set<uint8_t>& ids, std::span<const Material> materials) {
     fmt::memory_buffer out;
-    fmt::format_to(std::back_inserter(out), "# voxc surface nets: {} vertices, {} triangles\n", mesh.positions.size(),
-                   mesh.triangles.size() / 3);
+    fmt::format_to(std::back_inserter(out), "# voxc materials\n");
+    for (uint8_t id : ids) {
+        const mesh_export::MaterialLook look = mesh_export::lookOf(id, materials);
+        fmt::format_to(std::back_inserter(out), "newmtl {}\nKd {} {} {}\n", look.name, look.color.r, look.color.g, look.color.b);
+    }
+    return std::string(out.data(), out.size());
+}
+
+} // namespace
+
+void writeObj(const std::string& path, const Mesh& mesh, std::span<const Material> materials) {
+    VOXC_ASSERT(mesh.normals.size() == mesh.positions.size() && mesh.triangles.size() % 3 == 0);
+    const size_t triangleCount = mesh.triangles.size() / 3;
+    const bool withMaterials = mesh_export::writesMaterials(mesh, materials);
+    std::set<uint8_t> ids;
+    if (withMaterials)
+        for (size_t t = 0; t < triangleCount; ++t) ids.insert(mesh_export::triangleMaterial(mesh, t));
+
+    fmt::memory_buffer out;
+    fmt::format_to(std::back_inserter(out), "# voxc surface nets: {} vertices, {} triangles\n", mesh.positions.size(), triangleCount);
+    const std::filesystem::path objPath(path);
+    const std::string library = objPath.stem().string() + ".mtl";
+    const std::string libraryPath = (objPath.parent_path() / library).string();
+    if (withMaterials) fmt::format_to(std::back_inserter(out), "mtllib {}\n", library);
     // {} prints the shortest text that reads back as the same float.
     for (const glm::vec3& p : mesh.positions) fmt::format_to(std::back_inserter(out), "v {} {} {}\n", p.x, p.y, p.z);
     for (const glm::vec3& n : mesh.normals) fmt::format_to(std::back_inserter(out), "vn {} {} {}\n", n.x, n.y, n.z);
-    for (size_t t = 0; t < mesh.triangles.size(); t += 3) {
-        const uint32_t a = mesh.triangles[t] + 1, b = mesh.triangles[t + 1] + 1, c = mesh.triangles[t + 2] + 1;
-        fmt::format_to(std::back_inserter(out), "f {}//{} {}//{} {}//{}\n", a, a, b, b, c, c);
+    if (!withMaterials) {
+        for (size_t t = 0; t < triangleCount; ++t) appendFace(out, mesh, t);
+    } else {
+        for (uint8_t id : ids) {
+            const std::string name = mesh_export::lookOf(id, materials).name;
+            fmt::format_to(std::back_inserter(out), "g {}\nusemtl {}\n", name, name);
+            for (size_t t = 0; t < triangleCount; ++t)
+                if (mesh_export::triangleMaterial(mesh, t) == id) appendFace(out, mesh, t);
+        }
     }
-    writeFileAtomically(path, std::string(out.data(), out.size()));
+    if (!withMaterials) return writeFileAtomically(path, std::string(out.data(), out.size()));
+    // The library goes first so that an OBJ on disk never names a missing .mtl, and goes away
+    // again when the OBJ cannot be written, so a failure leaves neither file.
+    writeFileAtomically(libraryPath, materialLibrary(ids, materials));
+    try {
+        writeFileAtomically(path, std::string(out.data(), out.size()));
+    } catch (...) {
+        std::error_code ignored;
+        std::filesystem::remove(libraryPath, ignored);
+        throw;
+    }
 }
 
-void writeMesh(const std::string& path, const Mesh& mesh) {
+void writeMesh(const std::string& path, const Mesh& mesh, std::span<const Material> materials) {
     std::string extension = std::filesystem::path(path).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    if (extension == ".ply") return writePly(path, mesh);
-    if (extension == ".obj") return writeObj(path, mesh);
+    if (extension == ".ply") return writePly(path, mesh, materials);
+    if (extension == ".obj") return writeObj(path, mesh, materials);
     throw UserError(fmt::format("unknown mesh format '{}' for '{}' (use .ply or .obj)", extension, path));
 }
 

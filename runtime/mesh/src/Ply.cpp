@@ -1,3 +1,4 @@
+#include "MaterialLook.h"
 #include "voxc/core/AtomicWrite.h"
 #include "voxc/core/Errors.h"
 #include "voxc/mesh/Export.h"
@@ -7,6 +8,7 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <iterator>
+#include <span>
 #include <sstream>
 
 namespace voxc {
@@ -16,11 +18,16 @@ static_assert(std::endian::native == std::endian::little, "PLY I/O writes host f
 namespace {
 
 constexpr const char* kVertexProperties[] = {"x", "y", "z", "nx", "ny", "nz"};
+// With materials each vertex also has its id and its material's colour (read by mesh viewers).
+constexpr const char* kMaterialProperties[] = {"material", "red", "green", "blue"};
+constexpr size_t kVertexBytes = 24, kMaterialBytes = 4, kFaceBytes = 13;
 
-std::string plyHeader(size_t vertexCount, size_t faceCount) {
+std::string plyHeader(size_t vertexCount, size_t faceCount, bool materials) {
     std::string header = "ply\nformat binary_little_endian 1.0\ncomment voxc surface nets\n";
     header += fmt::format("element vertex {}\n", vertexCount);
     for (const char* name : kVertexProperties) header += fmt::format("property float {}\n", name);
+    if (materials)
+        for (const char* name : kMaterialProperties) header += fmt::format("property uchar {}\n", name);
     header += fmt::format("element face {}\nproperty list uchar int vertex_indices\nend_header\n", faceCount);
     return header;
 }
@@ -58,13 +65,19 @@ void expectLine(const std::string& line, const std::string& expected, const std:
 
 } // namespace
 
-void writePly(const std::string& path, const Mesh& mesh) {
+void writePly(const std::string& path, const Mesh& mesh, std::span<const Material> materials) {
     VOXC_ASSERT(mesh.normals.size() == mesh.positions.size() && mesh.triangles.size() % 3 == 0);
-    std::string bytes = plyHeader(mesh.positions.size(), mesh.triangles.size() / 3);
-    bytes.reserve(bytes.size() + mesh.positions.size() * 24 + mesh.triangles.size() / 3 * 13);
+    const bool withMaterials = mesh_export::writesMaterials(mesh, materials);
+    std::string bytes = plyHeader(mesh.positions.size(), mesh.triangles.size() / 3, withMaterials);
+    bytes.reserve(bytes.size() + mesh.positions.size() * (kVertexBytes + kMaterialBytes) + mesh.triangles.size() / 3 * kFaceBytes);
     for (size_t v = 0; v < mesh.positions.size(); ++v) {
         for (int a = 0; a < 3; ++a) append(bytes, mesh.positions[v][a]);
         for (int a = 0; a < 3; ++a) append(bytes, mesh.normals[v][a]);
+        if (!withMaterials) continue;
+        const uint8_t id = mesh_export::vertexMaterial(mesh, v);
+        const glm::vec3 color = mesh_export::lookOf(id, materials).color;
+        append(bytes, id);
+        for (int c = 0; c < 3; ++c) append(bytes, mesh_export::colorByte(color[c]));
     }
     for (size_t t = 0; t < mesh.triangles.size(); t += 3) {
         append(bytes, uint8_t(3));
@@ -85,26 +98,38 @@ Mesh readPly(const std::string& path) {
     expectLine(headerLine(header, path), "format binary_little_endian 1.0", path);
     const size_t vertexCount = elementCount(headerLine(header, path), "vertex", path);
     for (const char* name : kVertexProperties) expectLine(headerLine(header, path), fmt::format("property float {}", name), path);
-    const size_t faceCount = elementCount(headerLine(header, path), "face", path);
+    std::string line = headerLine(header, path);
+    const bool withMaterials = line == "property uchar material";
+    if (withMaterials) {
+        for (const char* name : std::span(kMaterialProperties).subspan(1))
+            expectLine(headerLine(header, path), fmt::format("property uchar {}", name), path);
+        line = headerLine(header, path);
+    }
+    const size_t faceCount = elementCount(line, "face", path);
     expectLine(headerLine(header, path), "property list uchar int vertex_indices", path);
 
     const size_t dataStart = headerEnd + endHeader.size();
-    if (bytes.size() - dataStart != vertexCount * 24 + faceCount * 13) malformed(path, "data size does not match the header");
+    const size_t vertexBytes = kVertexBytes + (withMaterials ? kMaterialBytes : 0);
+    if (bytes.size() - dataStart != vertexCount * vertexBytes + faceCount * kFaceBytes)
+        malformed(path, "data size does not match the header");
     Mesh mesh;
     mesh.positions.resize(vertexCount);
     mesh.normals.resize(vertexCount);
+    if (withMaterials) mesh.vertexMaterials.resize(vertexCount);
     const char* at = bytes.data() + dataStart;
     for (size_t v = 0; v < vertexCount; ++v) {
         std::memcpy(&mesh.positions[v], at, 12);
         std::memcpy(&mesh.normals[v], at + 12, 12);
-        at += 24;
+        // The colour after the id is derived from it, so it is not read back.
+        if (withMaterials) mesh.vertexMaterials[v] = uint8_t(at[kVertexBytes]);
+        at += vertexBytes;
     }
     mesh.triangles.reserve(faceCount * 3);
     for (size_t f = 0; f < faceCount; ++f) {
         if (uint8_t(*at) != 3) malformed(path, fmt::format("face {} is not a triangle", f));
         int32_t indices[3];
         std::memcpy(indices, at + 1, 12);
-        at += 13;
+        at += kFaceBytes;
         for (int32_t index : indices) {
             if (index < 0 || size_t(index) >= vertexCount) malformed(path, fmt::format("face {} has vertex index {} out of range", f, index));
             mesh.triangles.push_back(uint32_t(index));

@@ -28,15 +28,27 @@ std::vector<glm::ivec3> cellChunks(const ChunkLayout& layout) {
 }
 
 // Chunks are independent, so workers take them in any order; each result has its own slot.
-std::vector<ChunkSurface> extractAll(const ChunkedGrid& grid, float iso, const std::vector<glm::ivec3>& chunks) {
+std::vector<ChunkSurface> extractAll(const ChunkedGrid& grid, const MeshOptions& options, const std::vector<glm::ivec3>& chunks,
+                                     MeshStats& stats) {
     std::vector<ChunkSurface> surfaces(chunks.size());
+    std::atomic<size_t> skipped{0};
+    auto extract = [&](glm::ivec3 chunk) {
+        if (options.skipUniformChunks) {
+            const surface_nets::CellRange cells = surface_nets::chunkCells(grid.layout(), chunk);
+            if (surface_nets::cellsAreUniform(grid, options.iso, cells)) {
+                ++skipped;
+                return ChunkSurface{};
+            }
+        }
+        return surface_nets::extractChunk(grid, options.iso, chunk);
+    };
     std::atomic<size_t> next{0};
     std::vector<std::exception_ptr> failures;
     const size_t workerCount = std::max<size_t>(1, std::min<size_t>(std::thread::hardware_concurrency(), chunks.size()));
     failures.resize(workerCount);
     auto work = [&](size_t worker) {
         try {
-            for (size_t i = next++; i < chunks.size(); i = next++) surfaces[i] = surface_nets::extractChunk(grid, iso, chunks[i]);
+            for (size_t i = next++; i < chunks.size(); i = next++) surfaces[i] = extract(chunks[i]);
         } catch (...) {
             failures[worker] = std::current_exception();
             next = chunks.size();
@@ -48,6 +60,8 @@ std::vector<ChunkSurface> extractAll(const ChunkedGrid& grid, float iso, const s
     for (std::thread& t : workers) t.join();
     for (const std::exception_ptr& failure : failures)
         if (failure) std::rethrow_exception(failure);
+    stats.chunks = chunks.size();
+    stats.skippedChunks = skipped;
     return surfaces;
 }
 
@@ -68,8 +82,12 @@ void fillMissingNormals(Mesh& mesh) {
 
 } // namespace
 
-Mesh meshSurfaceNets(const ChunkedGrid& grid, float iso) {
-    const std::vector<ChunkSurface> surfaces = extractAll(grid, iso, cellChunks(grid.layout()));
+Mesh meshSurfaceNets(const ChunkedGrid& grid, float iso) { return meshSurfaceNets(grid, MeshOptions{.iso = iso}); }
+
+Mesh meshSurfaceNets(const ChunkedGrid& grid, const MeshOptions& options, MeshStats* stats) {
+    MeshStats counted;
+    const std::vector<ChunkSurface> surfaces = extractAll(grid, options, cellChunks(grid.layout()), counted);
+    if (stats) *stats = counted;
 
     // Ordering by global cell and edge makes the result independent of the chunking.
     std::vector<CellVertex> vertices;
@@ -86,10 +104,12 @@ Mesh meshSurfaceNets(const ChunkedGrid& grid, float iso) {
     std::vector<uint64_t> cellKeys;
     mesh.positions.reserve(vertices.size());
     mesh.normals.reserve(vertices.size());
+    mesh.vertexMaterials.reserve(vertices.size());
     cellKeys.reserve(vertices.size());
     for (const CellVertex& v : vertices) {
         mesh.positions.push_back(v.position);
         mesh.normals.push_back(v.normal);
+        mesh.vertexMaterials.push_back(v.material);
         cellKeys.push_back(v.cell);
     }
     auto vertexOf = [&](uint64_t cell) {
@@ -98,9 +118,11 @@ Mesh meshSurfaceNets(const ChunkedGrid& grid, float iso) {
         return uint32_t(it - cellKeys.begin());
     };
     mesh.triangles.reserve(quads.size() * 6);
+    mesh.triangleMaterials.reserve(quads.size() * 2);
     for (const EdgeQuad& q : quads) {
         const uint32_t v[4] = {vertexOf(q.cells[0]), vertexOf(q.cells[1]), vertexOf(q.cells[2]), vertexOf(q.cells[3])};
         mesh.triangles.insert(mesh.triangles.end(), {v[0], v[1], v[2], v[0], v[2], v[3]});
+        mesh.triangleMaterials.insert(mesh.triangleMaterials.end(), {q.material, q.material});
     }
     fillMissingNormals(mesh);
     return mesh;

@@ -23,6 +23,8 @@ void writeObj(const std::string& path, const Mesh& mesh, std::span<const Materia
 void writeMesh(const std::string& path, const Mesh& mesh, std::span<const Material> materials = {});
 
 // Reads the PLY subset writePly produces (triangles only, materials when present); UserError on anything else.
+// PLY stores no face materials, so the result's triangleMaterials is empty; vertexMaterials is
+// filled when the file has them.
 Mesh readPly(const std::string& path);
 
 } // namespace voxc

@@ -17,11 +17,28 @@
 // - Work is split into the layout's world-aligned chunks (a cell belongs to the chunk holding
 //   its minimum corner), but vertices and triangles are ordered by global cell, so the mesh is
 //   identical, bit for bit, for every chunk size.
+// - Materials (Mesh::vertexMaterials / triangleMaterials) are always filled, all 0 when the grid
+//   has none; only solid voxels' materials are read.
+// - A chunk whose cells read only solid or only air voxels (its own voxels plus the one-voxel
+//   apron into the next chunks) has no surface, so it is skipped before its samples are gathered.
 #include "voxc/grid/Grid.h"
 #include "voxc/mesh/Mesh.h"
 
+#include <cstddef>
+
 namespace voxc {
 
+struct MeshOptions {
+    float iso = 0.5f;
+    bool skipUniformChunks = true; // off only to test that skipping never changes the mesh
+};
+
+struct MeshStats {
+    size_t chunks = 0;        // world chunks holding cells
+    size_t skippedChunks = 0; // of those, skipped because all their cells are on one side of iso
+};
+
+Mesh meshSurfaceNets(const ChunkedGrid& grid, const MeshOptions& options, MeshStats* stats = nullptr);
 Mesh meshSurfaceNets(const ChunkedGrid& grid, float iso = 0.5f);
 
 } // namespace voxc
