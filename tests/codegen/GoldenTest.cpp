@@ -63,6 +63,8 @@ void expectProgramGoldens(const Program& program, const std::string& goldenName)
 
 TEST(codegen_Golden, SampleProgram) { expectProgramGoldens(test::sampleProgram(), "sample"); }
 
+TEST(codegen_Golden, MaterialProgram) { expectProgramGoldens(test::materialProgram(), "materials"); }
+
 #ifdef VOXC_HAVE_CHECK
 TEST(codegen_Golden, OverhangExample) {
     const std::string path = std::string(VOXC_EXAMPLES_DIR) + "/overhang.vox";

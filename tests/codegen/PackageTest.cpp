@@ -73,7 +73,9 @@ TEST_F(codegen_Package, ManifestDescribesKernelsAndDispatch) {
     std::vector<std::string> keys;
     for (const auto& [key, value] : m.items())
         keys.push_back(key);
-    EXPECT_EQ(keys, (std::vector<std::string>{"voxc_version", "source_file", "world", "kernels", "dispatch"}));
+    EXPECT_EQ(keys, (std::vector<std::string>{"voxc_version", "source_file", "world", "uses_materials", "kernels",
+                                              "dispatch"}));
+    EXPECT_EQ(m["uses_materials"], false);
     EXPECT_EQ(m["source_file"], "tests/sample.vox");
     EXPECT_EQ(m["world"]["origin"], nlohmann::json::array({-5, 3, -12}));
     EXPECT_EQ(m["world"]["chunk"], 8);

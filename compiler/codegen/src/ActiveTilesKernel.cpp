@@ -63,6 +63,14 @@ bool testsCell(const SymbolCell& cell) {
     return false;
 }
 
+// Tiles track density ranges only: a material test is taken to pass, so skipping stays
+// conservative, and a write of a material alone leaves every range valid.
+bool testsMaterial(const IrRule& rule) {
+    for (const SymbolCell& cell : rule.symbol)
+        if (!cell.materialPredicates.empty()) return true;
+    return false;
+}
+
 // `mayMatch`: some live rule has every tested cell's value set meeting its cell's range.
 std::string mayMatch(const IrSweep& sweep) {
     std::string s = "// The density range each tested cell can read (keys), over this tile's anchors.\n";
@@ -91,12 +99,14 @@ std::string mayMatch(const IrSweep& sweep) {
             std::vector<std::string> predicates;
             for (const Predicate& p : rule.symbol[c].predicates)
                 if (p.op != SymbolOp::IGN) predicates.push_back(printPredicate(p));
+            if (!rule.symbol[c].materialPredicates.empty()) predicates.push_back("(material tests may pass)");
             cells.push_back(fmt::format("{} // {} {}", meets.size() == 1 ? meets[0] : fmt::format("({})", fmt::join(meets, " || ")),
                                         printCell(sweep.cells[c].offset), fmt::join(predicates, " & ")));
         }
         s += fmt::format("// {}: {}\n", r, rule.name);
         if (cells.empty()) {
-            s += "mayMatch = true; // every cell IGN: matches everywhere\n";
+            s += testsMaterial(rule) ? "mayMatch = true; // material tests only, which tiles do not track\n"
+                                     : "mayMatch = true; // every cell IGN: matches everywhere\n";
             continue;
         }
         s += "mayMatch = mayMatch ||\n";

@@ -2,23 +2,40 @@
 
 #include "KernelSources.h"
 #include "voxc/codegen/Spirv.h"
+#include "voxc/core/Errors.h"
 #include "voxc/ir/Lower.h"
 #include "voxc/program/Semantics.h"
 
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <tuple>
 #include <fmt/format.h>
 
 namespace voxc::codegen {
 
 namespace {
 
-Kernel makeKernel(std::string name, std::string origin, const DispatchShape& shape, std::string glsl) {
+// Every kernel of a package that uses materials is compiled with VOXC_MATERIALS, so
+// common.glsl declares the material buffer (kBindingMaterials).
+std::string withMaterials(std::string glsl) {
+    const size_t lineEnd = glsl.find('\n');
+    VOXC_ASSERT(glsl.starts_with("#version") && lineEnd != std::string::npos);
+    return glsl.insert(lineEnd + 1, "#define VOXC_MATERIALS\n");
+}
+
+// How kernel names spell a material: its declared name, `none` for id 0.
+std::string materialName(const Program& program, uint8_t id) {
+    if (const Material* declared = program.findMaterial(id)) return declared->name;
+    return id == kMaterialNone ? "none" : fmt::format("material{}", id);
+}
+
+Kernel makeKernel(std::string name, std::string origin, const DispatchShape& shape, std::string glsl,
+                  bool usesMaterials) {
     Kernel kernel;
     kernel.name = std::move(name);
     kernel.origin = std::move(origin);
-    kernel.glsl = std::move(glsl);
+    kernel.glsl = usesMaterials ? withMaterials(std::move(glsl)) : std::move(glsl);
     for (int a = 0; a < 3; ++a) {
         kernel.localSize[a] = shape.localSize[a];
         kernel.anchorsPerInvocation[a] = shape.anchorsPerInvocation[a];
@@ -49,24 +66,32 @@ KernelPackage compileProgram(const Program& program, const CompileOptions& optio
 
     KernelPackage package;
     package.world = program.world;
-    package.kernels.push_back(
-        makeKernel("start", fmt::format("{} start", sourceName), startDispatchShape(module),
-                   startKernelSource(module, sourceName)));
+    package.usesMaterials = program.usesMaterials();
+    const auto makePackageKernel = [&](std::string name, std::string origin, const DispatchShape& shape,
+                                       std::string glsl) {
+        return makeKernel(std::move(name), std::move(origin), shape, std::move(glsl), package.usesMaterials);
+    };
+    package.kernels.push_back(makePackageKernel("start", fmt::format("{} start", sourceName),
+                                                startDispatchShape(module), startKernelSource(module, sourceName)));
 
-    // One kernel per (field, mode) the pipeline runs, however often.
-    std::map<std::pair<uint32_t, FieldMode>, std::vector<Stage>> fieldStages;
+    // One kernel per (field, mode, material) the pipeline runs, however often; the material is
+    // part of the kernel ("<field>_<mode>_<material>").
+    using FieldKey = std::tuple<uint32_t, FieldMode, std::optional<uint8_t>>;
+    std::map<FieldKey, std::vector<Stage>> fieldStages;
     for (const Stage& stage : module.pipeline)
-        if (stage.kind == Stage::Kind::Field) fieldStages[{stage.index, stage.mode}].push_back(stage);
-    std::map<std::pair<uint32_t, FieldMode>, uint32_t> fieldKernels;
+        if (stage.kind == Stage::Kind::Field) fieldStages[{stage.index, stage.mode, stage.material}].push_back(stage);
+    std::map<FieldKey, uint32_t> fieldKernels;
     for (const auto& [key, stages] : fieldStages) {
-        const ir::IrField& field = module.fields.at(key.first);
-        const std::string name = fmt::format("{}_{}", field.name, ir::fieldModeName(key.second));
+        const auto& [fieldIndex, mode, material] = key;
+        const ir::IrField& field = module.fields.at(fieldIndex);
+        std::string name = fmt::format("{}_{}", field.name, ir::fieldModeName(mode));
+        if (material) name += "_" + materialName(program, *material);
         const std::string origin = fmt::format("{}:{}:{} field {}, {}", sourceName, field.loc.line, field.loc.column,
-                                               field.name, ir::fieldModeName(key.second));
+                                               field.name, ir::fieldModeName(mode));
         fieldKernels[key] = uint32_t(package.kernels.size());
         package.kernels.push_back(
-            makeKernel(name, origin, fieldDispatchShape(module),
-                       fieldKernelSource(module, field, key.second, stages, name, sourceName)));
+            makePackageKernel(name, origin, fieldDispatchShape(module),
+                              fieldKernelSource(module, field, mode, material, stages, name, sourceName)));
     }
 
     // Kernels of a grammar are generated once, even if the pipeline runs it more than once.
@@ -82,8 +107,8 @@ KernelPackage compileProgram(const Program& program, const CompileOptions& optio
                             grammar.name, sweep.window.x, sweep.window.y, sweep.window.z);
             plan.sweeps.push_back(
                 planSweep(program.grammars[grammar.programIndex], sweep, uint32_t(package.kernels.size())));
-            package.kernels.push_back(makeKernel(name, origin, sweepDispatchShape(sweep),
-                                                 sweepKernelSource(grammar, sweep, name, sourceName)));
+            package.kernels.push_back(makePackageKernel(name, origin, sweepDispatchShape(sweep),
+                                                        sweepKernelSource(grammar, sweep, name, sourceName)));
         }
         grammarPlans.push_back(std::move(plan));
     }
@@ -97,18 +122,19 @@ KernelPackage compileProgram(const Program& program, const CompileOptions& optio
             const std::string name = fmt::format("{}_sweep{}_active_tiles", grammar.name, sweep.index);
             const std::string origin = package.kernels[grammarPlans[g].sweeps[s].kernel].origin;
             grammarPlans[g].sweeps[s].activeTilesKernel = uint32_t(package.kernels.size());
-            package.kernels.push_back(makeKernel(name, origin, activeTilesDispatchShape(),
-                                                 activeTilesKernelSource(grammar, sweep, name, sourceName)));
+            package.kernels.push_back(makePackageKernel(name, origin, activeTilesDispatchShape(),
+                                                        activeTilesKernelSource(grammar, sweep, name, sourceName)));
         }
     }
     if (!module.grammars.empty()) {
         package.tileRangesKernel = uint32_t(package.kernels.size());
-        package.kernels.push_back(makeKernel("tile_ranges", "voxc runtime: tile density ranges",
-                                             tileRangesDispatchShape(), tileRangesKernelSource()));
+        package.kernels.push_back(makePackageKernel("tile_ranges", "voxc runtime: tile density ranges",
+                                                    tileRangesDispatchShape(), tileRangesKernelSource()));
     }
 
     // Every density is 0 before the pipeline; the start stage writes only its shapes' values.
-    // After a grammar or field stage the bounds are not tracked.
+    // After a grammar or a field stage other than paint (which keeps every density) the bounds
+    // are not tracked.
     std::optional<DensityBounds> densities = DensityBounds{};
     for (const Stage& stage : module.pipeline) {
         StagePlan plan;
@@ -125,11 +151,12 @@ KernelPackage compileProgram(const Program& program, const CompileOptions& optio
             densities.reset();
             break;
         case Stage::Kind::Field:
-            plan.fieldKernel = fieldKernels.at({stage.index, stage.mode});
+            plan.fieldKernel = fieldKernels.at({stage.index, stage.mode, stage.material});
             plan.fieldName = module.fields.at(stage.index).name;
             plan.fieldMode = stage.mode;
-            plan.fieldBoxes = fieldBoxes(module, module.fields.at(stage.index), stage.mode, densities);
-            densities.reset();
+            plan.fieldMaterial = stage.material;
+            plan.fieldBoxes = fieldBoxes(module, module.fields.at(stage.index), stage.mode, stage.material, densities);
+            if (stage.mode != FieldMode::Paint) densities.reset();
             break;
         }
         package.stages.push_back(std::move(plan));

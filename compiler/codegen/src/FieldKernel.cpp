@@ -7,6 +7,7 @@
 #include "voxc/builtins/Functions.h"
 #include "voxc/builtins/Ops.h"
 #include "voxc/ir/passes/ClassifyFieldChunks.h"
+#include "voxc/program/Semantics.h"
 
 #include <fmt/format.h>
 
@@ -98,7 +99,7 @@ FieldCode emitField(const ir::IrField& field, std::string_view sourceName) {
 
 // d = f, max(d, f), min(d, 1 - f), min(d, f), with std::max(a, b) = a < b ? b : a and
 // std::min(a, b) = b < a ? b : a, so ties and signed zeros resolve as in the interpreter.
-std::string combineGlsl(FieldMode mode, const std::string& f) {
+std::string combineDensityGlsl(FieldMode mode, const std::string& f) {
     const std::string store = "voxels.density[address] = ";
     const std::string load = "float density = voxels.density[address];\n";
     switch (mode) {
@@ -111,8 +112,50 @@ std::string combineGlsl(FieldMode mode, const std::string& f) {
                            load, f, store);
     case FieldMode::Intersect:
         return fmt::format("// intersect: d = min(d, f)\n{}{}{} < density ? {} : density;\n", load, store, f, f);
+    case FieldMode::Paint: return "// paint without a material: nothing to write\n";
     }
     return {};
+}
+
+// voxc::combineField with a material: the same density as combineDensityGlsl, and material m
+// where the field wins and the resulting density is solid.
+std::string combineWithMaterialGlsl(FieldMode mode, uint8_t material, const std::string& f) {
+    const std::string write = fmt::format("materials.material[address] = {}u;\n", material);
+    const std::string solid = glslFloat(kSolidDensity);
+    const std::string load = "float density = voxels.density[address];\n";
+    std::string wins, result;
+    switch (mode) {
+    case FieldMode::Set:
+        return fmt::format("// set: d = f; material {} where f is solid\nvoxels.density[address] = {};\n"
+                           "if ({} >= {}) {}",
+                           material, f, f, solid, write);
+    case FieldMode::Paint:
+        return fmt::format("// paint: d unchanged; material {} where f and d are solid\n"
+                           "if ({} >= {} && voxels.density[address] >= {}) {}",
+                           material, f, solid, solid, write);
+    case FieldMode::Union:
+        wins = fmt::format("// union: d = max(d, f); material {} where f wins and is solid\n{}"
+                           "bool wins = density < {};\n", material, load, f);
+        result = f;
+        break;
+    case FieldMode::Subtract:
+        wins = fmt::format("// subtract: d = min(d, 1 - f); material {} where 1 - f wins and is solid\n{}"
+                           "precise float carved = 1.0 - {};\nbool wins = carved < density;\n", material, load, f);
+        result = "carved";
+        break;
+    case FieldMode::Intersect:
+        wins = fmt::format("// intersect: d = min(d, f); material {} where f wins and is solid\n{}"
+                           "bool wins = {} < density;\n", material, load, f);
+        result = f;
+        break;
+    }
+    return fmt::format("{}float result = wins ? {} : density;\nvoxels.density[address] = result;\n"
+                       "if (wins && result >= {}) {}",
+                       wins, result, solid, write);
+}
+
+std::string combineGlsl(FieldMode mode, std::optional<uint8_t> material, const std::string& f) {
+    return material ? combineWithMaterialGlsl(mode, *material, f) : combineDensityGlsl(mode, f);
 }
 
 } // namespace
@@ -121,13 +164,19 @@ DispatchShape fieldDispatchShape(const ir::IrModule& module) { return startDispa
 
 namespace {
 
-// The combine returns d itself for every d in `before` (combineGlsl's comparisons, NaN-free).
-bool combineKeepsDensity(FieldMode mode, float c, DensityBounds before) {
+// The combine with the constant c leaves every voxel as it is, density and material, for every
+// density d in `before` (combineGlsl's comparisons, NaN-free).
+bool combineKeepsVoxel(FieldMode mode, std::optional<uint8_t> material, float c, std::optional<DensityBounds> before) {
+    if (mode == FieldMode::Paint) // d is kept; m is written where c >= 0.5 and d >= 0.5
+        return !material || !(c >= kSolidDensity) || (before && !(before->hi >= kSolidDensity));
+    if (!before) return false;
+    // Where these keep d the field never wins, so the material is kept too.
     switch (mode) {
     case FieldMode::Set: return false;
-    case FieldMode::Union: return !(before.lo < c);              // d < c ? c : d
-    case FieldMode::Subtract: return !(1.0f - c < before.hi);    // carved < d ? carved : d
-    case FieldMode::Intersect: return !(c < before.hi);          // c < d ? c : d
+    case FieldMode::Union: return !(before->lo < c);              // d < c ? c : d
+    case FieldMode::Subtract: return !(1.0f - c < before->hi);    // carved < d ? carved : d
+    case FieldMode::Intersect: return !(c < before->hi);          // c < d ? c : d
+    case FieldMode::Paint: break;
     }
     return false;
 }
@@ -161,7 +210,7 @@ std::vector<FieldBox> mergeAlong(const std::vector<FieldBox>& boxes, int axis) {
 } // namespace
 
 std::vector<FieldBox> fieldBoxes(const ir::IrModule& module, const ir::IrField& field, FieldMode mode,
-                                 std::optional<DensityBounds> before) {
+                                 std::optional<uint8_t> material, std::optional<DensityBounds> before) {
     std::vector<FieldBox> boxes;
     glm::ivec3 lastChunk{0};
     for (const ir::FieldChunk& chunk : ir::classifyFieldChunks(module.world, field)) {
@@ -172,14 +221,14 @@ std::vector<FieldBox> fieldBoxes(const ir::IrModule& module, const ir::IrField& 
             boxes.back().max.x = chunk.localMax.x;
         else
             boxes.push_back(FieldBox{chunk.localMin, chunk.localMax, chunk.constant, chunk.value,
-                                     chunk.constant && before && combineKeepsDensity(mode, chunk.value, *before)});
+                                     chunk.constant && combineKeepsVoxel(mode, material, chunk.value, before)});
         lastChunk = chunk.chunk;
     }
     return mergeAlong(mergeAlong(boxes, 1), 2);
 }
 
 std::string fieldKernelSource(const ir::IrModule& module, const ir::IrField& field, FieldMode mode,
-                              const std::vector<Stage>& stages, std::string_view kernelName,
+                              std::optional<uint8_t> material, const std::vector<Stage>& stages, std::string_view kernelName,
                               std::string_view sourceName) {
     const FieldCode code = emitField(field, sourceName);
     std::string header = fmt::format("voxc generated kernel \"{}\": field {} ({}:{}:{}), mode {}.\nPipeline stage",
@@ -200,8 +249,8 @@ std::string fieldKernelSource(const ir::IrModule& module, const ir::IrField& fie
          {"DISPATCH_SHAPE", dispatchShapeGlsl(fieldDispatchShape(module))},
          {"COLUMN_VALUES", code.column.empty() ? "// No value is the same along the column.\n" : code.column},
          {"VOXEL_VALUES", code.voxel.empty() ? "// Every value is the same along the column.\n" : code.voxel},
-         {"CONSTANT_COMBINE", combineGlsl(mode, "constantValue")},
-         {"COMBINE", combineGlsl(mode, code.names.at(field.root))}});
+         {"CONSTANT_COMBINE", combineGlsl(mode, material, "constantValue")},
+         {"COMBINE", combineGlsl(mode, material, code.names.at(field.root))}});
 }
 
 } // namespace voxc::codegen

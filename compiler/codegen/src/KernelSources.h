@@ -37,11 +37,14 @@ struct DensityBounds {
 // The boxes a field stage dispatches: its chunks classified by interval analysis, runs of
 // neighbours with the same class (and constant) merged into boxes, along x, then y, then z; with `before`
 // known, constant boxes whose combine cannot change a density in it are marked unchanged.
+// A paint box with a constant is unchanged without `before` when the constant or the stage's
+// material leaves every voxel's material alone.
 std::vector<FieldBox> fieldBoxes(const ir::IrModule& module, const ir::IrField& field, FieldMode mode,
-                                 std::optional<DensityBounds> before);
+                                 std::optional<uint8_t> material, std::optional<DensityBounds> before);
 DispatchShape fieldDispatchShape(const ir::IrModule& module);
+// `material`: the stages' material (Stage::material), written as voxc::combineField does.
 std::string fieldKernelSource(const ir::IrModule& module, const ir::IrField& field, FieldMode mode,
-                              const std::vector<Stage>& stages, std::string_view kernelName,
+                              std::optional<uint8_t> material, const std::vector<Stage>& stages, std::string_view kernelName,
                               std::string_view sourceName);
 
 DispatchShape sweepDispatchShape(const ir::IrSweep& sweep);

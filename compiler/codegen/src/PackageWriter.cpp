@@ -96,11 +96,14 @@ Json stageJson(const KernelPackage& package, const StagePlan& stage) {
             if (box.unchanged) entry.push_back("unchanged");
             boxes.push_back(entry);
         }
-        return Json{{"kind", "field"},
-                    {"field", stage.fieldName},
-                    {"mode", ir::fieldModeName(stage.fieldMode)},
-                    {"kernel", package.kernels.at(stage.fieldKernel).name},
-                    {"boxes", boxes}};
+        Json field{{"kind", "field"},
+                   {"field", stage.fieldName},
+                   {"mode", ir::fieldModeName(stage.fieldMode)},
+                   {"kernel", package.kernels.at(stage.fieldKernel).name},
+                   {"boxes", boxes}};
+        // The material id the stage writes where the field wins; absent: materials untouched.
+        if (stage.fieldMaterial) field["material"] = *stage.fieldMaterial;
+        return field;
     }
     }
     throw InternalError("unknown stage kind");
@@ -129,6 +132,7 @@ std::string packageManifest(const KernelPackage& package, const std::string& sou
         {"voxc_version", VOXC_VERSION},
         {"source_file", sourceFile},
         {"world", Json{{"size", vec(w.size)}, {"origin", vec(w.origin)}, {"chunk", w.chunkSize}, {"seed", w.seed}}},
+        {"uses_materials", package.usesMaterials},
         {"kernels", kernels},
         {"dispatch", Json{{"tile_ranges_kernel", kernelName(package, package.tileRangesKernel)}, {"stages", stages}}}};
     return manifest.dump(2) + "\n";

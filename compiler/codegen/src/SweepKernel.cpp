@@ -30,7 +30,7 @@ std::string where(std::string_view sourceName, const SourceLoc& loc) {
 
 // One 32-bit pass mask per 32 distinct tests of a cell.
 constexpr uint32_t kBitsPerMask = 32;
-uint32_t maskCount(const IrCell& cell) { return uint32_t(cell.tests.size() + kBitsPerMask - 1) / kBitsPerMask; }
+uint32_t maskCount(const IrCell& cell) { return (ir::testCount(cell) + kBitsPerMask - 1) / kBitsPerMask; }
 std::string maskName(const IrCell& cell, uint32_t c, uint32_t word) {
     return maskCount(cell) == 1 ? fmt::format("pass{}", c) : fmt::format("pass{}_{}", c, word);
 }
@@ -43,6 +43,8 @@ std::string symbolComment(const IrSweep& sweep, const IrRule& rule, const std::s
         std::vector<std::string> predicates;
         for (const Predicate& p : rule.symbol[c].predicates)
             if (p.op != SymbolOp::IGN) predicates.push_back(printPredicate(p));
+        for (const MaterialPredicate& p : rule.symbol[c].materialPredicates)
+            predicates.push_back(ir::printMaterialPredicate(p));
         if (!predicates.empty())
             parts.push_back(fmt::format("{} {}", printCell(sweep.cells[c].offset), fmt::join(predicates, " & ")));
     }
@@ -106,13 +108,24 @@ std::vector<uint32_t> testOrder(const IrSweep& sweep) {
     std::vector<uint32_t> order, users(sweep.cells.size(), 0);
     for (uint32_t c = 0; c < sweep.cells.size(); ++c) {
         for (const IrRule& rule : sweep.rules) users[c] += rule.needs[c].empty() ? 0 : 1;
-        if (!sweep.cells[c].tests.empty()) order.push_back(c);
+        if (ir::testCount(sweep.cells[c]) != 0) order.push_back(c);
     }
     std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
         if (users[a] != users[b]) return users[a] > users[b];
-        return sweep.cells[a].tests.size() < sweep.cells[b].tests.size();
+        return ir::testCount(sweep.cells[a]) < ir::testCount(sweep.cells[b]);
     });
     return order;
+}
+
+// Bit `bit` of cell c's pass mask as a GLSL bool expression, and the test it is.
+std::pair<std::string, std::string> cellTest(const IrCell& cell, uint32_t c, uint32_t bit) {
+    if (bit < cell.tests.size()) {
+        const Predicate& p = cell.tests[bit];
+        return {symbolOpInfo(p.op).glsl(fmt::format("cell{}", c), glslFloat(p.value)), printPredicate(p)};
+    }
+    const MaterialPredicate& p = cell.materialTests[bit - cell.tests.size()];
+    return {materialOpInfo(p.op).glsl(fmt::format("material{}", c), fmt::format("{}u", p.material)),
+            ir::printMaterialPredicate(p)};
 }
 
 std::string cellAddress(const IrCell& cell) {
@@ -130,7 +143,10 @@ std::string matchWindow(const IrSweep& sweep, std::string_view src) {
     std::vector<uint32_t> used, unused;
     for (uint32_t c = 0; c < sweep.cells.size(); ++c)
         (sweep.cells[c].access == CellAccess::None ? unused : used).push_back(c);
-    for (uint32_t c : used) s += fmt::format("int address{0} = 0;\nfloat cell{0} = 0.0;\n", c);
+    for (uint32_t c : used) {
+        s += fmt::format("int address{0} = 0;\nfloat cell{0} = 0.0;\n", c);
+        if (sweep.cells[c].loadsMaterial) s += fmt::format("uint material{} = 0u;\n", c);
+    }
     if (!unused.empty())
         s += fmt::format("// No live rule reads or writes cell{} {}.\n", unused.size() == 1 ? "" : "s",
                          fmt::join(unused, ", "));
@@ -146,25 +162,25 @@ std::string matchWindow(const IrSweep& sweep, std::string_view src) {
     bool firstCell = true;
     for (uint32_t c : testOrder(sweep)) {
         const IrCell& cell = sweep.cells[c];
-        VOXC_ASSERT(cell.access == CellAccess::Load);
+        VOXC_ASSERT(cell.access != CellAccess::None);
         std::vector<std::string> testers;
         for (uint32_t r = 0; r < sweep.rules.size(); ++r)
             if (!sweep.rules[r].needs[c].empty()) testers.push_back(fmt::format("matched{}", r));
         s += fmt::format("\n// Cell {} {}: each distinct predicate is one bit of its pass mask.\n", c,
                          printCell(cell.offset));
-        std::string body = fmt::format("address{0} = {1};\ncell{0} = voxels.density[address{0}];\n", c,
-                                       cellAddress(cell));
+        std::string body = fmt::format("address{} = {};\n", c, cellAddress(cell));
+        if (cell.access == CellAccess::Load) body += fmt::format("cell{0} = voxels.density[address{0}];\n", c);
+        if (cell.loadsMaterial) body += fmt::format("material{0} = materials.material[address{0}];\n", c);
         for (uint32_t word = 0; word < maskCount(cell); ++word) {
             const std::string name = maskName(cell, c, word);
             const uint32_t first = word * kBitsPerMask;
-            const uint32_t last = std::min<uint32_t>(first + kBitsPerMask, uint32_t(cell.tests.size()));
+            const uint32_t last = std::min<uint32_t>(first + kBitsPerMask, ir::testCount(cell));
             for (uint32_t b = first; b < last; ++b) {
-                const Predicate& p = cell.tests[b];
-                const std::string test = symbolOpInfo(p.op).glsl(fmt::format("cell{}", c), glslFloat(p.value));
+                const auto [test, what] = cellTest(cell, c, b);
                 const std::string lead =
                     b == first ? fmt::format("uint {} = ", name) : std::string(name.size() + 6, ' ') + "| ";
                 body += fmt::format("{}({} ? 0x{:x}u : 0u){} // bit {}: {}\n", lead, test, 1u << (b - first),
-                                    b + 1 == last ? ";" : "", b - first, printPredicate(p));
+                                    b + 1 == last ? ";" : "", b - first, what);
             }
         }
         for (uint32_t r = 0; r < sweep.rules.size(); ++r) {
@@ -248,21 +264,27 @@ std::string applyRule(const IrGrammar& g, const IrSweep& sweep, std::string_view
         for (uint32_t c = 0; c < sweep.cells.size(); ++c) {
             const TransformCell& t = rule.transform[c];
             const TransformOpInfo& info = transformOpInfo(t.op);
-            if (!info.writes) continue;
+            if (!info.writes && !t.material) continue;
             VOXC_ASSERT(sweep.cells[c].access != CellAccess::None);
             writes = true;
             // matchWindow read only the cells this rule tests; fetch the others it transforms.
             if (rule.needs[c].empty()) {
                 s += fmt::format("    address{} = {};\n", c, cellAddress(sweep.cells[c]));
-                if (sweep.cells[c].access == CellAccess::Load)
+                if (info.writes && sweep.cells[c].access == CellAccess::Load)
                     s += fmt::format("    cell{0} = voxels.density[address{0}];\n", c);
             }
-            // `precise` keeps the value exactly what the interpreter's float arithmetic gives.
-            s += fmt::format("    precise float next{} = {}; // {} {}\n", c,
-                             info.glsl(fmt::format("cell{}", c), glslFloat(t.value)), printCell(sweep.cells[c].offset),
-                             printTransform(t));
-            s += fmt::format("    writeDensity(address{0}, {1}next{0}{2});\n", c, clamps ? "clampDensity(" : "",
-                             clamps ? ")" : "");
+            if (info.writes) {
+                // `precise` keeps the value exactly what the interpreter's float arithmetic gives.
+                s += fmt::format("    precise float next{} = {}; // {} {}\n", c,
+                                 info.glsl(fmt::format("cell{}", c), glslFloat(t.value)),
+                                 printCell(sweep.cells[c].offset), printTransform(t));
+                s += fmt::format("    writeDensity(address{0}, {1}next{0}{2});\n", c, clamps ? "clampDensity(" : "",
+                                 clamps ? ")" : "");
+            }
+            // After the density, unclamped; tile ranges track densities only, so nothing else.
+            if (t.material)
+                s += fmt::format("    materials.material[address{}] = {}u; // {} {}\n", c, *t.material,
+                                 printCell(sweep.cells[c].offset), printTransform(t));
         }
         if (!writes) s += "    // every cell NOP: the window stays as it is\n";
     }

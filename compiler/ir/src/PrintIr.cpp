@@ -32,8 +32,10 @@ void printRule(std::string& out, const IrSweep& sweep, const IrRule& rule) {
             if (p.op == SymbolOp::IGN) continue;
             predicates += (predicates.empty() ? "" : " & ") + printPredicate(p);
         }
+        for (const MaterialPredicate& p : rule.symbol[c].materialPredicates)
+            predicates += (predicates.empty() ? "" : " & ") + printMaterialPredicate(p);
         if (!predicates.empty()) symbol += fmt::format("{}{} {}", symbol.empty() ? "" : " | ", at, predicates);
-        if (transformOpInfo(rule.transform[c].op).writes)
+        if (transformOpInfo(rule.transform[c].op).writes || rule.transform[c].material)
             transform += fmt::format("{}{} {}", transform.empty() ? "" : " | ", at, printTransform(rule.transform[c]));
         if (!rule.needs.empty() && !rule.needs[c].empty())
             needs += fmt::format("{}cell {} {{{}}}", needs.empty() ? "" : ", ", c, fmt::join(rule.needs[c], ", "));
@@ -49,10 +51,13 @@ void printSweep(std::string& out, const IrSweep& sweep) {
     for (uint32_t c = 0; c < sweep.cells.size(); ++c) {
         const IrCell& cell = sweep.cells[c];
         out += fmt::format("    cell {} {} {}", c, printCell(cell.offset), accessName(cell.access));
-        if (!cell.tests.empty()) {
+        if (cell.loadsMaterial) out += " material";
+        if (testCount(cell) != 0) {
             out += " tests";
             for (uint32_t b = 0; b < cell.tests.size(); ++b)
                 out += fmt::format(" {}:{}", b, printPredicate(cell.tests[b]));
+            for (uint32_t m = 0; m < cell.materialTests.size(); ++m)
+                out += fmt::format(" {}:{}", cell.tests.size() + m, printMaterialPredicate(cell.materialTests[m]));
         }
         out += "\n";
     }
@@ -111,6 +116,7 @@ std::string_view fieldModeName(FieldMode mode) {
     case FieldMode::Union: return "union";
     case FieldMode::Subtract: return "subtract";
     case FieldMode::Intersect: return "intersect";
+    case FieldMode::Paint: return "paint";
     }
     return "?";
 }
@@ -120,7 +126,8 @@ std::string printStage(const IrModule& module, const Stage& stage) {
     case Stage::Kind::Start: return "start";
     case Stage::Kind::Grammar: return module.grammars.at(stage.index).name;
     case Stage::Kind::Field:
-        return fmt::format("{} {}", fieldModeName(stage.mode), module.fields.at(stage.index).name);
+        return fmt::format("{} {}{}", fieldModeName(stage.mode), module.fields.at(stage.index).name,
+                           stage.material ? fmt::format(" material {}", *stage.material) : "");
     }
     return "?";
 }
@@ -130,9 +137,17 @@ std::string printPredicate(const Predicate& p) {
     return info.takesValue ? fmt::format("{} {}", info.name, glslFloat(p.value)) : std::string(info.name);
 }
 
+std::string printMaterialPredicate(const MaterialPredicate& p) {
+    return fmt::format("{} {}", materialOpInfo(p.op).name, p.material);
+}
+
+// `MAT m` alone when the density is left as it is, else the density operator first.
 std::string printTransform(const TransformCell& t) {
     const TransformOpInfo& info = transformOpInfo(t.op);
-    return info.takesValue ? fmt::format("{} {}", info.name, glslFloat(t.value)) : std::string(info.name);
+    std::string density = info.takesValue ? fmt::format("{} {}", info.name, glslFloat(t.value)) : std::string(info.name);
+    if (!t.material) return density;
+    const std::string material = fmt::format("MAT {}", *t.material);
+    return info.writes ? density + " & " + material : material;
 }
 
 std::string printCell(glm::ivec3 p) { return fmt::format("({}, {}, {})", p.x, p.y, p.z); }
@@ -150,7 +165,8 @@ std::string printIr(const IrModule& module) {
                        w.seed);
     out += "start\n";
     for (const StartShape& shape : module.start)
-        out += fmt::format("  {} value {} ({})\n", shapeInfo(shape.kind).name, glslFloat(shape.value), loc(shape.loc));
+        out += fmt::format("  {} value {}{} ({})\n", shapeInfo(shape.kind).name, glslFloat(shape.value),
+                           shape.material ? fmt::format(" material {}", *shape.material) : "", loc(shape.loc));
     out += "pipeline";
     for (const Stage& stage : module.pipeline)
         out += " " + printStage(module, stage);

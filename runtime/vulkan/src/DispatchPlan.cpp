@@ -53,6 +53,9 @@ void validatePackage(const KernelPackage& package) {
         }
         if (stage.kind == Stage::Kind::Field) {
             checkKernel(stage.fieldKernel);
+            if (stage.fieldMaterial && !package.usesMaterials)
+                packageError(fmt::format("field '{}' writes a material but the package has no material buffer",
+                                         stage.fieldName));
             // Boxes inside the grid whose volumes sum to the grid's (the codegen tiles it with chunks).
             uint64_t volume = 0;
             for (const FieldBox& box : stage.fieldBoxes) {
@@ -127,7 +130,8 @@ bool DispatchCursor::expandNextStep() {
     while (stage_ < package_.stages.size()) {
         const StagePlan& stage = package_.stages[stage_];
         if (stage.kind == Stage::Kind::Start || stage.kind == Stage::Kind::Field) {
-            // Both rewrite every voxel: one dispatch over the grid, then every tile range is stale.
+            // Both rewrite every voxel: one dispatch over the grid (or per field box), then every
+            // tile range is stale.
             ++stage_;
             const uint32_t kernel = stage.kind == Stage::Kind::Start ? stage.startKernel : stage.fieldKernel;
             if (stage.kind == Stage::Kind::Field && !stage.fieldBoxes.empty()) {
@@ -144,7 +148,8 @@ bool DispatchCursor::expandNextStep() {
             } else {
                 appendPhase(kernel, 0, 0, glm::ivec3(0), glm::ivec3(1), package_.world.size);
             }
-            if (skipping()) {
+            // Paint writes materials only, which tile ranges do not track.
+            if (skipping() && !(stage.kind == Stage::Kind::Field && stage.fieldMode == FieldMode::Paint)) {
                 Dispatch invalidate;
                 invalidate.kind = DispatchKind::InvalidateRanges;
                 step_.push_back(invalidate);

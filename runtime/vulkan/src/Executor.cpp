@@ -74,7 +74,9 @@ struct VulkanExecutor::Impl {
     bool staged = false; // results come back through `readback` instead of a mapped voxel buffer
     int32_t tileShift = -1; // >= 0: sweeps run over active tiles only (DispatchCursor)
     KernelPipelines pipelines;
-    DeviceBuffer voxels, chunkTable, noiseTables, readback;
+    // `materials` is one uint per voxel beside `voxels` when the package uses materials, else a
+    // one-element buffer no kernel declares; `readback` holds the densities, then the materials.
+    DeviceBuffer voxels, materials, chunkTable, noiseTables, readback;
     // Tile skipping (kBindingTileRanges..kBindingSkipStats); small, so they exist either way.
     DeviceBuffer tileRanges, tileDirty, activeTiles, activeDispatch, skipStats;
     VkCommandPool commandPool = VK_NULL_HANDLE;
@@ -94,6 +96,7 @@ struct VulkanExecutor::Impl {
     void submit(Frame& frame);
     void wait(Frame& frame);
     void recordReadback(VkCommandBuffer cmd, Access last);
+    void readMaterials(const DeviceBuffer& source, VkDeviceSize offset, ChunkedGrid& grid) const;
     // Every tile range stale, no active-dispatch record in use, statistics zero.
     void recordTileReset(VkCommandBuffer cmd);
 };
@@ -108,11 +111,14 @@ VulkanExecutor::Impl::~Impl() {
     destroyBuffer(ctx, readback);
     destroyBuffer(ctx, noiseTables);
     destroyBuffer(ctx, chunkTable);
+    destroyBuffer(ctx, materials);
     destroyBuffer(ctx, voxels);
     destroyPipelines(ctx, pipelines);
 }
 
+// The material buffer has a uint per voxel, as many bytes as the voxel buffer, so one check covers both.
 void VulkanExecutor::Impl::checkLimits() const {
+    static_assert(sizeof(uint32_t) == sizeof(float));
     const uint64_t bytes = uint64_t(layout.chunkTotal()) * layout.chunkVoxels() * sizeof(float);
     const uint64_t maxRange = ctx.properties.limits.maxStorageBufferRange;
     if (bytes > maxRange)
@@ -128,7 +134,12 @@ void VulkanExecutor::Impl::createBuffers() {
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     voxels = staged ? createBuffer(ctx, voxelBytes, storage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Device)
                     : createBuffer(ctx, voxelBytes, storage, MemoryUse::HostAccess);
-    if (staged) readback = createBuffer(ctx, voxelBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostAccess);
+    const VkDeviceSize materialBytes = package.usesMaterials ? voxelBytes : sizeof(uint32_t);
+    materials = staged ? createBuffer(ctx, materialBytes, storage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Device)
+                       : createBuffer(ctx, materialBytes, storage, MemoryUse::HostAccess);
+    if (staged)
+        readback = createBuffer(ctx, voxelBytes + (package.usesMaterials ? materialBytes : 0),
+                                VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostAccess);
     const std::vector<int32_t> table = layout.chunkTable();
     chunkTable = createTable(table);
     const std::span<const int, 256> permutation = perlinPermutation();
@@ -219,12 +230,26 @@ void VulkanExecutor::Impl::wait(Frame& frame) {
 void VulkanExecutor::Impl::recordReadback(VkCommandBuffer cmd, Access last) {
     if (!staged) {
         barrier(ctx.api, cmd, voxels.buffer, last, kHostRead);
+        if (package.usesMaterials) barrier(ctx.api, cmd, materials.buffer, last, kHostRead);
         return;
     }
     barrier(ctx.api, cmd, voxels.buffer, last, kTransferRead);
     const VkBufferCopy region{0, 0, voxels.size};
     ctx.api.vkCmdCopyBuffer(cmd, voxels.buffer, readback.buffer, 1, &region);
+    if (package.usesMaterials) {
+        barrier(ctx.api, cmd, materials.buffer, last, kTransferRead);
+        const VkBufferCopy materialRegion{0, voxels.size, materials.size};
+        ctx.api.vkCmdCopyBuffer(cmd, materials.buffer, readback.buffer, 1, &materialRegion);
+    }
     barrier(ctx.api, cmd, readback.buffer, kTransferWrite, kHostRead);
+}
+
+// The device's uint ids (0..255, the kernels write nothing larger) into the grid's bytes.
+void VulkanExecutor::Impl::readMaterials(const DeviceBuffer& source, VkDeviceSize offset, ChunkedGrid& grid) const {
+    std::vector<uint8_t>& out = grid.materials();
+    VOXC_ASSERT(out.size() * sizeof(uint32_t) == materials.size && offset + materials.size <= source.size);
+    const auto* ids = reinterpret_cast<const uint32_t*>(static_cast<const char*>(source.mapped) + offset);
+    for (size_t i = 0; i < out.size(); ++i) out[i] = uint8_t(ids[i]);
 }
 
 VulkanExecutor::VulkanExecutor(VulkanContext& context, const KernelPackage& package, const ExecutorOptions& options)
@@ -256,6 +281,7 @@ VulkanExecutor::VulkanExecutor(VulkanContext& context, const KernelPackage& pack
     byBinding[kBindingActiveTiles] = s.activeTiles.buffer;
     byBinding[kBindingActiveDispatch] = s.activeDispatch.buffer;
     byBinding[kBindingSkipStats] = s.skipStats.buffer;
+    byBinding[kBindingMaterials] = s.materials.buffer;
     bindBuffers(s.ctx, s.pipelines, byBinding);
     s.setupMs = millisecondsSince(start);
 }
@@ -288,6 +314,7 @@ RunResult VulkanExecutor::run() {
         if (batch == 0) {
             // Padding voxels outside the grid and grids without a start stage read as 0 on every run.
             api.vkCmdFillBuffer(frame.cmd, s.voxels.buffer, 0, VK_WHOLE_SIZE, 0);
+            api.vkCmdFillBuffer(frame.cmd, s.materials.buffer, 0, VK_WHOLE_SIZE, 0); // every voxel `none`
             if (s.tileShift >= 0) s.recordTileReset(frame.cmd);
             last = kTransferWrite;
         }
@@ -337,8 +364,13 @@ RunResult VulkanExecutor::run() {
     const DeviceBuffer& source = s.staged ? s.readback : s.voxels;
     invalidateForHost(s.ctx, source);
     std::vector<float>& data = result.grid.data();
-    VOXC_ASSERT(data.size() * sizeof(float) == source.size);
-    std::memcpy(data.data(), source.mapped, source.size);
+    const VkDeviceSize voxelBytes = s.voxels.size;
+    VOXC_ASSERT(data.size() * sizeof(float) == voxelBytes && voxelBytes <= source.size);
+    std::memcpy(data.data(), source.mapped, voxelBytes);
+    if (s.package.usesMaterials) {
+        if (!s.staged) invalidateForHost(s.ctx, s.materials);
+        s.readMaterials(s.staged ? s.readback : s.materials, s.staged ? voxelBytes : 0, result.grid);
+    }
     result.timings.readbackMs = millisecondsSince(readStart);
     if (s.tileShift >= 0) {
         invalidateForHost(s.ctx, s.skipStats);

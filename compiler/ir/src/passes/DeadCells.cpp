@@ -31,12 +31,18 @@ IrModule eliminateDeadCells(IrModule module) {
             for (uint32_t c = 0; c < sweep.cells.size(); ++c) {
                 bool reads = false;
                 bool writes = false;
+                bool readsMaterial = false;
                 for (const IrRule& rule : sweep.rules) {
                     const TransformCell& t = rule.transform[c];
                     reads = reads || symbolReads(rule.symbol[c]) || transformReadsDensity(t.op);
-                    writes = writes || transformOpInfo(t.op).writes;
+                    writes = writes || transformOpInfo(t.op).writes || t.material.has_value();
+                    readsMaterial = readsMaterial || !rule.symbol[c].materialPredicates.empty();
                 }
-                sweep.cells[c].access = reads ? CellAccess::Load : writes ? CellAccess::Address : CellAccess::None;
+                // A cell whose material alone is read or written needs its address, not its density.
+                sweep.cells[c].access = reads                     ? CellAccess::Load
+                                        : writes || readsMaterial ? CellAccess::Address
+                                                                  : CellAccess::None;
+                sweep.cells[c].loadsMaterial = readsMaterial;
             }
         }
     }

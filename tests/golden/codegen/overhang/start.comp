@@ -30,6 +30,14 @@ layout(std430, set = 0, binding = 0) buffer Voxels {
     float density[];
 } voxels;
 
+#ifdef VOXC_MATERIALS
+// Material ids (voxc::Material, 0 = none), one uint per voxel at the densities' addresses
+// (kBindingMaterials); declared only by kernels of programs that use materials.
+layout(std430, set = 0, binding = 8) buffer Materials {
+    uint material[];
+} materials;
+#endif
+
 // Chunk-table entry -> chunk slot; entries run x fastest over push.chunkCount.xyz.
 layout(std430, set = 0, binding = 1) readonly buffer ChunkTable {
     int chunkSlot[];
@@ -232,13 +240,22 @@ void main() {
                 world = push.gridOrigin.xyz + local;
                 address = nextColumnAddress(address, y == first.y, local);
                 float density = 0.0;
+                uint material = 0u;
                 // fill (overhang.vox:34:3)
                 {
-                    density = 0.0;
+                    bool inside = false;
+                    inside = true;
+                    if (inside) {
+                        density = 0.0;
+                    }
                 }
                 // box (overhang.vox:36:3)
                 {
-                    if (all(greaterThanEqual(vec3(local), vec3(0.0, 0.0, 0.0))) && all(lessThan(vec3(local), vec3(24.0, 64.0, 64.0)))) density = 1.0;
+                    bool inside = false;
+                    inside = all(greaterThanEqual(vec3(local), vec3(0.0, 0.0, 0.0))) && all(lessThan(vec3(local), vec3(24.0, 64.0, 64.0)));
+                    if (inside) {
+                        density = 1.0;
+                    }
                 }
                 voxels.density[address] = density;
             }

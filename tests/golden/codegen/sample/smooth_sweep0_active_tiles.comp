@@ -29,6 +29,14 @@ layout(std430, set = 0, binding = 0) buffer Voxels {
     float density[];
 } voxels;
 
+#ifdef VOXC_MATERIALS
+// Material ids (voxc::Material, 0 = none), one uint per voxel at the densities' addresses
+// (kBindingMaterials); declared only by kernels of programs that use materials.
+layout(std430, set = 0, binding = 8) buffer Materials {
+    uint material[];
+} materials;
+#endif
+
 // Chunk-table entry -> chunk slot; entries run x fastest over push.chunkCount.xyz.
 layout(std430, set = 0, binding = 1) readonly buffer ChunkTable {
     int chunkSlot[];

@@ -18,17 +18,26 @@ namespace voxc::ir {
 // dead-cells pass narrows it to what the live rules need.
 enum class CellAccess : uint8_t {
     None,    // no live rule reads or writes the cell
-    Address, // written without reading the old density (SET)
+    Address, // written without reading the old density (SET, `MAT m`), or only its material is read
     Load,    // a predicate or a transform reads the density
 };
 
 struct IrCell {
     glm::ivec3 offset{0}; // position inside the window
     CellAccess access = CellAccess::Load;
+    // A live rule tests the cell's material (MAT/NMAT), so the kernel loads it beside the
+    // density. Set by the dead-cells pass.
+    bool loadsMaterial = false;
     // Distinct non-IGN predicates the live rules test on this cell; bit i of the cell's
     // pass mask is tests[i]. Empty until the predicate-bits pass runs.
     std::vector<Predicate> tests;
+    // Distinct material tests, numbered after the density tests: bit tests.size() + i of the
+    // pass mask is materialTests[i].
+    std::vector<MaterialPredicate> materialTests;
 };
+
+// Bits of a cell's pass mask: density tests, then material tests.
+inline uint32_t testCount(const IrCell& cell) { return uint32_t(cell.tests.size() + cell.materialTests.size()); }
 
 struct IrRule {
     uint32_t ruleIndex = 0; // index into Grammar::rules, stable across passes
@@ -39,7 +48,7 @@ struct IrRule {
     uint32_t probabilityUnits = kProbabilityOne;
     std::vector<SymbolCell> symbol;       // per window cell, cellIndex order
     std::vector<TransformCell> transform; // per window cell, cellIndex order
-    // Per window cell: indices into IrCell::tests that must all pass. Filled by the
+    // Per window cell: bits of the cell's pass mask (IrCell::tests, then materialTests) that must all pass. Filled by the
     // predicate-bits pass (one entry per cell); empty before.
     std::vector<std::vector<uint32_t>> needs;
 };
@@ -98,7 +107,7 @@ struct IrModule {
     std::vector<Stage> deadStages;
 };
 
-// "set", "union", "subtract", "intersect": the pipeline keyword and kernel-name suffix.
+// "set", "union", "subtract", "intersect", "paint": the pipeline keyword and kernel-name suffix.
 std::string_view fieldModeName(FieldMode mode);
 
 // Window cell position of a cellIndex.
@@ -108,12 +117,13 @@ glm::ivec3 cellOffset(glm::ivec3 window, uint32_t cell);
 std::string printIr(const IrModule& module);
 
 // The pieces printIr uses, shared with the comments of generated code:
-// "GEQ 0.5", "ADD -0.5", "(1, 0, 2)", "[3, 3, 1]".
+// "GEQ 0.5", "MAT 2", "ADD -0.5 & MAT 2", "(1, 0, 2)", "[3, 3, 1]" (materials by id).
 std::string printPredicate(const Predicate& predicate);
+std::string printMaterialPredicate(const MaterialPredicate& predicate);
 std::string printTransform(const TransformCell& transform);
 std::string printCell(glm::ivec3 offset);
 std::string printVec(glm::ivec3 v);
-// "start", a grammar's name, or "set ground".
+// "start", a grammar's name, "set ground" or "paint low material 2".
 std::string printStage(const IrModule& module, const Stage& stage);
 
 } // namespace voxc::ir

@@ -1,6 +1,7 @@
 #pragma once
 // Runs a KernelPackage on a VulkanContext: one compute pipeline per kernel, a chunk-major
-// voxel buffer laid out as ChunkLayout::make(world.origin, world.size, world.chunkSize), and
+// voxel buffer laid out as ChunkLayout::make(world.origin, world.size, world.chunkSize) (and a
+// material buffer at the same addresses when KernelPackage::usesMaterials), and
 // every dispatch of the plan in order (DispatchCursor), each phase behind a barrier on the
 // previous one. The pipelines and buffers live as long as the executor, so run() can be
 // repeated (benchmarks) without recompiling anything.
@@ -62,7 +63,8 @@ public:
     VulkanExecutor(const VulkanExecutor&) = delete;
     VulkanExecutor& operator=(const VulkanExecutor&) = delete;
 
-    // Clears the voxel buffer to 0, runs every dispatch of the plan, returns the grid.
+    // Clears the voxel and material buffers to 0, runs every dispatch of the plan, returns the
+    // grid (densities, and materials when the package uses them; otherwise every voxel `none`).
     RunResult run();
 
     const ChunkLayout& layout() const;

@@ -1,0 +1,134 @@
+#version 450
+#define VOXC_MATERIALS
+// voxc generated kernel "ramp_subtract_sand": field ramp (materials.vox:21:1), mode subtract.
+// Pipeline stage `subtract ramp material 2` (materials.vox:90:40).
+
+// A field stage: every grid voxel's density d is combined with the field's value f there.
+// One invocation owns a column of voxels along y, like the start kernel, so the nodes that do
+// not depend on y are computed once per column; the rest are straight-line code per voxel,
+// every float result `precise`, in the interpreter's operation order (voxc::FieldEvaluator).
+// The runtime dispatches it per box of chunks (KernelPackage StagePlan::fieldBoxes); in a box
+// where interval analysis proved the field one exact float (anchorCount.w == 1, the float's
+// bits in anchorStart.w) only the combine runs, in a loop of its own so no DAG code is near it.
+
+// ---- begin common.glsl ----
+// Declarations every voxc kernel shares: the push block (voxc::PushBlock in
+// compiler/codegen/include/voxc/codegen/KernelPackage.h, field for field) and the first three
+// storage buffers of descriptor set 0 (kBindingVoxels, kBindingChunkTable, kBindingNoiseTables;
+// the chunk-skipping buffers are in chunks.glsl).
+
+layout(push_constant, std430) uniform PushBlock {
+    ivec4 gridOrigin;  // xyz: world coordinate of grid voxel (0,0,0); w: chunk size
+    ivec4 gridSize;    // xyz: grid size in voxels; w: seed (bit pattern)
+    ivec4 chunkBase;   // xyz: world chunk coordinate of chunk-table entry 0; w: iteration
+    ivec4 chunkCount;  // xyz: chunk-table extents; w: sweep index within its grammar
+    ivec4 anchorStart; // xyz: grid-local first anchor of this dispatch; w: active-dispatch record
+    ivec4 anchorStep;  // xyz: distance between the anchors of one dispatch; w: log2 tile size
+    ivec4 anchorCount; // xyz: anchors per axis in this dispatch; w: 1 = indirect over active tiles
+} push;
+
+// Densities, chunk-major: all voxels of one chunk slot, then the next slot.
+layout(std430, set = 0, binding = 0) buffer Voxels {
+    float density[];
+} voxels;
+
+#ifdef VOXC_MATERIALS
+// Material ids (voxc::Material, 0 = none), one uint per voxel at the densities' addresses
+// (kBindingMaterials); declared only by kernels of programs that use materials.
+layout(std430, set = 0, binding = 8) buffer Materials {
+    uint material[];
+} materials;
+#endif
+
+// Chunk-table entry -> chunk slot; entries run x fastest over push.chunkCount.xyz.
+layout(std430, set = 0, binding = 1) readonly buffer ChunkTable {
+    int chunkSlot[];
+} chunkTable;
+
+// Ken Perlin's 256-entry permutation (voxc::perlinPermutation), read by noise_common.glsl. It is a
+// buffer, not a constant array, because some drivers (llvmpipe) materialise a dynamically indexed
+// constant array on every call, which cost ~1000x.
+layout(std430, set = 0, binding = 2) readonly buffer NoiseTables {
+    int perlinPermutation[];
+} noiseTables;
+
+// Buffer index of a grid-local voxel, exactly as voxc::ChunkLayout::address computes it.
+// Chunks are aligned to world coordinates and their size is a power of two, so the
+// arithmetic shift and the mask are floor division and remainder, negatives included.
+int voxelAddress(ivec3 local) {
+    int chunkSize = push.gridOrigin.w;
+    int chunkShift = findMSB(chunkSize);
+    ivec3 world = push.gridOrigin.xyz + local;
+    ivec3 chunk = world >> chunkShift;
+    ivec3 inside = world & (chunkSize - 1);
+    ivec3 entry = chunk - push.chunkBase.xyz;
+    int slot = chunkTable.chunkSlot[entry.x + push.chunkCount.x * (entry.y + push.chunkCount.y * entry.z)];
+    return slot * chunkSize * chunkSize * chunkSize + inside.x + chunkSize * (inside.y + chunkSize * inside.z);
+}
+
+// The address of the next voxel of a column walk along y (anchor step 1): looked up through the
+// chunk table at the column's first voxel and wherever the column enters a new chunk, otherwise
+// the previous voxel's address plus chunkSize (the next voxel along y inside a chunk).
+int nextColumnAddress(int previous, bool columnStart, ivec3 local) {
+    int chunkSize = push.gridOrigin.w;
+    int worldY = push.gridOrigin.y + local.y;
+    return (columnStart || (worldY & (chunkSize - 1)) == 0) ? voxelAddress(local) : previous + chunkSize;
+}
+// ---- end common.glsl ----
+// No function library needed.
+
+layout(local_size_x = 8, local_size_y = 1, local_size_z = 8) in;
+// Each invocation handles this many consecutive anchors of its dispatch per axis
+// (voxc::Kernel::anchorsPerInvocation; the runtime sizes the dispatch by it).
+const ivec3 ANCHORS_PER_INVOCATION = ivec3(1, 36, 1);
+
+void main() {
+    ivec3 first = ivec3(gl_GlobalInvocationID) * ANCHORS_PER_INVOCATION;
+    if (any(greaterThanEqual(first, push.anchorCount.xyz))) return;
+    ivec3 last = min(first + ANCHORS_PER_INVOCATION, push.anchorCount.xyz);
+
+    if (push.anchorCount.w == 1) {
+        float constantValue = intBitsToFloat(push.anchorStart.w);
+        for (int z = first.z; z < last.z; ++z) {
+            for (int x = first.x; x < last.x; ++x) {
+                int address = 0;
+                for (int y = first.y; y < last.y; ++y) {
+                    ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                    address = nextColumnAddress(address, y == first.y, local);
+                    // subtract: d = min(d, 1 - f); material 2 where 1 - f wins and is solid
+                    float density = voxels.density[address];
+                    precise float carved = 1.0 - constantValue;
+                    bool wins = carved < density;
+                    float result = wins ? carved : density;
+                    voxels.density[address] = result;
+                    if (wins && result >= 0.5) materials.material[address] = 2u;
+                }
+            }
+        }
+        return;
+    }
+
+    for (int z = first.z; z < last.z; ++z) {
+        for (int x = first.x; x < last.x; ++x) {
+            ivec3 columnLocal = push.anchorStart.xyz + ivec3(x, first.y, z) * push.anchorStep.xyz;
+            // Integer sum first, then one conversion, as the interpreter does.
+            ivec3 columnWorld = push.gridOrigin.xyz + columnLocal;
+            precise float n0 = float(columnLocal.x); // x (materials.vox:21:1)
+            precise float n2 = (n0 * 0.0399999991); // mul (materials.vox:21:1)
+            int address = 0;
+            for (int y = first.y; y < last.y; ++y) {
+                ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                ivec3 world = push.gridOrigin.xyz + local;
+                address = nextColumnAddress(address, y == first.y, local);
+                // Every value is the same along the column.
+                // subtract: d = min(d, 1 - f); material 2 where 1 - f wins and is solid
+                float density = voxels.density[address];
+                precise float carved = 1.0 - n2;
+                bool wins = carved < density;
+                float result = wins ? carved : density;
+                voxels.density[address] = result;
+                if (wins && result >= 0.5) materials.material[address] = 2u;
+            }
+        }
+    }
+}

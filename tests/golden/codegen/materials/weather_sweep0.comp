@@ -1,0 +1,332 @@
+#version 450
+#define VOXC_MATERIALS
+// voxc generated kernel "weather_sweep0" from materials.vox:60:1 grammar weather.
+// Sweep 0 runs every rule of window [2, 1, 1]: [39, 36, 28] anchors in [2, 1, 1] phases.
+// Grammar stride [1, 1, 1], bounds [0, 0, 0]..[40, 36, 28], 12 iteration(s), clamp [0.0, 1.0].
+// Rules (declaration order):
+//   spread_moss (materials.vox:62:3): priority 1, weight 1000 units, probability 16777216 / 2^24
+
+// One sweep of a grammar: all rules of one window size. One invocation per anchor of the
+// current phase; the windows of one phase never overlap, so every invocation owns its cells.
+// The steps mirror the CPU interpreter: read the window, find the matching rules, choose one
+// (voxc::chooseRule), then apply its transform.
+//
+// Two ways to dispatch it (push.anchorCount.w): 0, directly over every anchor of the phase;
+// 1, indirectly over the tiles the sweep's active-tiles kernel found (tiles.glsl), where
+// workgroup y picks the tile and workgroup x with the local index picks its anchor.
+
+// ---- begin common.glsl ----
+// Declarations every voxc kernel shares: the push block (voxc::PushBlock in
+// compiler/codegen/include/voxc/codegen/KernelPackage.h, field for field) and the first three
+// storage buffers of descriptor set 0 (kBindingVoxels, kBindingChunkTable, kBindingNoiseTables;
+// the chunk-skipping buffers are in chunks.glsl).
+
+layout(push_constant, std430) uniform PushBlock {
+    ivec4 gridOrigin;  // xyz: world coordinate of grid voxel (0,0,0); w: chunk size
+    ivec4 gridSize;    // xyz: grid size in voxels; w: seed (bit pattern)
+    ivec4 chunkBase;   // xyz: world chunk coordinate of chunk-table entry 0; w: iteration
+    ivec4 chunkCount;  // xyz: chunk-table extents; w: sweep index within its grammar
+    ivec4 anchorStart; // xyz: grid-local first anchor of this dispatch; w: active-dispatch record
+    ivec4 anchorStep;  // xyz: distance between the anchors of one dispatch; w: log2 tile size
+    ivec4 anchorCount; // xyz: anchors per axis in this dispatch; w: 1 = indirect over active tiles
+} push;
+
+// Densities, chunk-major: all voxels of one chunk slot, then the next slot.
+layout(std430, set = 0, binding = 0) buffer Voxels {
+    float density[];
+} voxels;
+
+#ifdef VOXC_MATERIALS
+// Material ids (voxc::Material, 0 = none), one uint per voxel at the densities' addresses
+// (kBindingMaterials); declared only by kernels of programs that use materials.
+layout(std430, set = 0, binding = 8) buffer Materials {
+    uint material[];
+} materials;
+#endif
+
+// Chunk-table entry -> chunk slot; entries run x fastest over push.chunkCount.xyz.
+layout(std430, set = 0, binding = 1) readonly buffer ChunkTable {
+    int chunkSlot[];
+} chunkTable;
+
+// Ken Perlin's 256-entry permutation (voxc::perlinPermutation), read by noise_common.glsl. It is a
+// buffer, not a constant array, because some drivers (llvmpipe) materialise a dynamically indexed
+// constant array on every call, which cost ~1000x.
+layout(std430, set = 0, binding = 2) readonly buffer NoiseTables {
+    int perlinPermutation[];
+} noiseTables;
+
+// Buffer index of a grid-local voxel, exactly as voxc::ChunkLayout::address computes it.
+// Chunks are aligned to world coordinates and their size is a power of two, so the
+// arithmetic shift and the mask are floor division and remainder, negatives included.
+int voxelAddress(ivec3 local) {
+    int chunkSize = push.gridOrigin.w;
+    int chunkShift = findMSB(chunkSize);
+    ivec3 world = push.gridOrigin.xyz + local;
+    ivec3 chunk = world >> chunkShift;
+    ivec3 inside = world & (chunkSize - 1);
+    ivec3 entry = chunk - push.chunkBase.xyz;
+    int slot = chunkTable.chunkSlot[entry.x + push.chunkCount.x * (entry.y + push.chunkCount.y * entry.z)];
+    return slot * chunkSize * chunkSize * chunkSize + inside.x + chunkSize * (inside.y + chunkSize * inside.z);
+}
+
+// The address of the next voxel of a column walk along y (anchor step 1): looked up through the
+// chunk table at the column's first voxel and wherever the column enters a new chunk, otherwise
+// the previous voxel's address plus chunkSize (the next voxel along y inside a chunk).
+int nextColumnAddress(int previous, bool columnStart, ivec3 local) {
+    int chunkSize = push.gridOrigin.w;
+    int worldY = push.gridOrigin.y + local.y;
+    return (columnStart || (worldY & (chunkSize - 1)) == 0) ? voxelAddress(local) : previous + chunkSize;
+}
+// ---- end common.glsl ----
+// ---- begin random.glsl ----
+// Counter-based randomness: mirrors compiler/program/src/Random.cpp bit for bit.
+
+// Chris Wellons' "lowbias32" integer finaliser.
+uint mix32(uint x) {
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    x ^= x >> 16;
+    return x;
+}
+
+const uint STREAM_RULE_CHOICE = 0u;
+const uint STREAM_PROBABILITY = 1u;
+
+uint anchorHash(uint seed, uint iteration, uint sweep, ivec3 anchorWorld, uint stream) {
+    uint h = mix32(stream);
+    h = mix32(uint(anchorWorld.z) ^ h);
+    h = mix32(uint(anchorWorld.y) ^ h);
+    h = mix32(uint(anchorWorld.x) ^ h);
+    h = mix32(sweep ^ h);
+    h = mix32(iteration ^ h);
+    return mix32(seed ^ h);
+}
+// ---- end random.glsl ----
+
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+// Each invocation handles this many consecutive anchors of its dispatch per axis
+// (voxc::Kernel::anchorsPerInvocation; the runtime sizes the dispatch by it).
+const ivec3 ANCHORS_PER_INVOCATION = ivec3(1, 1, 1);
+
+// ---- begin tiles.glsl ----
+// Per-tile bookkeeping that lets the runtime dispatch a sweep only over the tiles where some
+// rule may match (bindings 3-7, kBindingTileRanges.. in KernelPackage.h). Include after the
+// kernel's local size layout.
+//
+// A tile is a cube of 2^push.anchorStep.w voxels per axis, aligned to world coordinates like
+// the chunks and never larger than one, so each chunk holds tilesPerChunk() tiles. Tile
+// buffers are indexed by tileIndex (chunk slot, then the tile inside it); the runtime
+// enumerates tiles by tile id (chunk-table entry, then the tile inside it).
+//
+// A density range is kept as two order-preserving keys (densityKey): a < b as floats implies
+// key(a) < key(b) as uints, so ranges widen with atomicMin/atomicMax and compare exactly in
+// integers. -0 sorts just below +0; NaNs sort beyond the infinities.
+
+layout(std430, set = 0, binding = 3) buffer TileRanges {
+    uint key[]; // per tile: lowest key, highest key (a superset of the tile's in-grid densities)
+} tileRanges;
+
+layout(std430, set = 0, binding = 4) buffer TileDirty {
+    uint flag[]; // per tile: written since its range was last computed exactly
+} tileDirty;
+
+layout(std430, set = 0, binding = 5) buffer ActiveTiles {
+    uint id[]; // tile ids the current phase runs on
+} activeTiles;
+
+layout(std430, set = 0, binding = 6) buffer ActiveDispatch {
+    uint args[]; // two VkDispatchIndirectCommand records (x, y, z, padding); y counts active tiles
+} activeDispatch;
+
+layout(std430, set = 0, binding = 7) buffer SkipStats {
+    uint activeTilePhases;    // (tile, phase) pairs dispatched in this run
+    uint candidateTilePhases; // (tile, phase) pairs holding anchors of a classified phase
+} skipStats;
+
+uint densityKey(float v) {
+    uint bits = floatBitsToUint(v);
+    return (bits & 0x80000000u) != 0u ? ~bits : bits | 0x80000000u;
+}
+
+int tileShift() { return push.anchorStep.w; }
+int tileSize() { return push.gridOrigin.w >> (findMSB(push.gridOrigin.w) - push.anchorStep.w); }
+int tilesPerAxis() { return push.gridOrigin.w >> push.anchorStep.w; } // per chunk
+int tilesPerChunk() { return tilesPerAxis() * tilesPerAxis() * tilesPerAxis(); }
+
+// Tile index of the tile at world tile coordinate `tile`.
+int tileIndex(ivec3 tile) {
+    int perAxis = tilesPerAxis();
+    ivec3 entry = (tile >> findMSB(perAxis)) - push.chunkBase.xyz;
+    int slot = chunkTable.chunkSlot[entry.x + push.chunkCount.x * (entry.y + push.chunkCount.y * entry.z)];
+    ivec3 inside = tile & (perAxis - 1);
+    return slot * tilesPerChunk() + inside.x + perAxis * (inside.y + perAxis * inside.z);
+}
+
+// World tile coordinate of a tile id.
+ivec3 tileOfId(uint id) {
+    int perAxis = tilesPerAxis();
+    int entry = int(id) / tilesPerChunk();
+    int inside = int(id) % tilesPerChunk();
+    ivec3 count = push.chunkCount.xyz;
+    ivec3 chunk = push.chunkBase.xyz + ivec3(entry % count.x, entry / count.x % count.y, entry / (count.x * count.y));
+    return chunk * perAxis + ivec3(inside % perAxis, inside / perAxis % perAxis, inside / (perAxis * perAxis));
+}
+
+// The anchors of the current phase (push.anchorStart + i * step, i < push.anchorCount) whose
+// anchor voxel lies in `tile`: indices first..last per axis, none when first > last on an
+// axis. Every anchor belongs to exactly one tile.
+struct TileAnchors {
+    ivec3 first;
+    ivec3 last;
+};
+
+TileAnchors tileAnchors(ivec3 tile) {
+    ivec3 step = push.anchorStep.xyz;
+    ivec3 low = tile * tileSize() - push.gridOrigin.xyz - push.anchorStart.xyz;
+    ivec3 high = low + (tileSize() - 1);
+    TileAnchors a;
+    a.first = (max(low, ivec3(0)) + step - 1) / step;
+    // floor(high / step), and -1 when the tile ends before the first anchor
+    a.last = min(mix(high / step, ivec3(-1), lessThan(high, ivec3(0))), push.anchorCount.xyz - 1);
+    return a;
+}
+
+// Most anchors of the current phase one tile can hold per axis: how the sweep's indirect
+// dispatch spreads a tile's anchors over workgroups.
+ivec3 anchorsPerTile() {
+    ivec3 step = push.anchorStep.xyz;
+    return min((ivec3(tileSize()) + step - 1) / step, push.anchorCount.xyz);
+}
+// ---- end tiles.glsl ----
+
+// The live rules of this sweep in declaration order (matchedN, weightN below):
+//   0: spread_moss (rule 0 of grammar weather, materials.vox:62:3)
+
+// The grammar's clamp, applied to every written value as the CPU does it.
+float clampDensity(float v) {
+    v = v < 0.0 ? 0.0 : v;
+    v = 1.0 < v ? 1.0 : v;
+    return v;
+}
+
+// The two draws of voxc::chooseRule at one anchor: which matched rule, and whether it fires.
+uint ruleChoiceDraw(ivec3 anchorWorld) {
+    return anchorHash(uint(push.gridSize.w), uint(push.chunkBase.w), uint(push.chunkCount.w), anchorWorld,
+                      STREAM_RULE_CHOICE);
+}
+uint probabilityDraw(ivec3 anchorWorld) {
+    return anchorHash(uint(push.gridSize.w), uint(push.chunkBase.w), uint(push.chunkCount.w), anchorWorld,
+                      STREAM_PROBABILITY) >> 8;
+}
+
+// Where the cells of a window lie in the voxel buffer. A window inside one chunk (the common
+// case) is addressed from the anchor's address; one straddling a chunk border looks every cell up.
+struct WindowAddressing {
+    ivec3 anchor;
+    int anchorAddress;
+    bool oneChunk;
+};
+
+WindowAddressing windowAddressing(ivec3 anchor, ivec3 size) {
+    int chunkSize = push.gridOrigin.w;
+    ivec3 inside = (push.gridOrigin.xyz + anchor) & (chunkSize - 1);
+    return WindowAddressing(anchor, voxelAddress(anchor), all(lessThanEqual(inside + size, ivec3(chunkSize))));
+}
+
+int windowCellAddress(WindowAddressing window, ivec3 offset) {
+    int chunkSize = push.gridOrigin.w;
+    if (window.oneChunk) return window.anchorAddress + offset.x + chunkSize * (offset.y + chunkSize * offset.z);
+    return voxelAddress(window.anchor + offset);
+}
+
+// Stores a written density and keeps its tile's range a superset of the tile's densities
+// (the range only widens; the next tile_ranges pass recomputes it exactly).
+void writeDensity(int address, float value) {
+    voxels.density[address] = value;
+    if (push.anchorCount.w == 0) return; // direct dispatch: no tile bookkeeping
+    int chunkSize = push.gridOrigin.w;
+    int chunkShift = findMSB(chunkSize);
+    int inside = address & (chunkSize * chunkSize * chunkSize - 1);
+    int perAxis = tilesPerAxis();
+    ivec3 tile = (ivec3(inside, inside >> chunkShift, inside >> (2 * chunkShift)) & (push.gridOrigin.w - 1)) >> tileShift();
+    int index = (address >> (3 * chunkShift)) * tilesPerChunk() + tile.x + perAxis * (tile.y + perAxis * tile.z);
+    uint key = densityKey(value);
+    atomicMin(tileRanges.key[2 * index], key);
+    atomicMax(tileRanges.key[2 * index + 1], key);
+    tileDirty.flag[index] = 1u;
+}
+
+// The anchor of this invocation in an indirect dispatch: false when it has none.
+bool activeTileAnchor(out ivec3 anchor) {
+    TileAnchors anchors = tileAnchors(tileOfId(activeTiles.id[gl_WorkGroupID.y]));
+    ivec3 n = anchorsPerTile();
+    int t = int(gl_WorkGroupID.x * (gl_WorkGroupSize.x * gl_WorkGroupSize.y * gl_WorkGroupSize.z) +
+                gl_LocalInvocationIndex);
+    ivec3 i = anchors.first + ivec3(t % n.x, t / n.x % n.y, t / (n.x * n.y));
+    anchor = push.anchorStart.xyz + i * push.anchorStep.xyz;
+    return all(lessThanEqual(i, anchors.last));
+}
+
+// One invocation per anchor (ANCHORS_PER_INVOCATION is 1): a loop over several anchors with
+// run-time bounds costs more than it saves on llvmpipe.
+void main() {
+    ivec3 anchor;
+    if (push.anchorCount.w != 0) {
+        if (!activeTileAnchor(anchor)) return;
+    } else {
+        ivec3 id = ivec3(gl_GlobalInvocationID);
+        if (any(greaterThanEqual(id, push.anchorCount.xyz))) return;
+        anchor = push.anchorStart.xyz + id * push.anchorStep.xyz;
+    }
+    ivec3 anchorWorld = push.gridOrigin.xyz + anchor;
+
+    // Window [2, 1, 1]: cell i sits at anchor + (i % 2, i / 2 % 1, i / 2).
+    WindowAddressing window = windowAddressing(anchor, ivec3(2, 1, 1));
+    int address0 = 0;
+    float cell0 = 0.0;
+    uint material0 = 0u;
+    int address1 = 0;
+    float cell1 = 0.0;
+    uint material1 = 0u;
+
+    // The rules' symbols; a rule matches when every cell has all the bits the rule needs.
+    // 0: spread_moss (materials.vox:62:3): (0, 0, 0) MAT 3 | (1, 0, 0) GEQ 0.5 & NMAT 3
+    bool matched0 = true;
+
+    // Cell 0 (0, 0, 0): each distinct predicate is one bit of its pass mask.
+    address0 = windowCellAddress(window, ivec3(0, 0, 0));
+    material0 = materials.material[address0];
+    uint pass0 = ((material0 == 3u) ? 0x1u : 0u); // bit 0: MAT 3
+    matched0 = matched0 && (pass0 & 0x1u) == 0x1u;
+
+    // Cell 1 (1, 0, 0): each distinct predicate is one bit of its pass mask.
+    if (matched0) {
+        address1 = windowCellAddress(window, ivec3(1, 0, 0));
+        cell1 = voxels.density[address1];
+        material1 = materials.material[address1];
+        uint pass1 = ((cell1 >= 0.5) ? 0x1u : 0u) // bit 0: GEQ 0.5
+                   | ((material1 != 3u) ? 0x2u : 0u); // bit 1: NMAT 3
+        matched0 = matched0 && (pass1 & 0x3u) == 0x3u;
+    }
+
+    // voxc::chooseRule: the highest priority among the matched rules wins; equal priorities are
+    // drawn by weight in declaration order; the chosen rule then fires with its probability.
+    uint weight0 = matched0 ? 1000u : 0u;
+    uint total = weight0;
+    int chosen = -1;
+    if (total != 0u) {
+        uint target = ruleChoiceDraw(anchorWorld) % total;
+        // The first rule whose running weight sum exceeds the target, in declaration order.
+        uint upTo = weight0;
+        chosen = target < upTo ? 0 : -1;
+        // Every rule has probability 1: the draw (< 2^24) always passes, so it is skipped.
+    }
+
+    // Apply the chosen rule's transform; NOP cells are left untouched and every written value is clamped.
+    if (chosen == 0) { // spread_moss (materials.vox:62:3)
+        materials.material[address1] = 3u; // (1, 0, 0) MAT 3
+    }
+}
