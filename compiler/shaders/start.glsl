@@ -2,9 +2,9 @@
 // <<HEADER>>
 
 // The start state: every grid voxel gets the start block's shapes in order over air
-// (density 0), as voxc::startDensity does on the CPU. One invocation owns a column of voxels
-// along y, so per-column values (a heightfield's height) are computed once, and the chunk
-// table is consulted once per chunk the column enters instead of once per voxel.
+// (density 0, material none), as voxc::startVoxel does on the CPU. One invocation owns a
+// column of voxels along y, so per-column values (a heightfield's height) are computed once,
+// and the chunk table is consulted once per chunk the column enters instead of once per voxel.
 
 #include "common.glsl"
 #include "random.glsl"

@@ -127,12 +127,12 @@ TEST(syntax_Parser, PipelineStagesTakeAClause) {
     ASSERT_TRUE(names[2].clause);
     EXPECT_EQ(names[2].clause->word, "material");
     EXPECT_EQ(names[2].clause->operand, "sand");
-    EXPECT_EQ(names[2].clause->operandLoc.column, 51u);
+    EXPECT_EQ(names[2].clause->operandLoc.column, 49u);
     // Three words are a stage and a clause; the checker rejects clauses on grammars.
     EXPECT_FALSE(names[3].mode);
     EXPECT_EQ(names[3].name, "weather");
     ASSERT_TRUE(names[3].clause);
-    EXPECT_EQ(names[3].clause->wordLoc.column, 64u);
+    EXPECT_EQ(names[3].clause->wordLoc.column, 63u);
     EXPECT_FALSE(parseText("pipeline { a b c d e; }").diagnostics.empty());
 }
 
