@@ -161,6 +161,33 @@ float noiseUnitFloat(uint h) {
 // voxc::noise::perlin3 (compiler/builtins/src/functions/GradientNoise.cpp).
 // Requires noise_common.glsl.
 
+// The permutation in private memory as pairs: entry i holds perm(i) in bits 0..7 and perm(i + 1)
+// in bits 8..15, so one read serves both lookups Perlin's hashing makes at i and i + 1 (the
+// values, so every result bit, are those of noisePerm). Why: llvmpipe reads a storage buffer
+// lane by lane behind branches but a private array with one gather, and the permutation reads
+// are most of a perlin3. The table is filled by a global initializer, i.e. once per invocation
+// at the top of main, not behind an `if (!loaded)` test per call: llvmpipe runs both sides of
+// every branch, so such a test costs a table-fill iteration at each call.
+int[256] noisePermutationPairsFromBuffer() {
+    int pairs[256];
+    int first = noiseTables.perlinPermutation[0];
+    int previous = first;
+    for (int i = 1; i < 256; ++i) {
+        int next = noiseTables.perlinPermutation[i];
+        pairs[i - 1] = previous | (next << 8);
+        previous = next;
+    }
+    pairs[255] = previous | (first << 8);
+    return pairs;
+}
+int noisePermutationPairs[256] = noisePermutationPairsFromBuffer();
+
+// (perm(i), perm(i + 1)).
+ivec2 noisePermPair(int i) {
+    int pair = noisePermutationPairs[i & 255];
+    return ivec2(pair & 255, pair >> 8);
+}
+
 float noisePerlin3(vec3 p, uint seed) {
     precise vec3 f = floor(p);
     ivec3 offset = noiseSeedOffset(seed);
@@ -173,19 +200,27 @@ float noisePerlin3(vec3 p, uint seed) {
     float u = noiseFade(x);
     float v = noiseFade(y);
     float w = noiseFade(z);
-    int A = noisePerm(X) + Y;
-    int AA = noisePerm(A) + Z;
-    int AB = noisePerm(A + 1) + Z;
-    int B = noisePerm(X + 1) + Y;
-    int BA = noisePerm(B) + Z;
-    int BB = noisePerm(B + 1) + Z;
+    ivec2 hX = noisePermPair(X);
+    int A = hX.x + Y;
+    int B = hX.y + Y;
+    ivec2 hA = noisePermPair(A);
+    ivec2 hB = noisePermPair(B);
+    int AA = hA.x + Z;
+    int AB = hA.y + Z;
+    int BA = hB.x + Z;
+    int BB = hB.y + Z;
+    // Corner hashes: .x at z, .y at z + 1.
+    ivec2 hAA = noisePermPair(AA);
+    ivec2 hAB = noisePermPair(AB);
+    ivec2 hBA = noisePermPair(BA);
+    ivec2 hBB = noisePermPair(BB);
     precise float x1 = x - 1.0;
     precise float y1 = y - 1.0;
     precise float z1 = z - 1.0;
-    float l00 = noiseLerp(u, noiseGrad(noisePerm(AA), x, y, z), noiseGrad(noisePerm(BA), x1, y, z));
-    float l10 = noiseLerp(u, noiseGrad(noisePerm(AB), x, y1, z), noiseGrad(noisePerm(BB), x1, y1, z));
-    float l01 = noiseLerp(u, noiseGrad(noisePerm(AA + 1), x, y, z1), noiseGrad(noisePerm(BA + 1), x1, y, z1));
-    float l11 = noiseLerp(u, noiseGrad(noisePerm(AB + 1), x, y1, z1), noiseGrad(noisePerm(BB + 1), x1, y1, z1));
+    float l00 = noiseLerp(u, noiseGrad(hAA.x, x, y, z), noiseGrad(hBA.x, x1, y, z));
+    float l10 = noiseLerp(u, noiseGrad(hAB.x, x, y1, z), noiseGrad(hBB.x, x1, y1, z));
+    float l01 = noiseLerp(u, noiseGrad(hAA.y, x, y, z1), noiseGrad(hBA.y, x1, y, z1));
+    float l11 = noiseLerp(u, noiseGrad(hAB.y, x, y1, z1), noiseGrad(hBB.y, x1, y1, z1));
     return noiseLerp(w, noiseLerp(v, l00, l10), noiseLerp(v, l01, l11));
 }
 

@@ -3,9 +3,9 @@
 // The start block is empty: the grid starts as air.
 
 // The start state: every grid voxel gets the start block's shapes in order over air
-// (density 0), as voxc::startDensity does on the CPU. One invocation owns a column of voxels
-// along y, so per-column values (a heightfield's height) are computed once, and the chunk
-// table is consulted once per chunk the column enters instead of once per voxel.
+// (density 0, material none), as voxc::startVoxel does on the CPU. One invocation owns a
+// column of voxels along y, so per-column values (a heightfield's height) are computed once,
+// and the chunk table is consulted once per chunk the column enters instead of once per voxel.
 
 // ---- begin common.glsl ----
 // Declarations every voxc kernel shares: the push block (voxc::PushBlock in

@@ -6,9 +6,9 @@
 //   heightfield value 1.0 (sample.vox:5:3)
 
 // The start state: every grid voxel gets the start block's shapes in order over air
-// (density 0), as voxc::startDensity does on the CPU. One invocation owns a column of voxels
-// along y, so per-column values (a heightfield's height) are computed once, and the chunk
-// table is consulted once per chunk the column enters instead of once per voxel.
+// (density 0, material none), as voxc::startVoxel does on the CPU. One invocation owns a
+// column of voxels along y, so per-column values (a heightfield's height) are computed once,
+// and the chunk table is consulted once per chunk the column enters instead of once per voxel.
 
 // ---- begin common.glsl ----
 // Declarations every voxc kernel shares: the push block (voxc::PushBlock in
