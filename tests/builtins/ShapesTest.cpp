@@ -1,6 +1,7 @@
 #include "voxc/builtins/Shapes.h"
 
 #include <algorithm>
+#include <set>
 #include <cmath>
 #include <vector>
 #include <gtest/gtest.h>
@@ -12,6 +13,20 @@ Program programWith(StartShape shape) {
     Program program;
     program.start.push_back(shape);
     return program;
+}
+
+TEST(builtins_shapes, UniqueNamesAndKeys) {
+    std::set<std::string_view> names;
+    for (const ShapeInfo& info : shapes()) {
+        EXPECT_TRUE(names.insert(info.name).second);
+        EXPECT_EQ(findShape(info.name), info.kind);
+        std::set<std::string_view> keys;
+        for (const KeySpec& key : info.keys) {
+            EXPECT_TRUE(keys.insert(key.name).second) << info.name << "." << key.name;
+            EXPECT_LE(key.min, key.max);
+        }
+        EXPECT_FALSE(info.glsl(StartShape{}).empty());
+    }
 }
 
 TEST(builtins_perlin, PermutationIsPerlinsReferenceTable) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <gtest/gtest.h>
+#include <set>
 #include <limits>
 
 namespace voxc {
@@ -128,6 +129,43 @@ TEST(program_Ops, RegistryCoversEveryOperatorOnceWithArity) {
     EXPECT_EQ(findTransformOp("ADD"), TransformOp::ADD);
     EXPECT_FALSE(findSymbolOp("lt").has_value()); // names are case-sensitive
     EXPECT_FALSE(findTransformOp("MUL").has_value());
+    EXPECT_FALSE(findSymbolOp("NOP").has_value());
+    EXPECT_FALSE(findTransformOp("GEQ").has_value());
+}
+
+// One name per record across all three registries, and every record has every backend.
+TEST(program_Ops, EveryRecordHasAUniqueNameAndEveryBackend) {
+    std::set<std::string_view> names;
+    for (const SymbolOpInfo& info : symbolOps()) {
+        EXPECT_TRUE(names.insert(info.name).second) << info.name;
+        EXPECT_EQ(&symbolOpInfo(info.op), &info);
+        EXPECT_FALSE(info.glsl("d", "0.5").empty());
+        EXPECT_NE(info.accepts, nullptr);
+    }
+    for (const TransformOpInfo& info : transformOps()) {
+        EXPECT_TRUE(names.insert(info.name).second) << info.name;
+        EXPECT_FALSE(info.glsl("d", "0.5").empty());
+    }
+    for (const MaterialOpInfo& info : materialOps()) {
+        EXPECT_TRUE(names.insert(info.name).second) << info.name;
+        EXPECT_EQ(&materialOpInfo(info.op), &info);
+        EXPECT_EQ(findMaterialOp(info.name), info.op);
+        EXPECT_FALSE(info.glsl("m", "3u").empty());
+    }
+    EXPECT_EQ(materialOps().size(), 2u);
+}
+
+TEST(program_Ops, MaterialTests) {
+    EXPECT_TRUE(materialOpInfo(MaterialOp::MAT).eval(3, 3));
+    EXPECT_FALSE(materialOpInfo(MaterialOp::MAT).eval(3, 4));
+    EXPECT_TRUE(materialOpInfo(MaterialOp::NMAT).eval(3, 4));
+    EXPECT_FALSE(materialOpInfo(MaterialOp::NMAT).eval(0, 0));
+    EXPECT_EQ(materialOpInfo(MaterialOp::NMAT).glsl("m", "2u"), "(m != 2u)");
+    // A cell passes when its density and material tests all pass.
+    EXPECT_TRUE(cellPasses(parseSymbolCell("GEQ 0.5 & MAT 2"), 0.5f, 2));
+    EXPECT_FALSE(cellPasses(parseSymbolCell("GEQ 0.5 & MAT 2"), 0.5f, 1));
+    EXPECT_FALSE(cellPasses(parseSymbolCell("GEQ 0.5 & MAT 2"), 0.4f, 2));
+    EXPECT_TRUE(cellPasses(parseSymbolCell("NMAT 0"), 0.0f, 7));
 }
 
 bool contains(const ValueSet& set, float d) {
