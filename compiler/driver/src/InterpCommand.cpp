@@ -73,14 +73,7 @@ void interpretFile(const InterpOptions& options) {
     if (slice) std::cout << renderSlice(grid, slice->axis, slice->index);
     // Solid as the mesh of `voxc run` sees it at its default --iso.
     if (program.usesMaterials()) std::cerr << formatMaterialCounts(program, grid, 0.5f);
-    if (!options.voxelsPath.empty()) {
-        writeNpy(options.voxelsPath, grid);
-        std::cerr << "wrote " << options.voxelsPath << "\n";
-    }
-    if (!options.materialsPath.empty()) {
-        writeMaterialNpy(options.materialsPath, grid);
-        std::cerr << "wrote " << options.materialsPath << "\n";
-    }
+    writeGridFiles(options.voxelsPath, options.materialsPath, grid);
 }
 
 } // namespace

@@ -60,14 +60,7 @@ void run(const RunOptions& options) {
     if (!options.voxelsPath.empty() || !options.materialsPath.empty() || program.usesMaterials()) {
         const DenseGrid dense = voxels.toDense();
         if (program.usesMaterials()) std::cerr << formatMaterialCounts(program, dense, options.iso);
-        if (!options.voxelsPath.empty()) {
-            writeNpy(options.voxelsPath, dense);
-            std::cerr << "wrote " << options.voxelsPath << "\n";
-        }
-        if (!options.materialsPath.empty()) {
-            writeMaterialNpy(options.materialsPath, dense);
-            std::cerr << "wrote " << options.materialsPath << "\n";
-        }
+        writeGridFiles(options.voxelsPath, options.materialsPath, dense);
     }
     if (!options.meshPath.empty()) {
         MeshStats stats;
