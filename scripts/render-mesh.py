@@ -35,10 +35,13 @@ def read_ply(path):
         colours = None
         if "red" in names:
             colours = [tuple(r[names.index(k)] for k in ("red", "green", "blue")) for r in records]
+        face_start = next(i for i, l in enumerate(lines) if l.startswith("element face")) + 1
+        face_extra = sum(1 for l in lines[face_start:] if l.startswith("property uchar"))
         triangles = []
         for _ in range(faces):
             count = f.read(1)[0]
             triangles.append(struct.unpack("<%di" % count, f.read(4 * count)))
+            f.read(face_extra)  # the face's material id
     return positions, triangles, colours
 
 

@@ -122,11 +122,14 @@ TEST(mesh_Export, plyCarriesVertexMaterialsAndColours) {
     EXPECT_NE(header.find("property float nz\nproperty uchar material\nproperty uchar red\nproperty uchar green\n"
                           "property uchar blue\nelement face"),
               std::string::npos);
-    EXPECT_EQ(bytes.size(), header.size() + mesh.positions.size() * 28 + mesh.triangles.size() / 3 * 13);
+    EXPECT_NE(header.find("property list uchar int vertex_indices\nproperty uchar material\nend_header"),
+              std::string::npos);
+    EXPECT_EQ(bytes.size(), header.size() + mesh.positions.size() * 28 + mesh.triangles.size() / 3 * 14);
     const Mesh back = readPly(path);
     EXPECT_EQ(back.positions, mesh.positions);
     EXPECT_EQ(back.triangles, mesh.triangles);
     EXPECT_EQ(back.vertexMaterials, mesh.vertexMaterials);
+    EXPECT_EQ(back.triangleMaterials, mesh.triangleMaterials);
     // Colours: rock (255,128,0), sand (51,102,153), undeclared id 7 grey (153,153,153).
     const std::map<uint8_t, std::array<uint8_t, 3>> colors = {{1, {255, 128, 0}}, {2, {51, 102, 153}}, {7, {153, 153, 153}}};
     std::set<uint8_t> seen;

@@ -20,7 +20,7 @@ namespace {
 constexpr const char* kVertexProperties[] = {"x", "y", "z", "nx", "ny", "nz"};
 // With materials each vertex also has its id and its material's colour (read by mesh viewers).
 constexpr const char* kMaterialProperties[] = {"material", "red", "green", "blue"};
-constexpr size_t kVertexBytes = 24, kMaterialBytes = 4, kFaceBytes = 13;
+constexpr size_t kVertexBytes = 24, kMaterialBytes = 4, kFaceBytes = 13, kFaceMaterialBytes = 1;
 
 std::string plyHeader(size_t vertexCount, size_t faceCount, bool materials) {
     std::string header = "ply\nformat binary_little_endian 1.0\ncomment voxc surface nets\n";
@@ -28,7 +28,10 @@ std::string plyHeader(size_t vertexCount, size_t faceCount, bool materials) {
     for (const char* name : kVertexProperties) header += fmt::format("property float {}\n", name);
     if (materials)
         for (const char* name : kMaterialProperties) header += fmt::format("property uchar {}\n", name);
-    header += fmt::format("element face {}\nproperty list uchar int vertex_indices\nend_header\n", faceCount);
+    header += fmt::format("element face {}\nproperty list uchar int vertex_indices\n", faceCount);
+    // ...and each face the material of the grid edge it crosses (Mesh::triangleMaterials).
+    if (materials) header += "property uchar material\n";
+    header += "end_header\n";
     return header;
 }
 
@@ -82,6 +85,7 @@ void writePly(const std::string& path, const Mesh& mesh, std::span<const Materia
     for (size_t t = 0; t < mesh.triangles.size(); t += 3) {
         append(bytes, uint8_t(3));
         for (size_t k = 0; k < 3; ++k) append(bytes, int32_t(mesh.triangles[t + k]));
+        if (withMaterials) append(bytes, mesh_export::triangleMaterial(mesh, t / 3));
     }
     writeFileAtomically(path, bytes);
 }
@@ -107,15 +111,20 @@ Mesh readPly(const std::string& path) {
     }
     const size_t faceCount = elementCount(line, "face", path);
     expectLine(headerLine(header, path), "property list uchar int vertex_indices", path);
+    if (withMaterials) expectLine(headerLine(header, path), "property uchar material", path);
 
     const size_t dataStart = headerEnd + endHeader.size();
     const size_t vertexBytes = kVertexBytes + (withMaterials ? kMaterialBytes : 0);
-    if (bytes.size() - dataStart != vertexCount * vertexBytes + faceCount * kFaceBytes)
+    const size_t faceBytes = kFaceBytes + (withMaterials ? kFaceMaterialBytes : 0);
+    if (bytes.size() - dataStart != vertexCount * vertexBytes + faceCount * faceBytes)
         malformed(path, "data size does not match the header");
     Mesh mesh;
     mesh.positions.resize(vertexCount);
     mesh.normals.resize(vertexCount);
-    if (withMaterials) mesh.vertexMaterials.resize(vertexCount);
+    if (withMaterials) {
+        mesh.vertexMaterials.resize(vertexCount);
+        mesh.triangleMaterials.resize(faceCount);
+    }
     const char* at = bytes.data() + dataStart;
     for (size_t v = 0; v < vertexCount; ++v) {
         std::memcpy(&mesh.positions[v], at, 12);
@@ -129,7 +138,8 @@ Mesh readPly(const std::string& path) {
         if (uint8_t(*at) != 3) malformed(path, fmt::format("face {} is not a triangle", f));
         int32_t indices[3];
         std::memcpy(indices, at + 1, 12);
-        at += kFaceBytes;
+        if (withMaterials) mesh.triangleMaterials[f] = uint8_t(at[kFaceBytes]);
+        at += faceBytes;
         for (int32_t index : indices) {
             if (index < 0 || size_t(index) >= vertexCount) malformed(path, fmt::format("face {} has vertex index {} out of range", f, index));
             mesh.triangles.push_back(uint32_t(index));

@@ -13,7 +13,7 @@ namespace voxc {
 
 // Binary little-endian PLY: vertex x y z nx ny nz (float), and when the mesh has materials
 // `uchar material` plus `uchar red green blue` (the material's colour, so viewers show it);
-// face list uchar int vertex_indices.
+// face list uchar int vertex_indices, and with materials `uchar material` (the triangle's).
 void writePly(const std::string& path, const Mesh& mesh, std::span<const Material> materials = {});
 // Wavefront OBJ: `v`, `vn`, and `f a//a b//b c//c` with 1-based indices. When the mesh has
 // materials, faces are grouped by material (`g NAME` + `usemtl NAME`, ascending id) and
@@ -22,9 +22,8 @@ void writeObj(const std::string& path, const Mesh& mesh, std::span<const Materia
 // Picks the format from the extension (.ply or .obj, any case); anything else is a UserError.
 void writeMesh(const std::string& path, const Mesh& mesh, std::span<const Material> materials = {});
 
-// Reads the PLY subset writePly produces (triangles only, materials when present); UserError on anything else.
-// PLY stores no face materials, so the result's triangleMaterials is empty; vertexMaterials is
-// filled when the file has them.
+// Reads the PLY subset writePly produces (triangles only; vertex and triangle materials when the
+// file has them); UserError on anything else.
 Mesh readPly(const std::string& path);
 
 } // namespace voxc
