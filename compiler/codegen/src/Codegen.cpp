@@ -71,8 +71,13 @@ KernelPackage compileProgram(const Program& program, const CompileOptions& optio
                                        std::string glsl) {
         return makeKernel(std::move(name), std::move(origin), shape, std::move(glsl), package.usesMaterials);
     };
-    package.kernels.push_back(makePackageKernel("start", fmt::format("{} start", sourceName),
-                                                startDispatchShape(module), startKernelSource(module, sourceName)));
+    // No start kernel when remove-dead-stages dropped the start stage (a later `set` overwrites it).
+    const bool runsStart = std::any_of(module.pipeline.begin(), module.pipeline.end(),
+                                       [](const Stage& stage) { return stage.kind == Stage::Kind::Start; });
+    const uint32_t startKernel = uint32_t(package.kernels.size());
+    if (runsStart)
+        package.kernels.push_back(makePackageKernel("start", fmt::format("{} start", sourceName),
+                                                    startDispatchShape(module), startKernelSource(module, sourceName)));
 
     // One kernel per (field, mode, material) the pipeline runs, however often; the material is
     // part of the kernel ("<field>_<mode>_<material>").
@@ -141,7 +146,7 @@ KernelPackage compileProgram(const Program& program, const CompileOptions& optio
         plan.kind = stage.kind;
         switch (stage.kind) {
         case Stage::Kind::Start:
-            plan.startKernel = 0;
+            plan.startKernel = startKernel;
             if (densities)
                 for (const StartShape& shape : module.start)
                     densities = DensityBounds{std::min(densities->lo, shape.value), std::max(densities->hi, shape.value)};
