@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <algorithm>
 #include <gtest/gtest.h>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -156,6 +157,23 @@ TEST_F(codegen_Package, ArchUnionSkipsChunksItCannotChange) {
     }
     EXPECT_GT(evaluated, 0u);
     EXPECT_GT(unchanged, evaluated);
+}
+
+// Density bounds follow the pipeline through field stages: after `set ground` (a clamp to [0, 1])
+// the arch's union and the cave's subtract leave the chunks far from them undispatched.
+TEST_F(codegen_Package, FieldStagesAfterASetSkipChunksTheyCannotChange) {
+    CheckResult checked = checkFile(std::string(VOXC_EXAMPLES_DIR) + "/scene.vox");
+    ASSERT_TRUE(checked.program) << checked.rendered();
+    checked.program->world.chunkSize = 16;
+    const KernelPackage package = compileProgram(*checked.program);
+    for (const char* name : {"bridge", "grotto"}) {
+        const auto stage = std::find_if(package.stages.begin(), package.stages.end(),
+                                        [&](const StagePlan& s) { return s.fieldName == name; });
+        ASSERT_NE(stage, package.stages.end()) << name;
+        const size_t unchanged = size_t(std::count_if(stage->fieldBoxes.begin(), stage->fieldBoxes.end(),
+                                                      [](const FieldBox& box) { return box.unchanged; }));
+        EXPECT_GT(unchanged, 0u) << name;
+    }
 }
 #endif
 

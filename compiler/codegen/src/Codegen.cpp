@@ -137,9 +137,9 @@ KernelPackage compileProgram(const Program& program, const CompileOptions& optio
                                                     tileRangesDispatchShape(), tileRangesKernelSource()));
     }
 
-    // Every density is 0 before the pipeline; the start stage writes only its shapes' values.
-    // After a grammar or a field stage other than paint (which keeps every density) the bounds
-    // are not tracked.
+    // Every density is 0 before the pipeline; the start stage writes only its shapes' values; a
+    // field stage's bounds follow from the field's interval bounds. After a grammar they are not
+    // tracked.
     std::optional<DensityBounds> densities = DensityBounds{};
     for (const Stage& stage : module.pipeline) {
         StagePlan plan;
@@ -160,8 +160,9 @@ KernelPackage compileProgram(const Program& program, const CompileOptions& optio
             plan.fieldName = module.fields.at(stage.index).name;
             plan.fieldMode = stage.mode;
             plan.fieldMaterial = stage.material;
-            plan.fieldBoxes = fieldBoxes(module, module.fields.at(stage.index), stage.mode, stage.material, densities);
-            if (stage.mode != FieldMode::Paint) densities.reset();
+            FieldStageBoxes boxes = fieldBoxes(module, module.fields.at(stage.index), stage.mode, stage.material, densities);
+            plan.fieldBoxes = std::move(boxes.boxes);
+            densities = boxes.after;
             break;
         }
         package.stages.push_back(std::move(plan));

@@ -11,8 +11,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <bit>
+#include <cfloat>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <tuple>
@@ -181,6 +185,32 @@ bool combineKeepsVoxel(FieldMode mode, std::optional<uint8_t> material, float c,
     return false;
 }
 
+// Float bounds around the double bounds [lo, hi] of a field (rounded outward), if finite.
+std::optional<DensityBounds> floatBounds(double lo, double hi) {
+    if (!std::isfinite(lo) || !std::isfinite(hi) || lo > hi || std::fabs(lo) > FLT_MAX || std::fabs(hi) > FLT_MAX)
+        return std::nullopt;
+    float l = float(lo), h = float(hi);
+    if (double(l) > lo) l = std::nextafter(l, -INFINITY);
+    if (double(h) < hi) h = std::nextafter(h, INFINITY);
+    return DensityBounds{l, h};
+}
+
+// The densities after the combine, from those before and the field's bounds f: every float
+// operation of the combine is monotone, so applying it to the ends bounds its results.
+std::optional<DensityBounds> densitiesAfter(FieldMode mode, std::optional<DensityBounds> d, double lo, double hi) {
+    if (mode == FieldMode::Paint) return d;
+    const std::optional<DensityBounds> f = floatBounds(lo, hi);
+    if (!f) return std::nullopt;
+    if (mode == FieldMode::Set) return f;
+    if (!d) return std::nullopt;
+    switch (mode) {
+    case FieldMode::Union: return DensityBounds{std::max(d->lo, f->lo), std::max(d->hi, f->hi)};
+    case FieldMode::Subtract: return DensityBounds{std::min(d->lo, 1.0f - f->hi), std::min(d->hi, 1.0f - f->lo)};
+    case FieldMode::Intersect: return DensityBounds{std::min(d->lo, f->lo), std::min(d->hi, f->hi)};
+    default: return std::nullopt;
+    }
+}
+
 // Merges boxes that touch along `axis` and agree on everything else (the other axes' extents,
 // class, constant bits), so uniform regions become few large dispatches.
 std::vector<FieldBox> mergeAlong(const std::vector<FieldBox>& boxes, int axis) {
@@ -209,11 +239,14 @@ std::vector<FieldBox> mergeAlong(const std::vector<FieldBox>& boxes, int axis) {
 
 } // namespace
 
-std::vector<FieldBox> fieldBoxes(const ir::IrModule& module, const ir::IrField& field, FieldMode mode,
-                                 std::optional<uint8_t> material, std::optional<DensityBounds> before) {
+FieldStageBoxes fieldBoxes(const ir::IrModule& module, const ir::IrField& field, FieldMode mode,
+                           std::optional<uint8_t> material, std::optional<DensityBounds> before) {
     std::vector<FieldBox> boxes;
     glm::ivec3 lastChunk{0};
+    double fieldLo = std::numeric_limits<double>::infinity(), fieldHi = -fieldLo;
     for (const ir::FieldChunk& chunk : ir::classifyFieldChunks(module.world, field)) {
+        fieldLo = std::min(fieldLo, chunk.lo);
+        fieldHi = std::max(fieldHi, chunk.hi);
         const bool extends = !boxes.empty() && chunk.chunk.x == lastChunk.x + 1 && chunk.chunk.y == lastChunk.y &&
                              chunk.chunk.z == lastChunk.z && boxes.back().constant == chunk.constant &&
                              std::bit_cast<uint32_t>(boxes.back().value) == std::bit_cast<uint32_t>(chunk.value);
@@ -224,7 +257,7 @@ std::vector<FieldBox> fieldBoxes(const ir::IrModule& module, const ir::IrField& 
                                      chunk.constant && combineKeepsVoxel(mode, material, chunk.value, before)});
         lastChunk = chunk.chunk;
     }
-    return mergeAlong(mergeAlong(boxes, 1), 2);
+    return {mergeAlong(mergeAlong(boxes, 1), 2), densitiesAfter(mode, before, fieldLo, fieldHi)};
 }
 
 std::string fieldKernelSource(const ir::IrModule& module, const ir::IrField& field, FieldMode mode,

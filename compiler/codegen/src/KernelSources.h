@@ -39,8 +39,14 @@ struct DensityBounds {
 // known, constant boxes whose combine cannot change a density in it are marked unchanged.
 // A paint box with a constant is unchanged without `before` when the constant or the stage's
 // material leaves every voxel's material alone.
-std::vector<FieldBox> fieldBoxes(const ir::IrModule& module, const ir::IrField& field, FieldMode mode,
-                                 std::optional<uint8_t> material, std::optional<DensityBounds> before);
+// `after` bounds every density once the stage ran (from the field's bounds over all chunks),
+// when `before` is known or the stage is a `set`, and the field's bounds are finite.
+struct FieldStageBoxes {
+    std::vector<FieldBox> boxes;
+    std::optional<DensityBounds> after;
+};
+FieldStageBoxes fieldBoxes(const ir::IrModule& module, const ir::IrField& field, FieldMode mode,
+                           std::optional<uint8_t> material, std::optional<DensityBounds> before);
 DispatchShape fieldDispatchShape(const ir::IrModule& module);
 // `material`: the stages' material (Stage::material), written as voxc::combineField does.
 std::string fieldKernelSource(const ir::IrModule& module, const ir::IrField& field, FieldMode mode,

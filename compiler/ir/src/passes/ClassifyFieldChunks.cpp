@@ -75,6 +75,7 @@ std::vector<FieldChunk> classifyFieldChunks(const World& world, const IrField& f
                 chunk.localMin = glm::max(chunk.chunk * size - world.origin, glm::ivec3(0));
                 chunk.localMax = glm::min((chunk.chunk + 1) * size - world.origin, world.size);
                 const Interval root = rootInterval(world, field, chunk.localMin, chunk.localMax);
+                if (root.type == Type::Float) chunk.lo = root.lo.x, chunk.hi = root.hi.x;
                 if (root.type == Type::Float && root.exact) {
                     chunk.constant = true;
                     chunk.value = float(root.lo.x);

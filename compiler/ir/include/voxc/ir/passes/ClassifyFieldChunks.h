@@ -5,6 +5,7 @@
 #include "voxc/ir/Ir.h"
 
 #include <glm/vec3.hpp>
+#include <limits>
 #include <vector>
 
 namespace voxc::ir {
@@ -15,6 +16,9 @@ struct FieldChunk {
     glm::ivec3 localMax{0};
     bool constant = false;    // the field is exactly `value` (bits, signed zero included) at every voxel
     float value = 0.0f;
+    // Every value of the field in the chunk lies in [lo, hi] (infinite where unknown, never NaN).
+    double lo = -std::numeric_limits<double>::infinity();
+    double hi = std::numeric_limits<double>::infinity();
 };
 
 // Every chunk of the world's chunk grid that holds grid voxels, x fastest, then y, then z.
