@@ -195,20 +195,19 @@ std::optional<DensityBounds> floatBounds(double lo, double hi) {
     return DensityBounds{l, h};
 }
 
-// The densities after the combine, from those before and the field's bounds f: every float
-// operation of the combine is monotone, so applying it to the ends bounds its results.
+// The densities after the combine, from those before and the field's bounds f. voxc::combineField
+// is increasing in the density and in f, except subtract (decreasing in f), and its float operations
+// round monotonically, so combining the ends bounds every result. A set ignores the densities.
 std::optional<DensityBounds> densitiesAfter(FieldMode mode, std::optional<DensityBounds> d, double lo, double hi) {
     if (mode == FieldMode::Paint) return d;
     const std::optional<DensityBounds> f = floatBounds(lo, hi);
-    if (!f) return std::nullopt;
-    if (mode == FieldMode::Set) return f;
-    if (!d) return std::nullopt;
-    switch (mode) {
-    case FieldMode::Union: return DensityBounds{std::max(d->lo, f->lo), std::max(d->hi, f->hi)};
-    case FieldMode::Subtract: return DensityBounds{std::min(d->lo, 1.0f - f->hi), std::min(d->hi, 1.0f - f->lo)};
-    case FieldMode::Intersect: return DensityBounds{std::min(d->lo, f->lo), std::min(d->hi, f->hi)};
-    default: return std::nullopt;
-    }
+    if (!f || (!d && mode != FieldMode::Set)) return std::nullopt;
+    const DensityBounds before = d.value_or(DensityBounds{});
+    const bool decreasing = mode == FieldMode::Subtract;
+    const auto combine = [mode](float density, float field) {
+        return combineField(mode, std::nullopt, field, {density, kMaterialNone}).density;
+    };
+    return DensityBounds{combine(before.lo, decreasing ? f->hi : f->lo), combine(before.hi, decreasing ? f->lo : f->hi)};
 }
 
 // Merges boxes that touch along `axis` and agree on everything else (the other axes' extents,
