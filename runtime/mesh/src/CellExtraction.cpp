@@ -5,6 +5,10 @@
 namespace voxc::surface_nets {
 namespace {
 
+bool insideGrid(const ChunkedGrid& grid, glm::ivec3 p) {
+    return glm::all(glm::greaterThanEqual(p, glm::ivec3(0))) && glm::all(glm::lessThan(p, grid.layout().gridSize));
+}
+
 // Densities and materials of a chunk's cells plus a one-sample margin on every side (the extra
 // sample on the low side and the second one on the high side feed the central-difference gradients).
 class SampleBlock {
@@ -13,13 +17,12 @@ public:
         const size_t count = size_t(extent.x) * size_t(extent.y) * size_t(extent.z);
         values_.resize(count);
         materials_.resize(count);
-        const glm::ivec3 gridSize = grid.layout().gridSize;
         size_t i = 0;
         for (int z = 0; z < extent.z; ++z)
             for (int y = 0; y < extent.y; ++y)
                 for (int x = 0; x < extent.x; ++x, ++i) {
                     const glm::ivec3 p = first + glm::ivec3(x, y, z);
-                    const bool inside = glm::all(glm::greaterThanEqual(p, glm::ivec3(0))) && glm::all(glm::lessThan(p, gridSize));
+                    const bool inside = insideGrid(grid, p);
                     values_[i] = inside ? grid.at(p) : 0.0f; // outside the grid is air
                     materials_[i] = inside ? grid.materialAt(p) : kMaterialNone;
                 }
@@ -102,10 +105,8 @@ CellRange chunkCells(const ChunkLayout& layout, glm::ivec3 worldChunk) {
 }
 
 bool cellsAreUniform(const ChunkedGrid& grid, float iso, const CellRange& cells) {
-    const glm::ivec3 gridSize = grid.layout().gridSize;
     auto solidAt = [&](glm::ivec3 p) {
-        const bool inside = glm::all(glm::greaterThanEqual(p, glm::ivec3(0))) && glm::all(glm::lessThan(p, gridSize));
-        return (inside ? grid.at(p) : 0.0f) > iso; // outside the grid reads as density 0, as in SampleBlock
+        return (insideGrid(grid, p) ? grid.at(p) : 0.0f) > iso; // outside the grid reads as density 0, as in SampleBlock
     };
     const bool first = solidAt(cells.begin);
     for (int z = cells.begin.z; z <= cells.end.z; ++z)
