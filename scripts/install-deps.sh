@@ -8,6 +8,7 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
   libglm-dev libfmt-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev libnoise-dev zlib1g-dev
+  ccache python3-numpy
 )
 missing=()
 for p in "${packages[@]}"; do
