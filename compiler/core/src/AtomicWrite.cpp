@@ -1,46 +1,235 @@
 #include "voxc/core/AtomicWrite.h"
 
 #include "voxc/core/Errors.h"
+#include "voxc/core/TempFiles.h"
 
+#include <array>
+#include <atomic>
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <fmt/format.h>
-#include <fstream>
+#include <streambuf>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace voxc {
 
-void internalError(const char* file, int line, const std::string& what) {
-    throw InternalError(fmt::format("internal error at {}:{}: {}", file, line, what));
+namespace fs = std::filesystem;
+
+namespace {
+
+UserError cannotWrite(const std::string& path, const std::string& why) {
+    return UserError(fmt::format("cannot write '{}': {}", path, why));
 }
 
-void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
-    namespace fs = std::filesystem;
-    fs::path target(path);
-    fs::path temp = target;
-    temp += fmt::format(".tmp{}", ::getpid());
-    try {
-        {
-            std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-            if (!out) throw UserError(fmt::format("cannot write '{}': {}", path, std::strerror(errno)));
-            write(out);
-            out.flush();
-            if (!out) throw UserError(fmt::format("cannot write '{}': {}", path, std::strerror(errno)));
+// "PATH.tmp-PID-N": the pid keeps processes apart, the counter threads and files of one process.
+std::string siblingName(const fs::path& target) {
+    static std::atomic<uint64_t> counter{0};
+    return fmt::format("{}.tmp-{}-{}", target.string(), ::getpid(), counter++);
+}
+
+// A symlink is written through to the file it names; a dangling one is replaced itself.
+fs::path resolveTarget(const std::string& path) {
+    std::error_code ec;
+    if (fs::is_symlink(path, ec)) {
+        fs::path resolved = fs::canonical(path, ec);
+        if (!ec) return resolved;
+    }
+    return fs::path(path);
+}
+
+// An ostream buffer on a file descriptor: the temp file is opened with O_EXCL and synced before
+// the rename, which std::ofstream cannot do.
+class FdBuffer : public std::streambuf {
+public:
+    explicit FdBuffer(int fd) : fd_(fd) { setp(buffer_.data(), buffer_.data() + buffer_.size()); }
+    int error() const { return error_; }
+
+protected:
+    int_type overflow(int_type c) override {
+        if (!drain()) return traits_type::eof();
+        if (!traits_type::eq_int_type(c, traits_type::eof())) {
+            *pptr() = char(c);
+            pbump(1);
         }
-        std::error_code ec;
-        fs::rename(temp, target, ec);
-        if (ec) throw UserError(fmt::format("cannot write '{}': {}", path, ec.message()));
+        return traits_type::not_eof(c);
+    }
+    std::streamsize xsputn(const char* data, std::streamsize count) override {
+        if (size_t(count) < buffer_.size()) return std::streambuf::xsputn(data, count);
+        return drain() && writeAll(data, size_t(count)) ? count : 0; // big blocks skip the buffer
+    }
+    int sync() override { return drain() ? 0 : -1; }
+
+private:
+    bool drain() {
+        const bool ok = writeAll(pbase(), size_t(pptr() - pbase()));
+        setp(buffer_.data(), buffer_.data() + buffer_.size());
+        return ok;
+    }
+    bool writeAll(const char* data, size_t count) {
+        while (error_ == 0 && count > 0) {
+            const ssize_t written = ::write(fd_, data, count);
+            if (written < 0 && errno == EINTR) continue;
+            if (written < 0) error_ = errno;
+            else data += written, count -= size_t(written);
+        }
+        return error_ == 0;
+    }
+
+    int fd_;
+    int error_ = 0;
+    std::array<char, 1 << 16> buffer_;
+};
+
+// Writes, keeps a replaced file's permissions, syncs and closes `fd`; returns an errno or 0.
+int writeAndSync(int fd, const fs::path& target, const std::function<void(std::ostream&)>& write) {
+    int error = 0;
+    try {
+        FdBuffer buffer(fd);
+        std::ostream out(&buffer);
+        write(out);
+        out.flush();
+        error = buffer.error();
+        if (error == 0 && !out) error = EIO;
     } catch (...) {
-        std::error_code ignored;
-        fs::remove(temp, ignored);
+        ::close(fd);
         throw;
+    }
+    struct stat previous {};
+    if (error == 0 && ::stat(target.c_str(), &previous) == 0 && ::fchmod(fd, previous.st_mode & 07777) != 0) error = errno;
+    if (error == 0 && ::fsync(fd) != 0) error = errno;
+    if (::close(fd) != 0 && error == 0) error = errno;
+    return error;
+}
+
+} // namespace
+
+struct OutputFiles::Staged {
+    std::string shownPath; // as the user gave it, for messages
+    fs::path target;       // the file replaced: the path, or a symlink's target
+    fs::path temp;
+    bool tempExists = false;
+    CleanupEntry tempEntry;
+    // While several files are committed: a hard link to (or copy of) target's previous file ...
+    fs::path backup;
+    CleanupEntry backupEntry;
+    // ... or, when there was none, the entry that removes the new file on a signal.
+    CleanupEntry createdEntry;
+};
+
+OutputFiles::OutputFiles() = default;
+
+OutputFiles::~OutputFiles() {
+    for (const std::unique_ptr<Staged>& staged : staged_) {
+        if (staged->tempExists) ::unlink(staged->temp.c_str());
+        if (!staged->backup.empty()) ::unlink(staged->backup.c_str());
     }
 }
 
-void writeFileAtomically(const std::string& path, const std::string& contents) {
-    writeFileAtomically(path, [&](std::ostream& out) { out.write(contents.data(), std::streamsize(contents.size())); });
+void OutputFiles::add(const std::string& path, const std::function<void(std::ostream&)>& write) {
+    VOXC_ASSERT(!committed_);
+    auto staged = std::make_unique<Staged>();
+    staged->shownPath = path;
+    staged->target = resolveTarget(path);
+    std::error_code ec;
+    if (fs::is_directory(staged->target, ec)) throw cannotWrite(path, "it is a directory");
+
+    int fd = -1;
+    for (int attempt = 0; fd < 0; ++attempt) {
+        staged->temp = siblingName(staged->target);
+        staged->tempEntry = CleanupEntry(staged->temp.string());
+        fd = ::open(staged->temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd < 0 && (errno != EEXIST || attempt == 100)) throw cannotWrite(path, std::strerror(errno));
+    }
+    staged->tempExists = true;
+    staged->tempEntry.removeOnSignal();
+    int error = 0;
+    try {
+        error = writeAndSync(fd, staged->target, write);
+    } catch (...) {
+        ::unlink(staged->temp.c_str());
+        throw;
+    }
+    if (error != 0) {
+        ::unlink(staged->temp.c_str());
+        throw cannotWrite(path, std::strerror(error));
+    }
+    staged_.push_back(std::move(staged));
+}
+
+void OutputFiles::add(const std::string& path, std::string_view contents) {
+    add(path, [&](std::ostream& out) { out.write(contents.data(), std::streamsize(contents.size())); });
+}
+
+void OutputFiles::commit() {
+    VOXC_ASSERT(!committed_);
+    committed_ = true;
+    // One file is replaced by one rename, which happens or not. With several, every file that is
+    // replaced keeps a backup until all renames are done, so a failure can put them all back.
+    const bool several = staged_.size() > 1;
+    for (const std::unique_ptr<Staged>& staged : staged_) {
+        struct stat previous {};
+        if (!several || ::lstat(staged->target.c_str(), &previous) != 0) continue; // nothing to keep
+        std::string backup = siblingName(staged->target);
+        CleanupEntry entry(backup);
+        if (::link(staged->target.c_str(), backup.c_str()) != 0) {
+            // A file system without hard links: a copy does as well.
+            std::error_code ec;
+            if (!fs::copy_file(staged->target, backup, ec))
+                throw cannotWrite(staged->shownPath, fmt::format("cannot keep a copy of the previous file: {}", ec.message()));
+        }
+        staged->backup = backup;
+        staged->backupEntry = std::move(entry);
+        staged->backupEntry.removeOnSignal();
+    }
+    for (size_t i = 0; i < staged_.size(); ++i) {
+        Staged& file = *staged_[i];
+        if (several && !file.backup.empty()) file.backupEntry.restoreOnSignal(file.target.string());
+        if (several && file.backup.empty()) {
+            file.createdEntry = CleanupEntry(file.target.string());
+            file.createdEntry.removeOnSignal();
+        }
+        if (::rename(file.temp.c_str(), file.target.c_str()) != 0) {
+            std::string why = std::strerror(errno);
+            for (size_t done = 0; done < i; ++done) {
+                Staged& renamed = *staged_[done];
+                if (renamed.backup.empty()) {
+                    ::unlink(renamed.target.c_str());
+                    continue;
+                }
+                // A backup that cannot be put back stays, and the message says where.
+                if (::rename(renamed.backup.c_str(), renamed.target.c_str()) != 0)
+                    why += fmt::format("; the previous '{}' is kept as '{}'", renamed.shownPath, renamed.backup.string());
+                renamed.backupEntry.ignoreOnSignal();
+                renamed.backup.clear();
+            }
+            throw cannotWrite(file.shownPath, why);
+        }
+        file.tempExists = false;
+        file.tempEntry.ignoreOnSignal();
+    }
+    for (const std::unique_ptr<Staged>& staged : staged_) {
+        staged->createdEntry = CleanupEntry();
+        if (staged->backup.empty()) continue;
+        staged->backupEntry.removeOnSignal();
+        ::unlink(staged->backup.c_str());
+        staged->backup.clear();
+        staged->backupEntry = CleanupEntry();
+    }
+}
+
+void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
+    OutputFiles files;
+    files.add(path, write);
+    files.commit();
+}
+
+void writeFileAtomically(const std::string& path, std::string_view contents) {
+    OutputFiles files;
+    files.add(path, contents);
+    files.commit();
 }
 
 } // namespace voxc

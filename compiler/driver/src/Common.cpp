@@ -63,15 +63,15 @@ void requireExtension(const std::string& path, std::initializer_list<const char*
     throw UserError(fmt::format("{} '{}' must end in {}", what, path, list));
 }
 
-void writeGridFiles(const std::string& voxelsPath, const std::string& materialsPath, const DenseGrid& grid) {
-    if (!voxelsPath.empty()) {
-        writeNpy(voxelsPath, grid);
-        std::cerr << "wrote " << voxelsPath << "\n";
-    }
-    if (!materialsPath.empty()) {
-        writeMaterialNpy(materialsPath, grid);
-        std::cerr << "wrote " << materialsPath << "\n";
-    }
+void writeGridFiles(OutputFiles& outputs, const std::string& voxelsPath, const std::string& materialsPath,
+                    const DenseGrid& grid) {
+    if (!voxelsPath.empty()) writeNpy(outputs, voxelsPath, grid);
+    if (!materialsPath.empty()) writeMaterialNpy(outputs, materialsPath, grid);
+}
+
+void reportWritten(std::initializer_list<std::string> paths) {
+    for (const std::string& path : paths)
+        if (!path.empty()) std::cerr << "wrote " << path << "\n";
 }
 
 } // namespace voxc::driver

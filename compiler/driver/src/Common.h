@@ -25,9 +25,13 @@ Program loadProgram(const std::string& path, const WorldOverrides& overrides, bo
 // "solid voxels by material: none 12, rock 5120, sand 733"; materials with no solid voxel are left out.
 std::string formatMaterialCounts(const Program& program, const DenseGrid& grid, float iso);
 
-// The --voxels (float densities) and --materials (uint8 ids) files of `grid`; an empty path is
-// skipped. Each write is atomic and reported on stderr.
-void writeGridFiles(const std::string& voxelsPath, const std::string& materialsPath, const DenseGrid& grid);
+// Adds the --voxels (float densities) and --materials (uint8 ids) files of `grid` to `outputs`;
+// an empty path is skipped. The caller commits the set and reports the files (reportWritten).
+void writeGridFiles(OutputFiles& outputs, const std::string& voxelsPath, const std::string& materialsPath,
+                    const DenseGrid& grid);
+
+// "wrote PATH" on stderr for each non-empty path, after the set was committed.
+void reportWritten(std::initializer_list<std::string> paths);
 
 // Output file names: the extension must be one of `extensions` (e.g. {".ply", ".obj"}).
 void requireExtension(const std::string& path, std::initializer_list<const char*> extensions, const char* what);

@@ -1,5 +1,6 @@
 #include "Commands.h"
 #include "Common.h"
+#include "OutputPaths.h"
 
 #include "voxc/codegen/Codegen.h"
 #include "voxc/ir/Lower.h"
@@ -28,6 +29,8 @@ void addCompileCommand(CLI::App& app) {
     command->add_flag("--dump-ir", options->dumpIr, "Print the IR after every compiler pass to stdout");
     addWorldOverrideFlags(*command, options->overrides);
     command->callback([options] {
+        const RolePath inputs[] = {{"the input", options->file}};
+        refuseInputsInside({"-o", options->outputDir}, inputs);
         const Program program = loadProgram(options->file, options->overrides);
         codegen::CompileOptions compileOptions;
         if (options->dumpIr) {

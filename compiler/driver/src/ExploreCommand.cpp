@@ -1,5 +1,6 @@
 #include "Commands.h"
 #include "Common.h"
+#include "OutputPaths.h"
 
 #include "voxc/core/AtomicWrite.h"
 #include "voxc/core/Errors.h"
@@ -69,6 +70,9 @@ void exploreFile(const ExploreOptions& options) {
     if (!options.runsCsv.empty()) requireExtension(options.runsCsv, {".csv"}, "--csv file");
     if (!options.summaryCsv.empty()) requireExtension(options.summaryCsv, {".csv"}, "--summary file");
     if (!options.png.empty()) requireExtension(options.png, {".png"}, "--png file");
+    const RolePath inputs[] = {{"the input", options.file}};
+    const RolePath outputs[] = {{"--csv", options.runsCsv}, {"--summary", options.summaryCsv}, {"--png", options.png}};
+    refuseClashingPaths(inputs, outputs);
 
     explore::ExploreSettings settings;
     settings.parameter = options.parameter;
@@ -88,21 +92,17 @@ void exploreFile(const ExploreOptions& options) {
     std::cerr << result.warnings;
     std::cout << explore::formatSummaryTable(result);
 
-    if (!options.runsCsv.empty()) {
-        writeFileAtomically(options.runsCsv, explore::formatRunsCsv(result));
-        std::cerr << "wrote " << options.runsCsv << "\n";
-    }
-    if (!options.summaryCsv.empty()) {
-        writeFileAtomically(options.summaryCsv, explore::formatSummaryCsv(result));
-        std::cerr << "wrote " << options.summaryCsv << "\n";
-    }
+    OutputFiles files;
+    if (!options.runsCsv.empty()) files.add(options.runsCsv, explore::formatRunsCsv(result));
+    if (!options.summaryCsv.empty()) files.add(options.summaryCsv, explore::formatSummaryCsv(result));
     if (!options.png.empty()) {
         const std::string title =
             fmt::format("{}: {} FROM {} TO {} STEP {}", std::filesystem::path(options.file).filename().string(),
                         options.parameter, settings.values.front(), settings.values.back(), range.step);
-        explore::writePng(options.png, explore::plotExploration(result, title));
-        std::cerr << "wrote " << options.png << "\n";
+        files.add(options.png, explore::encodePng(explore::plotExploration(result, title)));
     }
+    files.commit();
+    reportWritten({options.runsCsv, options.summaryCsv, options.png});
 }
 
 } // namespace

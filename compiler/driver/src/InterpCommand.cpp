@@ -1,5 +1,6 @@
 #include "Commands.h"
 #include "Common.h"
+#include "OutputPaths.h"
 
 #include "voxc/core/Errors.h"
 #include "voxc/grid/Grid.h"
@@ -73,7 +74,10 @@ void interpretFile(const InterpOptions& options) {
     if (slice) std::cout << renderSlice(grid, slice->axis, slice->index);
     // Solid as the mesh of `voxc run` sees it at its default --iso.
     if (program.usesMaterials()) std::cerr << formatMaterialCounts(program, grid, 0.5f);
-    writeGridFiles(options.voxelsPath, options.materialsPath, grid);
+    OutputFiles files;
+    writeGridFiles(files, options.voxelsPath, options.materialsPath, grid);
+    files.commit();
+    reportWritten({options.voxelsPath, options.materialsPath});
 }
 
 } // namespace
@@ -95,6 +99,9 @@ void addInterpCommand(CLI::App& app) {
     command->callback([options] {
         if (!options->voxelsPath.empty()) requireExtension(options->voxelsPath, {".npy"}, "voxel file");
         if (!options->materialsPath.empty()) requireExtension(options->materialsPath, {".npy"}, "material file");
+        const RolePath inputs[] = {{"the input", options->file}};
+        const RolePath outputs[] = {{"--voxels", options->voxelsPath}, {"--materials", options->materialsPath}};
+        refuseClashingPaths(inputs, outputs);
         interpretFile(*options);
     });
 }

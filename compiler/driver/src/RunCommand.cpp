@@ -1,5 +1,6 @@
 #include "Commands.h"
 #include "Common.h"
+#include "OutputPaths.h"
 
 #include "voxc/codegen/Codegen.h"
 #include "voxc/core/Errors.h"
@@ -39,6 +40,13 @@ void run(const RunOptions& options) {
     if (!options.meshPath.empty()) requireExtension(options.meshPath, {".ply", ".obj"}, "mesh file");
     if (!options.voxelsPath.empty()) requireExtension(options.voxelsPath, {".npy"}, "voxel file");
     if (!options.materialsPath.empty()) requireExtension(options.materialsPath, {".npy"}, "material file");
+    const std::string libraryPath = options.meshPath.ends_with(".obj") ? objMaterialLibraryPath(options.meshPath) : "";
+    const RolePath inputs[] = {{"the input", options.file}};
+    const RolePath outputs[] = {{"-o", options.meshPath},
+                                {"the material library of -o", libraryPath},
+                                {"--voxels", options.voxelsPath},
+                                {"--materials", options.materialsPath}};
+    refuseClashingPaths(inputs, outputs);
 
     const Program program = loadProgram(options.file, options.overrides);
     const KernelPackage package = codegen::compileProgram(program, {});
@@ -57,11 +65,14 @@ void run(const RunOptions& options) {
                                  100.0 * double(result.skip.activeTilePhases) / double(result.skip.tilePhases),
                                  result.skip.tileSize);
 
+    // Every file is written in full before any of them replaces what the user had.
+    OutputFiles files;
     if (!options.voxelsPath.empty() || !options.materialsPath.empty() || program.usesMaterials()) {
         const DenseGrid dense = voxels.toDense();
         if (program.usesMaterials()) std::cerr << formatMaterialCounts(program, dense, options.iso);
-        writeGridFiles(options.voxelsPath, options.materialsPath, dense);
+        writeGridFiles(files, options.voxelsPath, options.materialsPath, dense);
     }
+    std::string meshReport;
     if (!options.meshPath.empty()) {
         MeshStats stats;
         const Mesh mesh = meshSurfaceNets(voxels, MeshOptions{.iso = options.iso}, &stats);
@@ -71,12 +82,17 @@ void run(const RunOptions& options) {
         if (!topology.closed() || topology.duplicateTriangles != 0)
             throw InternalError(fmt::format("the mesh has {} boundary edges and {} duplicate faces",
                                             topology.boundaryEdges, topology.duplicateTriangles));
-        writeMesh(options.meshPath, mesh, program.materials);
-        std::cerr << fmt::format("wrote {}: {} vertices, {} triangles, watertight ({} non-manifold edges at saddles); "
+        writeMesh(files, options.meshPath, mesh, program.materials);
+        if (mesh.triangles.empty())
+            std::cerr << fmt::format("voxc: warning: the mesh is empty: no voxel crosses --iso {}\n", options.iso);
+        meshReport = fmt::format("wrote {}: {} vertices, {} triangles, watertight ({} non-manifold edges at saddles); "
                                  "skipped {} of {} chunks with no surface\n",
                                  options.meshPath, mesh.positions.size(), mesh.triangles.size() / 3,
                                  topology.nonManifoldEdges, stats.skippedChunks, stats.chunks);
     }
+    files.commit();
+    reportWritten({options.voxelsPath, options.materialsPath});
+    std::cerr << meshReport;
     if (options.validate) {
         const std::vector<ValidationMessage> messages = context.validationMessages();
         std::cerr << fmt::format("validation layer: {} message{}\n", messages.size(), messages.size() == 1 ? "" : "s");

@@ -2,11 +2,13 @@
 #include "Commands.h"
 
 #include "voxc/core/Errors.h"
+#include "voxc/core/TempFiles.h"
 
 #include <exception>
 #include <iostream>
 
 int main(int argc, char** argv) {
+    voxc::installTempFileCleanup(); // before any file is written
     CLI::App app{"voxc: compiles .vox voxel grammar files to Vulkan compute kernels and runs them"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "voxc 0.1.0");

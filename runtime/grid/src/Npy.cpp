@@ -101,10 +101,11 @@ NpyArray readArray(const std::string& path, std::initializer_list<std::string_vi
 }
 
 // Writes the header and calls `row(x, y, out)` for every (x, y) in C order (z fastest).
-void writeArray(const std::string& path, glm::ivec3 shape, const char* descr, const std::function<void(int, int, std::ostream&)>& row) {
+void writeArray(OutputFiles& outputs, const std::string& path, glm::ivec3 shape, const char* descr,
+                const std::function<void(int, int, std::ostream&)>& row) {
     const std::string header = npyHeader(shape, descr);
     VOXC_ASSERT(header.size() <= 0xffff);
-    writeFileAtomically(path, [&](std::ostream& out) {
+    outputs.add(path, [&](std::ostream& out) {
         out.write(kMagic, kMagicLength);
         const char preamble[4] = {1, 0, char(header.size() & 0xff), char(header.size() >> 8)};
         out.write(preamble, 4);
@@ -116,13 +117,19 @@ void writeArray(const std::string& path, glm::ivec3 shape, const char* descr, co
 
 } // namespace
 
-void writeNpy(const std::string& path, const DenseGrid& grid) {
+void writeNpy(OutputFiles& outputs, const std::string& path, const DenseGrid& grid) {
     // C order puts z fastest, the transpose of DenseGrid's x-fastest storage.
     std::vector<float> values(size_t(grid.size().z));
-    writeArray(path, grid.size(), "<f4", [&](int x, int y, std::ostream& out) {
+    writeArray(outputs, path, grid.size(), "<f4", [&](int x, int y, std::ostream& out) {
         for (int z = 0; z < grid.size().z; ++z) values[size_t(z)] = grid.at({x, y, z});
         out.write(reinterpret_cast<const char*>(values.data()), std::streamsize(values.size() * sizeof(float)));
     });
+}
+
+void writeNpy(const std::string& path, const DenseGrid& grid) {
+    OutputFiles outputs;
+    writeNpy(outputs, path, grid);
+    outputs.commit();
 }
 
 DenseGrid readNpy(const std::string& path) {
@@ -142,12 +149,18 @@ DenseGrid readNpy(const std::string& path) {
     return grid;
 }
 
-void writeMaterialNpy(const std::string& path, const DenseGrid& grid) {
+void writeMaterialNpy(OutputFiles& outputs, const std::string& path, const DenseGrid& grid) {
     std::string values(size_t(grid.size().z), '\0');
-    writeArray(path, grid.size(), "|u1", [&](int x, int y, std::ostream& out) {
+    writeArray(outputs, path, grid.size(), "|u1", [&](int x, int y, std::ostream& out) {
         for (int z = 0; z < grid.size().z; ++z) values[size_t(z)] = char(grid.materialAt({x, y, z}));
         out.write(values.data(), std::streamsize(values.size()));
     });
+}
+
+void writeMaterialNpy(const std::string& path, const DenseGrid& grid) {
+    OutputFiles outputs;
+    writeMaterialNpy(outputs, path, grid);
+    outputs.commit();
 }
 
 void readMaterialNpy(const std::string& path, DenseGrid& grid) {

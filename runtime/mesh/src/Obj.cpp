@@ -32,7 +32,7 @@ std::string materialLibrary(const std::set<uint8_t>& ids, std::span<const Materi
 
 } // namespace
 
-void writeObj(const std::string& path, const Mesh& mesh, std::span<const Material> materials) {
+void writeObj(OutputFiles& outputs, const std::string& path, const Mesh& mesh, std::span<const Material> materials) {
     VOXC_ASSERT(mesh.normals.size() == mesh.positions.size() && mesh.triangles.size() % 3 == 0);
     const size_t triangleCount = mesh.triangles.size() / 3;
     const bool withMaterials = mesh_export::writesMaterials(mesh, materials);
@@ -42,10 +42,9 @@ void writeObj(const std::string& path, const Mesh& mesh, std::span<const Materia
 
     fmt::memory_buffer out;
     fmt::format_to(std::back_inserter(out), "# voxc surface nets: {} vertices, {} triangles\n", mesh.positions.size(), triangleCount);
-    const std::filesystem::path objPath(path);
-    const std::string library = objPath.stem().string() + ".mtl";
-    const std::string libraryPath = (objPath.parent_path() / library).string();
-    if (withMaterials) fmt::format_to(std::back_inserter(out), "mtllib {}\n", library);
+    const std::string libraryPath = objMaterialLibraryPath(path);
+    if (withMaterials)
+        fmt::format_to(std::back_inserter(out), "mtllib {}\n", std::filesystem::path(libraryPath).filename().string());
     // {} prints the shortest text that reads back as the same float.
     for (const glm::vec3& p : mesh.positions) fmt::format_to(std::back_inserter(out), "v {} {} {}\n", p.x, p.y, p.z);
     for (const glm::vec3& n : mesh.normals) fmt::format_to(std::back_inserter(out), "vn {} {} {}\n", n.x, n.y, n.z);
@@ -59,25 +58,34 @@ void writeObj(const std::string& path, const Mesh& mesh, std::span<const Materia
                 if (mesh_export::triangleMaterial(mesh, t) == id) appendFace(out, mesh, t);
         }
     }
-    if (!withMaterials) return writeFileAtomically(path, std::string(out.data(), out.size()));
-    // The library goes first so that an OBJ on disk never names a missing .mtl, and goes away
-    // again when the OBJ cannot be written, so a failure leaves neither file.
-    writeFileAtomically(libraryPath, materialLibrary(ids, materials));
-    try {
-        writeFileAtomically(path, std::string(out.data(), out.size()));
-    } catch (...) {
-        std::error_code ignored;
-        std::filesystem::remove(libraryPath, ignored);
-        throw;
-    }
+    // The library first: the set renames in order, so an OBJ on disk never names a missing .mtl.
+    if (withMaterials) outputs.add(libraryPath, materialLibrary(ids, materials));
+    outputs.add(path, std::string_view(out.data(), out.size()));
+}
+
+void writeObj(const std::string& path, const Mesh& mesh, std::span<const Material> materials) {
+    OutputFiles outputs;
+    writeObj(outputs, path, mesh, materials);
+    outputs.commit();
+}
+
+std::string objMaterialLibraryPath(const std::string& objPath) {
+    const std::filesystem::path obj(objPath);
+    return (obj.parent_path() / (obj.stem().string() + ".mtl")).string();
+}
+
+void writeMesh(OutputFiles& outputs, const std::string& path, const Mesh& mesh, std::span<const Material> materials) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (extension == ".ply") return writePly(outputs, path, mesh, materials);
+    if (extension == ".obj") return writeObj(outputs, path, mesh, materials);
+    throw UserError(fmt::format("unknown mesh format '{}' for '{}' (use .ply or .obj)", extension, path));
 }
 
 void writeMesh(const std::string& path, const Mesh& mesh, std::span<const Material> materials) {
-    std::string extension = std::filesystem::path(path).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    if (extension == ".ply") return writePly(path, mesh, materials);
-    if (extension == ".obj") return writeObj(path, mesh, materials);
-    throw UserError(fmt::format("unknown mesh format '{}' for '{}' (use .ply or .obj)", extension, path));
+    OutputFiles outputs;
+    writeMesh(outputs, path, mesh, materials);
+    outputs.commit();
 }
 
 } // namespace voxc

@@ -68,7 +68,7 @@ void expectLine(const std::string& line, const std::string& expected, const std:
 
 } // namespace
 
-void writePly(const std::string& path, const Mesh& mesh, std::span<const Material> materials) {
+void writePly(OutputFiles& outputs, const std::string& path, const Mesh& mesh, std::span<const Material> materials) {
     VOXC_ASSERT(mesh.normals.size() == mesh.positions.size() && mesh.triangles.size() % 3 == 0);
     const bool withMaterials = mesh_export::writesMaterials(mesh, materials);
     std::string bytes = plyHeader(mesh.positions.size(), mesh.triangles.size() / 3, withMaterials);
@@ -87,7 +87,13 @@ void writePly(const std::string& path, const Mesh& mesh, std::span<const Materia
         for (size_t k = 0; k < 3; ++k) append(bytes, int32_t(mesh.triangles[t + k]));
         if (withMaterials) append(bytes, mesh_export::triangleMaterial(mesh, t / 3));
     }
-    writeFileAtomically(path, bytes);
+    outputs.add(path, bytes);
+}
+
+void writePly(const std::string& path, const Mesh& mesh, std::span<const Material> materials) {
+    OutputFiles outputs;
+    writePly(outputs, path, mesh, materials);
+    outputs.commit();
 }
 
 Mesh readPly(const std::string& path) {

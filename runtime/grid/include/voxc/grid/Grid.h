@@ -2,6 +2,7 @@
 // Voxel storage. DenseGrid is the interpreter's plain array; ChunkedGrid is the runtime's
 // chunk-major layout, identical to the GPU buffer, with chunks aligned to world coordinates
 // (so a grid whose origin is not a multiple of the chunk size straddles chunks).
+#include "voxc/core/AtomicWrite.h"
 #include "voxc/program/Program.h"
 
 #include <cstdint>
@@ -73,13 +74,16 @@ private:
     std::vector<uint8_t> materials_; // same addresses as data_
 };
 
-// NumPy .npy, float32, C order, shape (sx, sy, sz): arr[x,y,z] is voxel (x,y,z). Written atomically.
+// NumPy .npy, float32, C order, shape (sx, sy, sz): arr[x,y,z] is voxel (x,y,z). Written atomically;
+// the OutputFiles overloads add the file to a set the caller commits (voxc/core/AtomicWrite.h).
 // Densities only; materials are a file of their own.
 void writeNpy(const std::string& path, const DenseGrid& grid);
+void writeNpy(OutputFiles& outputs, const std::string& path, const DenseGrid& grid);
 DenseGrid readNpy(const std::string& path); // materials all kMaterialNone
 
 // The material channel as NumPy .npy, uint8 ('|u1'), same shape and order. Written atomically.
 void writeMaterialNpy(const std::string& path, const DenseGrid& grid);
+void writeMaterialNpy(OutputFiles& outputs, const std::string& path, const DenseGrid& grid);
 // Reads such a file into the materials of `grid` (UserError when the shape differs).
 void readMaterialNpy(const std::string& path, DenseGrid& grid);
 

@@ -1,5 +1,8 @@
 #pragma once
-// Mesh files. Every writer goes through writeFileAtomically and throws UserError on failure.
+// Mesh files, written atomically (voxc/core/AtomicWrite.h); every writer throws UserError on
+// failure. The overloads taking OutputFiles add the file(s) to a set the caller commits, so that
+// a command's outputs appear together or not at all.
+#include "voxc/core/AtomicWrite.h"
 #include "voxc/mesh/Mesh.h"
 #include "voxc/program/Program.h"
 
@@ -15,12 +18,20 @@ namespace voxc {
 // `uchar material` plus `uchar red green blue` (the material's colour, so viewers show it);
 // face list uchar int vertex_indices, and with materials `uchar material` (the triangle's).
 void writePly(const std::string& path, const Mesh& mesh, std::span<const Material> materials = {});
+void writePly(OutputFiles& outputs, const std::string& path, const Mesh& mesh, std::span<const Material> materials = {});
 // Wavefront OBJ: `v`, `vn`, and `f a//a b//b c//c` with 1-based indices. When the mesh has
 // materials, faces are grouped by material (`g NAME` + `usemtl NAME`, ascending id) and
-// `mtllib STEM.mtl` names a material library written beside the OBJ (before it), Kd = colour.
+// `mtllib STEM.mtl` names a material library written beside the OBJ (objMaterialLibraryPath),
+// Kd = colour. The two files are one set: the .mtl is renamed first, so an OBJ on disk never
+// names a missing library, and a failure leaves both previous files as they were.
 void writeObj(const std::string& path, const Mesh& mesh, std::span<const Material> materials = {});
+void writeObj(OutputFiles& outputs, const std::string& path, const Mesh& mesh, std::span<const Material> materials = {});
 // Picks the format from the extension (.ply or .obj, any case); anything else is a UserError.
 void writeMesh(const std::string& path, const Mesh& mesh, std::span<const Material> materials = {});
+void writeMesh(OutputFiles& outputs, const std::string& path, const Mesh& mesh, std::span<const Material> materials = {});
+
+// The .mtl beside an OBJ: "dir/STEM.obj" -> "dir/STEM.mtl" (written only when the mesh has materials).
+std::string objMaterialLibraryPath(const std::string& objPath);
 
 // Reads the PLY subset writePly produces (triangles only; vertex and triangle materials when the
 // file has them); UserError on anything else.
