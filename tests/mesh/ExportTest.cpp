@@ -217,11 +217,22 @@ TEST(mesh_Export, unwritableObjLeavesNoFiles) {
     EXPECT_THROW(writeObj(dir + "x.obj", materialBallMesh(), rockAndSand()), UserError);
     EXPECT_THROW(writePly(dir + "x.ply", materialBallMesh(), rockAndSand()), UserError);
     EXPECT_FALSE(std::filesystem::exists(dir));
-    // The OBJ's name is taken by a directory: the library written before it is removed again.
+    // The OBJ's name is taken by a directory: its library is not written either.
     const std::string taken = testing::TempDir() + "mesh_taken.obj";
     std::filesystem::create_directories(taken);
     EXPECT_THROW(writeObj(taken, materialBallMesh(), rockAndSand()), UserError);
     EXPECT_FALSE(std::filesystem::exists(testing::TempDir() + "mesh_taken.mtl"));
+}
+
+// A failed OBJ export must not touch the .mtl the user already has beside it.
+TEST(mesh_Export, failedObjKeepsThePreviousLibrary) {
+    const std::string dir = testing::TempDir() + "mesh_keep_library/";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir + "scene.obj");
+    std::ofstream(dir + "scene.mtl") << "newmtl the_users_own\n";
+    EXPECT_THROW(writeObj(dir + "scene.obj", materialBallMesh(), rockAndSand()), UserError);
+    EXPECT_EQ(readText(dir + "scene.mtl"), "newmtl the_users_own\n");
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()), 2);
 }
 
 } // namespace

@@ -121,11 +121,14 @@ struct OutputFiles::Staged {
 
 OutputFiles::OutputFiles() = default;
 
-OutputFiles::~OutputFiles() {
+OutputFiles::~OutputFiles() { discard(); }
+
+void OutputFiles::discard() noexcept {
     for (const std::unique_ptr<Staged>& staged : staged_) {
         if (staged->tempExists) ::unlink(staged->temp.c_str());
         if (!staged->backup.empty()) ::unlink(staged->backup.c_str());
     }
+    staged_.clear(); // releases the registry entries
 }
 
 void OutputFiles::add(const std::string& path, const std::function<void(std::ostream&)>& write) {
@@ -166,6 +169,16 @@ void OutputFiles::add(const std::string& path, std::string_view contents) {
 void OutputFiles::commit() {
     VOXC_ASSERT(!committed_);
     committed_ = true;
+    try {
+        renameAll();
+    } catch (...) {
+        discard();
+        throw;
+    }
+    discard(); // only the entries are left
+}
+
+void OutputFiles::renameAll() {
     // One file is replaced by one rename, which happens or not. With several, every file that is
     // replaced keeps a backup until all renames are done, so a failure can put them all back.
     const bool several = staged_.size() > 1;
@@ -210,13 +223,10 @@ void OutputFiles::commit() {
         file.tempExists = false;
         file.tempEntry.ignoreOnSignal();
     }
+    // Done: from now on a signal removes the backups rather than putting them back.
     for (const std::unique_ptr<Staged>& staged : staged_) {
         staged->createdEntry = CleanupEntry();
-        if (staged->backup.empty()) continue;
-        staged->backupEntry.removeOnSignal();
-        ::unlink(staged->backup.c_str());
-        staged->backup.clear();
-        staged->backupEntry = CleanupEntry();
+        if (!staged->backup.empty()) staged->backupEntry.removeOnSignal();
     }
 }
 

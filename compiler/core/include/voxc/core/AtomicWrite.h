@@ -34,6 +34,8 @@ public:
 
 private:
     struct Staged;
+    void renameAll();
+    void discard() noexcept; // removes what is left of the temp files and backups
     std::vector<std::unique_ptr<Staged>> staged_;
     bool committed_ = false;
 };
