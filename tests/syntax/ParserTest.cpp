@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 namespace voxc {
 namespace {
 
@@ -75,6 +77,22 @@ TEST(syntax_Parser, NumberForms) {
     EXPECT_EQ(parsed.file.constants[0].value->number, 1500.0);
     EXPECT_EQ(parsed.file.constants[1].value->number, 0.25);
     EXPECT_EQ(parsed.file.constants[2].value->number, 7.0);
+}
+
+// Beyond the double range a literal is infinite, for the checker to report (E0007), never the
+// zero that a failed conversion leaves; below it, a literal is zero.
+TEST(syntax_Parser, NumbersBeyondTheDoubleRange) {
+    Parsed parsed = parseText("const A = 1e999; const B = 123456.7e305; const C = 0.00001e309; const D = 1e-999;"
+                              "const E = 0.0e999; const F = 1e99999999999999999999; field f = 1e400;");
+    ASSERT_TRUE(parsed.diagnostics.empty());
+    const double inf = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(parsed.file.constants[0].value->number, inf);
+    EXPECT_EQ(parsed.file.constants[1].value->number, inf);
+    EXPECT_EQ(parsed.file.constants[2].value->number, 1e304);
+    EXPECT_EQ(parsed.file.constants[3].value->number, 0.0);
+    EXPECT_EQ(parsed.file.constants[4].value->number, 0.0);
+    EXPECT_EQ(parsed.file.constants[5].value->number, inf);
+    EXPECT_EQ(parsed.file.fields[0].value->number, inf);
 }
 
 TEST(syntax_Parser, CommentsAreSkipped) {

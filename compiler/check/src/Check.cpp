@@ -133,7 +133,7 @@ CheckResult checkSource(const SourceFile& source, const CheckOptions& options) {
     CheckResult result;
     result.source = source;
     if (!reportIfNotText(source, diagnostics)) {
-        ast::File file = parse(source, diagnostics);
+        ast::File file = parse(source, diagnostics, uint32_t(options.limits.maxNesting));
         if (!diagnostics.hasErrors()) {
             check::Context context{diagnostics, options.limits, check::Constants(diagnostics, options.constOverrides), {}};
             Program program = check::checkProgram(context, file, source.path());
@@ -150,7 +150,7 @@ CheckResult checkFile(const std::string& path, const Limits& limits) {
 
 CheckResult checkFile(const std::string& path, const CheckOptions& options) {
     Diagnostics diagnostics;
-    std::optional<SourceFile> source = loadSourceFile(path, diagnostics);
+    std::optional<SourceFile> source = loadSourceFile(path, diagnostics, size_t(options.limits.maxSourceBytes));
     if (!source) {
         CheckResult result;
         result.source = SourceFile(path, "");

@@ -2,7 +2,9 @@
 
 #include "SyntaxErrors.h"
 
+#include <algorithm>
 #include <charconv>
+#include <limits>
 
 namespace voxc {
 
@@ -23,9 +25,34 @@ SourceLoc contextLoc(antlr4::ParserRuleContext& ctx) {
 
 std::string nodeText(antlr4::tree::TerminalNode* node) { return node ? node->getText() : std::string(); }
 
+// The decimal exponent of the first significant digit: 2 for "123.4", -1 for "0.05", 999 for
+// "1e999". Saturates far beyond any double's range. Only called for digit strings.
+int64_t leadingExponent(const std::string& text) {
+    size_t exponentAt = text.find_first_of("eE");
+    std::string_view mantissa = std::string_view(text).substr(0, exponentAt);
+    int64_t exponent = 0;
+    if (exponentAt != std::string::npos) {
+        size_t i = exponentAt + 1;
+        bool negative = i < text.size() && text[i] == '-';
+        if (i < text.size() && (text[i] == '-' || text[i] == '+')) ++i;
+        for (; i < text.size(); ++i) exponent = std::min<int64_t>(exponent * 10 + (text[i] - '0'), int64_t(1) << 40);
+        if (negative) exponent = -exponent;
+    }
+    size_t point = mantissa.find('.');
+    size_t integerDigits = point == std::string_view::npos ? mantissa.size() : point;
+    size_t first = mantissa.find_first_of("123456789");
+    if (first == std::string_view::npos) return 0;
+    int64_t position = first < integerDigits ? int64_t(integerDigits - first) - 1 : -int64_t(first - integerDigits);
+    return exponent + position;
+}
+
+// A literal beyond the double range reads as infinity (which the checker reports as E0007);
+// one too small to represent reads as zero.
 double parseNumber(const std::string& text) {
     double value = 0.0;
-    std::from_chars(text.data(), text.data() + text.size(), value);
+    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error == std::errc::result_out_of_range)
+        return leadingExponent(text) > 0 ? std::numeric_limits<double>::infinity() : 0.0;
     return value;
 }
 

@@ -8,8 +8,11 @@
 #include <ANTLRInputStream.h>
 #include <CommonTokenStream.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstdint>
+#include <unordered_map>
 
 namespace voxc {
 
@@ -39,17 +42,101 @@ void reportUnterminatedComments(antlr4::CommonTokenStream& tokens, Diagnostics& 
     }
 }
 
-ast::File parseReporting(const SourceFile& source, Diagnostics& diagnostics) {
+// Thrown to abandon a parse whose rule invocations nest deeper than the limit. The generated
+// rule functions catch only RecognitionException, so it unwinds straight to parseReporting.
+struct NestingTooDeep {};
+
+std::string nestingMessage(uint32_t maxNesting) {
+    return fmt::format("nesting is deeper than the limit of {} levels (each bracket, block, unary operator, "
+                       "'let', '?:' branch and operator of a chain adds a level)",
+                       maxNesting);
+}
+
+// Counts how deeply rule invocations nest while parsing and stops at the limit, before the
+// recursive-descent parser (one C++ frame per level) can exhaust the stack.
+class DepthLimitedParser : public grammar::VoxcParser {
+public:
+    DepthLimitedParser(antlr4::TokenStream* tokens, uint32_t maxNesting, Diagnostics& diagnostics)
+        : grammar::VoxcParser(tokens), maxNesting_(maxNesting), diagnostics_(diagnostics) {}
+
+    using grammar::VoxcParser::enterRecursionRule;
+    void enterRule(antlr4::ParserRuleContext* ctx, size_t state, size_t ruleIndex) override {
+        checkDepth(ctx);
+        grammar::VoxcParser::enterRule(ctx, state, ruleIndex);
+    }
+    void enterRecursionRule(antlr4::ParserRuleContext* ctx, size_t state, size_t ruleIndex, int precedence) override {
+        checkDepth(ctx);
+        grammar::VoxcParser::enterRecursionRule(ctx, state, ruleIndex, precedence);
+    }
+
+private:
+    // A context's depth is its parent's plus one. Contexts the generated code creates without
+    // entering a rule (labelled alternatives, left-recursion wrappers) are filled in on demand.
+    uint32_t depthOf(const antlr4::tree::ParseTree* ctx) {
+        std::vector<const antlr4::tree::ParseTree*> unknown;
+        uint32_t depth = 0;
+        for (; ctx != nullptr; ctx = ctx->parent) {
+            if (auto it = depths_.find(ctx); it != depths_.end()) {
+                depth = it->second;
+                break;
+            }
+            unknown.push_back(ctx);
+        }
+        for (auto it = unknown.rbegin(); it != unknown.rend(); ++it) depths_[*it] = ++depth;
+        return depth;
+    }
+
+    void checkDepth(antlr4::ParserRuleContext* ctx) {
+        if (depthOf(ctx) <= maxNesting_) return;
+        const antlr4::Token* at = getCurrentToken();
+        diagnostics_.error("E0012", at ? tokenLoc(*at) : SourceLoc{}, nestingMessage(maxNesting_));
+        throw NestingTooDeep{};
+    }
+
+    uint32_t maxNesting_;
+    Diagnostics& diagnostics_;
+    std::unordered_map<const antlr4::tree::ParseTree*, uint32_t> depths_;
+};
+
+// A left-associative chain (`x + x + ...`) parses in a loop, so the parser's stack stays flat
+// while the tree it builds gets one level deeper per operator. Measured without recursion, so
+// that the AST builder and every later pass only ever walk trees within the limit. Reports the
+// first rule (in source order) that lies too deep.
+bool reportIfTreeTooDeep(antlr4::tree::ParseTree* root, uint32_t maxNesting, Diagnostics& diagnostics) {
+    std::vector<std::pair<antlr4::tree::ParseTree*, uint32_t>> pending{{root, 1}};
+    while (!pending.empty()) {
+        auto [node, depth] = pending.back();
+        pending.pop_back();
+        auto* rule = dynamic_cast<antlr4::ParserRuleContext*>(node);
+        if (rule == nullptr) continue;
+        if (depth > maxNesting) {
+            diagnostics.error("E0012", rule->getStart() ? tokenLoc(*rule->getStart()) : SourceLoc{},
+                              nestingMessage(maxNesting));
+            return true;
+        }
+        for (auto child = node->children.rbegin(); child != node->children.rend(); ++child)
+            pending.emplace_back(*child, depth + 1);
+    }
+    return false;
+}
+
+ast::File parseReporting(const SourceFile& source, Diagnostics& diagnostics, uint32_t maxNesting) {
     antlr4::ANTLRInputStream input(source.text());
     ReportingLexer lexer(&input, diagnostics);
     lexer.removeErrorListeners();
     antlr4::CommonTokenStream tokens(&lexer);
-    grammar::VoxcParser parser(&tokens);
+    DepthLimitedParser parser(&tokens, maxNesting, diagnostics);
     parser.removeErrorListeners();
     parser.setErrorHandler(std::make_shared<SyntaxErrorStrategy>(diagnostics));
-    grammar::VoxcParser::FileContext* tree = parser.file();
+    grammar::VoxcParser::FileContext* tree = nullptr;
+    try {
+        tree = parser.file();
+    } catch (const NestingTooDeep&) {
+        return {};
+    }
     tokens.fill();
     reportUnterminatedComments(tokens, diagnostics);
+    if (reportIfTreeTooDeep(tree, maxNesting, diagnostics)) return {};
     return buildAst(*tree);
 }
 
@@ -65,9 +152,9 @@ void forwardInSourceOrder(std::vector<Diagnostic> found, Diagnostics& diagnostic
 
 } // namespace
 
-ast::File parse(const SourceFile& source, Diagnostics& diagnostics) {
+ast::File parse(const SourceFile& source, Diagnostics& diagnostics, uint32_t maxNesting) {
     Diagnostics syntaxErrors;
-    ast::File file = parseReporting(source, syntaxErrors);
+    ast::File file = parseReporting(source, syntaxErrors, maxNesting);
     forwardInSourceOrder(syntaxErrors.take(), diagnostics);
     return file;
 }

@@ -4,7 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
-#include <iterator>
+#include <algorithm>
 
 namespace voxc {
 
@@ -23,7 +23,25 @@ std::string_view SourceFile::line(uint32_t line) const {
     return std::string_view(text_).substr(begin, end - begin);
 }
 
-std::optional<SourceFile> loadSourceFile(const std::string& path, Diagnostics& diagnostics) {
+namespace {
+
+// Reads at most `maxBytes + 1` bytes in blocks, so a device (/dev/zero), a pipe or a huge file
+// costs bounded memory and time. Returns nothing when the file cannot be opened.
+std::optional<std::string> readCapped(const std::string& path, size_t maxBytes) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return std::nullopt;
+    std::string text;
+    char block[1 << 16];
+    while (text.size() <= maxBytes && in) {
+        in.read(block, std::streamsize(std::min(sizeof block, maxBytes + 1 - text.size())));
+        text.append(block, size_t(in.gcount()));
+    }
+    return text;
+}
+
+} // namespace
+
+std::optional<SourceFile> loadSourceFile(const std::string& path, Diagnostics& diagnostics, size_t maxBytes) {
     std::error_code ec;
     auto status = std::filesystem::status(path, ec);
     std::string problem;
@@ -32,8 +50,13 @@ std::optional<SourceFile> loadSourceFile(const std::string& path, Diagnostics& d
     else if (std::filesystem::is_directory(status))
         problem = "it is a directory";
     if (problem.empty()) {
-        std::ifstream in(path, std::ios::binary);
-        if (in) return SourceFile(path, std::string(std::istreambuf_iterator<char>(in), {}));
+        if (std::optional<std::string> text = readCapped(path, maxBytes)) {
+            if (text->size() <= maxBytes) return SourceFile(path, std::move(*text));
+            diagnostics.error("E0012", {},
+                              fmt::format("cannot read file '{}': it is larger than the limit of {} bytes ({} MiB)",
+                                          path, maxBytes, maxBytes >> 20));
+            return std::nullopt;
+        }
         problem = "it cannot be opened for reading";
     }
     diagnostics.error("E0100", {}, fmt::format("cannot read file '{}': {}", path, problem));

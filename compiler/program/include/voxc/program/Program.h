@@ -164,12 +164,27 @@ struct Program {
     const Material* findMaterial(uint8_t id) const;
 };
 
-// Limits enforced by the checker so a bad file fails with a message, not an OOM kill.
+// Limits enforced by the checker so a bad file fails with a message, not an OOM kill, a stack
+// overflow or a run of hours. docs/language.md ("Limits") lists each with its error code.
 struct Limits {
     int64_t maxVoxels = int64_t(512) * 512 * 512;
     int32_t maxIterations = 100000;
     int32_t maxWindowCells = 512;
     int32_t maxRulesPerSweep = 256;
+    // Rules x window cells of one sweep: the size of its generated kernel.
+    int64_t maxSweepRuleCells = 4096;
+    int64_t maxSourceBytes = int64_t(8) << 20;
+    // Depth of the parse tree: brackets, blocks, unary operators, `let`, `?:` and operator chains.
+    int32_t maxNesting = 256;
+    // User function calls inlined inside one another, and the expression nodes lowering one
+    // field or function may visit (a function counts once per distinct argument list).
+    int32_t maxCallDepth = 32;
+    int64_t maxLoweringSteps = 1000000;
+    // A field's DAG after inlining: nodes, and the longest operand chain.
+    int32_t maxFieldNodes = 100000;
+    int32_t maxFieldDepth = 1024;
+    // Estimated work of the whole pipeline (see docs/language.md, "Work estimate"); `--max-work`.
+    int64_t maxWork = int64_t(100) * 1000 * 1000 * 1000;
 };
 
 } // namespace voxc

@@ -3,6 +3,7 @@
 // throws for the user's mistakes: a missing or binary file becomes a diagnostic.
 #include "voxc/syntax/Diagnostics.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -28,9 +29,14 @@ private:
     std::vector<size_t> lineStarts_;
 };
 
-// Reads `path`. On failure reports E0100 and returns nothing. The text is not validated;
-// see reportIfNotText.
-std::optional<SourceFile> loadSourceFile(const std::string& path, Diagnostics& diagnostics);
+// The default cap on a source file's size (Limits::maxSourceBytes): 8 MiB.
+constexpr size_t kDefaultMaxSourceBytes = size_t(8) << 20;
+
+// Reads `path`, never more than `maxBytes + 1` bytes. On failure reports E0100 (E0012 when the
+// file, pipe or device holds more than `maxBytes`) and returns nothing. The text is not
+// validated; see reportIfNotText.
+std::optional<SourceFile> loadSourceFile(const std::string& path, Diagnostics& diagnostics,
+                                         size_t maxBytes = kDefaultMaxSourceBytes);
 
 // Reports E0101 (and returns true) when the text holds a NUL byte or is not valid UTF-8.
 bool reportIfNotText(const SourceFile& source, Diagnostics& diagnostics);
