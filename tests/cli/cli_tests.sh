@@ -143,5 +143,53 @@ mkdir "$work/taken.obj"
 expect mat_unwritable_obj 1 "cannot write" -- "$voxc" run "$work/mat.vox" --device lavapipe -o "$work/taken.obj"
 expect_no_file mat_no_partial_mtl "$work/taken.mtl"
 
+# expect_same NAME A B: the files must be byte-identical (a refused or failed command kept the user's file).
+expect_same() {
+    if cmp -s "$2" "$3"; then
+        echo "ok   $1"; passed=$((passed + 1))
+    else
+        echo "FAIL $1: $2 differs from $3"; failed=$((failed + 1))
+    fi
+}
+
+# file safety: no output over the input or over another output, refused before any work
+cp "$work/mat.vox" "$work/self.ply"
+expect out_is_input 1 "-o '.*self\.ply' is the input '.*self\.ply'" -- "$voxc" run "$work/self.ply" -o "$work/self.ply"
+expect_same out_is_input_untouched "$work/mat.vox" "$work/self.ply"
+ln -s mat.vox "$work/symlink.ply"
+expect out_is_symlink_to_input 1 "is the input" -- "$voxc" run "$work/mat.vox" --device lavapipe -o "$work/symlink.ply"
+ln "$work/mat.vox" "$work/hardlink.obj"
+expect out_is_hard_link_to_input 1 "is the input" -- "$voxc" run "$work/mat.vox" --device lavapipe -o "$work/hardlink.obj"
+expect_same hard_link_untouched "$work/mat.vox" "$work/hardlink.obj"
+expect voxels_are_materials 1 "are the same file" -- "$voxc" run "$work/mat.vox" --device lavapipe \
+    --voxels "$work/same.npy" --materials "$work/../$(basename "$work")/same.npy"
+expect_no_file voxels_are_materials_nothing_written "$work/same.npy"
+expect interp_outputs_clash 1 "are the same file" -- "$voxc" interp "$work/mat.vox" \
+    --voxels "$work/same.npy" --materials "$work/./same.npy"
+expect explore_outputs_clash 1 "--csv '.*' and --summary '.*' are the same file" -- "$voxc" explore \
+    "$src/examples/terrain.vox" --param ROCK --range 0.3:0.5:0.2 --csv "$work/same.csv" --summary "$work/same.csv"
+expect compile_over_input_dir 1 "contains the input" -- "$voxc" compile "$work/mat.vox" -o "$work"
+
+# a failed OBJ export keeps the user's .mtl beside it; a failed output keeps the other outputs' old files
+mkdir "$work/kept.obj"
+printf 'newmtl the_users_own\nKd 1 0 0\n' > "$work/kept.mtl"
+cp "$work/kept.mtl" "$work/kept.mtl.orig"
+expect obj_failure 1 "cannot write" -- "$voxc" run "$work/mat.vox" --device lavapipe -o "$work/kept.obj"
+expect_same obj_failure_keeps_mtl "$work/kept.mtl.orig" "$work/kept.mtl"
+printf 'the user'"'"'s voxels' > "$work/kept.npy"
+cp "$work/kept.npy" "$work/kept.npy.orig"
+expect set_failure 1 "cannot write" -- "$voxc" run "$work/mat.vox" --device lavapipe \
+    --voxels "$work/kept.npy" --materials "$work/no-dir/m.npy"
+expect_same set_failure_keeps_voxels "$work/kept.npy.orig" "$work/kept.npy"
+if compgen -G "$work/*.tmp-*" >/dev/null; then
+    echo "FAIL no_temp_files_left: $(compgen -G "$work/*.tmp-*" | head -3)"; failed=$((failed + 1))
+else
+    echo "ok   no_temp_files_left"; passed=$((passed + 1))
+fi
+
+# a run whose mesh is empty says so and still succeeds
+printf 'world { size = [16, 16, 16]; chunk = 8; }\nstart { fill { value = 0; } }\n' > "$work/air.vox"
+expect empty_mesh_warning 0 "warning: the mesh is empty" -- "$voxc" run "$work/air.vox" --device lavapipe -o "$work/air.ply"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
