@@ -9,6 +9,7 @@ packages=(
   libglm-dev libfmt-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev libnoise-dev zlib1g-dev
   ccache python3-numpy
+  clang libclang-rt-14-dev
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,48 @@
+// Prints the libFuzzer dictionary of the .vox language (docs/fuzzing.md): the syntax's keywords
+// and operators, the block kinds, keys and words the checker knows, and every name in the
+// builtin registries, so the dictionary follows the registries as they grow.
+#include "voxc/builtins/Functions.h"
+#include "voxc/builtins/Ops.h"
+#include "voxc/builtins/Shapes.h"
+
+#include <cstdio>
+#include <set>
+#include <string>
+#include <string_view>
+
+namespace {
+
+// The grammar's tokens (grammar/Voxc.g4) and the words of docs/language.md that no registry lists.
+constexpr std::string_view kLanguageWords[] = {
+    "const", "fn", "field", "feature", "let", "in", "->", "&&", "||", "<=", ">=", "==", "!=", "?", ":",
+    "//", "/*", "*/", ".", ",", ";", "=", "[", "]", "{", "}", "(", ")", "&", "!", "1e999", "-0.5", "1e-45",
+    "world", "grammar", "rule", "symbol", "transform", "start", "pipeline", "material", "layer", "lsystem",
+    "size", "origin", "seed", "chunk", "iterations", "weight", "probability", "priority", "stride", "value",
+    "bounds", "color", "id", "set", "union", "subtract", "intersect", "paint", "arch", "cave", "overhang",
+    "float", "int", "bool", "vec2", "vec3", "x", "y", "z", "xy", "xz", "xyz", "density", "none",
+};
+
+std::string quoted(std::string_view word) {
+    std::string out = "\"";
+    for (char c : word) {
+        if (c == '"' || c == '\\') out += '\\';
+        out += c;
+    }
+    return out + "\"";
+}
+
+} // namespace
+
+int main() {
+    std::set<std::string> words(std::begin(kLanguageWords), std::end(kLanguageWords));
+    for (const voxc::FunctionInfo& function : voxc::functions()) words.emplace(function.name);
+    for (const voxc::SymbolOpInfo& op : voxc::symbolOps()) words.emplace(op.name);
+    for (const voxc::TransformOpInfo& op : voxc::transformOps()) words.emplace(op.name);
+    for (const voxc::MaterialOpInfo& op : voxc::materialOps()) words.emplace(op.name);
+    for (const voxc::ShapeInfo& shape : voxc::shapes()) {
+        words.emplace(shape.name);
+        for (const voxc::KeySpec& key : shape.keys) words.emplace(key.name);
+    }
+    for (const std::string& word : words) std::printf("%s\n", quoted(word).c_str());
+    return 0;
+}

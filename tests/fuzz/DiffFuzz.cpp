@@ -1,0 +1,164 @@
+// The differential fuzzer (docs/fuzzing.md): random valid programs (ProgramGenerator.h) run by the
+// interpreter and by Vulkan (lavapipe), compared bit for bit, densities and materials, as
+// docs/architecture.md ("Determinism") promises for every record the generator uses.
+//
+//   voxc_diff_fuzz [--seed S] [--programs N] [--seconds T] [--out DIR] [--verbose] [FILE.vox ...]
+//
+// Program i of a run is generated from seed S + i. Files given on the command line are compared
+// instead of generated programs. A program that differs, or that the checker accepted but voxc
+// then failed on, is written to DIR (default diff-findings/) and makes the exit status 1; so does
+// a run where the checker rejected more than half the generated programs (the generator would be
+// testing nothing). Programs the checker rejects are counted, not compared.
+#include "ProgramGenerator.h"
+#include "voxc/check/Check.h"
+#include "voxc/codegen/Codegen.h"
+#include "voxc/core/Errors.h"
+#include "voxc/grid/Grid.h"
+#include "voxc/interp/Interpreter.h"
+#include "voxc/vulkan/Context.h"
+#include "voxc/vulkan/Executor.h"
+
+#include <chrono>
+#include <cstring>
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+struct Options {
+    uint64_t seed = 1;
+    std::optional<uint64_t> programs;
+    std::optional<double> seconds;
+    std::filesystem::path out = "diff-findings";
+    bool verbose = false;
+    std::vector<std::string> files;
+};
+
+struct Tally {
+    uint64_t compared = 0, rejected = 0, findings = 0, voxels = 0, solidVoxels = 0;
+};
+
+// The first few voxels where the two grids differ, or nothing when they agree bit for bit.
+std::optional<std::string> differences(const voxc::DenseGrid& expected, const voxc::DenseGrid& actual) {
+    if (expected.size() != actual.size()) return "grid sizes differ";
+    std::string report;
+    size_t count = 0;
+    const glm::ivec3 size = expected.size();
+    for (int z = 0; z < size.z; ++z)
+        for (int y = 0; y < size.y; ++y)
+            for (int x = 0; x < size.x; ++x) {
+                const float a = expected.at({x, y, z}), b = actual.at({x, y, z});
+                const int ma = expected.materialAt({x, y, z}), mb = actual.materialAt({x, y, z});
+                if (std::memcmp(&a, &b, sizeof a) == 0 && ma == mb) continue;
+                if (count++ < 5)
+                    report += fmt::format("  voxel ({},{},{}): interpreter {} (material {}), vulkan {} (material {})\n", x,
+                                          y, z, a, ma, b, mb);
+            }
+    if (count == 0) return std::nullopt;
+    return fmt::format("{} voxels differ\n{}", count, report);
+}
+
+voxc::VulkanContext& lavapipe() {
+    static voxc::VulkanContext context(voxc::ContextOptions{.device = "lavapipe"});
+    return context;
+}
+
+// Checks, runs and compares one program; returns what went wrong, if anything.
+std::optional<std::string> compare(const std::string& name, const std::string& text, const Options& options, Tally& tally) {
+    const voxc::CheckResult checked = voxc::checkSource(voxc::SourceFile(name, text));
+    if (!checked.program) {
+        ++tally.rejected;
+        if (options.verbose) fmt::print("{}: rejected by the checker\n{}", name, checked.rendered());
+        return std::nullopt;
+    }
+    try {
+        const voxc::DenseGrid expected = voxc::interpret(*checked.program);
+        voxc::VulkanExecutor executor(lavapipe(), voxc::codegen::compileProgram(*checked.program));
+        const voxc::DenseGrid actual = executor.run().grid.toDense();
+        ++tally.compared;
+        tally.voxels += expected.data().size();
+        for (float density : expected.data()) tally.solidVoxels += density >= 0.5f;
+        return differences(expected, actual);
+    } catch (const voxc::UserError& error) {
+        // A limit of the run (a work budget, a device limit) rather than a disagreement.
+        ++tally.rejected;
+        if (options.verbose) fmt::print("{}: {}\n", name, error.what());
+        return std::nullopt;
+    } catch (const std::exception& error) {
+        return fmt::format("checked, then failed: {}", error.what());
+    }
+}
+
+Options parseOptions(int argc, char** argv) {
+    Options options;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        const auto value = [&]() -> std::string {
+            if (i + 1 >= argc) throw voxc::UserError(fmt::format("{} needs a value", arg));
+            return argv[++i];
+        };
+        if (arg == "--seed") options.seed = std::stoull(value());
+        else if (arg == "--programs") options.programs = std::stoull(value());
+        else if (arg == "--seconds") options.seconds = std::stod(value());
+        else if (arg == "--out") options.out = value();
+        else if (arg == "--verbose") options.verbose = true;
+        else if (arg.starts_with("--")) throw voxc::UserError(fmt::format("unknown option {}", arg));
+        else options.files.push_back(arg);
+    }
+    if (!options.programs && !options.seconds) options.programs = 20;
+    return options;
+}
+
+void recordFinding(const Options& options, const std::string& name, const std::string& text, const std::string& what,
+                   Tally& tally) {
+    ++tally.findings;
+    std::filesystem::create_directories(options.out);
+    const std::filesystem::path path = options.out / std::filesystem::path(name).filename();
+    std::ofstream(path) << "// voxc_diff_fuzz finding: " << what.substr(0, what.find('\n')) << "\n" << text;
+    fmt::print("FINDING {}: {}  program written to {}\n", name, what, path.string());
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    try {
+        const Options options = parseOptions(argc, argv);
+        Tally tally;
+        if (!options.files.empty()) {
+            for (const std::string& file : options.files) {
+                std::stringstream text;
+                text << std::ifstream(file).rdbuf();
+                if (const auto what = compare(file, text.str(), options, tally)) recordFinding(options, file, text.str(), *what, tally);
+            }
+            fmt::print("diff: {} files compared, {} rejected, {} findings\n", tally.compared, tally.rejected, tally.findings);
+            return tally.findings ? 1 : 0;
+        }
+        const auto begin = std::chrono::steady_clock::now();
+        uint64_t generated = 0;
+        for (; !options.programs || generated < *options.programs; ++generated) {
+            const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+            if (options.seconds && elapsed >= *options.seconds) break;
+            const uint64_t seed = options.seed + generated;
+            const std::string name = fmt::format("diff_{}.vox", seed);
+            const std::string text = voxc::fuzz::generateProgram(seed);
+            if (options.verbose) fmt::print("--- {}\n{}", name, text);
+            if (const auto what = compare(name, text, options, tally)) recordFinding(options, name, text, *what, tally);
+        }
+        fmt::print("diff: {} programs from seed {}: {} compared bit for bit ({} voxels, {} of them solid), {} rejected, "
+                   "{} findings\n",
+                   generated, options.seed, tally.compared, tally.voxels, tally.solidVoxels, tally.rejected, tally.findings);
+        if (tally.rejected * 2 > generated) {
+            fmt::print("diff: the checker rejected more than half the generated programs (--verbose shows why)\n");
+            return 1;
+        }
+        return tally.findings ? 1 : 0;
+    } catch (const std::exception& error) {
+        fmt::print(stderr, "voxc_diff_fuzz: {}\n", error.what());
+        return 2;
+    }
+}

@@ -1,0 +1,64 @@
+// libFuzzer target: every input that checks cleanly is lowered to the IR (all passes, the IR
+// printed after each) and every kernel's GLSL is generated, with each field stage's chunk boxes.
+// glslang and SPIR-V validation cost far more than the rest, so only a sample of the inputs
+// (chosen by a hash of the bytes, so a reproducer replays the same way) goes through the whole
+// codegen::compileProgram. A Program the checker accepted must lower and compile: any exception
+// is a finding.
+#include "FuzzInput.h"
+#include "KernelSources.h"
+#include "voxc/check/Check.h"
+#include "voxc/codegen/Codegen.h"
+#include "voxc/ir/Lower.h"
+#include "voxc/ir/Ir.h"
+
+#include <string_view>
+
+namespace {
+
+constexpr uint32_t kCompileOneIn = 16;
+
+uint32_t hashBytes(const uint8_t* data, size_t size) {
+    uint32_t hash = 2166136261u; // FNV-1a
+    for (size_t i = 0; i < size; ++i) hash = (hash ^ data[i]) * 16777619u;
+    return hash;
+}
+
+void generateGlsl(const voxc::ir::IrModule& module) {
+    using namespace voxc::codegen;
+    const std::string_view sourceName = "fuzz.vox";
+    for (const voxc::Stage& stage : module.pipeline) {
+        switch (stage.kind) {
+        case voxc::Stage::Kind::Start:
+            (void)startKernelSource(module, sourceName);
+            break;
+        case voxc::Stage::Kind::Field: {
+            const voxc::ir::IrField& field = module.fields.at(stage.index);
+            (void)fieldBoxes(module, field, stage.mode, stage.material, std::nullopt);
+            (void)fieldKernelSource(module, field, stage.mode, stage.material, {stage}, field.name, sourceName);
+            break;
+        }
+        case voxc::Stage::Kind::Grammar:
+            break;
+        }
+    }
+    for (const voxc::ir::IrGrammar& grammar : module.grammars)
+        for (const voxc::ir::IrSweep& sweep : grammar.sweeps) {
+            (void)sweepKernelSource(grammar, sweep, grammar.name, sourceName);
+            if (!sweep.rules.empty()) (void)activeTilesKernelSource(grammar, sweep, grammar.name, sourceName);
+        }
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    const voxc::CheckResult result = voxc::checkSource(voxc::fuzz::sourceFromBytes(data, size));
+    if (!result.program) return 0;
+    if (hashBytes(data, size) % kCompileOneIn == 0) {
+        (void)voxc::codegen::compileProgram(*result.program);
+        return 0;
+    }
+    const voxc::ir::IrModule module = voxc::ir::lowerProgram(
+        *result.program, {[](std::string_view, const voxc::ir::IrModule& after) { (void)voxc::ir::printIr(after); }});
+    generateGlsl(module);
+    return 0;
+}

@@ -1,0 +1,286 @@
+#include "ProgramGenerator.h"
+
+#include "voxc/builtins/Functions.h"
+#include "voxc/builtins/Ops.h"
+#include "voxc/builtins/Shapes.h"
+
+#include <algorithm>
+#include <array>
+#include <fmt/format.h>
+#include <map>
+#include <string_view>
+#include <vector>
+
+namespace voxc::fuzz {
+
+uint64_t Random::next() {
+    uint64_t z = (state_ += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+}
+uint32_t Random::below(uint32_t n) { return uint32_t(next() % n); }
+int32_t Random::range(int32_t lo, int32_t hi) { return lo + int32_t(below(uint32_t(hi - lo + 1))); }
+double Random::real(double lo, double hi) { return lo + (hi - lo) * double(next() >> 11) * 0x1.0p-53; }
+bool Random::chance(double p) { return real(0.0, 1.0) < p; }
+
+namespace {
+
+constexpr std::array kTypes = {Type::Float, Type::Int, Type::Bool, Type::Vec2, Type::Vec3};
+
+// sin and cos are the records lavapipe does not reproduce bit for bit (docs/architecture.md,
+// "Determinism"); the fuzzer compares bits, so it leaves them out. pow is not bit-exact on lavapipe
+// either (pow(3, 1) is 3.0000002 there: exp2(log2 x * y)), which docs/fuzzing.md lists as a finding.
+bool bitExactOnLavapipe(const FunctionInfo& function) {
+    return function.name != "sin" && function.name != "cos" && function.name != "pow";
+}
+
+struct Overload {
+    const FunctionInfo* function;
+    std::vector<Type> args;
+};
+
+// Every (record, argument types) the registry's type rules accept, up to five arguments, by
+// result type: the generator knows no signature of its own.
+const std::map<Type, std::vector<Overload>>& overloadsByResult() {
+    static const std::map<Type, std::vector<Overload>> table = [] {
+        std::map<Type, std::vector<Overload>> byResult;
+        for (const FunctionInfo& function : functions()) {
+            if (!bitExactOnLavapipe(function)) continue;
+            for (size_t arity = 0; arity <= 5; ++arity) {
+                std::vector<Type> args(arity);
+                size_t combinations = 1;
+                for (size_t i = 0; i < arity; ++i) combinations *= kTypes.size();
+                for (size_t c = 0; c < combinations; ++c) {
+                    for (size_t i = 0, rest = c; i < arity; ++i, rest /= kTypes.size()) args[i] = kTypes[rest % kTypes.size()];
+                    if (std::optional<Type> result = function.typeRule(args)) byResult[*result].push_back({&function, args});
+                }
+            }
+        }
+        return byResult;
+    }();
+    return table;
+}
+
+std::string number(double v) { return fmt::format("{:.4g}", v); }
+
+class Generator {
+public:
+    explicit Generator(uint64_t seed) : random_(seed) {}
+    std::string program();
+
+private:
+    std::string expression(Type type, int depth);
+    std::string leaf(Type type);
+    std::string floatLiteral();
+    void materials();
+    void world();
+    void start();
+    void fields();
+    void grammars();
+    void pipeline();
+    std::string materialName() { return materials_[random_.below(uint32_t(materials_.size()))]; }
+    std::string symbolCell();
+    std::string transformCell();
+
+    Random random_;
+    std::string out_;
+    std::array<int, 3> size_{};
+    std::vector<std::string> materials_, fields_, grammars_, lets_;
+};
+
+std::string Generator::floatLiteral() {
+    static constexpr std::array<std::string_view, 8> kSpecial = {"0.5", "0.25", "1.5", "0", "1", "-1", "0.1", "3"};
+    if (random_.chance(0.4)) return std::string(kSpecial[random_.below(kSpecial.size())]);
+    return number(random_.real(-20.0, 20.0));
+}
+
+std::string Generator::leaf(Type type) {
+    static constexpr std::array<std::string_view, 6> kInputs = {"x", "y", "z", "wx", "wy", "wz"};
+    static constexpr std::array<std::string_view, 6> kSwizzles2 = {"xy", "xz", "zy", "yx", "zx", "yy"};
+    static constexpr std::array<std::string_view, 4> kSwizzles3 = {"xyz", "zyx", "xzy", "yyx"};
+    const std::string_view vector = random_.chance(0.5) ? "p" : "wp";
+    switch (type) {
+    case Type::Float:
+        if (!lets_.empty() && random_.chance(0.3)) return lets_[random_.below(uint32_t(lets_.size()))];
+        if (random_.chance(0.5)) return std::string(kInputs[random_.below(kInputs.size())]);
+        if (random_.chance(0.2)) return fmt::format("{}.{}", vector, "xyz"[random_.below(3)]);
+        return floatLiteral();
+    case Type::Int: return std::to_string(random_.range(0, 9));
+    case Type::Bool: return fmt::format("{} < {}", kInputs[random_.below(kInputs.size())], floatLiteral());
+    case Type::Vec2: return fmt::format("{}.{}", vector, kSwizzles2[random_.below(kSwizzles2.size())]);
+    case Type::Vec3:
+        if (random_.chance(0.5)) return std::string(vector);
+        return fmt::format("{}.{}", vector, kSwizzles3[random_.below(kSwizzles3.size())]);
+    }
+    return "0";
+}
+
+std::string Generator::expression(Type type, int depth) {
+    if (type == Type::Int || depth <= 0 || random_.chance(0.25)) return leaf(type);
+    if (type == Type::Float && lets_.size() < 3 && random_.chance(0.1)) {
+        const std::string name = fmt::format("v{}", lets_.size());
+        const std::string value = expression(Type::Float, depth - 1);
+        lets_.push_back(name);
+        std::string body = expression(Type::Float, depth - 1);
+        lets_.pop_back();
+        return fmt::format("(let {} = {} in {})", name, value, body);
+    }
+    const auto found = overloadsByResult().find(type);
+    if (found == overloadsByResult().end()) return leaf(type);
+    const Overload& overload = found->second[random_.below(uint32_t(found->second.size()))];
+    std::string call = std::string(overload.function->name) + "(";
+    for (size_t i = 0; i < overload.args.size(); ++i)
+        call += (i ? ", " : "") + expression(overload.args[i], depth - 1);
+    return call + ")";
+}
+
+void Generator::materials() {
+    const int count = random_.range(0, 3);
+    std::vector<int> ids;
+    for (int i = 0; i < count; ++i) {
+        int id = random_.range(1, 255);
+        while (std::find(ids.begin(), ids.end(), id) != ids.end()) id = id % 255 + 1;
+        ids.push_back(id);
+        materials_.push_back(fmt::format("m{}", i));
+        out_ += fmt::format("material m{} {{ id = {}; }}\n", i, id);
+    }
+}
+
+void Generator::world() {
+    for (int& edge : size_) edge = random_.range(2, 14);
+    out_ += fmt::format("world {{ size = [{}, {}, {}]; origin = [{}, {}, {}]; chunk = {}; seed = {}; }}\n", size_[0],
+                        size_[1], size_[2], random_.range(-40, 40), random_.range(-40, 40), random_.range(-40, 40),
+                        random_.chance(0.7) ? 8 : 16, random_.next() % 4294967296ull);
+}
+
+void Generator::start() {
+    const int count = random_.range(0, 3);
+    if (count == 0) return;
+    out_ += "start {\n";
+    const int edge = *std::max_element(size_.begin(), size_.end());
+    for (int i = 0; i < count; ++i) {
+        const ShapeInfo& shape = shapes()[random_.below(uint32_t(shapes().size()))];
+        out_ += fmt::format("  {} {{", shape.name);
+        for (const KeySpec& key : shape.keys) {
+            if (!key.required && random_.chance(0.5)) continue;
+            // Within the key's range and near the grid, where the shape is visible.
+            const double lo = std::max(key.min, -4.0), hi = std::min(key.max, double(edge + 4));
+            std::string value;
+            switch (key.type) {
+            case KeyType::Number: value = number(key.name == "value" ? random_.real(0.0, 1.0) : random_.real(lo, hi)); break;
+            case KeyType::Integer: value = std::to_string(random_.range(int32_t(std::ceil(lo)), int32_t(std::floor(hi)))); break;
+            case KeyType::Axis: value = std::string(1, "xyz"[random_.below(3)]); break;
+            case KeyType::Vec3:
+                value = fmt::format("[{}, {}, {}]", number(random_.real(lo, hi)), number(random_.real(lo, hi)),
+                                    number(random_.real(lo, hi)));
+                break;
+            }
+            out_ += fmt::format(" {} = {};", key.name, value);
+        }
+        if (!materials_.empty() && random_.chance(0.5)) out_ += fmt::format(" material = {};", materialName());
+        out_ += " }\n";
+    }
+    out_ += "}\n";
+}
+
+void Generator::fields() {
+    const int count = random_.range(0, 3);
+    for (int i = 0; i < count; ++i) {
+        fields_.push_back(fmt::format("f{}", i));
+        out_ += fmt::format("field f{} = {};\n", i, expression(Type::Float, random_.range(1, 5)));
+    }
+}
+
+std::string Generator::symbolCell() {
+    std::string cell;
+    const int terms = random_.range(1, 2);
+    for (int t = 0; t < terms; ++t) {
+        if (t) cell += " & ";
+        if (!materials_.empty() && random_.chance(0.2)) {
+            const MaterialOpInfo& op = materialOps()[random_.below(uint32_t(materialOps().size()))];
+            cell += fmt::format("{} {}", op.name, materialName());
+            continue;
+        }
+        const SymbolOpInfo& op = symbolOps()[random_.below(uint32_t(symbolOps().size()))];
+        cell += op.takesValue ? fmt::format("{} {}", op.name, number(random_.below(5) * 0.25)) : std::string(op.name);
+    }
+    return cell;
+}
+
+std::string Generator::transformCell() {
+    const TransformOpInfo& op = transformOps()[random_.below(uint32_t(transformOps().size()))];
+    std::string cell = op.takesValue ? fmt::format("{} {}", op.name, number(random_.real(-1.0, 1.0))) : std::string(op.name);
+    if (!materials_.empty() && random_.chance(0.2)) cell += fmt::format(" & MAT {}", materialName());
+    return cell;
+}
+
+void Generator::grammars() {
+    const int count = random_.range(0, 2);
+    for (int g = 0; g < count; ++g) {
+        grammars_.push_back(fmt::format("g{}", g));
+        out_ += fmt::format("grammar g{} {{\n  iterations = {};\n", g, random_.range(1, 4));
+        if (random_.chance(0.5)) out_ += "  clamp = [0, 1];\n";
+        const int rules = random_.range(1, 3);
+        for (int r = 0; r < rules; ++r) {
+            const std::array<int, 3> window = {random_.range(1, 3), random_.range(1, 3), random_.range(1, 2)};
+            out_ += fmt::format("  rule r{} {{\n    size = [{}, {}, {}];\n", r, window[0], window[1], window[2]);
+            if (random_.chance(0.3)) out_ += fmt::format("    priority = {};\n", random_.range(-2, 2));
+            if (random_.chance(0.3)) out_ += fmt::format("    weight = {};\n", number(random_.real(0.01, 5.0)));
+            if (random_.chance(0.3)) out_ += fmt::format("    probability = {};\n", number(random_.real(0.0, 1.0)));
+            for (const bool symbol : {true, false}) {
+                out_ += symbol ? "    symbol {\n" : "    transform {\n";
+                for (int z = 0; z < window[2]; ++z) {
+                    out_ += "      layer {";
+                    for (int y = 0; y < window[1]; ++y) {
+                        out_ += " [";
+                        for (int x = 0; x < window[0]; ++x) out_ += (x ? ", " : "") + (symbol ? symbolCell() : transformCell());
+                        out_ += "]";
+                    }
+                    out_ += " }\n";
+                }
+                out_ += "    }\n";
+            }
+            out_ += "  }\n";
+        }
+        out_ += "}\n";
+    }
+}
+
+void Generator::pipeline() {
+    static constexpr std::array<std::string_view, 4> kModes = {"set", "union", "subtract", "intersect"};
+    out_ += "pipeline { start;";
+    const int stages = random_.range(0, 5);
+    for (int s = 0; s < stages; ++s) {
+        const bool field = !fields_.empty() && (grammars_.empty() || random_.chance(0.5));
+        if (field) {
+            const std::string& name = fields_[random_.below(uint32_t(fields_.size()))];
+            if (!materials_.empty() && random_.chance(0.2)) {
+                out_ += fmt::format(" paint {} material {};", name, materialName());
+                continue;
+            }
+            out_ += fmt::format(" {} {}", kModes[random_.below(kModes.size())], name);
+            if (!materials_.empty() && random_.chance(0.3)) out_ += fmt::format(" material {}", materialName());
+            out_ += ";";
+        } else if (!grammars_.empty()) {
+            out_ += fmt::format(" {};", grammars_[random_.below(uint32_t(grammars_.size()))]);
+        }
+    }
+    out_ += " }\n";
+}
+
+std::string Generator::program() {
+    materials();
+    world();
+    start();
+    fields();
+    grammars();
+    pipeline();
+    return out_;
+}
+
+} // namespace
+
+std::string generateProgram(uint64_t seed) { return Generator(seed).program(); }
+
+} // namespace voxc::fuzz
