@@ -91,7 +91,11 @@ TEST(core_AtomicWrite, unwritablePathsAreUserErrors) {
     }
     fs::create_directory(dir + "taken");
     EXPECT_THROW(writeFileAtomically(dir + "taken", "x"), UserError);
-    EXPECT_EQ(namesIn(dir), Names{"taken"});
+    // A link to a device is not replaced by a file (nor is the device, whatever voxc's rights).
+    fs::create_symlink("/dev/null", dir + "null.ply");
+    EXPECT_THROW(writeFileAtomically(dir + "null.ply", "x"), UserError);
+    EXPECT_TRUE(fs::is_character_file("/dev/null"));
+    EXPECT_EQ(namesIn(dir), (Names{"null.ply", "taken"}));
 }
 
 TEST(core_OutputFiles, nothingChangesBeforeCommit) {

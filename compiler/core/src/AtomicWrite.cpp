@@ -136,8 +136,11 @@ void OutputFiles::add(const std::string& path, const std::function<void(std::ost
     auto staged = std::make_unique<Staged>();
     staged->shownPath = path;
     staged->target = resolveTarget(path);
-    std::error_code ec;
-    if (fs::is_directory(staged->target, ec)) throw cannotWrite(path, "it is a directory");
+    // Renaming over a device or a pipe (say a link to /dev/null) would replace it with a file.
+    std::error_code unknown; // then open() below says why
+    const fs::file_status status = fs::status(staged->target, unknown);
+    if (fs::is_directory(status)) throw cannotWrite(path, "it is a directory");
+    if (fs::exists(status) && !fs::is_regular_file(status)) throw cannotWrite(path, "it is not a regular file");
 
     int fd = -1;
     for (int attempt = 0; fd < 0; ++attempt) {

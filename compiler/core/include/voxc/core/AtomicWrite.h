@@ -23,7 +23,7 @@ public:
     OutputFiles& operator=(const OutputFiles&) = delete;
 
     // Throws UserError ("cannot write 'PATH': why") if the temp file cannot be written, or if
-    // PATH is a directory; the temp file is gone again then.
+    // PATH is a directory, a device or a pipe; the temp file is gone again then.
     void add(const std::string& path, const std::function<void(std::ostream&)>& write);
     void add(const std::string& path, std::string_view contents);
 
