@@ -4,6 +4,7 @@
 // parameters, the selection rule, the generation modes and every bound the expansion obeys.
 // Angles are in degrees, lengths in voxels; y is up.
 #include "voxc/core/Errors.h"
+#include "voxc/core/SourceLoc.h"
 
 #include <cstdint>
 #include <map>
@@ -32,9 +33,14 @@ enum class Selection : uint8_t { Weighted, Thesis };
 
 // One weighted alternative: a production's right-hand side or a macro's substitute string.
 struct Alternative {
+    Alternative() = default;
+    Alternative(std::string text_, SymbolType type_, double weight_, SourceLoc loc_ = {})
+        : text(std::move(text_)), type(type_), weight(weight_), loc(loc_) {}
+
     std::string text;
     SymbolType type = SymbolType::None;
     double weight = 1.0;
+    SourceLoc loc; // where `text` starts in its source (line 0: none), for located diagnostics
 };
 
 struct TurtleParams {
