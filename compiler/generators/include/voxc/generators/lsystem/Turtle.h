@@ -53,10 +53,17 @@ struct Branch {
     bool cut = false; // constrained mode ended it at the volume's edge
 };
 
+// A line of structural points joining endpoints[from] and endpoints[to] (Connect.h).
+struct Connection {
+    uint32_t from = 0, to = 0;
+    std::vector<glm::dvec3> points; // points.front() and points.back() are exactly the endpoints
+};
+
 struct Skeleton {
     std::vector<Segment> segments;
     std::vector<Endpoint> endpoints; // leaves that may be connected, in interpretation order
     std::vector<Branch> branches;
+    std::vector<Connection> connections; // filled by connectBranches
     glm::dvec3 finalPosition{0.0};
     bool startOutside = false; // constrained mode: the start lies outside the volume, nothing drawn
 };
