@@ -76,11 +76,11 @@ TEST(codegen_Materials, PaintBoxesAreUnchangedWhereNothingIsPainted) {
 }
 
 TEST(codegen_Materials, ManifestRecordsMaterials) {
-    const std::string manifest = packageManifest(compileProgram(test::materialProgram()), "tests/materials.vox");
+    const std::string manifest = packageManifest(compileProgram(test::materialProgram()));
     EXPECT_NE(manifest.find("\"uses_materials\": true"), std::string::npos);
     EXPECT_NE(manifest.find("\"material\": 3"), std::string::npos);
     EXPECT_NE(manifest.find("\"mode\": \"paint\""), std::string::npos);
-    EXPECT_NE(packageManifest(compileProgram(test::sampleProgram()), "tests/sample.vox").find("\"uses_materials\": false"),
+    EXPECT_NE(packageManifest(compileProgram(test::sampleProgram())).find("\"uses_materials\": false"),
               std::string::npos);
 }
 

@@ -44,8 +44,9 @@ std::map<std::string, std::string> readTree(const fs::path& dir) {
 
 TEST_F(codegen_Package, CompilingAndWritingTwiceGivesIdenticalBytes) {
     const Program program = test::sampleProgram();
-    writePackage(compileProgram(program), (root_ / "a").string(), program.sourcePath);
-    writePackage(compileProgram(program), (root_ / "b").string(), program.sourcePath);
+    const PackageSource source{"sample.vox", "grammar text"};
+    writePackage(compileProgram(program), (root_ / "a").string(), source);
+    writePackage(compileProgram(program), (root_ / "b").string(), source);
     const auto a = readTree(root_ / "a");
     const auto b = readTree(root_ / "b");
     EXPECT_EQ(a.size(), 19u); // manifest + 9 kernels x (.comp, .spv)
@@ -56,7 +57,8 @@ TEST_F(codegen_Package, CompilingAndWritingTwiceGivesIdenticalBytes) {
 
 TEST_F(codegen_Package, WrittenFilesMatchThePackage) {
     const KernelPackage package = compileProgram(test::sampleProgram());
-    writePackage(package, root_.string(), "tests/sample.vox");
+    const PackageSource source{"sample.vox", "grammar text"};
+    writePackage(package, root_.string(), source);
     const auto files = readTree(root_);
     for (const Kernel& k : package.kernels) {
         EXPECT_EQ(files.at("kernels/" + k.name + ".comp"), k.glsl);
@@ -64,23 +66,32 @@ TEST_F(codegen_Package, WrittenFilesMatchThePackage) {
         ASSERT_EQ(spv.size(), k.spirv.size() * 4);
         EXPECT_EQ(std::string(spv.data(), 4), std::string("\x03\x02\x23\x07", 4)); // little-endian magic
     }
-    EXPECT_EQ(files.at("manifest.json"), packageManifest(package, "tests/sample.vox"));
+    EXPECT_EQ(files.at("manifest.json"), packageManifest(package, source));
+    EXPECT_EQ(files, packageFiles(package, source));
 }
 
 TEST_F(codegen_Package, ManifestDescribesKernelsAndDispatch) {
     const Program program = test::sampleProgram();
     const KernelPackage package = compileProgram(program);
-    const nlohmann::ordered_json m = nlohmann::ordered_json::parse(packageManifest(package, program.sourcePath));
+    const nlohmann::ordered_json m = nlohmann::ordered_json::parse(packageManifest(package, {"sample.vox", "abc"}));
     std::vector<std::string> keys;
     for (const auto& [key, value] : m.items())
         keys.push_back(key);
-    EXPECT_EQ(keys, (std::vector<std::string>{"voxc_version", "source_file", "world", "uses_materials", "kernels",
+    EXPECT_EQ(keys, (std::vector<std::string>{"format", "schema_version", "voxc_version", "source", "world",
+                                              "uses_materials", "materials", "push_constants", "buffers", "kernels",
                                               "dispatch"}));
+    EXPECT_EQ(m["format"], "voxc-package");
+    EXPECT_EQ(m["schema_version"], 1);
     EXPECT_EQ(m["uses_materials"], false);
-    EXPECT_EQ(m["source_file"], "tests/sample.vox");
+    EXPECT_EQ(m["materials"], nlohmann::json::array());
+    EXPECT_EQ(m["source"]["file"], "sample.vox");
+    // FIPS 180-4's example "abc".
+    EXPECT_EQ(m["source"]["sha256"], "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
     EXPECT_EQ(m["world"]["origin"], nlohmann::json::array({-5, 3, -12}));
     EXPECT_EQ(m["world"]["chunk"], 8);
     EXPECT_EQ(m["world"]["seed"], 7);
+    // Origin -5 with chunks of 8: the table starts at chunk -1.
+    EXPECT_EQ(m["world"]["chunk_table"]["base"][0], -1);
 
     const auto& kernels = m["kernels"];
     ASSERT_EQ(kernels.size(), package.kernels.size());
@@ -90,21 +101,29 @@ TEST_F(codegen_Package, ManifestDescribesKernelsAndDispatch) {
     EXPECT_EQ(sweep["glsl"], "kernels/overhang_sweep0.comp");
     EXPECT_EQ(sweep["spv"], "kernels/overhang_sweep0.spv");
     EXPECT_EQ(sweep["local_size"], nlohmann::json::array({8, 8, 1}));
-    EXPECT_EQ(sweep["bindings"][0]["binding"], 0);
-    EXPECT_EQ(sweep["bindings"][0]["name"], "density");
-    EXPECT_EQ(sweep["bindings"][1]["binding"], 1);
-    EXPECT_EQ(sweep["bindings"][1]["name"], "chunkSlot");
-    EXPECT_EQ(sweep["bindings"][2]["binding"], kBindingNoiseTables);
-    EXPECT_EQ(sweep["bindings"][2]["name"], "perlinPermutation");
-    ASSERT_EQ(sweep["bindings"].size(), 8u);
-    EXPECT_EQ(sweep["bindings"][kBindingActiveDispatch]["name"], "activeDispatch");
+    EXPECT_EQ(sweep["bindings"], nlohmann::json(package.kernels[1].bindings));
+    // The start kernel declares only the shared buffers, not the tile buffers.
+    EXPECT_EQ(kernels[0]["bindings"], nlohmann::json::array({kBindingVoxels, kBindingChunkTable, kBindingNoiseTables}));
     EXPECT_EQ(sweep["anchors_per_invocation"], nlohmann::json::array({1, 1, 1}));
     // The start kernel walks whole columns along y.
     EXPECT_EQ(kernels[0]["anchors_per_invocation"], nlohmann::json::array({1, package.world.size.y, 1}));
-    ASSERT_EQ(sweep["push_constants"].size(), 7u);
-    EXPECT_EQ(sweep["push_constants"][0]["name"], "gridOrigin");
-    EXPECT_EQ(sweep["push_constants"][6]["name"], "anchorCount");
-    EXPECT_EQ(sweep["push_constants"][6]["offset"], 96);
+    const auto& push = m["push_constants"];
+    EXPECT_EQ(push["size"], sizeof(PushBlock));
+    ASSERT_EQ(push["fields"].size(), 7u);
+    EXPECT_EQ(push["fields"][0]["name"], "gridOrigin");
+    EXPECT_EQ(push["fields"][6]["name"], "anchorCount");
+    EXPECT_EQ(push["fields"][6]["offset"], 96);
+    EXPECT_EQ(push["fields"][6]["type"], "ivec4");
+
+    // The voxel buffer holds every chunk of the chunk table.
+    const auto& voxels = m["buffers"][0];
+    EXPECT_EQ(voxels["binding"], kBindingVoxels);
+    EXPECT_EQ(voxels["name"], "voxels");
+    EXPECT_EQ(voxels["element_type"], "float");
+    EXPECT_EQ(voxels["element_bytes"], 4);
+    EXPECT_EQ(voxels["count"], uint64_t(m["world"]["chunk_table"]["count"][0]) *
+                                   uint64_t(m["world"]["chunk_table"]["count"][1]) *
+                                   uint64_t(m["world"]["chunk_table"]["count"][2]) * 8 * 8 * 8);
 
     EXPECT_EQ(m["dispatch"]["tile_ranges_kernel"], "tile_ranges");
     const auto& stages = m["dispatch"]["stages"];
@@ -128,7 +147,7 @@ TEST_F(codegen_Package, ManifestDescribesKernelsAndDispatch) {
 TEST_F(codegen_Package, ManifestListsFieldStages) {
     CheckResult checked = checkFile(std::string(VOXC_EXAMPLES_DIR) + "/fields.vox");
     ASSERT_TRUE(checked.program) << checked.rendered();
-    const nlohmann::json m = nlohmann::json::parse(packageManifest(compileProgram(*checked.program), "fields.vox"));
+    const nlohmann::json m = nlohmann::json::parse(packageManifest(compileProgram(*checked.program)));
     const auto& stages = m["dispatch"]["stages"];
     // `start` is a dead stage: `set ground` overwrites every voxel.
     ASSERT_EQ(stages.size(), 4u);

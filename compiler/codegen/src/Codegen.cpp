@@ -41,6 +41,7 @@ Kernel makeKernel(std::string name, std::string origin, const DispatchShape& sha
         kernel.anchorsPerInvocation[a] = shape.anchorsPerInvocation[a];
     }
     kernel.spirv = compileComputeShader(kernel.name, kernel.glsl);
+    kernel.bindings = spirvDescriptorBindings(kernel.spirv);
     return kernel;
 }
 
@@ -67,6 +68,7 @@ KernelPackage compileProgram(const Program& program, const CompileOptions& optio
     KernelPackage package;
     package.world = program.world;
     package.usesMaterials = program.usesMaterials();
+    package.materials = program.materials;
     const auto makePackageKernel = [&](std::string name, std::string origin, const DispatchShape& shape,
                                        std::string glsl) {
         return makeKernel(std::move(name), std::move(origin), shape, std::move(glsl), package.usesMaterials);

@@ -1,113 +1,28 @@
+// The package directory is replaced as a whole: the new package is written into a sibling
+// temp directory, synced, and swapped in with one rename, so readers and concurrent compiles
+// only ever see whole packages.
 #include "voxc/codegen/PackageWriter.h"
 
-#include "voxc/core/AtomicWrite.h"
+#include "ExistingPackage.h"
 #include "voxc/core/Errors.h"
-#include "voxc/ir/Ir.h"
 
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
 #include <filesystem>
-#include <nlohmann/json.hpp>
-
-#ifndef VOXC_VERSION
-#error "VOXC_VERSION must be defined by the build"
-#endif
+#include <fmt/format.h>
+#include <optional>
+#include <random>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace voxc::codegen {
 
 namespace {
 
-using Json = nlohmann::ordered_json; // keys stay in the order written
-
-Json vec(glm::ivec3 v) { return Json::array({v.x, v.y, v.z}); }
-
-std::string glslPath(const Kernel& k) { return "kernels/" + k.name + ".comp"; }
-std::string spirvPath(const Kernel& k) { return "kernels/" + k.name + ".spv"; }
-
-// The interface every kernel declares in compiler/shaders/common.glsl.
-Json bindings() {
-    return Json::array({Json{{"binding", kBindingVoxels}, {"name", "density"}, {"type", "float[]"}},
-                        Json{{"binding", kBindingChunkTable}, {"name", "chunkSlot"}, {"type", "int[]"}},
-                        Json{{"binding", kBindingNoiseTables}, {"name", "perlinPermutation"}, {"type", "int[256]"}},
-                        Json{{"binding", kBindingTileRanges}, {"name", "tileRanges"}, {"type", "uint[2 per tile]"}},
-                        Json{{"binding", kBindingTileDirty}, {"name", "tileDirty"}, {"type", "uint[tiles]"}},
-                        Json{{"binding", kBindingActiveTiles}, {"name", "activeTiles"}, {"type", "uint[tiles]"}},
-                        Json{{"binding", kBindingActiveDispatch}, {"name", "activeDispatch"}, {"type", "uint[8]"}},
-                        Json{{"binding", kBindingSkipStats}, {"name", "skipStats"}, {"type", "uint[2]"}}});
-}
-
-Json pushConstants() {
-    const char* names[] = {"gridOrigin",  "gridSize",   "chunkBase",  "chunkCount",
-                           "anchorStart", "anchorStep", "anchorCount"};
-    static_assert(sizeof(PushBlock) == std::size(names) * 16);
-    Json fields = Json::array();
-    for (size_t i = 0; i < std::size(names); ++i)
-        fields.push_back(Json{{"name", names[i]}, {"offset", i * 16}, {"type", "ivec4"}});
-    return fields;
-}
-
-Json kernelJson(const Kernel& k) {
-    return Json{{"name", k.name},
-                {"origin", k.origin},
-                {"glsl", glslPath(k)},
-                {"spv", spirvPath(k)},
-                {"local_size", Json::array({k.localSize[0], k.localSize[1], k.localSize[2]})},
-                {"anchors_per_invocation",
-                 Json::array({k.anchorsPerInvocation[0], k.anchorsPerInvocation[1], k.anchorsPerInvocation[2]})},
-                {"bindings", bindings()},
-                {"push_constants", pushConstants()}};
-}
-
-// A kernel's name, or null for kNoKernel.
-Json kernelName(const KernelPackage& package, uint32_t kernel) {
-    return kernel == kNoKernel ? Json(nullptr) : Json(package.kernels.at(kernel).name);
-}
-
-Json sweepJson(const KernelPackage& package, const SweepPlan& sweep) {
-    Json phases = Json::array();
-    for (size_t p = 0; p < sweep.phaseStart.size(); ++p)
-        phases.push_back(Json{{"start", vec(sweep.phaseStart[p])},
-                              {"step", vec(sweep.phaseStep[p])},
-                              {"count", vec(sweep.phaseCount3[p])}});
-    return Json{{"kernel", package.kernels.at(sweep.kernel).name},
-                {"active_tiles_kernel", kernelName(package, sweep.activeTilesKernel)},
-                {"window", vec(sweep.window)},
-                {"phase_count", vec(sweep.phaseCount)},
-                {"phases", phases}};
-}
-
-Json stageJson(const KernelPackage& package, const StagePlan& stage) {
-    switch (stage.kind) {
-    case Stage::Kind::Start: return Json{{"kind", "start"}, {"kernel", package.kernels.at(stage.startKernel).name}};
-    case Stage::Kind::Grammar: {
-        Json sweeps = Json::array();
-        for (const SweepPlan& sweep : stage.grammar.sweeps)
-            sweeps.push_back(sweepJson(package, sweep));
-        return Json{{"kind", "grammar"},
-                    {"grammar", stage.grammar.name},
-                    {"iterations", stage.grammar.iterations},
-                    {"sweeps", sweeps}};
-    }
-    case Stage::Kind::Field: {
-        // Each box: [min, max] where the DAG is evaluated, [min, max, value] where the field is
-        // that constant, [min, max, value, "unchanged"] where it is not dispatched at all.
-        Json boxes = Json::array();
-        for (const FieldBox& box : stage.fieldBoxes) {
-            Json entry = Json::array({{box.min.x, box.min.y, box.min.z}, {box.max.x, box.max.y, box.max.z}});
-            if (box.constant) entry.push_back(box.value);
-            if (box.unchanged) entry.push_back("unchanged");
-            boxes.push_back(entry);
-        }
-        Json field{{"kind", "field"},
-                   {"field", stage.fieldName},
-                   {"mode", ir::fieldModeName(stage.fieldMode)},
-                   {"kernel", package.kernels.at(stage.fieldKernel).name},
-                   {"boxes", boxes}};
-        // The material id the stage writes where the field wins; absent: materials untouched.
-        if (stage.fieldMaterial) field["material"] = *stage.fieldMaterial;
-        return field;
-    }
-    }
-    throw InternalError("unknown stage kind");
-}
+namespace fs = std::filesystem;
 
 std::string spirvBytes(const std::vector<uint32_t>& words) {
     std::string bytes;
@@ -118,36 +33,157 @@ std::string spirvBytes(const std::vector<uint32_t>& words) {
     return bytes;
 }
 
-} // namespace
-
-std::string packageManifest(const KernelPackage& package, const std::string& sourceFile) {
-    const World& w = package.world;
-    Json kernels = Json::array();
-    for (const Kernel& k : package.kernels)
-        kernels.push_back(kernelJson(k));
-    Json stages = Json::array();
-    for (const StagePlan& stage : package.stages)
-        stages.push_back(stageJson(package, stage));
-    const Json manifest{
-        {"voxc_version", VOXC_VERSION},
-        {"source_file", sourceFile},
-        {"world", Json{{"size", vec(w.size)}, {"origin", vec(w.origin)}, {"chunk", w.chunkSize}, {"seed", w.seed}}},
-        {"uses_materials", package.usesMaterials},
-        {"kernels", kernels},
-        {"dispatch", Json{{"tile_ranges_kernel", kernelName(package, package.tileRangesKernel)}, {"stages", stages}}}};
-    return manifest.dump(2) + "\n";
+[[noreturn]] void fail(const fs::path& dir, const std::string& why) {
+    throw UserError(fmt::format("cannot write package '{}': {}", dir.string(), why));
 }
 
-void writePackage(const KernelPackage& package, const std::string& dir, const std::string& sourceFile) {
-    const std::filesystem::path root(dir);
+// The target as one absolute path without a trailing separator, however it was typed
+// ("pkg", "./pkg/", "/abs/pkg" name the same directory).
+fs::path normalDirectory(const std::string& dir) {
+    if (dir.empty()) throw UserError("the package directory name is empty");
+    fs::path path = fs::absolute(dir).lexically_normal();
+    if (!path.has_filename()) path = path.parent_path();
+    if (path == path.root_path()) fail(path, "it is the root directory");
+    return path;
+}
+
+// Temp directories are named ".NAME.voxc-tmp.PID.RANDOM" beside the package.
+std::string tempPrefix(const fs::path& dir) { return "." + dir.filename().string() + ".voxc-tmp."; }
+
+// Removes temp directories that compiles into `dir` left behind when they were killed (SIGKILL,
+// power loss, a signal during the write): those whose process no longer exists.
+void removeAbandonedTempDirectories(const fs::path& dir) {
+    const std::string prefix = tempPrefix(dir);
     std::error_code error;
-    std::filesystem::create_directories(root / "kernels", error);
-    if (error) throw UserError("cannot create directory " + (root / "kernels").string() + ": " + error.message());
-    for (const Kernel& k : package.kernels) {
-        writeFileAtomically((root / glslPath(k)).string(), k.glsl);
-        writeFileAtomically((root / spirvPath(k)).string(), spirvBytes(k.spirv));
+    for (const fs::directory_entry& entry : fs::directory_iterator(dir.parent_path(), error)) {
+        const std::string name = entry.path().filename().string();
+        if (!name.starts_with(prefix) || !entry.is_directory(error) || entry.is_symlink(error)) continue;
+        const std::string rest = name.substr(prefix.size());
+        const size_t dot = rest.find('.');
+        if (dot == 0 || dot > 9 || dot == std::string::npos || rest.find_first_not_of("0123456789") != dot) continue;
+        const pid_t pid = pid_t(std::stol(rest.substr(0, dot)));
+        if (::kill(pid, 0) == -1 && errno == ESRCH) fs::remove_all(entry.path(), error);
     }
-    writeFileAtomically((root / "manifest.json").string(), packageManifest(package, sourceFile));
+}
+
+// A new, empty directory beside `dir`, created with the usual permissions (mkdir honours the umask).
+fs::path createTempSibling(const fs::path& dir) {
+    std::random_device random;
+    for (int attempt = 0; attempt < 100; ++attempt) {
+        const fs::path temp =
+            dir.parent_path() / fmt::format("{}{}.{:08x}", tempPrefix(dir), ::getpid(), uint32_t(random()));
+        if (::mkdir(temp.c_str(), 0777) == 0) return temp;
+        if (errno != EEXIST) fail(dir, fmt::format("cannot create a directory beside it: {}", std::strerror(errno)));
+    }
+    fail(dir, "cannot find a free temp directory name beside it");
+}
+
+// Writes and syncs a new file: a full disk shows up here, before anything is renamed.
+void writeNewFile(const fs::path& dir, const fs::path& path, const std::string& bytes) {
+    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0) fail(dir, fmt::format("{}: {}", path.filename().string(), std::strerror(errno)));
+    size_t written = 0;
+    while (written < bytes.size()) {
+        const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) {
+            const int writeError = errno;
+            ::close(fd);
+            fail(dir, fmt::format("{}: {}", path.filename().string(), std::strerror(writeError)));
+        }
+        written += size_t(n);
+    }
+    const bool synced = ::fsync(fd) == 0;
+    const int syncError = errno;
+    if (::close(fd) != 0 || !synced)
+        fail(dir, fmt::format("{}: {}", path.filename().string(), std::strerror(synced ? errno : syncError)));
+}
+
+// Makes a rename inside `directory` durable.
+void syncDirectory(const fs::path& directory) {
+    const int fd = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) return;
+    ::fsync(fd);
+    ::close(fd);
+}
+
+void writeTree(const fs::path& dir, const fs::path& temp, const std::map<std::string, std::string>& files) {
+    if (::mkdir((temp / "kernels").c_str(), 0777) != 0) fail(dir, fmt::format("kernels: {}", std::strerror(errno)));
+    for (const auto& [relative, bytes] : files)
+        writeNewFile(dir, temp / relative, bytes);
+    syncDirectory(temp / "kernels");
+    syncDirectory(temp);
+}
+
+// Puts `temp` in place of `dir`. Returns false when `dir` was created meanwhile (by a concurrent
+// compile) and must be exchanged instead.
+bool renameIntoPlace(const fs::path& dir, const fs::path& temp) {
+    if (::rename(temp.c_str(), dir.c_str()) == 0) return true;
+    if (errno == EEXIST || errno == ENOTEMPTY) return false;
+    fail(dir, std::strerror(errno));
+}
+
+// Swaps `temp` and the existing `dir` in one step; `temp` then names the old package, which is
+// removed. Filesystems without RENAME_EXCHANGE get two renames (a reader may briefly find no
+// directory, never a mixed one).
+void exchangeIntoPlace(const fs::path& dir, const fs::path& temp) {
+    if (::renameat2(AT_FDCWD, temp.c_str(), AT_FDCWD, dir.c_str(), RENAME_EXCHANGE) != 0) {
+        if (errno != EINVAL && errno != ENOSYS) fail(dir, std::strerror(errno));
+        const fs::path old = createTempSibling(dir);
+        if (::rename(dir.c_str(), old.c_str()) != 0) fail(dir, std::strerror(errno));
+        if (::rename(temp.c_str(), dir.c_str()) != 0) {
+            const int renameError = errno;
+            ::rename(old.c_str(), dir.c_str());
+            fail(dir, std::strerror(renameError));
+        }
+        std::error_code ignored;
+        fs::remove_all(old, ignored);
+        return;
+    }
+    std::error_code ignored;
+    fs::remove_all(temp, ignored);
+}
+
+} // namespace
+
+std::map<std::string, std::string> packageFiles(const KernelPackage& package, const PackageSource& source) {
+    std::map<std::string, std::string> files;
+    for (const Kernel& k : package.kernels) {
+        files[packageGlslPath(k)] = k.glsl;
+        files[packageSpirvPath(k)] = spirvBytes(k.spirv);
+    }
+    files["manifest.json"] = packageManifest(package, source);
+    return files;
+}
+
+PackageWrite writePackage(const KernelPackage& package, const std::string& dirName, const PackageSource& source) {
+    const fs::path dir = normalDirectory(dirName);
+    const std::map<std::string, std::string> files = packageFiles(package, source);
+    const std::optional<std::map<std::string, std::string>> existing = existingPackage(dir);
+    if (existing && *existing == files) return PackageWrite::Unchanged;
+
+    std::error_code error;
+    fs::create_directories(dir.parent_path(), error);
+    if (error) fail(dir, fmt::format("cannot create {}: {}", dir.parent_path().string(), error.message()));
+    removeAbandonedTempDirectories(dir);
+    const fs::path temp = createTempSibling(dir);
+    try {
+        writeTree(dir, temp, files);
+        if (!existing) {
+            if (renameIntoPlace(dir, temp)) {
+                syncDirectory(dir.parent_path());
+                return PackageWrite::Created;
+            }
+            existingPackage(dir); // refuses a foreign directory that appeared meanwhile
+        }
+        exchangeIntoPlace(dir, temp);
+        syncDirectory(dir.parent_path());
+        return PackageWrite::Replaced;
+    } catch (...) {
+        std::error_code ignored;
+        fs::remove_all(temp, ignored);
+        throw;
+    }
 }
 
 } // namespace voxc::codegen

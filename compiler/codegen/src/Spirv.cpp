@@ -2,6 +2,7 @@
 
 #include "voxc/core/Errors.h"
 
+#include <algorithm>
 #include <fmt/format.h>
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
@@ -48,8 +49,33 @@ std::optional<std::string> spirvValidationErrors(const std::vector<uint32_t>& sp
         [&](spv_message_level_t, const char*, const spv_position_t& position, const char* message) {
             messages += fmt::format("word {}: {}\n", position.index, message);
         });
-    if (tools.Validate(spirv)) return std::nullopt;
+    // Without friendly names: the validator's name mapper makes every repeated OpName unique by
+    // probing suffixes one by one, quadratic in the number of equal names (minutes for a sweep
+    // kernel with thousands of cells). Messages then name ids as %N.
+    spvtools::ValidatorOptions validatorOptions;
+    validatorOptions.SetFriendlyNames(false);
+    if (tools.Validate(spirv.data(), spirv.size(), validatorOptions)) return std::nullopt;
     return messages.empty() ? std::string("invalid SPIR-V") : messages;
+}
+
+std::vector<uint32_t> spirvDescriptorBindings(const std::vector<uint32_t>& spirv) {
+    // SPIR-V 1.3, 2.3-2.4: a 5-word header, then instructions whose first word holds the word
+    // count (high half) and the opcode (low half). OpDecorate: target id, decoration, literal.
+    constexpr uint32_t kOpDecorate = 71, kDecorationBinding = 33, kDecorationDescriptorSet = 34;
+    std::vector<uint32_t> bindings;
+    for (size_t at = 5; at < spirv.size();) {
+        const uint32_t words = spirv[at] >> 16, opcode = spirv[at] & 0xffffu;
+        VOXC_ASSERT(words > 0 && at + words <= spirv.size());
+        if (opcode == kOpDecorate && words == 4) {
+            if (spirv[at + 2] == kDecorationBinding) bindings.push_back(spirv[at + 3]);
+            if (spirv[at + 2] == kDecorationDescriptorSet && spirv[at + 3] != 0)
+                throw InternalError(fmt::format("a kernel declares descriptor set {}", spirv[at + 3]));
+        }
+        at += words;
+    }
+    std::sort(bindings.begin(), bindings.end());
+    bindings.erase(std::unique(bindings.begin(), bindings.end()), bindings.end());
+    return bindings;
 }
 
 std::vector<uint32_t> compileComputeShader(std::string_view kernelName, const std::string& glsl) {

@@ -15,7 +15,8 @@ void addWorldOverrideFlags(CLI::App& command, WorldOverrides& overrides) {
     command.add_option("--chunk", overrides.chunk, "Override the chunk size (power of two, 8..64)");
 }
 
-Program loadProgram(const std::string& path, const WorldOverrides& overrides, bool warningsAsErrors) {
+Program loadProgram(const std::string& path, const WorldOverrides& overrides, bool warningsAsErrors,
+                    std::string* sourceText) {
     CheckResult result = checkFile(path);
     size_t errors = 0;
     size_t warnings = 0;
@@ -28,6 +29,7 @@ Program loadProgram(const std::string& path, const WorldOverrides& overrides, bo
     if (warningsAsErrors && warnings > 0)
         throw UserError(fmt::format("{}: {} warning{} (--werror)", path, warnings, warnings == 1 ? "" : "s"));
     Program program = std::move(*result.program);
+    if (sourceText) *sourceText = result.source.text();
     if (overrides.seed) program.world.seed = *overrides.seed;
     if (overrides.chunk) {
         const int32_t c = *overrides.chunk;

@@ -19,7 +19,9 @@ void addWorldOverrideFlags(CLI::App& command, WorldOverrides& overrides);
 
 // Parses and checks `path`, prints every diagnostic to stderr and throws UserError when there
 // are errors (the message says how many). Applies the overrides to the checked program.
-Program loadProgram(const std::string& path, const WorldOverrides& overrides, bool warningsAsErrors = false);
+// `sourceText`, when given, receives the text that was checked.
+Program loadProgram(const std::string& path, const WorldOverrides& overrides, bool warningsAsErrors = false,
+                    std::string* sourceText = nullptr);
 
 // One line counting the solid voxels (density > iso) of each material id, ascending id, e.g.
 // "solid voxels by material: none 12, rock 5120, sand 733"; materials with no solid voxel are left out.

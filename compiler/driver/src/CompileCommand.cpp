@@ -5,6 +5,7 @@
 #include "voxc/codegen/Codegen.h"
 #include "voxc/ir/Lower.h"
 
+#include <filesystem>
 #include <iostream>
 
 namespace voxc::driver {
@@ -31,7 +32,8 @@ void addCompileCommand(CLI::App& app) {
     command->callback([options] {
         const RolePath inputs[] = {{"the input", options->file}};
         refuseInputsInside({"-o", options->outputDir}, inputs);
-        const Program program = loadProgram(options->file, options->overrides);
+        std::string sourceText;
+        const Program program = loadProgram(options->file, options->overrides, false, &sourceText);
         codegen::CompileOptions compileOptions;
         if (options->dumpIr) {
             compileOptions.afterPass = [](std::string_view pass, const ir::IrModule& module) {
@@ -39,8 +41,12 @@ void addCompileCommand(CLI::App& app) {
             };
         }
         const KernelPackage package = codegen::compileProgram(program, compileOptions);
-        codegen::writePackage(package, options->outputDir, program.sourcePath);
-        std::cerr << "wrote " << package.kernels.size() << " kernels to " << options->outputDir << "\n";
+        const codegen::PackageSource source{std::filesystem::path(options->file).filename().string(), sourceText};
+        const codegen::PackageWrite written = codegen::writePackage(package, options->outputDir, source);
+        if (written == codegen::PackageWrite::Unchanged)
+            std::cerr << options->outputDir << " is up to date (" << package.kernels.size() << " kernels)\n";
+        else
+            std::cerr << "wrote " << package.kernels.size() << " kernels to " << options->outputDir << "\n";
     });
 }
 

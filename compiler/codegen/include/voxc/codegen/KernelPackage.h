@@ -50,6 +50,9 @@ struct Kernel {
     std::string origin;             // which .vox construct it came from, e.g. "overhang.vox:14:3 grammar overhang, window [3,3,1]"
     std::string glsl;               // generated source
     std::vector<uint32_t> spirv;    // compiled, validated SPIR-V
+    // The descriptor set 0 bindings the SPIR-V declares, ascending (read back from it, so the
+    // manifest lists exactly what a pipeline layout must provide).
+    std::vector<uint32_t> bindings;
     uint32_t localSize[3] = {8, 8, 1};
     // Each invocation handles a block of this many consecutive anchors of its dispatch per axis
     // (the kernel's ANCHORS_PER_INVOCATION); a workgroup covers localSize * anchorsPerInvocation.
@@ -112,6 +115,7 @@ struct StagePlan {
 struct KernelPackage {
     World world;
     bool usesMaterials = false; // Program::usesMaterials(): kernels read/write kBindingMaterials
+    std::vector<Material> materials; // Program::materials, for the manifest's material table
     std::vector<Kernel> kernels;
     std::vector<StagePlan> stages;
     // Recomputes the density range of every stale tile, before each sweep when tiles are

@@ -1,16 +1,44 @@
 #pragma once
-// Writes a KernelPackage as files: dir/manifest.json, dir/kernels/<name>.comp (GLSL) and
-// dir/kernels/<name>.spv (SPIR-V words, little endian). Every file is written atomically.
+// Writes a KernelPackage as a package directory: dir/manifest.json, dir/kernels/<name>.comp
+// (GLSL) and dir/kernels/<name>.spv (SPIR-V words, little endian). The directory is replaced as
+// a whole, so a reader sees the old package or the new one, never a mix.
 #include "voxc/codegen/KernelPackage.h"
 
+#include <map>
 #include <string>
 
 namespace voxc::codegen {
 
-// KernelPackage does not record its source file, so the caller passes it for the manifest.
-void writePackage(const KernelPackage& package, const std::string& dir, const std::string& sourceFile = {});
+// manifest.json's "format": how voxc recognises a directory it may replace.
+inline constexpr const char* kPackageFormat = "voxc-package";
+
+// What the manifest records about the program's source: the file name without its directory
+// (so the manifest does not depend on where or how the command was typed) and the text, hashed.
+struct PackageSource {
+    std::string fileName;
+    std::string text;
+};
 
 // The manifest text writePackage writes (JSON, keys in a fixed order, trailing newline).
-std::string packageManifest(const KernelPackage& package, const std::string& sourceFile = {});
+std::string packageManifest(const KernelPackage& package, const PackageSource& source = {});
+
+// A kernel's files, relative to the package directory.
+std::string packageGlslPath(const Kernel& kernel);
+std::string packageSpirvPath(const Kernel& kernel);
+
+// Every file of the package: path relative to the package directory -> bytes.
+std::map<std::string, std::string> packageFiles(const KernelPackage& package, const PackageSource& source = {});
+
+enum class PackageWrite {
+    Created,   // `dir` did not exist
+    Replaced,  // `dir` held another voxc package, now gone
+    Unchanged, // `dir` already held these exact bytes; nothing was touched
+};
+
+// Builds the package in a new sibling directory and swaps it in (Linux renameat2
+// RENAME_EXCHANGE over an existing package, then removes the old one). UserError, with `dir` as
+// it was, when it cannot be written (e.g. a full disk), or when `dir` is not a directory or is a
+// non-empty directory that is not a voxc package (voxc never deletes files it did not write).
+PackageWrite writePackage(const KernelPackage& package, const std::string& dir, const PackageSource& source = {});
 
 } // namespace voxc::codegen

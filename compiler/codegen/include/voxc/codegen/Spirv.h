@@ -16,4 +16,8 @@ std::vector<uint32_t> compileComputeShader(std::string_view kernelName, const st
 // The validator's messages, or nothing when `spirv` is valid for Vulkan 1.1.
 std::optional<std::string> spirvValidationErrors(const std::vector<uint32_t>& spirv);
 
+// The bindings of descriptor set 0 that a valid module's variables are decorated with,
+// ascending: what the kernel declares, used or not. InternalError for another set.
+std::vector<uint32_t> spirvDescriptorBindings(const std::vector<uint32_t>& spirv);
+
 } // namespace voxc::codegen

@@ -1,0 +1,149 @@
+#include "ExistingPackage.h"
+
+#include "voxc/codegen/PackageWriter.h"
+#include "voxc/core/Errors.h"
+
+#include <cerrno>
+#include <cstring>
+#include <dirent.h>
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <vector>
+
+namespace voxc::codegen {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A file of the directory being read disappeared: a concurrent compile swapped the package out
+// and is removing it.
+struct Vanished {};
+
+[[noreturn]] void fail(const fs::path& dir, const std::string& why) {
+    throw UserError(fmt::format("cannot write package '{}': {}", dir.string(), why));
+}
+
+[[noreturn]] void failErrno(const fs::path& dir, const std::string& what) {
+    if (errno == ENOENT) throw Vanished{};
+    fail(dir, fmt::format("cannot read {}: {}", what, std::strerror(errno)));
+}
+
+class Fd {
+public:
+    explicit Fd(int fd) : fd_(fd) {}
+    Fd(const Fd&) = delete;
+    Fd& operator=(const Fd&) = delete;
+    ~Fd() {
+        if (fd_ >= 0) ::close(fd_);
+    }
+    int get() const { return fd_; }
+
+private:
+    int fd_;
+};
+
+std::string readAt(const fs::path& dir, int dirFd, const std::string& name, const std::string& shown) {
+    const Fd fd(::openat(dirFd, name.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC));
+    if (fd.get() < 0) failErrno(dir, shown);
+    std::string bytes;
+    char buffer[65536];
+    for (;;) {
+        const ssize_t n = ::read(fd.get(), buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) failErrno(dir, shown);
+        if (n == 0) return bytes;
+        bytes.append(buffer, size_t(n));
+    }
+}
+
+struct Entry {
+    std::string name;
+    mode_t type; // S_IFREG, S_IFDIR, S_IFLNK, ...
+};
+
+// The entries of an open directory, "." and ".." left out; `dirFd` stays open.
+std::vector<Entry> listAt(const fs::path& dir, int dirFd, const std::string& shown) {
+    DIR* stream = ::fdopendir(::dup(dirFd));
+    if (!stream) failErrno(dir, shown);
+    std::vector<Entry> entries;
+    while (const dirent* e = ::readdir(stream)) {
+        const std::string name = e->d_name;
+        if (name == "." || name == "..") continue;
+        struct stat st {};
+        if (::fstatat(dirFd, name.c_str(), &st, AT_SYMLINK_NOFOLLOW) != 0) {
+            ::closedir(stream);
+            failErrno(dir, shown + name);
+        }
+        entries.push_back({name, mode_t(st.st_mode & S_IFMT)});
+    }
+    ::closedir(stream);
+    return entries;
+}
+
+bool isVoxcManifest(const std::string& text) {
+    const nlohmann::json manifest = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+    if (!manifest.is_object()) return false;
+    // Packages written before the manifest had a format key carry only voxc_version.
+    return manifest.value("format", "") == kPackageFormat || manifest.contains("voxc_version");
+}
+
+[[noreturn]] void foreign(const fs::path& dir, const std::string& relative) {
+    fail(dir, fmt::format("the directory is not a voxc package: voxc did not write '{}', and replacing the directory "
+                          "would delete it; remove it or choose another directory",
+                          relative));
+}
+
+std::optional<std::map<std::string, std::string>> readPackage(const fs::path& dir) {
+    struct stat st {};
+    if (::lstat(dir.c_str(), &st) != 0) {
+        if (errno == ENOENT) return std::nullopt;
+        fail(dir, std::strerror(errno));
+    }
+    if (S_ISLNK(st.st_mode)) fail(dir, "it is a symbolic link; give the directory it points to");
+    if (!S_ISDIR(st.st_mode)) fail(dir, "it exists and is not a directory");
+    const Fd dirFd(::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC));
+    if (dirFd.get() < 0) failErrno(dir, "the directory");
+
+    std::map<std::string, std::string> files;
+    for (const Entry& entry : listAt(dir, dirFd.get(), "")) {
+        if (entry.name == "manifest.json" && entry.type == S_IFREG) {
+            files[entry.name] = readAt(dir, dirFd.get(), entry.name, entry.name);
+        } else if (entry.name == "kernels" && entry.type == S_IFDIR) {
+            const Fd kernelsFd(::openat(dirFd.get(), "kernels", O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC));
+            if (kernelsFd.get() < 0) failErrno(dir, "kernels/");
+            for (const Entry& kernel : listAt(dir, kernelsFd.get(), "kernels/")) {
+                const std::string relative = "kernels/" + kernel.name;
+                const std::string extension = fs::path(kernel.name).extension().string();
+                if (kernel.type != S_IFREG || (extension != ".comp" && extension != ".spv")) foreign(dir, relative);
+                files[relative] = readAt(dir, kernelsFd.get(), kernel.name, relative);
+            }
+        } else {
+            foreign(dir, entry.name);
+        }
+    }
+    if (!files.empty() && !(files.contains("manifest.json") && isVoxcManifest(files.at("manifest.json"))))
+        fail(dir, "the directory is not a voxc package (it has no voxc manifest.json); remove it or choose another "
+                  "directory");
+    return files;
+}
+
+} // namespace
+
+std::optional<std::map<std::string, std::string>> existingPackage(const fs::path& dir) {
+    // Each retry follows a package that a concurrent compile swapped in; that takes that
+    // compile's whole write, so a few retries outlast any realistic number of writers.
+    constexpr int kAttempts = 16;
+    for (int attempt = 0; attempt < kAttempts; ++attempt) {
+        try {
+            return readPackage(dir);
+        } catch (const Vanished&) {
+        }
+    }
+    fail(dir, "it keeps being replaced while voxc reads it");
+}
+
+} // namespace voxc::codegen

@@ -1,0 +1,18 @@
+#pragma once
+// What a package directory holds before writePackage replaces it.
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+
+namespace voxc::codegen {
+
+// The files of the package at `dir` (relative path -> bytes; none for an empty directory),
+// nullopt when `dir` does not exist. Read through one directory handle, so a concurrent compile
+// swapping the directory yields one whole package, never a mix (the read is retried when the
+// package being read is removed under it). UserError when `dir` is a symbolic link or not a
+// directory, or holds anything voxc does not write (a package holds manifest.json with a voxc
+// manifest and kernels/*.comp, *.spv, nothing else): replacing it would delete a user's file.
+std::optional<std::map<std::string, std::string>> existingPackage(const std::filesystem::path& dir);
+
+} // namespace voxc::codegen
