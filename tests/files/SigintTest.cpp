@@ -8,6 +8,7 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <gtest/gtest.h>
 #include <optional>
 #include <poll.h>
@@ -83,48 +84,74 @@ std::optional<std::string> awaitCreation(int watch, const std::string& prefix, p
     }
 }
 
-constexpr const char* kWaves = R"(// Surface every few voxels: a mesh of tens of MB from a small file.
-world { size = [96, 96, 96]; chunk = 32; }
+// Surface every few voxels: a mesh of tens of MB from a small file.
+constexpr const char* kWaves = R"(world { size = [96, 96, 96]; chunk = 32; }
+field waves = sin(x * 0.9) * sin(y * 0.9) * sin(z * 0.9) * 0.5 + 0.5;
+pipeline { start; set waves; }
+)";
+// The same with a material, so an OBJ comes with a .mtl: the two are one set.
+constexpr const char* kRockWaves = R"(material rock { id = 1; color = [0.4, 0.4, 0.4]; }
+world { size = [64, 64, 64]; chunk = 32; }
+start { box { min = [0, 0, 0]; max = [64, 64, 64]; material = rock; } }
 field waves = sin(x * 0.9) * sin(y * 0.9) * sin(z * 0.9) * 0.5 + 0.5;
 pipeline { start; set waves; }
 )";
 
-TEST(files_Sigint, ctrlCDuringAMeshWriteLeavesThePreviousMeshAndNoTempFile) {
-    const std::string dir = testing::TempDir() + "files_sigint/";
-    const std::string log = testing::TempDir() + "files_sigint.log";
+// Runs `voxc run waves.vox -o waves.EXTENSION` in a fresh `dir` holding the user's previous
+// `outputs` (name -> contents) and sends SIGINT while the mesh's temp file is being written.
+// Expects voxc killed by SIGINT, every previous file byte-identical and nothing else left.
+void interruptMeshWrite(const std::string& name, const char* program, const std::string& extension,
+                        const std::map<std::string, std::string>& outputs) {
+    const std::string dir = testing::TempDir() + "files_" + name + "/";
+    const std::string log = testing::TempDir() + "files_" + name + ".log";
     fs::remove_all(dir);
     fs::create_directories(dir);
-    std::ofstream(dir + "waves.vox") << kWaves;
-    const std::string previous = "the user's mesh, which must survive";
+    std::ofstream(dir + "waves.vox") << program;
+    const std::string mesh = "waves" + extension;
 
     // The write is caught mid-way unless the child wrote the whole file between the inotify
     // event and SIGSTOP; then it is run again, a bounded number of times.
     bool interrupted = false;
     for (int attempt = 0; attempt < 5 && !interrupted; ++attempt) {
-        std::ofstream(dir + "waves.ply", std::ios::binary | std::ios::trunc) << previous;
+        for (const auto& [file, contents] : outputs) std::ofstream(dir + file, std::ios::binary | std::ios::trunc) << contents;
         const int watch = inotify_init1(IN_CLOEXEC);
         ASSERT_GE(watch, 0) << std::strerror(errno);
         ASSERT_GE(inotify_add_watch(watch, dir.c_str(), IN_CREATE), 0) << std::strerror(errno);
-        const pid_t child = spawnVoxc({"run", dir + "waves.vox", "--device", "lavapipe", "-o", dir + "waves.ply"}, log);
+        const pid_t child = spawnVoxc({"run", dir + "waves.vox", "--device", "lavapipe", "-o", dir + mesh}, log);
         ASSERT_GT(child, 0);
         int status = 0;
-        const std::optional<std::string> temp = awaitCreation(watch, "waves.ply.tmp-", child, status);
+        const std::optional<std::string> temp = awaitCreation(watch, mesh + ".tmp-", child, status);
         ::close(watch);
         ASSERT_TRUE(temp) << "voxc exited (status " << status << ") without writing a temp file:\n" << readFile(log);
         ::kill(child, SIGSTOP);
         ASSERT_EQ(::waitpid(child, &status, WUNTRACED), child);
         ASSERT_TRUE(WIFSTOPPED(status)) << "voxc ended before it could be stopped:\n" << readFile(log);
         interrupted = fs::exists(dir + *temp);
-        ::kill(child, interrupted ? SIGINT : SIGCONT);
-        if (interrupted) ::kill(child, SIGCONT);
+        if (interrupted) ::kill(child, SIGINT);
+        ::kill(child, SIGCONT);
         ASSERT_EQ(::waitpid(child, &status, 0), child);
         if (!interrupted) continue;
         EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT)
             << "wait status " << status << ", want killed by SIGINT:\n" << readFile(log);
     }
     ASSERT_TRUE(interrupted) << "every attempt finished writing before it could be stopped";
-    EXPECT_EQ(readFile(dir + "waves.ply"), previous);
-    EXPECT_EQ(namesIn(dir), (std::vector<std::string>{"waves.ply", "waves.vox"}));
+    std::vector<std::string> expected{"waves.vox"};
+    for (const auto& [file, contents] : outputs) {
+        EXPECT_EQ(readFile(dir + file), contents) << file;
+        expected.push_back(file);
+    }
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(namesIn(dir), expected);
+}
+
+TEST(files_Sigint, ctrlCDuringAPlyWriteKeepsThePreviousMesh) {
+    interruptMeshWrite("sigint_ply", kWaves, ".ply", {{"waves.ply", "the user's mesh, which must survive"}});
+}
+
+// The .mtl temp file is written before the OBJ's, so both are in flight when the signal comes.
+TEST(files_Sigint, ctrlCDuringAnObjWriteKeepsThePreviousObjAndMtl) {
+    interruptMeshWrite("sigint_obj", kRockWaves, ".obj",
+                       {{"waves.obj", "the user's mesh"}, {"waves.mtl", "newmtl the_users_own\n"}});
 }
 
 } // namespace
