@@ -18,6 +18,7 @@ void JsonReporter::ReportRuns(const std::vector<Run>& runs) {
         } else {
             record["ms"] = run.GetAdjustedRealTime(); // the benchmarks use millisecond units
             record["runs"] = run.iterations;
+            for (const auto& [counter, value] : run.counters) record[counter] = double(value);
         }
         records_.push_back(record);
     }

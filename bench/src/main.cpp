@@ -1,11 +1,12 @@
 // voxc-bench: times the grammar cases and a 5-octave fBm field on the Vulkan path and in the
-// interpreter, and the same fBm with libnoise as a peer.
+// interpreter, the same fBm with libnoise as a peer, and the L-system expansion on the host.
 // `voxc-bench --json` prints a JSON list of records; without it Google Benchmark's table.
 // Vulkan times cover execution and readback of an already-built package (pipelines compiled
 // once up front: that cost is printed to stderr, not included); interpreter times cover the
 // same work: start state plus one grammar iteration, or the field.
 #include "Cases.h"
 #include "JsonReporter.h"
+#include "LsystemCases.h"
 
 #include "voxc/codegen/Codegen.h"
 #include "voxc/core/Errors.h"
@@ -27,7 +28,7 @@ struct BenchOptions {
     bool json = false;
     std::vector<int> sizes{64, 128, 256};
     std::vector<int> fieldSizes{256};
-    std::vector<std::string> backends{"vulkan", "interp", "libnoise"};
+    std::vector<std::string> backends{"vulkan", "interp", "libnoise", "host"};
     std::string device = "auto";
 };
 
@@ -75,7 +76,7 @@ int main(int argc, char** argv) {
     app.add_flag("--json", options.json, "Print a JSON list of records");
     app.add_option("--sizes", options.sizes, "Grid sizes n (n^3 voxels)")->delimiter(',');
     app.add_option("--field-sizes", options.fieldSizes, "Grid sizes n of the fbm5 and feature cases")->delimiter(',');
-    app.add_option("--backends", options.backends, "vulkan, interp, libnoise")->delimiter(',');
+    app.add_option("--backends", options.backends, "vulkan, interp, libnoise, host (L-system expansion)")->delimiter(',');
     app.add_option("--device", options.device, "Vulkan device: auto, lavapipe, gpu or an index");
     try {
         app.parse(argc, argv);
@@ -115,6 +116,7 @@ int main(int argc, char** argv) {
             if (uses("interp")) registerInterp(reporter, "fbm5", n, program);
             if (uses("libnoise")) registerLibnoise(reporter, n);
         }
+        if (uses("host")) bench::registerLsystemExpand(reporter);
         if (options.json) {
             benchmark::RunSpecifiedBenchmarks(&reporter);
         } else {

@@ -96,14 +96,19 @@ private:
 // that follows the output as it is written (target mode only).
 class Expander {
 public:
-    Expander(const Definition& d, const ExpandOptions& options) : d_(d), options_(options) {}
+    Expander(const Definition& d, const ExpandOptions& options) : d_(d), options_(options) {
+        productionOf_.fill(nullptr);
+        macroOf_.fill(nullptr);
+        for (const auto& [symbol, alternatives] : d.productions) productionOf_[uint8_t(symbol)] = &alternatives;
+        for (const auto& [symbol, alternatives] : d.macros) macroOf_[uint8_t(symbol)] = &alternatives;
+    }
 
     Expansion run(const std::vector<uint64_t>& predicted) {
         Expansion result;
         beginPass(predicted[0]);
         for (size_t i = 0; i < d_.axiom.size(); ++i) {
             const char c = d_.axiom[i];
-            if (d_.macros.count(c)) writeMacro(c, {d_.seed, Stream::Macro, 0, uint32_t(i), 0});
+            if (macroOf_[uint8_t(c)]) writeMacro(c, {d_.seed, Stream::Macro, 0, uint32_t(i), 0});
             else write(c, SymbolType::None);
         }
         result.lengths.push_back(out_.size());
@@ -112,9 +117,8 @@ public:
             std::vector<SymbolType> inTypes = std::move(outTypes_);
             beginPass(predicted[k]);
             for (size_t i = 0; i < in.size(); ++i) {
-                const auto production = d_.productions.find(in[i]);
-                if (production == d_.productions.end()) write(in[i], inTypes[i]);
-                else rewrite(in[i], production->second, k, uint32_t(i));
+                if (const auto* productions = productionOf_[uint8_t(in[i])]) rewrite(in[i], *productions, k, uint32_t(i));
+                else write(in[i], inTypes[i]);
             }
             result.lengths.push_back(out_.size());
         }
@@ -147,13 +151,13 @@ private:
         const Alternative& chosen = productions[select(symbol, false, productions, {d_.seed, Stream::Production, k, position, 0})];
         uint32_t occurrence = 0;
         for (char c : chosen.text) {
-            if (d_.macros.count(c)) writeMacro(c, {d_.seed, Stream::Macro, k, position, occurrence++});
+            if (macroOf_[uint8_t(c)]) writeMacro(c, {d_.seed, Stream::Macro, k, position, occurrence++});
             else write(c, chosen.type);
         }
     }
 
     void writeMacro(char macro, const DrawKey& key) {
-        const std::vector<Alternative>& substitutes = d_.macros.at(macro);
+        const std::vector<Alternative>& substitutes = *macroOf_[uint8_t(macro)];
         const Alternative& chosen = substitutes[select(macro, true, substitutes, key)];
         for (char c : chosen.text) write(c, chosen.type);
     }
@@ -212,6 +216,7 @@ private:
 
     const Definition& d_;
     const ExpandOptions& options_;
+    std::array<const std::vector<Alternative>*, 256> productionOf_, macroOf_; // by symbol, null if none
     std::string out_;
     std::vector<SymbolType> outTypes_;
     std::vector<Choice> choices_;
