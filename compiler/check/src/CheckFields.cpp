@@ -54,6 +54,14 @@ FunctionTable declareFunctions(Context& context, const ast::File& file) {
     return table;
 }
 
+void reportIfExhausted(Context& context, const FieldLowering& lowering, SourceLoc loc, const std::string& what) {
+    if (!lowering.exhausted()) return;
+    context.diagnostics.error("E0012", loc,
+                              fmt::format("{} is too large to inline: lowering it visits more than {} expression "
+                                          "nodes",
+                                          what, context.limits.maxLoweringSteps));
+}
+
 // Type-checks a body once on its own, so errors surface even in functions no field calls;
 // parameters are stand-in constants of their types in a scratch DAG.
 void checkBody(Context& context, const FunctionTable& table, const ast::FunctionDecl& function) {
@@ -66,6 +74,37 @@ void checkBody(Context& context, const FunctionTable& table, const ast::Function
         arguments.push_back(Lowered::ofNode(scratch.add(standIn), standIn.type));
     }
     lowering.lowerFunctionBody(function, arguments);
+    reportIfExhausted(context, lowering, function.loc, fmt::format("function '{}'", function.name));
+}
+
+// The longest chain of operands in `nodes` (operands precede their users).
+uint32_t dagDepth(const std::vector<FieldNode>& nodes) {
+    std::vector<uint32_t> depth(nodes.size(), 1);
+    uint32_t deepest = 0;
+    for (size_t i = 0; i < nodes.size(); ++i) {
+        for (uint32_t operand : nodes[i].operands) depth[i] = std::max(depth[i], depth[operand] + 1);
+        deepest = std::max(deepest, depth[i]);
+    }
+    return deepest;
+}
+
+// Every later pass walks a field's nodes; these bounds keep that work and any recursion small.
+bool reportIfTooLarge(Context& context, const Field& field) {
+    const Limits& limits = context.limits;
+    if (field.nodes.size() > size_t(limits.maxFieldNodes)) {
+        context.diagnostics.error("E0012", field.loc,
+                                  fmt::format("field '{}' has {} nodes after inlining, more than the limit of {}",
+                                              field.name, field.nodes.size(), limits.maxFieldNodes));
+        return true;
+    }
+    if (uint32_t depth = dagDepth(field.nodes); depth > uint32_t(limits.maxFieldDepth)) {
+        context.diagnostics.error("E0012", field.loc,
+                                  fmt::format("field '{}' nests {} operations deep after inlining, more than the "
+                                              "limit of {}",
+                                              field.name, depth, limits.maxFieldDepth));
+        return true;
+    }
+    return false;
 }
 
 } // namespace
@@ -93,6 +132,7 @@ std::vector<Field> checkFields(Context& context, const ast::File& file, const st
         FieldDag dag;
         FieldLowering lowering(context, table, dag);
         Lowered value = lowering.lowerField(*decl.value);
+        reportIfExhausted(context, lowering, decl.loc, fmt::format("field '{}'", decl.name));
         if (value.number) value = lowering.materialize(value, Type::Float, decl.value->loc);
         if (!value.ok) continue;
         if (value.type != Type::Float) {
@@ -105,6 +145,7 @@ std::vector<Field> checkFields(Context& context, const ast::File& file, const st
         field.name = decl.name;
         field.loc = decl.loc;
         field.nodes = dag.reachableFrom(value.node, field.root);
+        if (reportIfTooLarge(context, field)) continue;
         fields.push_back(std::move(field));
     }
     return fields;

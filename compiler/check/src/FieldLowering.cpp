@@ -144,8 +144,29 @@ Lowered FieldLowering::input(FieldInput which, SourceLoc loc) {
 }
 
 Lowered FieldLowering::lower(const ast::Expr& expr, Scope& scope) {
+    if (++steps_ > uint64_t(context_.limits.maxLoweringSteps)) return Lowered::failed();
+    if (depth_ >= uint32_t(context_.limits.maxFieldDepth)) {
+        context_.diagnostics.error(
+            "E0012", expr.loc,
+            fmt::format("this expression nests deeper than the limit of {} levels once function calls are inlined{}",
+                        context_.limits.maxFieldDepth,
+                        callStack_.empty() ? "" : fmt::format(" (through {})", fmt::join(callStack_, " -> "))));
+        return Lowered::failed();
+    }
+    ++depth_;
+    Lowered result = lowerNested(expr, scope);
+    --depth_;
+    return result;
+}
+
+Lowered FieldLowering::lowerNested(const ast::Expr& expr, Scope& scope) {
     switch (expr.kind) {
-    case Kind::Number: return Lowered::ofNumber(expr.number);
+    case Kind::Number:
+        if (!std::isfinite(expr.number)) {
+            context_.diagnostics.error("E0007", expr.loc, "number is too large to represent");
+            return Lowered::failed();
+        }
+        return Lowered::ofNumber(expr.number);
     case Kind::Name: return lowerName(expr, scope);
     case Kind::Add: case Kind::Subtract: case Kind::Multiply: case Kind::Divide: case Kind::Negate:
         return lowerArithmetic(expr, scope);
@@ -313,7 +334,15 @@ Lowered FieldLowering::callUser(const ast::FunctionDecl& function, const ast::Ex
             ok = false;
         }
     }
-    return ok ? lowerFunctionBody(function, args) : Lowered::failed();
+    if (!ok) return Lowered::failed();
+    std::vector<uint32_t> argumentNodes;
+    for (const Lowered& arg : args) argumentNodes.push_back(arg.node);
+    auto key = std::make_pair(&function, std::move(argumentNodes));
+    if (auto it = inlined_.find(key); it != inlined_.end()) return it->second;
+    Lowered result = lowerFunctionBody(function, args);
+    // A body cut short by the step limit is not memoised: it was not really lowered.
+    if (!exhausted()) inlined_.emplace(std::move(key), result);
+    return result;
 }
 
 Lowered FieldLowering::callBuiltin(std::string_view name, std::vector<Lowered> args, SourceLoc loc,

@@ -1,7 +1,12 @@
 #pragma once
 // Lowers field expressions (ast::Expr) into a FieldDag: names resolve to let bindings,
 // parameters, position inputs or constants; operators and calls become builtin calls typed by
-// the registry's type rules; user functions are inlined at each call.
+// the registry's type rules; user functions are inlined at each call, by sharing: a function
+// lowered once for a list of argument nodes reuses that result at every call with the same list,
+// so a chain of functions that each call the previous one twice costs linear work, not 2^n.
+// Lowering stops after Limits::maxLoweringSteps expression nodes (exhausted(); the caller
+// reports it) and where expressions, counted through inlined calls, nest deeper than
+// Limits::maxFieldDepth (E0012 there), which also bounds this recursion's stack.
 //
 // Numbers (literals, constants, and + - * / and unary minus of numbers) are folded in double
 // precision like `const` expressions and stay untyped until used: an argument position whose
@@ -47,6 +52,11 @@ public:
     // The number as a node of `type` (Float, or Int when it is integral); reports E0007/E0010 at `loc`.
     Lowered materialize(const Lowered& value, Type type, SourceLoc loc);
 
+    // Expression nodes visited so far (a shared function call counts once per argument list).
+    uint64_t steps() const { return steps_; }
+    // True once lowering stopped at Limits::maxLoweringSteps; nothing about it is reported yet.
+    bool exhausted() const { return steps_ > uint64_t(context_.limits.maxLoweringSteps); }
+
 private:
     struct Scope {
         std::vector<std::pair<std::string, Lowered>> bindings; // innermost last
@@ -54,6 +64,7 @@ private:
     };
 
     Lowered lower(const ast::Expr& expr, Scope& scope);
+    Lowered lowerNested(const ast::Expr& expr, Scope& scope); // lower() within the depth limit
     Lowered lowerName(const ast::Expr& expr, Scope& scope);
     Lowered lowerArithmetic(const ast::Expr& expr, Scope& scope);
     Lowered lowerMember(const ast::Expr& expr, Scope& scope);
@@ -67,6 +78,9 @@ private:
     const FunctionTable& functions_;
     FieldDag& dag_;
     std::vector<std::string> callStack_; // user functions being inlined, outermost first
+    std::map<std::pair<const ast::FunctionDecl*, std::vector<uint32_t>>, Lowered> inlined_;
+    uint64_t steps_ = 0;
+    uint32_t depth_ = 0; // lower() calls in progress
 };
 
 } // namespace voxc::check

@@ -12,7 +12,7 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <unordered_map>
+#include <vector>
 
 namespace voxc {
 
@@ -69,25 +69,43 @@ public:
         grammar::VoxcParser::enterRecursionRule(ctx, state, ruleIndex, precedence);
     }
 
-private:
-    // A context's depth is its parent's plus one. Contexts the generated code creates without
-    // entering a rule (labelled alternatives, left-recursion wrappers) are filled in on demand.
-    uint32_t depthOf(const antlr4::tree::ParseTree* ctx) {
-        std::vector<const antlr4::tree::ParseTree*> unknown;
-        uint32_t depth = 0;
-        for (; ctx != nullptr; ctx = ctx->parent) {
-            if (auto it = depths_.find(ctx); it != depths_.end()) {
-                depth = it->second;
-                break;
-            }
-            unknown.push_back(ctx);
+    // A left-associative chain (`x + x + ...`) loops inside one rule: each operator wraps the
+    // tree so far in a new context, one level deeper, without a new C++ frame. Stopping here
+    // saves building (and measuring) the rest of a huge chain.
+    void pushNewRecursionContext(antlr4::ParserRuleContext* ctx, size_t state, size_t ruleIndex) override {
+        while (!frames_.empty() && frames_.back().parent != ctx->parent) frames_.pop_back();
+        if (!frames_.empty() && frames_.back().depth + ++frames_.back().chain > maxNesting_) {
+            const antlr4::Token* start = getContext()->getStart();
+            diagnostics_.error("E0012", start ? tokenLoc(*start) : SourceLoc{}, nestingMessage(maxNesting_));
+            throw NestingTooDeep{};
         }
-        for (auto it = unknown.rbegin(); it != unknown.rend(); ++it) depths_[*it] = ++depth;
+        grammar::VoxcParser::pushNewRecursionContext(ctx, state, ruleIndex);
+    }
+
+private:
+    // A rule's depth is its parent's plus one. ANTLR gives no hook where a rule exits, so the
+    // frames of rules that are still open are found from the parent: the frame whose context
+    // it is, or whose context it replaced (a labelled alternative or left-recursion wrapper,
+    // which keeps the original's parent); frames above that one have exited.
+    struct Frame {
+        const antlr4::tree::ParseTree* ctx;
+        const antlr4::tree::ParseTree* parent;
+        uint32_t depth;
+        uint32_t chain = 0; // operators of a left-associative chain so far
+    };
+
+    uint32_t enter(const antlr4::tree::ParseTree* ctx) {
+        const antlr4::tree::ParseTree* parent = ctx->parent;
+        while (!frames_.empty() && frames_.back().ctx != parent &&
+               !(parent != nullptr && frames_.back().parent == parent->parent))
+            frames_.pop_back();
+        const uint32_t depth = frames_.empty() ? 1 : frames_.back().depth + 1;
+        frames_.push_back({ctx, parent, depth, 0});
         return depth;
     }
 
     void checkDepth(antlr4::ParserRuleContext* ctx) {
-        if (depthOf(ctx) <= maxNesting_) return;
+        if (enter(ctx) <= maxNesting_) return;
         const antlr4::Token* at = getCurrentToken();
         diagnostics_.error("E0012", at ? tokenLoc(*at) : SourceLoc{}, nestingMessage(maxNesting_));
         throw NestingTooDeep{};
@@ -95,7 +113,7 @@ private:
 
     uint32_t maxNesting_;
     Diagnostics& diagnostics_;
-    std::unordered_map<const antlr4::tree::ParseTree*, uint32_t> depths_;
+    std::vector<Frame> frames_;
 };
 
 // A left-associative chain (`x + x + ...`) parses in a loop, so the parser's stack stays flat
@@ -107,10 +125,10 @@ bool reportIfTreeTooDeep(antlr4::tree::ParseTree* root, uint32_t maxNesting, Dia
     while (!pending.empty()) {
         auto [node, depth] = pending.back();
         pending.pop_back();
-        auto* rule = dynamic_cast<antlr4::ParserRuleContext*>(node);
-        if (rule == nullptr) continue;
+        if (node->children.empty()) continue; // a token
         if (depth > maxNesting) {
-            diagnostics.error("E0012", rule->getStart() ? tokenLoc(*rule->getStart()) : SourceLoc{},
+            auto* rule = dynamic_cast<antlr4::ParserRuleContext*>(node);
+            diagnostics.error("E0012", rule && rule->getStart() ? tokenLoc(*rule->getStart()) : SourceLoc{},
                               nestingMessage(maxNesting));
             return true;
         }

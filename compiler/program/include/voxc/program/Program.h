@@ -173,14 +173,14 @@ struct Limits {
     int32_t maxRulesPerSweep = 256;
     // Rules x window cells of one sweep: the size of its generated kernel.
     int64_t maxSweepRuleCells = 4096;
-    int64_t maxSourceBytes = int64_t(8) << 20;
+    int64_t maxSourceBytes = int64_t(4) << 20;
     // Depth of the parse tree: brackets, blocks, unary operators, `let`, `?:` and operator chains.
     int32_t maxNesting = 256;
-    // User function calls inlined inside one another, and the expression nodes lowering one
-    // field or function may visit (a function counts once per distinct argument list).
-    int32_t maxCallDepth = 32;
+    // Expression nodes lowering one field or function may visit, a function counting once per
+    // distinct argument list.
     int64_t maxLoweringSteps = 1000000;
-    // A field's DAG after inlining: nodes, and the longest operand chain.
+    // A field's DAG after inlining: nodes, and the longest operand chain (also the deepest
+    // expression nesting, counted through inlined calls, that lowering accepts).
     int32_t maxFieldNodes = 100000;
     int32_t maxFieldDepth = 1024;
     // Estimated work of the whole pipeline (see docs/language.md, "Work estimate"); `--max-work`.
