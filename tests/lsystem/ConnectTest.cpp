@@ -1,7 +1,9 @@
 // Branch connection (lsystem-spec.md §4.4; §10 test 13) and skeleton export.
 #include "TestDefinitions.h"
 #include "voxc/generators/lsystem/Connect.h"
+#include "voxc/generators/lsystem/Expand.h"
 #include "voxc/generators/lsystem/Export.h"
+#include "voxc/generators/lsystem/RuleFile.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -148,6 +150,30 @@ TEST(lsystem_Export, ObjPolylinesFollowContinuingSegments) {
     EXPECT_EQ(lines[3].size(), s.connections[0].points.size());
     EXPECT_EQ(vertices[lines[1][1] - 1], s.segments[2].to);
     EXPECT_EQ(vertices[lines[3].back() - 1], s.connections[0].points.back());
+}
+
+// §10 test 11: the same file and seed give byte-identical skeletons (deviation and connections
+// included); another seed gives another one.
+std::string caveSkeleton(uint32_t seed) {
+    Diagnostics diagnostics;
+    const auto rules = parseRuleFile(SourceFile("default.rules", std::string(defaultRuleFileText())), diagnostics);
+    Definition d;
+    d.productions = rules->productions;
+    d.macros = rules->macros;
+    d.expansions = 3;
+    d.seed = seed;
+    d.params.angleDeviation = 15;
+    const Expansion e = expand(d);
+    Skeleton s = interpret(d, e.symbols, e.types);
+    connectBranches(s, ConnectParams{}, d.seed, d.limits);
+    return skeletonJson(s) + skeletonObj(s);
+}
+
+TEST(lsystem_Export, SameSeedGivesByteIdenticalSkeletons) {
+    const std::string first = caveSkeleton(7);
+    EXPECT_EQ(first, caveSkeleton(7));
+    EXPECT_NE(first, caveSkeleton(8));
+    EXPECT_NE(first.find("\"connections\""), std::string::npos);
 }
 
 } // namespace

@@ -1,9 +1,11 @@
 // The turtle (lsystem-spec.md §1, §4.3; §10 tests 4-8): full-state brackets, pitch and its
 // limit, O/A/B/S with their clamps, `0`, constrained clipping, the ABOP frame.
 #include "TestDefinitions.h"
+#include "voxc/generators/lsystem/Selection.h"
 #include "voxc/generators/lsystem/Turtle.h"
 
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 namespace voxc::lsystem {
@@ -166,6 +168,29 @@ TEST(lsystem_Turtle, AbopFrameTurnsPitchesAndRolls) {
 
 TEST(lsystem_Turtle, AStrayClosingBracketIsAUserError) {
     EXPECT_THROW(draw("F]F"), UserError);
+}
+
+// Arbitrary bytes (unknown symbols, unbalanced brackets) never crash either turtle: a stray ']'
+// is a UserError, anything else interprets.
+TEST(lsystem_Turtle, ArbitraryStringsInterpretOrFailAsUserErrors) {
+    for (TurtleKind kind : {TurtleKind::Thesis, TurtleKind::Abop}) {
+        Definition d = thesisDefinition();
+        d.turtle = kind;
+        d.params.angleDeviation = 10;
+        d.params.pitchLimit = 60;
+        d.constrained = ConstrainedMode{ConstrainedMode::Shape::Sphere, {}, {}, {0, 0, 0}, 20};
+        const std::string alphabet = "FfRLUDOABSZ0[]+-&^\\/|X\n";
+        for (uint32_t seed = 0; seed < 500; ++seed) {
+            std::string text;
+            for (uint32_t i = 0; i < 64; ++i) text += alphabet[uniformIndex({seed, Stream::Mutation, 9, i, 0}, uint32_t(alphabet.size()))];
+            try {
+                const Skeleton s = interpret(d, text);
+                for (const Segment& segment : s.segments) EXPECT_LE(glm::length(segment.to), 20.0 + 1e-9) << text;
+            } catch (const UserError&) {
+                EXPECT_NE(text.find(']'), std::string::npos) << text;
+            }
+        }
+    }
 }
 
 } // namespace
