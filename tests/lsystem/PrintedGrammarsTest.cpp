@@ -7,7 +7,10 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/common.hpp>
 #include <gtest/gtest.h>
+#include <set>
+#include <tuple>
 
 namespace voxc::lsystem {
 namespace {
@@ -133,6 +136,35 @@ TEST(lsystem_PrintedGrammars, Grammars7And8LengthsAndEndpoints) {
         EXPECT_EQ(countOf(twice.symbols, 'Z'), c.tips2) << c.rhs;
         EXPECT_EQ(run(withProduction(c.rhs, 1)).endpoints.size(), c.endpoints1) << c.rhs;
         EXPECT_EQ(run(withProduction(c.rhs, 2)).endpoints.size(), c.endpoints2) << c.rhs;
+    }
+}
+
+// ABOP Fig. 1.10: the 3D Hilbert curve runs unchanged on the abop turtle. After n expansions it
+// visits every point of a 2^n cube exactly once with unit steps, whatever the frame's handedness.
+TEST(lsystem_PrintedGrammars, AbopHilbertCurveFillsTheCube) {
+    Definition d = test::thesisDefinition("A");
+    d.turtle = TurtleKind::Abop;
+    d.params.angle = 90;
+    d.productions['A'] = {{"B-F+CFC+F-D&F^D-F+&&CFC+F+B//", SymbolType::None, 1}};
+    d.productions['B'] = {{"A&F^CFB^F^D^^-F-D^|F^B|FC^F^A//", SymbolType::None, 1}};
+    d.productions['C'] = {{"|D^|F^B-F+C^F^A&&FA&F^C+F+B^F^D//", SymbolType::None, 1}};
+    d.productions['D'] = {{"|CFB-F+B|FA&F^A&&FB-F+B|FC//", SymbolType::None, 1}};
+    for (uint32_t n = 1; n <= 3; ++n) {
+        d.expansions = n;
+        const Skeleton s = run(d);
+        const size_t points = size_t(1) << (3 * n);
+        ASSERT_EQ(s.segments.size(), points - 1) << n;
+        std::set<std::tuple<long, long, long>> visited{{0, 0, 0}};
+        glm::dvec3 low(0.0), high(0.0);
+        for (const Segment& segment : s.segments) {
+            EXPECT_NEAR(glm::length(segment.to - segment.from), 1.0, 1e-9);
+            const glm::dvec3 p = glm::round(segment.to);
+            EXPECT_NEAR(glm::length(segment.to - p), 0.0, 1e-9);
+            visited.insert({std::lround(p.x), std::lround(p.y), std::lround(p.z)});
+            low = glm::min(low, p), high = glm::max(high, p);
+        }
+        EXPECT_EQ(visited.size(), points) << n;
+        EXPECT_EQ(high - low, glm::dvec3(double((1 << n) - 1))) << n;
     }
 }
 
