@@ -1,5 +1,6 @@
 #include "voxc/generators/lsystem/Definition.h"
 
+#include <cctype>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -107,10 +108,13 @@ std::optional<StringProblem> checkString(const Definition& definition, std::stri
             if (role == StringRole::Substitute)
                 return StringProblem{i, "E0013", fmt::format("macro '{}' inside a substitute string: macros do not nest", c)};
         } else if (definition.turtle == TurtleKind::Thesis && !isThesisSymbol(c)) {
+            // The likely slip is the letter's case ('f' for 'F', 'q' for a macro 'Q').
+            const char other = char(std::isupper(uint8_t(c)) ? std::tolower(uint8_t(c)) : std::toupper(uint8_t(c)));
+            const bool known = other != c && (isThesisSymbol(other) || definition.macros.count(other));
             return StringProblem{i, "E0002",
                                  fmt::format("unknown symbol '{}': not in the thesis alphabet (F R L U D O A B S Z 0 [ ]) "
-                                             "and not a declared macro",
-                                             c)};
+                                             "and not a declared macro{}",
+                                             c, known ? fmt::format("; did you mean '{}'?", other) : "")};
         }
     }
     if (!open.empty()) return StringProblem{open.back(), "E0001", "'[' is never closed"};
