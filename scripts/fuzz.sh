@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs voxc's fuzz targets (docs/fuzzing.md).
 #
-#   scripts/fuzz.sh TARGET|all SECONDS [--runs N] [--fresh] [--keep-going]
+#   scripts/fuzz.sh TARGET|all SECONDS [--runs N] [--fresh] [--keep-going] [--no-build]
 #   scripts/fuzz.sh --build
 #
 # TARGET is parse, check or lower (libFuzzer, ASan + UBSan, in the clang tree build-fuzz/, configured
@@ -11,7 +11,8 @@
 # (examples/, every .vox under tests/), tests/fuzz/regressions/TARGET and a working corpus kept in
 # the build tree; --fresh uses a temporary one instead, so a run starts from the committed inputs
 # only. --keep-going runs libFuzzer in fork mode and carries on past crashes, hangs and OOMs (each
-# saved under the build tree's fuzz/artifacts/TARGET/). Prints executions, coverage and findings per
+# saved under the build tree's fuzz/artifacts/TARGET/). --no-build runs the targets as built (for
+# several runs at once on one tree). Prints executions, coverage and findings per
 # target and exits non-zero on any crash, hang (> 1 s per input), OOM or sanitizer report.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -37,12 +38,13 @@ fi
 [ $# -ge 2 ] || usage
 target=$1 seconds=$2
 shift 2
-runs=-1 fresh=0 keep_going=0
+runs=-1 fresh=0 keep_going=0 build=1
 while [ $# -gt 0 ]; do
     case $1 in
         --runs) runs=$2; shift 2 ;;
         --fresh) fresh=1; shift ;;
         --keep-going) keep_going=1; shift ;;
+        --no-build) build=0; shift ;;
         *) usage ;;
     esac
 done
@@ -60,7 +62,7 @@ case $target in
     parse|check|lower) targets=("$target") ;;
     *) usage ;;
 esac
-build_fuzz_tree
+[ $build -eq 0 ] || build_fuzz_tree
 
 work=$fuzz_build/fuzz
 scratch=$(mktemp -d)
@@ -80,8 +82,8 @@ fi
 failed=0
 for t in "${targets[@]}"; do
     corpus=$corpus_root/$t artifacts=$work/artifacts/$t/ log=$work/$t.log
+    [ $fresh -eq 0 ] || log=$work/$t-fresh.log
     mkdir -p "$corpus" "$artifacts"
-    before=$(ls "$artifacts" | wc -l)
     options=(-dict="$fuzz_build/tests/fuzz/vox.dict" -timeout=1 -rss_limit_mb=2048 -max_len=4096
              -max_total_time="$seconds" -runs="$runs" -artifact_prefix="$artifacts" -print_final_stats=1)
     [ $keep_going -eq 0 ] || options+=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
@@ -89,17 +91,17 @@ for t in "${targets[@]}"; do
     "$fuzz_build/tests/fuzz/voxc_fuzz_$t" "${options[@]}" "$corpus" "$seeds" "$root/tests/fuzz/regressions/$t" \
         > "$log" 2>&1 || status=$?
     elapsed=$((SECONDS - started))
-    found=$(( $(ls "$artifacts" | wc -l) - before ))
+    found=$(grep -aoE 'Test unit written to .*' "$log" | sort -u | wc -l)
     # The last progress line ("#N ... cov: C ft: F corp: K/..") holds the totals; final stats
     # repeat the executions when libFuzzer printed them.
-    progress=$(grep -E '^#[0-9]+' "$log" | tail -n 1 || true)
-    executions=$(grep -oE 'stat::number_of_executed_units: [0-9]+' "$log" | grep -oE '[0-9]+$' | tail -n 1 || true)
+    progress=$(grep -aE '^#[0-9]+' "$log" | tail -n 1 || true)
+    executions=$(grep -aoE 'stat::number_of_executed_units: [0-9]+' "$log" | grep -oE '[0-9]+$' | tail -n 1 || true)
     [ -n "$executions" ] || executions=$(grep -oE '^#[0-9]+' <<< "$progress" | tr -d '#' || true)
     coverage=$(grep -oE 'cov: [0-9]+ ft: [0-9]+' <<< "$progress" || true)
-    if [ $status -ne 0 ] || [ "$found" -gt 0 ] || grep -qE 'ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)|runtime error:' "$log"; then
+    if [ $status -ne 0 ] || [ "$found" -gt 0 ] || grep -aqE 'ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)|runtime error:' "$log"; then
         failed=1
-        echo "fuzz $t: FAILED (exit $status): ${executions:-0} executions in ${elapsed}s, ${coverage:-no coverage}, $found new artifacts in $artifacts, log $log"
-        grep -E 'ERROR:|runtime error:|SUMMARY:|Test unit written' "$log" | head -n 20 | sed 's/^/  /'
+        echo "fuzz $t: FAILED (exit $status): ${executions:-0} executions in ${elapsed}s, ${coverage:-no coverage}, $found inputs saved in $artifacts, log $log"
+        grep -aE 'ERROR:|runtime error:|SUMMARY:|Test unit written' "$log" | head -n 20 | sed 's/^/  /'
     else
         echo "fuzz $t: ${executions:-0} executions in ${elapsed}s, ${coverage:-no coverage}, 0 crashes/hangs/sanitizer reports"
     fi
