@@ -3,6 +3,7 @@
 #include "TestDefinitions.h"
 #include "voxc/generators/lsystem/Evolve.h"
 #include "voxc/generators/lsystem/Expand.h"
+#include "voxc/generators/lsystem/Turtle.h"
 
 #include <gtest/gtest.h>
 #include <set>
@@ -44,6 +45,20 @@ TEST(lsystem_RandomRules, ThousandSeedsKeepEveryPrintedProperty) {
             EXPECT_EQ(rule.find('T'), std::string::npos) << rule; // weight -1
         }
         EXPECT_GT(distinct.size(), 500u);
+    }
+}
+
+// Random rules drive a real expansion: with the macros' substitutes they expand and draw.
+TEST(lsystem_RandomRules, RandomRulesExpandAndDraw) {
+    const RandomRuleParams params = paperParams(Selection::Weighted);
+    for (uint32_t seed = 0; seed < 200; ++seed) {
+        Definition d = test::withProduction(randomProduction(params, seed), 2);
+        for (const auto& [macro, weight] : params.weights)
+            d.macros[macro] = {{"FFZ", SymbolType::Tunnel, 1}, {"RFZ", macro == 'Q' ? SymbolType::Room : SymbolType::Tunnel, 1}};
+        d.seed = seed;
+        const Expansion e = expand(d);
+        // Each macro draws at least one F: 6 after the first pass, 6 + 36 after the second.
+        EXPECT_GE(interpret(d, e.symbols, e.types).segments.size(), 42u) << d.productions['Z'][0].text;
     }
 }
 

@@ -94,6 +94,23 @@ TEST(lsystem_Expand, SegmentsPastTheLimitFail) {
     EXPECT_THROW(interpret(d, "FFFF"), LimitError);
 }
 
+TEST(lsystem_Expand, NestingIsPredictedAndCapped) {
+    Definition d = withProduction("F[Z][C]", 10);
+    d.macros['C'] = {{"F[[RFZ]]", SymbolType::Tunnel, 1}, {"FZ", SymbolType::Tunnel, 1}};
+    EXPECT_EQ(predictDepth(d, 10), 30u); // 3 levels per pass: [ plus C's two
+    d.limits.maxDepth = 29;
+    try {
+        expand(d);
+        FAIL() << "no LimitError";
+    } catch (const LimitError& error) {
+        EXPECT_EQ(error.limit, "maxDepth");
+        EXPECT_EQ(error.amount, 30u);
+    }
+    d.limits.maxDepth = 3;
+    EXPECT_NO_THROW(interpret(d, "F[[[F]]]"));
+    EXPECT_THROW(interpret(d, "F[[[[F]]]]"), LimitError);
+}
+
 TEST(lsystem_Expand, InvalidDefinitionsAreUserErrors) {
     EXPECT_THROW(expand(withProduction("F[Z", 1)), UserError);
     EXPECT_THROW(expand(withProduction("FXZ", 1)), UserError);

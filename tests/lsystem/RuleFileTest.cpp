@@ -5,6 +5,7 @@
 #include "voxc/core/AtomicWrite.h"
 #include "voxc/generators/lsystem/Expand.h"
 #include "voxc/generators/lsystem/RuleFile.h"
+#include "voxc/generators/lsystem/Selection.h"
 
 #include <cstdlib>
 #include <filesystem>
@@ -91,6 +92,20 @@ TEST(lsystem_RuleFile, TheShippedReconstructionParsesAndIsStochastic) {
     const Expansion a = expand(d), b = expand(d), c = expand(fromDefaultRules(8));
     EXPECT_EQ(a.symbols, b.symbols);
     EXPECT_NE(a.symbols, c.symbols);
+}
+
+// Arbitrary bytes never crash the parser: it returns rules or reports at least one error.
+TEST(lsystem_RuleFile, ArbitraryBytesParseOrReport) {
+    std::string alphabet = "ZCQIFRL[];;;#\n\r \t.-1e9noetunlrom";
+    alphabet += '\0';
+    alphabet += '\xff';
+    for (uint32_t seed = 0; seed < 1000; ++seed) {
+        std::string text;
+        for (uint32_t i = 0; i < 80; ++i) text += alphabet[uniformIndex({seed, Stream::Mutation, 7, i, 0}, uint32_t(alphabet.size()))];
+        Diagnostics diagnostics;
+        const auto rules = parse(text, diagnostics);
+        EXPECT_EQ(rules.has_value(), !diagnostics.hasErrors()) << text;
+    }
 }
 
 const fs::path kCases = VOXC_LSYSTEM_RULE_CASES_DIR;

@@ -143,7 +143,7 @@ private:
         outTypes_.push_back(type);
         if (!d_.target) return;
         const TurtleAction action = applySymbol(d_, turtle_, c, turtle_.angle);
-        if (action == TurtleAction::Push) stack_.push_back(turtle_);
+        if (action == TurtleAction::Push) stack_.push_back(turtle_); // depth bounded by predictDepth
         else if (action == TurtleAction::Pop && !stack_.empty()) turtle_ = stack_.back(), stack_.pop_back();
     }
 
@@ -226,7 +226,31 @@ private:
     std::vector<double> weights_, offsets_;
 };
 
+// The deepest nesting inside `text` as written, each macro counted at its deepest substitute
+// (substitutes hold no macros, so `macros` is null for them).
+uint64_t nesting(std::string_view text, const std::map<char, std::vector<Alternative>>* macros) {
+    uint64_t depth = 0, deepest = 0;
+    for (char c : text) {
+        if (c == '[') {
+            deepest = std::max(deepest, ++depth);
+        } else if (c == ']') {
+            depth -= depth > 0;
+        } else if (macros) {
+            if (const auto macro = macros->find(c); macro != macros->end())
+                for (const Alternative& a : macro->second) deepest = std::max(deepest, depth + nesting(a.text, nullptr));
+        }
+    }
+    return deepest;
+}
+
 } // namespace
+
+uint64_t predictDepth(const Definition& definition, uint32_t expansions) {
+    uint64_t perPass = 0;
+    for (const auto& [symbol, alternatives] : definition.productions)
+        for (const Alternative& a : alternatives) perPass = std::max(perPass, nesting(a.text, &definition.macros));
+    return nesting(definition.axiom, &definition.macros) + uint64_t(expansions) * perPass;
+}
 
 std::vector<uint64_t> predictLengths(const Definition& definition, uint32_t expansions) {
     const LengthModel model(definition);
@@ -250,6 +274,8 @@ Expansion expand(const Definition& definition, const ExpandOptions& options) {
             throw LimitError("maxSymbols", predicted[k], limits.maxSymbols,
                              fmt::format("the string could reach this many symbols after {} expansion{}", k,
                                          k == 1 ? "" : "s"));
+    if (const uint64_t depth = predictDepth(definition, definition.expansions); depth > limits.maxDepth)
+        throw LimitError("maxDepth", depth, limits.maxDepth, "brackets could nest this deep");
     Expansion result = Expander(definition, options).run(predicted);
     for (size_t k = 0; k < predicted.size(); ++k) VOXC_ASSERT(result.lengths[k] <= predicted[k]);
     return result;

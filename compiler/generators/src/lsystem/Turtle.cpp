@@ -169,6 +169,9 @@ Skeleton interpret(const Definition& definition, std::string_view symbols, std::
         }
         if (cut) continue;
         if (c == '[') {
+            if (stack.size() == definition.limits.maxDepth)
+                throw LimitError("maxDepth", stack.size() + 1, definition.limits.maxDepth,
+                                 fmt::format("brackets nest this deep at index {}", i));
             stack.push_back(state);
             const uint32_t parent = state.branch;
             state.branch = uint32_t(skeleton.branches.size());

@@ -81,6 +81,7 @@ struct Limits {
     uint64_t maxSymbols = uint64_t(1) << 24;  // expanded string length (predicted before allocating)
     uint64_t maxSegments = uint64_t(1) << 22; // skeleton segments, connection polylines included
     uint32_t maxAlternatives = 256;           // productions of one symbol, substitutes of one macro
+    uint32_t maxDepth = 4096;                 // bracket nesting (each level holds one turtle state)
 };
 
 struct Definition {
@@ -101,7 +102,7 @@ struct Definition {
 // The expansion or interpretation would pass a bound: names it, with the predicted amount.
 struct LimitError : UserError {
     LimitError(std::string limit, uint64_t amount, uint64_t cap, std::string detail);
-    std::string limit; // "maxSymbols", "maxExpansions", "maxSegments"
+    std::string limit; // "maxSymbols", "maxExpansions", "maxSegments", "maxDepth"
     uint64_t amount;   // what the work would need (saturated at UINT64_MAX)
     uint64_t cap;
 };

@@ -33,8 +33,12 @@ struct ExpandOptions {
 // symbol has at most one production and every macro one substitute; saturates at UINT64_MAX).
 std::vector<uint64_t> predictLengths(const Definition& definition, uint32_t expansions);
 
-// Throws UserError for an invalid definition and LimitError ("maxExpansions", "maxSymbols")
-// before allocating when the predicted length of some pass exceeds Limits::maxSymbols.
+// An upper bound on the bracket nesting after `expansions` passes: the axiom's (macros counted
+// at their deepest substitute) plus, per pass, the deepest nesting one rewrite can add.
+uint64_t predictDepth(const Definition& definition, uint32_t expansions);
+
+// Throws UserError for an invalid definition and LimitError ("maxExpansions", "maxSymbols",
+// "maxDepth") before allocating when a predicted length or nesting exceeds its limit.
 Expansion expand(const Definition& definition, const ExpandOptions& options = {});
 
 } // namespace voxc::lsystem
