@@ -1,0 +1,77 @@
+#pragma once
+// Marching cubes with a case table derived in code (McTable.cpp) so that every mesh is closed,
+// manifold and consistently oriented.
+//
+// Conventions (the same as surface nets, voxc/mesh/SurfaceNets.h): a voxel is solid when its
+// density is > iso; voxels outside the grid, and densities that are not finite, read as 0; voxel
+// (x,y,z) sits at gridOrigin + (x,y,z); triangles wind counter-clockwise seen from air; normals
+// are the negated field gradient (central differences at the edge's two samples, blended with
+// the crossing), or, where that vanishes, the edge direction from its solid to its air sample.
+//
+// - Vertex identity is the crossed grid edge: one vertex per edge, at
+//   p0 + t along the edge, t = (iso - d0) / (d1 - d0) from the edge's lower corner p0 (in double,
+//   then float), kept within [kCrossingMargin, 1 - kCrossingMargin] so that samples exactly at iso
+//   cannot put two vertices at one point and collapse a triangle.
+// - Vertices are ordered by global edge, triangles by global cell then table order, so the mesh
+//   is bit-identical for every chunk size and thread order.
+// - Materials: a vertex takes the material of its edge's solid voxel (as a surface-nets quad
+//   does); a triangle takes the most common material among its cell's solid corners, ties to
+//   the lowest id (as a surface-nets vertex does).
+#include "voxc/mesh/SurfaceNets.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace voxc {
+
+// 2^-10 voxel: far above the float spacing of world coordinates below 2^14 (2^-10 at 2^13),
+// far below anything visible; an integer plane at iso moves by this much.
+inline constexpr float kCrossingMargin = 1.0f / 1024.0f;
+
+Mesh meshMarchingCubes(const ChunkedGrid& grid, const MeshOptions& options, MeshStats* stats = nullptr);
+
+namespace marching_cubes {
+
+// Corner c of a cell is at offset (c&1, (c>>1)&1, (c>>2)&1); case bit c is set when corner c is
+// solid. Edge e runs along axis e/4 from its lower corner edgeCorners(e)[0] to [1].
+glm::ivec3 cornerOffset(int corner);
+std::array<int, 2> edgeCorners(int edge);
+inline int edgeAxis(int edge) { return edge / 4; }
+
+inline constexpr int kMaxTrianglesPerCell = 12;
+
+// Triangles of one case as cell edges, three per triangle, counter-clockwise seen from air.
+struct CellCase {
+    uint8_t triangleCount = 0;
+    std::array<uint8_t, kMaxTrianglesPerCell * 3> edges{};
+};
+// The 256 cases. Derived from one rule per cell face, so the two cells that share a face always
+// cut it the same way: a face whose solid corners are diagonal (ambiguous) keeps them apart.
+const std::array<CellCase, 256>& caseTable();
+
+// The crossing of an edge as a fraction of its length from the lower sample d0 towards d1.
+float crossing(float d0, float d1, float iso);
+
+// One chunk's share of the mesh, keyed by global grid edge and cell (exposed for the seam tests):
+// the vertices of every crossed edge its cells use, including those on its high faces that the
+// next chunk also produces, and the triangles of its cells in cell order.
+struct EdgeVertex {
+    uint64_t edge; // owner key * 3 + axis; the owner is the edge's lower corner, keyed like a cell
+    glm::vec3 position;
+    glm::vec3 normal;
+    uint8_t material;
+};
+struct CellTriangle {
+    uint64_t cell;
+    std::array<uint64_t, 3> edges;
+    uint8_t material;
+};
+struct ChunkMesh {
+    std::vector<EdgeVertex> vertices;   // ascending edge
+    std::vector<CellTriangle> triangles; // ascending cell, table order within a cell
+};
+ChunkMesh extractChunk(const ChunkedGrid& grid, float iso, glm::ivec3 worldChunk);
+
+} // namespace marching_cubes
+} // namespace voxc
