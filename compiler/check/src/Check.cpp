@@ -115,7 +115,8 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
     } else {
         for (uint32_t i = 0; i < program.grammars.size(); ++i) program.pipeline.push_back({Stage::Kind::Grammar, i, FieldMode::Set, {}, std::nullopt});
     }
-    // Warnings only make sense about a program that is otherwise correct.
+    // The estimate and the warnings only make sense about a program that is otherwise correct.
+    if (!context.diagnostics.hasErrors()) checkWork(context, program);
     if (!context.diagnostics.hasErrors())
         for (const CheckedGrammar& grammar : grammars) analyseGrammar(context, grammar);
     return program;

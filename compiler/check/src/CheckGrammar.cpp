@@ -154,14 +154,25 @@ void readBounds(Context& context, const ast::Assignment& a, const World* world, 
     grammar.boundsMax = hi;
 }
 
+// Rules of one size form one sweep, compiled into one kernel that tests every cell of every
+// rule, so both the rule count and rules x cells are bounded; each is reported once per size,
+// at the rule that passes it.
 void checkSweepSizes(Context& context, const ast::Block& block, const Grammar& grammar) {
     std::map<std::tuple<int, int, int>, int> rulesPerSize;
     for (const Rule& rule : grammar.rules) {
-        int count = ++rulesPerSize[{rule.size.x, rule.size.y, rule.size.z}];
+        const int count = ++rulesPerSize[{rule.size.x, rule.size.y, rule.size.z}];
+        const int64_t cells = int64_t(rule.size.x) * rule.size.y * rule.size.z;
         if (count == context.limits.maxRulesPerSweep + 1)
             context.diagnostics.error("E0012", block.labelLoc,
                                       fmt::format("grammar '{}' has more than {} rules of size {}", grammar.name,
                                                   context.limits.maxRulesPerSweep, formatVec(rule.size)));
+        else if (count * cells > context.limits.maxSweepRuleCells && (count - 1) * cells <= context.limits.maxSweepRuleCells)
+            context.diagnostics.error(
+                "E0012", rule.loc,
+                fmt::format("grammar '{}' has {} rules of size {} with this one: {} x {} window cells is more than "
+                            "the limit of {} per sweep (the size of its kernel)",
+                            grammar.name, count, formatVec(rule.size), count, cells,
+                            context.limits.maxSweepRuleCells));
     }
 }
 

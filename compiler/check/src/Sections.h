@@ -58,6 +58,10 @@ struct CheckedFeatures {
 CheckedFeatures checkFeatures(Context& context, const ast::File& file, const std::vector<std::string>& stageNames,
                               uint32_t seed);
 
+// E0012 at the stage where the pipeline's estimated work (docs/language.md, "Work estimate")
+// passes Limits::maxWork. Call on a program without errors.
+void checkWork(Context& context, const Program& program);
+
 // W0201-W0204 for one checked grammar.
 void analyseGrammar(Context& context, const CheckedGrammar& grammar);
 

@@ -5,6 +5,8 @@
 #include "voxc/syntax/Diagnostics.h"
 
 #include <array>
+#include <cstdint>
+#include <cstdlib>
 #include <fmt/format.h>
 #include <iostream>
 
@@ -13,11 +15,30 @@ namespace voxc::driver {
 void addWorldOverrideFlags(CLI::App& command, WorldOverrides& overrides) {
     command.add_option("--seed", overrides.seed, "Override the world's seed");
     command.add_option("--chunk", overrides.chunk, "Override the chunk size (power of two, 8..64)");
+    addMaxWorkFlag(command, overrides);
+}
+
+void addMaxWorkFlag(CLI::App& command, WorldOverrides& overrides) {
+    // Limits::maxWork is an int64; larger budgets mean "no budget" and are clamped to its range.
+    auto atLeastOne = [](const std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        return end != text.c_str() && *end == '\0' && value >= 1.0 ? std::string()
+                                                                   : "expects a number of at least 1, such as 1e12";
+    };
+    command
+        .add_option("--max-work", overrides.maxWork,
+                    fmt::format("Budget for the pipeline's estimated work (default {:.3g}; docs/language.md, Limits)",
+                                double(Limits{}.maxWork)))
+        ->check(CLI::Validator(atLeastOne, "WORK"));
 }
 
 Program loadProgram(const std::string& path, const WorldOverrides& overrides, bool warningsAsErrors,
                     std::string* sourceText) {
-    CheckResult result = checkFile(path);
+    CheckOptions options;
+    if (overrides.maxWork)
+        options.limits.maxWork = *overrides.maxWork >= 9.2e18 ? INT64_MAX : int64_t(*overrides.maxWork);
+    CheckResult result = checkFile(path, options);
     size_t errors = 0;
     size_t warnings = 0;
     for (const Diagnostic& diagnostic : result.diagnostics) {

@@ -13,9 +13,13 @@ namespace voxc::driver {
 struct WorldOverrides {
     std::optional<uint32_t> seed;
     std::optional<int32_t> chunk;
+    std::optional<double> maxWork; // replaces Limits::maxWork (--max-work; `1e12` is accepted)
 };
 
+// --seed, --chunk and --max-work.
 void addWorldOverrideFlags(CLI::App& command, WorldOverrides& overrides);
+// --max-work alone (for `check`, which runs nothing).
+void addMaxWorkFlag(CLI::App& command, WorldOverrides& overrides);
 
 // Parses and checks `path`, prints every diagnostic to stderr and throws UserError when there
 // are errors (the message says how many). Applies the overrides to the checked program.
