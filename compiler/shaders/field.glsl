@@ -8,8 +8,11 @@
 // The runtime dispatches it per box of chunks (KernelPackage StagePlan::fieldBoxes); in a box
 // where interval analysis proved the field one exact float (anchorCount.w == 1, the float's
 // bits in anchorStart.w) only the combine runs, in a loop of its own so no DAG code is near it.
+// Where the field's value is not finite the combine uses 0 instead (finiteDensity, counted);
+// a constant box's value is finite (interval analysis proves no NaN or infinity exact).
 
 #include "common.glsl"
+#include "nonfinite.glsl"
 // <<LIBRARIES>>
 
 // <<DISPATCH_SHAPE>>

@@ -30,6 +30,7 @@ ivec2 noisePermPair(int i) {
 }
 
 float noisePerlin3(vec3 p, uint seed) {
+    if (!noiseFinite(p)) return noiseNaN();
     precise vec3 f = floor(p);
     ivec3 offset = noiseSeedOffset(seed);
     int X = (noiseLatticeIndex(f.x) + offset.x) & 255;

@@ -17,6 +17,7 @@ float noiseSimplex3(vec3 p, int seedBits) {
     precise float fi = floor(p.x + s);
     precise float fj = floor(p.y + s);
     precise float fk = floor(p.z + s);
+    if (!noiseFinite(vec3(fi, fj, fk))) return noiseNaN(); // p not finite, or the skew overflowed
     precise float t = (fi + fj + fk) * unskew;
     precise float x0 = p.x - (fi - t);
     precise float y0 = p.y - (fj - t);

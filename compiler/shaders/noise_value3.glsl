@@ -7,6 +7,7 @@ float noiseLatticeValue(ivec3 c, uint seed) {
 }
 
 float noiseValue3(vec3 p, int seedBits) {
+    if (!noiseFinite(p)) return noiseNaN();
     uint seed = uint(seedBits);
     precise vec3 f = floor(p);
     ivec3 c = noiseHashCoordinate(f);

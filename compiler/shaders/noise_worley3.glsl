@@ -2,6 +2,7 @@
 // (compiler/builtins/src/functions/HashNoise.cpp). Requires noise_common.glsl.
 
 vec2 noiseWorley3(vec3 p, int seedBits) {
+    if (!noiseFinite(p)) return vec2(noiseNaN());
     uint seed = uint(seedBits);
     precise vec3 f = floor(p);
     ivec3 c = noiseHashCoordinate(f);

@@ -12,6 +12,7 @@
 
 #include "common.glsl"
 #include "random.glsl"
+#include "nonfinite.glsl"
 
 // <<DISPATCH_SHAPE>>
 

@@ -146,6 +146,7 @@ KernelPackage compileProgram(const Program& program, const CompileOptions& optio
     for (const Stage& stage : module.pipeline) {
         StagePlan plan;
         plan.kind = stage.kind;
+        plan.loc = stage.loc;
         switch (stage.kind) {
         case Stage::Kind::Start:
             plan.startKernel = startKernel;

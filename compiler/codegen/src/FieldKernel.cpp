@@ -243,7 +243,9 @@ FieldStageBoxes fieldBoxes(const ir::IrModule& module, const ir::IrField& field,
     std::vector<FieldBox> boxes;
     glm::ivec3 lastChunk{0};
     double fieldLo = std::numeric_limits<double>::infinity(), fieldHi = -fieldLo;
-    for (const ir::FieldChunk& chunk : ir::classifyFieldChunks(module.world, field)) {
+    for (ir::FieldChunk chunk : ir::classifyFieldChunks(module.world, field)) {
+        // Only a finite value may skip the field's evaluation, which counts non-finite values.
+        chunk.constant = chunk.constant && std::isfinite(chunk.value);
         fieldLo = std::min(fieldLo, chunk.lo);
         fieldHi = std::max(fieldHi, chunk.hi);
         const bool extends = !boxes.empty() && chunk.chunk.x == lastChunk.x + 1 && chunk.chunk.y == lastChunk.y &&
@@ -282,7 +284,8 @@ std::string fieldKernelSource(const ir::IrModule& module, const ir::IrField& fie
          {"COLUMN_VALUES", code.column.empty() ? "// No value is the same along the column.\n" : code.column},
          {"VOXEL_VALUES", code.voxel.empty() ? "// Every value is the same along the column.\n" : code.voxel},
          {"CONSTANT_COMBINE", combineGlsl(mode, material, "constantValue")},
-         {"COMBINE", combineGlsl(mode, material, code.names.at(field.root))}});
+         {"COMBINE", fmt::format("float fieldValue = finiteDensity({}, local);\n", code.names.at(field.root)) +
+                         combineGlsl(mode, material, "fieldValue")}});
 }
 
 } // namespace voxc::codegen

@@ -255,7 +255,8 @@ std::string chooseRule(const IrSweep& sweep) {
 std::string applyRule(const IrGrammar& g, const IrSweep& sweep, std::string_view src) {
     const bool clamps = g.clampMin || g.clampMax;
     std::string s = "// Apply the chosen rule's transform; NOP cells are left untouched";
-    s += clamps ? " and every written value is clamped.\n" : ".\n";
+    s += clamps ? ", every written value is clamped" : "";
+    s += " and a non-finite one is stored as 0.\n";
     for (uint32_t r = 0; r < sweep.rules.size(); ++r) {
         const IrRule& rule = sweep.rules[r];
         s += fmt::format("{}if (chosen == {}) {{ // {} ({})\n", r == 0 ? "" : "} else ", r, rule.name,
@@ -278,8 +279,10 @@ std::string applyRule(const IrGrammar& g, const IrSweep& sweep, std::string_view
                 s += fmt::format("    precise float next{} = {}; // {} {}\n", c,
                                  info.glsl(fmt::format("cell{}", c), glslFloat(t.value)),
                                  printCell(sweep.cells[c].offset), printTransform(t));
-                s += fmt::format("    writeDensity(address{0}, {1}next{0}{2});\n", c, clamps ? "clampDensity(" : "",
-                                 clamps ? ")" : "");
+                // A value that is not finite (an ADD past the float range) is stored as 0 and counted.
+                const glm::ivec3 o = sweep.cells[c].offset;
+                s += fmt::format("    writeDensity(address{0}, finiteDensity({1}next{0}{2}, anchor + ivec3({3}, {4}, {5})));\n",
+                                 c, clamps ? "clampDensity(" : "", clamps ? ")" : "", o.x, o.y, o.z);
             }
             // After the density, unclamped; tile ranges track densities only, so nothing else.
             if (t.material)

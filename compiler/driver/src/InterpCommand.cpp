@@ -1,5 +1,6 @@
 #include "Commands.h"
 #include "Common.h"
+#include "NonFiniteReport.h"
 #include "OutputPaths.h"
 
 #include "voxc/core/Errors.h"
@@ -68,7 +69,12 @@ void interpretFile(const InterpOptions& options) {
             std::cout << formatTraceEvent(program, event) << "\n";
         };
     }
+    std::vector<NonFiniteCount> nonFinite;
+    interpOptions.nonFinite = &nonFinite;
     const DenseGrid grid = interpret(program, interpOptions);
+    std::vector<SourceLoc> stageLocs;
+    for (const Stage& stage : program.pipeline) stageLocs.push_back(stage.loc);
+    std::cerr << formatNonFiniteWarnings(program, options.file, stageLocs, nonFinite);
     if (trace)
         std::cout << fmt::format("{} firings matched the trace filter ({} printed)\n", fired, printed);
     if (slice) std::cout << renderSlice(grid, slice->axis, slice->index);

@@ -1,5 +1,6 @@
 #include "Commands.h"
 #include "Common.h"
+#include "NonFiniteReport.h"
 #include "OutputPaths.h"
 
 #include "voxc/codegen/Codegen.h"
@@ -59,6 +60,9 @@ void run(const RunOptions& options) {
                              program.world.size.x, program.world.size.y, program.world.size.z,
                              program.world.chunkSize, program.world.seed, result.dispatches,
                              result.timings.executeMs);
+    std::vector<SourceLoc> stageLocs;
+    for (const StagePlan& stage : package.stages) stageLocs.push_back(stage.loc);
+    std::cerr << formatNonFiniteWarnings(program, options.file, stageLocs, result.nonFinite);
     if (result.skip.enabled && result.skip.tilePhases > 0)
         std::cerr << fmt::format("ran sweeps on {} of {} ({:.1f}%) {}^3-voxel tile-phases; the rest provably could not match\n",
                                  result.skip.activeTilePhases, result.skip.tilePhases,

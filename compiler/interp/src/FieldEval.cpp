@@ -55,17 +55,20 @@ const std::vector<Value>& FieldEvaluator::evaluate(glm::ivec3 local) {
     return values_;
 }
 
-void runField(const Program& program, const Stage& stage, DenseGrid& grid) {
+void runField(const Program& program, const Stage& stage, DenseGrid& grid, NonFiniteCount* nonFinite) {
     VOXC_ASSERT(stage.kind == Stage::Kind::Field && stage.index < program.fields.size());
     VOXC_ASSERT(grid.size() == program.world.size);
     FieldEvaluator evaluator(program.fields[stage.index], program.world.origin);
+    NonFiniteCount uncounted;
+    NonFiniteCount& replaced = nonFinite ? *nonFinite : uncounted;
     const glm::ivec3 size = grid.size();
     for (int z = 0; z < size.z; ++z)
         for (int y = 0; y < size.y; ++y)
             for (int x = 0; x < size.x; ++x) {
                 float& d = grid.at({x, y, z});
                 uint8_t& m = grid.materialAt({x, y, z});
-                const VoxelState voxel = combineField(stage.mode, stage.material, evaluator.density({x, y, z}), {d, m});
+                const float f = replaced.replace(evaluator.density({x, y, z}), grid.index({x, y, z}));
+                const VoxelState voxel = combineField(stage.mode, stage.material, f, {d, m});
                 d = voxel.density;
                 m = voxel.material;
             }

@@ -46,11 +46,13 @@ bool windowMatches(const Rule& rule, WindowView anchor, const std::vector<ptrdif
     return true;
 }
 
-void applyRule(const Rule& rule, const Grammar& grammar, WindowView anchor, const std::vector<ptrdiff_t>& offsets) {
+// `anchorIndex`: the anchor's grid index, for counting non-finite writes.
+void applyRule(const Rule& rule, const Grammar& grammar, WindowView anchor, size_t anchorIndex,
+               const std::vector<ptrdiff_t>& offsets, NonFiniteCount& nonFinite) {
     for (size_t c = 0; c < offsets.size(); ++c) {
         const TransformCell& transform = rule.transform[c];
         float& cell = anchor.density[offsets[c]];
-        cell = applyTransform(transform, cell, grammar);
+        cell = nonFinite.replace(applyTransform(transform, cell, grammar), uint64_t(ptrdiff_t(anchorIndex) + offsets[c]));
         if (transform.material) anchor.material[offsets[c]] = *transform.material;
     }
 }
@@ -82,7 +84,8 @@ DenseGrid evaluateStart(const Program& program) {
     return grid;
 }
 
-void runGrammar(const Program& program, uint32_t grammarIndex, DenseGrid& grid, const InterpOptions& options) {
+void runGrammar(const Program& program, uint32_t grammarIndex, DenseGrid& grid, const InterpOptions& options,
+                NonFiniteCount* nonFinite) {
     VOXC_ASSERT(grammarIndex < program.grammars.size());
     VOXC_ASSERT(grid.size() == program.world.size);
     const Grammar& grammar = program.grammars[grammarIndex];
@@ -107,6 +110,8 @@ void runGrammar(const Program& program, uint32_t grammarIndex, DenseGrid& grid, 
     uint8_t* materials = grid.materials().data();
     const uint32_t seed = program.world.seed;
     const glm::ivec3 origin = program.world.origin;
+    NonFiniteCount uncounted;
+    NonFiniteCount& replaced = nonFinite ? *nonFinite : uncounted;
 
     for (uint32_t iteration = 0; iteration < uint32_t(grammar.iterations); ++iteration) {
         for (uint32_t s = 0; s < prepared.size(); ++s) {
@@ -129,7 +134,7 @@ void runGrammar(const Program& program, uint32_t grammarIndex, DenseGrid& grid, 
                             const int chosen = chooseRule(grammar, matched, seed, iteration, s, anchor + origin);
                             if (chosen < 0) continue;
                             // Windows of one phase never overlap, so writing in place is safe.
-                            applyRule(grammar.rules[size_t(chosen)], grammar, base, sweep.cellOffsets);
+                            applyRule(grammar.rules[size_t(chosen)], grammar, base, index, sweep.cellOffsets, replaced);
                             if (options.stats) ++options.stats->firings[grammarIndex][size_t(chosen)];
                             if (options.onFire)
                                 options.onFire(TraceEvent{grammarIndex, iteration, s, phase, anchor, uint32_t(chosen)});
@@ -143,16 +148,19 @@ void runGrammar(const Program& program, uint32_t grammarIndex, DenseGrid& grid, 
 
 DenseGrid interpret(const Program& program, const InterpOptions& options) {
     DenseGrid grid(program.world.size);
-    for (const Stage& stage : program.pipeline) {
+    if (options.nonFinite) options.nonFinite->assign(program.pipeline.size(), NonFiniteCount{});
+    for (size_t i = 0; i < program.pipeline.size(); ++i) {
+        const Stage& stage = program.pipeline[i];
+        NonFiniteCount* nonFinite = options.nonFinite ? &(*options.nonFinite)[i] : nullptr;
         switch (stage.kind) {
-        case Stage::Kind::Start:
+        case Stage::Kind::Start: // shape values are finite literals within +-1e6 (E0007)
             grid = evaluateStart(program);
             break;
         case Stage::Kind::Grammar:
-            runGrammar(program, stage.index, grid, options);
+            runGrammar(program, stage.index, grid, options, nonFinite);
             break;
         case Stage::Kind::Field:
-            runField(program, stage, grid);
+            runField(program, stage, grid, nonFinite);
             break;
         }
     }

@@ -154,6 +154,7 @@ bool DispatchCursor::expandNextStep() {
                 invalidate.kind = DispatchKind::InvalidateRanges;
                 step_.push_back(invalidate);
             }
+            for (Dispatch& d : step_) d.stage = uint32_t(stage_ - 1);
             return true;
         }
         const GrammarPlan& grammar = stage.grammar;
@@ -173,6 +174,7 @@ bool DispatchCursor::expandNextStep() {
                 appendPhase(sweep.kernel, iteration, int32_t(s), sweep.phaseStart[p], sweep.phaseStep[p],
                             sweep.phaseCount3[p]);
         }
+        for (Dispatch& d : step_) d.stage = uint32_t(stage_);
         return true;
     }
     return false;

@@ -13,7 +13,8 @@ namespace {
 // Descriptor set 0 of every kernel (compiler/shaders/common.glsl), all storage buffers.
 constexpr uint32_t kBindings[] = {kBindingVoxels,       kBindingChunkTable,   kBindingNoiseTables,
                                   kBindingTileRanges,  kBindingTileDirty,   kBindingActiveTiles,
-                                  kBindingActiveDispatch, kBindingSkipStats,  kBindingMaterials};
+                                  kBindingActiveDispatch, kBindingSkipStats,  kBindingMaterials,
+                                  kBindingNonFinite};
 static_assert(std::size(kBindings) == kKernelBindingCount);
 constexpr uint32_t kBindingCount = std::size(kBindings);
 

@@ -9,7 +9,7 @@
 
 namespace voxc::vulkan_detail {
 
-constexpr uint32_t kKernelBindingCount = 9; // bindings 0..8
+constexpr uint32_t kKernelBindingCount = 10; // bindings 0..9
 
 struct KernelPipelines {
     VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;

@@ -7,6 +7,7 @@ namespace voxc::noise {
 uint32_t substream(uint32_t seed, uint32_t stream) { return seed + stream * 0x9E3779B9u; }
 
 float perlin3(glm::vec3 p, uint32_t seed) {
+    if (!finite(p)) return kNaN;
     const float fx = std::floor(p.x), fy = std::floor(p.y), fz = std::floor(p.z);
     const int X = (latticeIndex(fx) + seedOffset(seed, 0)) & 255;
     const int Y = (latticeIndex(fy) + seedOffset(seed, 1)) & 255;
@@ -44,6 +45,7 @@ float simplex3(glm::vec3 p, uint32_t seed) {
     // offsets), unskew each corner back and sum the four corner kernels.
     const float s = (p.x + p.y + p.z) * kSkew;
     const float fi = std::floor(p.x + s), fj = std::floor(p.y + s), fk = std::floor(p.z + s);
+    if (!finite({fi, fj, fk})) return kNaN; // p not finite, or the skew overflowed
     const float t = (fi + fj + fk) * kUnskew;
     const float x0 = p.x - (fi - t), y0 = p.y - (fj - t), z0 = p.z - (fk - t);
     int i1, j1, k1, i2, j2, k2;

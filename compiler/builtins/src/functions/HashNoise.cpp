@@ -14,6 +14,7 @@ float latticeValue(int32_t x, int32_t y, int32_t z, uint32_t seed) {
 } // namespace
 
 float value3(glm::vec3 p, uint32_t seed) {
+    if (!finite(p)) return kNaN;
     const float fx = std::floor(p.x), fy = std::floor(p.y), fz = std::floor(p.z);
     const int32_t X = hashCoordinate(fx), Y = hashCoordinate(fy), Z = hashCoordinate(fz);
     const float u = fade(p.x - fx), v = fade(p.y - fy), w = fade(p.z - fz);
@@ -25,6 +26,7 @@ float value3(glm::vec3 p, uint32_t seed) {
 }
 
 glm::vec2 worley3(glm::vec3 p, uint32_t seed) {
+    if (!finite(p)) return glm::vec2(kNaN);
     const float fx = std::floor(p.x), fy = std::floor(p.y), fz = std::floor(p.z);
     const int32_t X = hashCoordinate(fx), Y = hashCoordinate(fy), Z = hashCoordinate(fz);
     // Distances are taken in cell-local coordinates so they keep full precision far from 0.

@@ -1,10 +1,12 @@
 // Math builtins. Each evaluates exactly as GLSL defines it (mix, smoothstep, fract, clamp as
 // min(max())) in the same operation order as compiler/shaders/math_functions.glsl, so the
-// correctly rounded ones agree bit for bit.
+// correctly rounded ones agree bit for bit. min and max are IEEE minNum / maxNum (a NaN
+// operand is ignored), written out on both sides because GLSL leaves NaN operands undefined.
 #include "Records.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace voxc::function_records {
 
@@ -76,9 +78,19 @@ std::optional<Type> vec3Rule(std::span<const Type> a) {
     return std::nullopt;
 }
 
+// pow is NaN where GLSL leaves it undefined (x < 0, or x = 0 with y <= 0) and where the device's
+// exp2(y * log2(x)) is NaN though the C library's pow is not (a NaN operand, x = 1 with y
+// infinite, x infinite with y = 0); elsewhere both compute x^y within the record's tolerance.
+// math_functions.glsl's mathPow tests the same cases.
+float powOf(float x, float y) {
+    const bool undefined = std::isnan(x) || std::isnan(y) || x < 0.0f || (x == 0.0f && y <= 0.0f) ||
+                           (x == 1.0f && std::isinf(y)) || (std::isinf(x) && y == 0.0f);
+    return undefined ? std::numeric_limits<float>::quiet_NaN() : std::pow(x, y);
+}
+
 float mixOf(float x, float y, float a) { return x * (1.0f - a) + y * a; }
 float smoothstepOf(float e0, float e1, float x) {
-    const float t = std::min(std::max((x - e0) / (e1 - e0), 0.0f), 1.0f);
+    const float t = minOf(maxOf((x - e0) / (e1 - e0), 0.0f), 1.0f);
     return t * t * (3.0f - 2.0f * t);
 }
 float dotOf(const Value& a, const Value& b) {
@@ -91,13 +103,13 @@ float dotOf(const Value& a, const Value& b) {
 template <const char* Name>
 std::string glslCall(std::span<const std::string> args, std::span<const Type>) { return call(Name, args); }
 
-constexpr char kMin[] = "min", kMax[] = "max", kAbs[] = "abs", kFloor[] = "floor", kSqrt[] = "sqrt",
-               kPow[] = "pow", kSin[] = "sin", kCos[] = "cos", kMix[] = "mathMix", kSmoothstep[] = "mathSmoothstep",
+constexpr char kMin[] = "mathMin", kMax[] = "mathMax", kAbs[] = "abs", kFloor[] = "floor", kSqrt[] = "sqrt",
+               kPow[] = "mathPow", kSin[] = "sin", kCos[] = "cos", kMix[] = "mathMix", kSmoothstep[] = "mathSmoothstep",
                kFract[] = "mathFract", kLength[] = "mathLength", kDot[] = "mathDot", kVec2[] = "vec2",
                kVec3[] = "vec3";
 
 std::string clampGlsl(std::span<const std::string> a, std::span<const Type>) {
-    return "min(max(" + a[0] + ", " + a[1] + "), " + a[2] + ")";
+    return "mathMin(mathMax(" + a[0] + ", " + a[1] + "), " + a[2] + ")";
 }
 
 constexpr std::string_view kMathLibrary[] = {"math_functions.glsl"};
@@ -112,18 +124,20 @@ constexpr float kTrigTolerance = 4.8828125e-4f; // 2^-11 absolute on [-pi, pi]
 constexpr float kDivisionTolerance = 1e-6f;     // one division (2.5 ulp) feeding a cubic on [0, 1]
 
 const FunctionInfo kMath[] = {
-    {"min", "min(a: T, b: T) -> T; b may be float; T = float, vec2, vec3", "component-wise minimum (b < a ? b : a)",
-     minMaxRule, [](std::span<const Value> a) { return componentwise<2>(a, [](const float* x) { return std::min(x[0], x[1]); }); },
-     glslCall<kMin>, kNone, kExact},
-    {"max", "max(a: T, b: T) -> T; b may be float; T = float, vec2, vec3", "component-wise maximum (a < b ? b : a)",
-     minMaxRule, [](std::span<const Value> a) { return componentwise<2>(a, [](const float* x) { return std::max(x[0], x[1]); }); },
-     glslCall<kMax>, kNone, kExact},
+    {"min", "min(a: T, b: T) -> T; b may be float; T = float, vec2, vec3",
+     "component-wise minimum (b < a ? b : a); a NaN operand is ignored", minMaxRule,
+     [](std::span<const Value> a) { return componentwise<2>(a, [](const float* x) { return minOf(x[0], x[1]); }); },
+     glslCall<kMin>, kMathLibrary, kExact},
+    {"max", "max(a: T, b: T) -> T; b may be float; T = float, vec2, vec3",
+     "component-wise maximum (a < b ? b : a); a NaN operand is ignored", minMaxRule,
+     [](std::span<const Value> a) { return componentwise<2>(a, [](const float* x) { return maxOf(x[0], x[1]); }); },
+     glslCall<kMax>, kMathLibrary, kExact},
     {"clamp", "clamp(x: T, lo: T, hi: T) -> T; lo, hi may be float; T = float, vec2, vec3",
-     "min(max(x, lo), hi) component-wise (hi wins when lo > hi)", clampRule,
+     "min(max(x, lo), hi) component-wise (hi wins when lo > hi; clamp(NaN, lo, hi) = lo)", clampRule,
      [](std::span<const Value> a) {
-         return componentwise<3>(a, [](const float* x) { return std::min(std::max(x[0], x[1]), x[2]); });
+         return componentwise<3>(a, [](const float* x) { return minOf(maxOf(x[0], x[1]), x[2]); });
      },
-     clampGlsl, kNone, kExact},
+     clampGlsl, kMathLibrary, kExact},
     {"abs", "abs(x: T) -> T; T = float, vec2, vec3", "component-wise |x|", unaryT,
      [](std::span<const Value> a) { return componentwise<1>(a, [](const float* x) { return std::fabs(x[0]); }); },
      glslCall<kAbs>, kNone, kExact},
@@ -145,9 +159,10 @@ const FunctionInfo kMath[] = {
     {"sqrt", "sqrt(x: T) -> T; T = float, vec2, vec3", "component-wise square root (x >= 0)", unaryT,
      [](std::span<const Value> a) { return componentwise<1>(a, [](const float* x) { return std::sqrt(x[0]); }); },
      glslCall<kSqrt>, kNone, kSqrtTolerance},
-    {"pow", "pow(x: T, y: T) -> T; T = float, vec2, vec3", "component-wise x^y (x > 0)", binaryT,
-     [](std::span<const Value> a) { return componentwise<2>(a, [](const float* x) { return std::pow(x[0], x[1]); }); },
-     glslCall<kPow>, kNone, kPowTolerance},
+    {"pow", "pow(x: T, y: T) -> T; T = float, vec2, vec3",
+     "component-wise x^y; NaN where x < 0, x = 0 with y <= 0, x = 1 with y infinite or x infinite with y = 0",
+     binaryT, [](std::span<const Value> a) { return componentwise<2>(a, [](const float* x) { return powOf(x[0], x[1]); }); },
+     glslCall<kPow>, kMathLibrary, kPowTolerance},
     {"sin", "sin(x: T) -> T; T = float, vec2, vec3", "component-wise sine (radians), in [-1, 1]", unaryT,
      [](std::span<const Value> a) { return componentwise<1>(a, [](const float* x) { return std::sin(x[0]); }); },
      glslCall<kSin>, kNone, kTrigTolerance},

@@ -5,10 +5,17 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace voxc::noise {
 
 inline int perm(int i) { return perlinPermutation()[i & 255]; }
+
+// A lattice cell exists only for finite coordinates: noise of a point with a NaN or infinite
+// coordinate is NaN (docs/language.md, "Non-finite values"), never a float -> int conversion
+// of a non-finite value.
+inline bool finite(glm::vec3 p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
 inline float fade(float t) { return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f); }
 

@@ -2,6 +2,7 @@
 // The builtin-function records, grouped by file; voxc::functions() concatenates the groups.
 #include "voxc/builtins/Functions.h"
 
+#include <cmath>
 #include <span>
 
 namespace voxc::function_records {
@@ -13,6 +14,12 @@ std::span<const FunctionInfo> sdfFunctions();      // Sdf.cpp
 
 inline bool isFloatLike(Type t) { return t == Type::Float || t == Type::Vec2 || t == Type::Vec3; }
 inline bool isVector(Type t) { return t == Type::Vec2 || t == Type::Vec3; }
+
+// IEEE minNum / maxNum, math_functions.glsl's mathMin / mathMax: b < a ? b : a (a < b ? b : a),
+// ties keeping a, unless a is NaN: then b (a NaN b already loses the comparison). So a NaN
+// operand is ignored and only two NaNs give NaN. GLSL's own min / max leave NaN undefined.
+inline float minOf(float a, float b) { return std::isnan(a) ? b : (b < a ? b : a); }
+inline float maxOf(float a, float b) { return std::isnan(a) ? b : (a < b ? b : a); }
 
 // "f(a, b, ...)" from a function name and GLSL argument expressions.
 std::string call(std::string_view function, std::span<const std::string> args);

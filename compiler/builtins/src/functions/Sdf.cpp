@@ -25,9 +25,7 @@ std::optional<Type> densityRule(std::span<const Type> a) {
     return std::nullopt;
 }
 
-// GLSL's min/max/clamp definitions (as Math.cpp), spelled out so the order is visible.
-float minOf(float a, float b) { return b < a ? b : a; }
-float maxOf(float a, float b) { return a < b ? b : a; }
+// min(max()) with Records.h's minOf / maxOf (a NaN operand ignored), as Math.cpp's clamp.
 float clampOf(float x, float lo, float hi) { return minOf(maxOf(x, lo), hi); }
 
 // mathDot/mathLength of math_functions.glsl: summed left to right.
@@ -96,12 +94,12 @@ Value evalDensity(std::span<const Value> a) { return Value::makeFloat(density(f(
 
 template <const char* Name>
 std::string glslCall(std::span<const std::string> args, std::span<const Type>) { return call(Name, args); }
-std::string unionGlsl(std::span<const std::string> a, std::span<const Type>) { return "min(" + a[0] + ", " + a[1] + ")"; }
+std::string unionGlsl(std::span<const std::string> a, std::span<const Type>) { return "mathMin(" + a[0] + ", " + a[1] + ")"; }
 std::string subtractGlsl(std::span<const std::string> a, std::span<const Type>) {
-    return "max(" + a[0] + ", -(" + a[1] + "))";
+    return "mathMax(" + a[0] + ", -(" + a[1] + "))";
 }
 std::string intersectGlsl(std::span<const std::string> a, std::span<const Type>) {
-    return "max(" + a[0] + ", " + a[1] + ")";
+    return "mathMax(" + a[0] + ", " + a[1] + ")";
 }
 std::string densityGlsl(std::span<const std::string> a, std::span<const Type>) {
     return "sdfDensity(" + a[0] + ", " + (a.size() == 2 ? a[1] : std::string("1.0")) + ")";
@@ -112,7 +110,7 @@ constexpr char kSphere[] = "sdfSphere", kBox[] = "sdfBox", kCapsule[] = "sdfCaps
                kSmoothSubtract[] = "sdfSmoothSubtract", kSmoothIntersect[] = "sdfSmoothIntersect";
 
 constexpr std::string_view kSdfLibs[] = {"math_functions.glsl", "sdf_functions.glsl"};
-constexpr std::span<const std::string_view> kNone{};
+constexpr std::string_view kMathLibrary[] = {"math_functions.glsl"}; // mathMin, mathMax
 
 // Tolerances (Vulkan precision rules, on the domain tests/functions samples: every component in
 // [-50, 50]; see docs/functions.md). Sums, products, min, max and abs are exact or correctly rounded.
@@ -141,11 +139,11 @@ const FunctionInfo kSdf[] = {
      "p.y - height, height a 2D field of p.xz: negative below; a bound, not an exact distance",
      toFloat<Type::Vec3, Type::Float>, evalHeightfield, glslCall<kHeightfield>, kSdfLibs, kExact},
     {"sdf_union", "sdf_union(a: float, b: float) -> float", "min(a, b): inside either", toFloat<Type::Float, Type::Float>,
-     evalUnion, unionGlsl, kNone, kExact},
+     evalUnion, unionGlsl, kMathLibrary, kExact},
     {"sdf_subtract", "sdf_subtract(a: float, b: float) -> float", "max(a, -b): a minus b",
-     toFloat<Type::Float, Type::Float>, evalSubtract, subtractGlsl, kNone, kExact},
+     toFloat<Type::Float, Type::Float>, evalSubtract, subtractGlsl, kMathLibrary, kExact},
     {"sdf_intersect", "sdf_intersect(a: float, b: float) -> float", "max(a, b): inside both",
-     toFloat<Type::Float, Type::Float>, evalIntersect, intersectGlsl, kNone, kExact},
+     toFloat<Type::Float, Type::Float>, evalIntersect, intersectGlsl, kMathLibrary, kExact},
     {"sdf_smooth_union", "sdf_smooth_union(a: float, b: float, k: float) -> float",
      "polynomial smooth min, blend radius k: mix(b, a, h) - k h (1 - h), h = clamp(0.5 + 0.5 (b - a) / k, 0, 1); "
      "in [min - k/4, min]; k <= 0: min(a, b)",

@@ -108,8 +108,10 @@ Interval neg(std::span<const Interval> a) {
     return {a[0].type, -a[0].hi, -a[0].lo, a[0].exact};
 }
 
-// GLSL min(a, b) = b < a ? b : a and max(a, b) = a < b ? b : a: when the operands are strictly
-// ordered the result is one operand (exactly); otherwise min/max of the ends bound it.
+// min(a, b) = b < a ? b : a and max(a, b) = a < b ? b : a: when the operands are strictly
+// ordered the result is one operand (exactly); otherwise min/max of the ends bound it. A NaN
+// operand is ignored (minNum), and only an unknown operand, unbounded both ways, may be NaN,
+// so the other operand's bound still holds.
 Interval pick(const Interval& a, const Interval& b, bool maximum) {
     if (a.type != Type::Float || b.type != Type::Float) return Interval::unknown(Type::Float);
     if (a.hi.x < b.lo.x) return maximum ? b : a;

@@ -9,6 +9,8 @@
 // The runtime dispatches it per box of chunks (KernelPackage StagePlan::fieldBoxes); in a box
 // where interval analysis proved the field one exact float (anchorCount.w == 1, the float's
 // bits in anchorStart.w) only the combine runs, in a loop of its own so no DAG code is near it.
+// Where the field's value is not finite the combine uses 0 instead (finiteDensity, counted);
+// a constant box's value is finite (interval analysis proves no NaN or infinity exact).
 
 // ---- begin common.glsl ----
 // Declarations every voxc kernel shares: the push block (voxc::PushBlock in
@@ -74,6 +76,29 @@ int nextColumnAddress(int previous, bool columnStart, ivec3 local) {
     return (columnStart || (worldY & (chunkSize - 1)) == 0) ? voxelAddress(local) : previous + chunkSize;
 }
 // ---- end common.glsl ----
+// ---- begin nonfinite.glsl ----
+// Non-finite densities (docs/language.md, "Non-finite values"), as voxc::NonFiniteCount does it
+// on the CPU: a field stage stores 0 where its field is NaN or infinite, a grammar stores 0
+// where a written value is not finite, and the stage counts them. The runtime copies this
+// buffer out after every stage and resets it to {0, 0, 0xFFFFFFFF} (kBindingNonFinite).
+layout(std430, set = 0, binding = 9) buffer NonFinite {
+    uint countLow;   // replacements in the current stage, a 64-bit count in two halves
+    uint countHigh;
+    uint firstIndex; // the lowest grid index x + sx * (y + sy * z) replaced
+} nonFinite;
+
+// An exponent of all ones is an infinity or a NaN; tested on the bits, so no float
+// optimisation of the driver can change the answer.
+bool isFiniteFloat(float v) { return (floatBitsToUint(v) & 0x7F800000u) != 0x7F800000u; }
+
+// `value` when finite; otherwise 0, counted at grid-local voxel `local`.
+float finiteDensity(float value, ivec3 local) {
+    if (isFiniteFloat(value)) return value;
+    if (atomicAdd(nonFinite.countLow, 1u) == 0xFFFFFFFFu) atomicAdd(nonFinite.countHigh, 1u);
+    atomicMin(nonFinite.firstIndex, uint(local.x + push.gridSize.x * (local.y + push.gridSize.y * local.z)));
+    return 0.0;
+}
+// ---- end nonfinite.glsl ----
 // ---- begin random.glsl ----
 // Counter-based randomness: mirrors compiler/program/src/Random.cpp bit for bit.
 
@@ -107,6 +132,11 @@ uint anchorHash(uint seed, uint iteration, uint sweep, ivec3 anchorWorld, uint s
 // Requires common.glsl (noiseTables) and random.glsl (mix32).
 
 int noisePerm(int i) { return noiseTables.perlinPermutation[i & 255]; }
+
+// Noise of a point with a NaN or infinite coordinate is NaN, as on the CPU (NoiseCommon.h's
+// `finite`); tested on the bits, beyond any float optimisation.
+bool noiseFinite(vec3 p) { return all(notEqual(floatBitsToUint(p) & 0x7F800000u, uvec3(0x7F800000u))); }
+float noiseNaN() { return uintBitsToFloat(0x7FC00000u); }
 
 float noiseFade(float t) {
     precise float r = t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
@@ -189,6 +219,7 @@ ivec2 noisePermPair(int i) {
 }
 
 float noisePerlin3(vec3 p, uint seed) {
+    if (!noiseFinite(p)) return noiseNaN();
     precise vec3 f = floor(p);
     ivec3 offset = noiseSeedOffset(seed);
     int X = (noiseLatticeIndex(f.x) + offset.x) & 255;
@@ -330,6 +361,75 @@ float noiseWarpedFbm(vec3 p, float roughness, float warpLow, float warpHigh, int
 
 float noiseWarpedFbm(vec3 p, int seed) { return noiseWarpedFbm(p, 0.0, 1.0, 0.5, seed); }
 // ---- end noise_fractal.glsl ----
+// ---- begin math_functions.glsl ----
+// Math builtins of field expressions whose GLSL built-in may be computed in another operation
+// order (or with a fused multiply-add), or leaves NaN operands undefined (min, max, clamp):
+// written out with `precise` exactly as the interpreter computes them
+// (compiler/builtins/src/functions/Math.cpp). GLSL's own abs, floor, sqrt, sin and cos are used
+// directly, and its pow where that is defined (mathPow).
+
+// NaN tested on the bits (exponent all ones, mantissa not zero), beyond any float optimisation.
+bool mathIsNan(float x) { return (floatBitsToUint(x) & 0x7FFFFFFFu) > 0x7F800000u; }
+
+// IEEE minNum / maxNum (SPIR-V NMin / NMax): b < a ? b : a (a < b ? b : a), ties keeping a,
+// except that a NaN a gives b; a NaN b loses the comparison. So a NaN operand is ignored.
+float mathMin(float a, float b) { return mathIsNan(a) ? b : (b < a ? b : a); }
+float mathMax(float a, float b) { return mathIsNan(a) ? b : (a < b ? b : a); }
+vec2 mathMin(vec2 a, vec2 b) { return vec2(mathMin(a.x, b.x), mathMin(a.y, b.y)); }
+vec3 mathMin(vec3 a, vec3 b) { return vec3(mathMin(a.x, b.x), mathMin(a.y, b.y), mathMin(a.z, b.z)); }
+vec2 mathMax(vec2 a, vec2 b) { return vec2(mathMax(a.x, b.x), mathMax(a.y, b.y)); }
+vec3 mathMax(vec3 a, vec3 b) { return vec3(mathMax(a.x, b.x), mathMax(a.y, b.y), mathMax(a.z, b.z)); }
+vec2 mathMin(vec2 a, float b) { return mathMin(a, vec2(b)); }
+vec3 mathMin(vec3 a, float b) { return mathMin(a, vec3(b)); }
+vec2 mathMax(vec2 a, float b) { return mathMax(a, vec2(b)); }
+vec3 mathMax(vec3 a, float b) { return mathMax(a, vec3(b)); }
+
+// pow: NaN where GLSL leaves it undefined (x < 0; x = 0 with y <= 0) or exp2(y * log2(x)) is NaN
+// while the C library's pow is not (a NaN operand; x = 1 with y infinite; x infinite with
+// y = 0), as Math.cpp's powOf; GLSL's pow elsewhere.
+bool mathIsInf(float x) { return (floatBitsToUint(x) & 0x7FFFFFFFu) == 0x7F800000u; }
+float mathPow(float x, float y) {
+    bool undefined = mathIsNan(x) || mathIsNan(y) || x < 0.0 || (x == 0.0 && y <= 0.0) ||
+                     (x == 1.0 && mathIsInf(y)) || (mathIsInf(x) && y == 0.0);
+    return undefined ? uintBitsToFloat(0x7FC00000u) : pow(x, y);
+}
+vec2 mathPow(vec2 x, vec2 y) { return vec2(mathPow(x.x, y.x), mathPow(x.y, y.y)); }
+vec3 mathPow(vec3 x, vec3 y) { return vec3(mathPow(x.x, y.x), mathPow(x.y, y.y), mathPow(x.z, y.z)); }
+
+// mix(x, y, a) = x * (1 - a) + y * a, GLSL's definition.
+float mathMix(float x, float y, float a) { precise float r = x * (1.0 - a) + y * a; return r; }
+vec2 mathMix(vec2 x, vec2 y, vec2 a) { precise vec2 r = x * (1.0 - a) + y * a; return r; }
+vec3 mathMix(vec3 x, vec3 y, vec3 a) { precise vec3 r = x * (1.0 - a) + y * a; return r; }
+vec2 mathMix(vec2 x, vec2 y, float a) { return mathMix(x, y, vec2(a)); }
+vec3 mathMix(vec3 x, vec3 y, float a) { return mathMix(x, y, vec3(a)); }
+
+// smoothstep: t = clamp((x - e0) / (e1 - e0), 0, 1); t * t * (3 - 2 t), GLSL's definition,
+// also defined (as written) when e0 >= e1.
+float mathSmoothstep(float e0, float e1, float x) {
+    precise float t = mathMin(mathMax((x - e0) / (e1 - e0), 0.0), 1.0);
+    precise float r = t * t * (3.0 - 2.0 * t);
+    return r;
+}
+vec2 mathSmoothstep(vec2 e0, vec2 e1, vec2 x) {
+    return vec2(mathSmoothstep(e0.x, e1.x, x.x), mathSmoothstep(e0.y, e1.y, x.y));
+}
+vec3 mathSmoothstep(vec3 e0, vec3 e1, vec3 x) {
+    return vec3(mathSmoothstep(e0.x, e1.x, x.x), mathSmoothstep(e0.y, e1.y, x.y), mathSmoothstep(e0.z, e1.z, x.z));
+}
+vec2 mathSmoothstep(float e0, float e1, vec2 x) { return mathSmoothstep(vec2(e0), vec2(e1), x); }
+vec3 mathSmoothstep(float e0, float e1, vec3 x) { return mathSmoothstep(vec3(e0), vec3(e1), x); }
+
+// fract(x) = x - floor(x), GLSL's definition (1.0 for tiny negative x, as on the CPU).
+float mathFract(float x) { precise float r = x - floor(x); return r; }
+vec2 mathFract(vec2 x) { precise vec2 r = x - floor(x); return r; }
+vec3 mathFract(vec3 x) { precise vec3 r = x - floor(x); return r; }
+
+// dot and length summed left to right.
+float mathDot(vec2 a, vec2 b) { precise float r = a.x * b.x + a.y * b.y; return r; }
+float mathDot(vec3 a, vec3 b) { precise float r = a.x * b.x + a.y * b.y + a.z * b.z; return r; }
+float mathLength(vec2 a) { return sqrt(mathDot(a, a)); }
+float mathLength(vec3 a) { return sqrt(mathDot(a, a)); }
+// ---- end math_functions.glsl ----
 
 layout(local_size_x = 8, local_size_y = 1, local_size_z = 8) in;
 // Each invocation handles this many consecutive anchors of its dispatch per axis
@@ -376,9 +476,10 @@ void main() {
                 address = nextColumnAddress(address, y == first.y, local);
                 precise float n15 = float(local.y); // y (fields.vox:29:18)
                 precise float n16 = (n14 - n15); // sub (fields.vox:29:9)
-                precise float n18 = min(max(n16, 0.0), 1.0); // clamp (fields.vox:29:3)
+                precise float n18 = mathMin(mathMax(n16, 0.0), 1.0); // clamp (fields.vox:29:3)
+                float fieldValue = finiteDensity(n18, local);
                 // set: d = f
-                voxels.density[address] = n18;
+                voxels.density[address] = fieldValue;
             }
         }
     }

@@ -9,6 +9,8 @@
 // The runtime dispatches it per box of chunks (KernelPackage StagePlan::fieldBoxes); in a box
 // where interval analysis proved the field one exact float (anchorCount.w == 1, the float's
 // bits in anchorStart.w) only the combine runs, in a loop of its own so no DAG code is near it.
+// Where the field's value is not finite the combine uses 0 instead (finiteDensity, counted);
+// a constant box's value is finite (interval analysis proves no NaN or infinity exact).
 
 // ---- begin common.glsl ----
 // Declarations every voxc kernel shares: the push block (voxc::PushBlock in
@@ -74,11 +76,63 @@ int nextColumnAddress(int previous, bool columnStart, ivec3 local) {
     return (columnStart || (worldY & (chunkSize - 1)) == 0) ? voxelAddress(local) : previous + chunkSize;
 }
 // ---- end common.glsl ----
+// ---- begin nonfinite.glsl ----
+// Non-finite densities (docs/language.md, "Non-finite values"), as voxc::NonFiniteCount does it
+// on the CPU: a field stage stores 0 where its field is NaN or infinite, a grammar stores 0
+// where a written value is not finite, and the stage counts them. The runtime copies this
+// buffer out after every stage and resets it to {0, 0, 0xFFFFFFFF} (kBindingNonFinite).
+layout(std430, set = 0, binding = 9) buffer NonFinite {
+    uint countLow;   // replacements in the current stage, a 64-bit count in two halves
+    uint countHigh;
+    uint firstIndex; // the lowest grid index x + sx * (y + sy * z) replaced
+} nonFinite;
+
+// An exponent of all ones is an infinity or a NaN; tested on the bits, so no float
+// optimisation of the driver can change the answer.
+bool isFiniteFloat(float v) { return (floatBitsToUint(v) & 0x7F800000u) != 0x7F800000u; }
+
+// `value` when finite; otherwise 0, counted at grid-local voxel `local`.
+float finiteDensity(float value, ivec3 local) {
+    if (isFiniteFloat(value)) return value;
+    if (atomicAdd(nonFinite.countLow, 1u) == 0xFFFFFFFFu) atomicAdd(nonFinite.countHigh, 1u);
+    atomicMin(nonFinite.firstIndex, uint(local.x + push.gridSize.x * (local.y + push.gridSize.y * local.z)));
+    return 0.0;
+}
+// ---- end nonfinite.glsl ----
 // ---- begin math_functions.glsl ----
 // Math builtins of field expressions whose GLSL built-in may be computed in another operation
-// order (or with a fused multiply-add): written out with `precise` exactly as the interpreter
-// computes them (compiler/builtins/src/functions/Math.cpp). GLSL's own min, max, abs, floor,
-// sqrt, pow, sin and cos are used directly.
+// order (or with a fused multiply-add), or leaves NaN operands undefined (min, max, clamp):
+// written out with `precise` exactly as the interpreter computes them
+// (compiler/builtins/src/functions/Math.cpp). GLSL's own abs, floor, sqrt, sin and cos are used
+// directly, and its pow where that is defined (mathPow).
+
+// NaN tested on the bits (exponent all ones, mantissa not zero), beyond any float optimisation.
+bool mathIsNan(float x) { return (floatBitsToUint(x) & 0x7FFFFFFFu) > 0x7F800000u; }
+
+// IEEE minNum / maxNum (SPIR-V NMin / NMax): b < a ? b : a (a < b ? b : a), ties keeping a,
+// except that a NaN a gives b; a NaN b loses the comparison. So a NaN operand is ignored.
+float mathMin(float a, float b) { return mathIsNan(a) ? b : (b < a ? b : a); }
+float mathMax(float a, float b) { return mathIsNan(a) ? b : (a < b ? b : a); }
+vec2 mathMin(vec2 a, vec2 b) { return vec2(mathMin(a.x, b.x), mathMin(a.y, b.y)); }
+vec3 mathMin(vec3 a, vec3 b) { return vec3(mathMin(a.x, b.x), mathMin(a.y, b.y), mathMin(a.z, b.z)); }
+vec2 mathMax(vec2 a, vec2 b) { return vec2(mathMax(a.x, b.x), mathMax(a.y, b.y)); }
+vec3 mathMax(vec3 a, vec3 b) { return vec3(mathMax(a.x, b.x), mathMax(a.y, b.y), mathMax(a.z, b.z)); }
+vec2 mathMin(vec2 a, float b) { return mathMin(a, vec2(b)); }
+vec3 mathMin(vec3 a, float b) { return mathMin(a, vec3(b)); }
+vec2 mathMax(vec2 a, float b) { return mathMax(a, vec2(b)); }
+vec3 mathMax(vec3 a, float b) { return mathMax(a, vec3(b)); }
+
+// pow: NaN where GLSL leaves it undefined (x < 0; x = 0 with y <= 0) or exp2(y * log2(x)) is NaN
+// while the C library's pow is not (a NaN operand; x = 1 with y infinite; x infinite with
+// y = 0), as Math.cpp's powOf; GLSL's pow elsewhere.
+bool mathIsInf(float x) { return (floatBitsToUint(x) & 0x7FFFFFFFu) == 0x7F800000u; }
+float mathPow(float x, float y) {
+    bool undefined = mathIsNan(x) || mathIsNan(y) || x < 0.0 || (x == 0.0 && y <= 0.0) ||
+                     (x == 1.0 && mathIsInf(y)) || (mathIsInf(x) && y == 0.0);
+    return undefined ? uintBitsToFloat(0x7FC00000u) : pow(x, y);
+}
+vec2 mathPow(vec2 x, vec2 y) { return vec2(mathPow(x.x, y.x), mathPow(x.y, y.y)); }
+vec3 mathPow(vec3 x, vec3 y) { return vec3(mathPow(x.x, y.x), mathPow(x.y, y.y), mathPow(x.z, y.z)); }
 
 // mix(x, y, a) = x * (1 - a) + y * a, GLSL's definition.
 float mathMix(float x, float y, float a) { precise float r = x * (1.0 - a) + y * a; return r; }
@@ -90,7 +144,7 @@ vec3 mathMix(vec3 x, vec3 y, float a) { return mathMix(x, y, vec3(a)); }
 // smoothstep: t = clamp((x - e0) / (e1 - e0), 0, 1); t * t * (3 - 2 t), GLSL's definition,
 // also defined (as written) when e0 >= e1.
 float mathSmoothstep(float e0, float e1, float x) {
-    precise float t = min(max((x - e0) / (e1 - e0), 0.0), 1.0);
+    precise float t = mathMin(mathMax((x - e0) / (e1 - e0), 0.0), 1.0);
     precise float r = t * t * (3.0 - 2.0 * t);
     return r;
 }
@@ -166,11 +220,12 @@ void main() {
                 precise vec2 n17 = (n15 - vec2(44.0, 16.0)); // sub (fields.vox:37:25)
                 precise float n18 = mathLength(n17); // length (fields.vox:37:18)
                 precise float n19 = (n7 - n18); // sub (fields.vox:19:54)
-                precise float n21 = min(max(n19, 0.0), 1.0); // clamp (fields.vox:19:48)
+                precise float n21 = mathMin(mathMax(n19, 0.0), 1.0); // clamp (fields.vox:19:48)
                 precise float n22 = (n9 ? n21 : 0.0); // select (fields.vox:37:3)
+                float fieldValue = finiteDensity(n22, local);
                 // union: d = max(d, f)
                 float density = voxels.density[address];
-                voxels.density[address] = density < n22 ? n22 : density;
+                voxels.density[address] = density < fieldValue ? fieldValue : density;
             }
         }
     }

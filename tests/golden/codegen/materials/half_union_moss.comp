@@ -10,6 +10,8 @@
 // The runtime dispatches it per box of chunks (KernelPackage StagePlan::fieldBoxes); in a box
 // where interval analysis proved the field one exact float (anchorCount.w == 1, the float's
 // bits in anchorStart.w) only the combine runs, in a loop of its own so no DAG code is near it.
+// Where the field's value is not finite the combine uses 0 instead (finiteDensity, counted);
+// a constant box's value is finite (interval analysis proves no NaN or infinity exact).
 
 // ---- begin common.glsl ----
 // Declarations every voxc kernel shares: the push block (voxc::PushBlock in
@@ -75,6 +77,29 @@ int nextColumnAddress(int previous, bool columnStart, ivec3 local) {
     return (columnStart || (worldY & (chunkSize - 1)) == 0) ? voxelAddress(local) : previous + chunkSize;
 }
 // ---- end common.glsl ----
+// ---- begin nonfinite.glsl ----
+// Non-finite densities (docs/language.md, "Non-finite values"), as voxc::NonFiniteCount does it
+// on the CPU: a field stage stores 0 where its field is NaN or infinite, a grammar stores 0
+// where a written value is not finite, and the stage counts them. The runtime copies this
+// buffer out after every stage and resets it to {0, 0, 0xFFFFFFFF} (kBindingNonFinite).
+layout(std430, set = 0, binding = 9) buffer NonFinite {
+    uint countLow;   // replacements in the current stage, a 64-bit count in two halves
+    uint countHigh;
+    uint firstIndex; // the lowest grid index x + sx * (y + sy * z) replaced
+} nonFinite;
+
+// An exponent of all ones is an infinity or a NaN; tested on the bits, so no float
+// optimisation of the driver can change the answer.
+bool isFiniteFloat(float v) { return (floatBitsToUint(v) & 0x7F800000u) != 0x7F800000u; }
+
+// `value` when finite; otherwise 0, counted at grid-local voxel `local`.
+float finiteDensity(float value, ivec3 local) {
+    if (isFiniteFloat(value)) return value;
+    if (atomicAdd(nonFinite.countLow, 1u) == 0xFFFFFFFFu) atomicAdd(nonFinite.countHigh, 1u);
+    atomicMin(nonFinite.firstIndex, uint(local.x + push.gridSize.x * (local.y + push.gridSize.y * local.z)));
+    return 0.0;
+}
+// ---- end nonfinite.glsl ----
 // No function library needed.
 
 layout(local_size_x = 8, local_size_y = 1, local_size_z = 8) in;
@@ -121,10 +146,11 @@ void main() {
                 ivec3 world = push.gridOrigin.xyz + local;
                 address = nextColumnAddress(address, y == first.y, local);
                 // Every value is the same along the column.
+                float fieldValue = finiteDensity(n5, local);
                 // union: d = max(d, f); material 3 where f wins and is solid
                 float density = voxels.density[address];
-                bool wins = density < n5;
-                float result = wins ? n5 : density;
+                bool wins = density < fieldValue;
+                float result = wins ? fieldValue : density;
                 voxels.density[address] = result;
                 if (wins && result >= 0.5) materials.material[address] = 3u;
             }

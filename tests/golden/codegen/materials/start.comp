@@ -117,6 +117,11 @@ uint anchorHash(uint seed, uint iteration, uint sweep, ivec3 anchorWorld, uint s
 
 int noisePerm(int i) { return noiseTables.perlinPermutation[i & 255]; }
 
+// Noise of a point with a NaN or infinite coordinate is NaN, as on the CPU (NoiseCommon.h's
+// `finite`); tested on the bits, beyond any float optimisation.
+bool noiseFinite(vec3 p) { return all(notEqual(floatBitsToUint(p) & 0x7F800000u, uvec3(0x7F800000u))); }
+float noiseNaN() { return uintBitsToFloat(0x7FC00000u); }
+
 float noiseFade(float t) {
     precise float r = t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
     return r;

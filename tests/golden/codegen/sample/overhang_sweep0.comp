@@ -106,6 +106,29 @@ uint anchorHash(uint seed, uint iteration, uint sweep, ivec3 anchorWorld, uint s
     return mix32(seed ^ h);
 }
 // ---- end random.glsl ----
+// ---- begin nonfinite.glsl ----
+// Non-finite densities (docs/language.md, "Non-finite values"), as voxc::NonFiniteCount does it
+// on the CPU: a field stage stores 0 where its field is NaN or infinite, a grammar stores 0
+// where a written value is not finite, and the stage counts them. The runtime copies this
+// buffer out after every stage and resets it to {0, 0, 0xFFFFFFFF} (kBindingNonFinite).
+layout(std430, set = 0, binding = 9) buffer NonFinite {
+    uint countLow;   // replacements in the current stage, a 64-bit count in two halves
+    uint countHigh;
+    uint firstIndex; // the lowest grid index x + sx * (y + sy * z) replaced
+} nonFinite;
+
+// An exponent of all ones is an infinity or a NaN; tested on the bits, so no float
+// optimisation of the driver can change the answer.
+bool isFiniteFloat(float v) { return (floatBitsToUint(v) & 0x7F800000u) != 0x7F800000u; }
+
+// `value` when finite; otherwise 0, counted at grid-local voxel `local`.
+float finiteDensity(float value, ivec3 local) {
+    if (isFiniteFloat(value)) return value;
+    if (atomicAdd(nonFinite.countLow, 1u) == 0xFFFFFFFFu) atomicAdd(nonFinite.countHigh, 1u);
+    atomicMin(nonFinite.firstIndex, uint(local.x + push.gridSize.x * (local.y + push.gridSize.y * local.z)));
+    return 0.0;
+}
+// ---- end nonfinite.glsl ----
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 // Each invocation handles this many consecutive anchors of its dispatch per axis
@@ -388,18 +411,18 @@ void main() {
         if (probabilityDraw(anchorWorld) >= probability) chosen = -1;
     }
 
-    // Apply the chosen rule's transform; NOP cells are left untouched and every written value is clamped.
+    // Apply the chosen rule's transform; NOP cells are left untouched, every written value is clamped and a non-finite one is stored as 0.
     if (chosen == 0) { // erode (sample.vox:12:3)
         precise float next0 = (cell0 + -0.5); // (0, 0, 0) ADD -0.5
-        writeDensity(address0, clampDensity(next0));
+        writeDensity(address0, finiteDensity(clampDensity(next0), anchor + ivec3(0, 0, 0)));
         address2 = windowCellAddress(window, ivec3(2, 0, 0));
         cell2 = voxels.density[address2];
         precise float next2 = 1.0; // (2, 0, 0) SET 1.0
-        writeDensity(address2, clampDensity(next2));
+        writeDensity(address2, finiteDensity(clampDensity(next2), anchor + ivec3(2, 0, 0)));
     } else if (chosen == 1) { // grow (sample.vox:20:3)
         precise float next2 = (cell2 + 0.100000001); // (2, 0, 0) ADD 0.100000001
-        writeDensity(address2, clampDensity(next2));
+        writeDensity(address2, finiteDensity(clampDensity(next2), anchor + ivec3(2, 0, 0)));
         precise float next4 = 0.25; // (1, 1, 0) SET 0.25
-        writeDensity(address4, clampDensity(next4));
+        writeDensity(address4, finiteDensity(clampDensity(next4), anchor + ivec3(1, 1, 0)));
     }
 }

@@ -104,6 +104,29 @@ uint anchorHash(uint seed, uint iteration, uint sweep, ivec3 anchorWorld, uint s
     return mix32(seed ^ h);
 }
 // ---- end random.glsl ----
+// ---- begin nonfinite.glsl ----
+// Non-finite densities (docs/language.md, "Non-finite values"), as voxc::NonFiniteCount does it
+// on the CPU: a field stage stores 0 where its field is NaN or infinite, a grammar stores 0
+// where a written value is not finite, and the stage counts them. The runtime copies this
+// buffer out after every stage and resets it to {0, 0, 0xFFFFFFFF} (kBindingNonFinite).
+layout(std430, set = 0, binding = 9) buffer NonFinite {
+    uint countLow;   // replacements in the current stage, a 64-bit count in two halves
+    uint countHigh;
+    uint firstIndex; // the lowest grid index x + sx * (y + sy * z) replaced
+} nonFinite;
+
+// An exponent of all ones is an infinity or a NaN; tested on the bits, so no float
+// optimisation of the driver can change the answer.
+bool isFiniteFloat(float v) { return (floatBitsToUint(v) & 0x7F800000u) != 0x7F800000u; }
+
+// `value` when finite; otherwise 0, counted at grid-local voxel `local`.
+float finiteDensity(float value, ivec3 local) {
+    if (isFiniteFloat(value)) return value;
+    if (atomicAdd(nonFinite.countLow, 1u) == 0xFFFFFFFFu) atomicAdd(nonFinite.countHigh, 1u);
+    atomicMin(nonFinite.firstIndex, uint(local.x + push.gridSize.x * (local.y + push.gridSize.y * local.z)));
+    return 0.0;
+}
+// ---- end nonfinite.glsl ----
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 // Each invocation handles this many consecutive anchors of its dispatch per axis
@@ -300,14 +323,14 @@ void main() {
         // Every rule has probability 1: the draw (< 2^24) always passes, so it is skipped.
     }
 
-    // Apply the chosen rule's transform; NOP cells are left untouched.
+    // Apply the chosen rule's transform; NOP cells are left untouched and a non-finite one is stored as 0.
     if (chosen == 0) { // blend (sample.vox:43:3)
         address1 = windowCellAddress(window, ivec3(1, 0, 0));
         cell1 = voxels.density[address1];
         precise float next1 = (cell1 + 0.125); // (1, 0, 0) ADD 0.125
-        writeDensity(address1, next1);
+        writeDensity(address1, finiteDensity(next1, anchor + ivec3(1, 0, 0)));
         address2 = windowCellAddress(window, ivec3(0, 0, 1));
         precise float next2 = 0.5; // (0, 0, 1) SET 0.5
-        writeDensity(address2, next2);
+        writeDensity(address2, finiteDensity(next2, anchor + ivec3(0, 0, 1)));
     }
 }

@@ -42,6 +42,10 @@ constexpr uint32_t kBindingSkipStats = 7;      // uint[2]: active and candidate 
 // Allocated at grid size only when KernelPackage::usesMaterials; otherwise a one-element buffer
 // that no kernel declares.
 constexpr uint32_t kBindingMaterials = 8;
+// uint[3]: the current stage's non-finite replacements (count low, count high, lowest grid index;
+// compiler/shaders/nonfinite.glsl), declared by the kernels that may compute a non-finite density
+// (field and sweep kernels). The runtime copies it out after each stage and resets it to {0, 0, ~0u}.
+constexpr uint32_t kBindingNonFinite = 9;
 
 constexpr uint32_t kNoKernel = UINT32_MAX;
 
@@ -100,6 +104,7 @@ struct FieldBox {
 
 struct StagePlan {
     Stage::Kind kind = Stage::Kind::Start;
+    SourceLoc loc; // the pipeline entry (Stage::loc), for reports naming the stage
     uint32_t startKernel = 0; // Start
     GrammarPlan grammar;      // Grammar
     // Field: one dispatch per box of fieldBoxes (disjoint, covering the grid), or over the whole

@@ -3,6 +3,7 @@
 // `eval`, combined with the grid's density by the stage's FieldMode.
 #include "voxc/builtins/Functions.h"
 #include "voxc/grid/Grid.h"
+#include "voxc/grid/NonFinite.h"
 #include "voxc/program/Program.h"
 
 #include <glm/vec3.hpp>
@@ -28,7 +29,8 @@ private:
     std::vector<Value> arguments_;
 };
 
-// Runs one field stage over the whole grid in place (voxc::combineField at every voxel).
-void runField(const Program& program, const Stage& stage, DenseGrid& grid);
+// Runs one field stage over the whole grid in place: voxc::combineField at every voxel with the
+// field's value, or with 0 where that value is not finite (counted in `nonFinite` when set).
+void runField(const Program& program, const Stage& stage, DenseGrid& grid, NonFiniteCount* nonFinite = nullptr);
 
 } // namespace voxc

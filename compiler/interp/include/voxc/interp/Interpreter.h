@@ -3,6 +3,7 @@
 // shared definitions of the semantics (voxc/program/Semantics.h, voxc/builtins/Ops.h,
 // voxc/builtins/Shapes.h). It is the oracle the Vulkan path is compared with bit for bit.
 #include "voxc/grid/Grid.h"
+#include "voxc/grid/NonFinite.h"
 #include "voxc/interp/Slice.h"
 #include "voxc/interp/Stats.h"
 #include "voxc/interp/Trace.h"
@@ -10,6 +11,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 namespace voxc {
 
@@ -18,13 +20,19 @@ struct InterpOptions {
     std::function<void(const TraceEvent&)> onFire;
     // When set, firing counts are added to it.
     FireStats* stats = nullptr;
+    // When set, interpret() resizes it to one entry per pipeline stage and counts there the
+    // non-finite densities each stage replaced by 0 (voxc/grid/NonFinite.h).
+    std::vector<NonFiniteCount>* nonFinite = nullptr;
 };
 
 // The start state: startVoxel at every voxel of the world.
 DenseGrid evaluateStart(const Program& program);
 
-// Runs every iteration of one grammar in place. `grid` must have the world's size.
-void runGrammar(const Program& program, uint32_t grammarIndex, DenseGrid& grid, const InterpOptions& options = {});
+// Runs every iteration of one grammar in place. `grid` must have the world's size. A written
+// value that is not finite (an ADD past the float range) is stored as 0 and, when `nonFinite`
+// is set, counted there.
+void runGrammar(const Program& program, uint32_t grammarIndex, DenseGrid& grid, const InterpOptions& options = {},
+                NonFiniteCount* nonFinite = nullptr);
 
 // Runs program.pipeline in order, starting from an all-air grid of the world's size.
 DenseGrid interpret(const Program& program, const InterpOptions& options = {});

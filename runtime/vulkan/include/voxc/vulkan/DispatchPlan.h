@@ -22,6 +22,7 @@ struct Dispatch {
     PushBlock push{};
     uint32_t groups[3] = {1, 1, 1}; // workgroups: ceil(anchorCount / (localSize * anchorsPerInvocation)) per axis
     uint32_t record = 0;            // Indirect: which of the two records the active-tiles kernel wrote
+    uint32_t stage = 0;             // index into KernelPackage::stages of the stage it belongs to
 };
 
 // Checks what the executor relies on (kernel indices, phase arrays of equal length, SPIR-V

@@ -7,11 +7,13 @@
 // repeated (benchmarks) without recompiling anything.
 #include "voxc/codegen/KernelPackage.h"
 #include "voxc/grid/Grid.h"
+#include "voxc/grid/NonFinite.h"
 #include "voxc/vulkan/Context.h"
 
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace voxc {
 
@@ -51,6 +53,9 @@ struct RunResult {
     RunTimings timings;
     uint64_t dispatches = 0; // vkCmdDispatch and vkCmdDispatchIndirect calls recorded
     TileSkipStats skip;
+    // Per KernelPackage::stages entry: the non-finite densities the stage replaced by 0
+    // (voxc/grid/NonFinite.h), read back from the kernels' counters.
+    std::vector<NonFiniteCount> nonFinite;
 };
 
 class VulkanExecutor {
