@@ -1,5 +1,6 @@
 #include "CellExtraction.h"
 
+#include <cmath>
 #include <glm/geometric.hpp>
 
 namespace voxc::surface_nets {
@@ -7,6 +8,15 @@ namespace {
 
 bool insideGrid(const ChunkedGrid& grid, glm::ivec3 p) {
     return glm::all(glm::greaterThanEqual(p, glm::ivec3(0))) && glm::all(glm::lessThan(p, grid.layout().gridSize));
+}
+
+// A density as the mesher reads it: one that is not finite counts as 0, as the pipeline stores it
+// (docs/language.md, "Non-finite values"), so a grid from elsewhere holding NaN or infinities
+// meshes like one voxc made; outside the grid is 0 too (air).
+float meshDensity(const ChunkedGrid& grid, glm::ivec3 p) {
+    if (!insideGrid(grid, p)) return 0.0f;
+    const float d = grid.at(p);
+    return std::isfinite(d) ? d : 0.0f;
 }
 
 // Densities and materials of a chunk's cells plus a one-sample margin on every side (the extra
@@ -23,7 +33,7 @@ public:
                 for (int x = 0; x < extent.x; ++x, ++i) {
                     const glm::ivec3 p = first + glm::ivec3(x, y, z);
                     const bool inside = insideGrid(grid, p);
-                    values_[i] = inside ? grid.at(p) : 0.0f; // outside the grid is air
+                    values_[i] = meshDensity(grid, p);
                     materials_[i] = inside ? grid.materialAt(p) : kMaterialNone;
                 }
     }
@@ -58,7 +68,9 @@ CellVertex makeVertex(const SampleBlock& block, glm::ivec3 cell, glm::ivec3 worl
         for (int a = 0; a < 8; ++a) {
             const int b = a | bit;
             if ((a & bit) || ((solid >> a) & 1) == ((solid >> b) & 1)) continue;
-            const float t = (iso - density[a]) / (density[b] - density[a]);
+            // In double: iso lies between the two densities, so t is in [0, 1] even where the
+            // float differences of far-apart densities would overflow.
+            const float t = float((double(iso) - density[a]) / (double(density[b]) - density[a]));
             const glm::vec3 pa(cornerOffset(a)), pb(cornerOffset(b));
             sum += pa + t * (pb - pa);
             ++crossings;
@@ -73,8 +85,9 @@ CellVertex makeVertex(const SampleBlock& block, glm::ivec3 cell, glm::ivec3 worl
         const float w = (o.x ? inCell.x : 1.0f - inCell.x) * (o.y ? inCell.y : 1.0f - inCell.y) * (o.z ? inCell.z : 1.0f - inCell.z);
         gradient += w * block.gradient(cell + o);
     }
+    // A gradient that vanishes, or overflows between huge densities, leaves the normal to the faces.
     const float length = glm::length(gradient);
-    const glm::vec3 normal = length > 0.0f ? -gradient / length : glm::vec3(0.0f);
+    const glm::vec3 normal = length > 0.0f && std::isfinite(length) ? -gradient / length : glm::vec3(0.0f);
     return {0, glm::vec3(world) + inCell, normal, kMaterialNone};
 }
 
@@ -105,9 +118,7 @@ CellRange chunkCells(const ChunkLayout& layout, glm::ivec3 worldChunk) {
 }
 
 bool cellsAreUniform(const ChunkedGrid& grid, float iso, const CellRange& cells) {
-    auto solidAt = [&](glm::ivec3 p) {
-        return (insideGrid(grid, p) ? grid.at(p) : 0.0f) > iso; // outside the grid reads as density 0, as in SampleBlock
-    };
+    auto solidAt = [&](glm::ivec3 p) { return meshDensity(grid, p) > iso; }; // as SampleBlock reads it
     const bool first = solidAt(cells.begin);
     for (int z = cells.begin.z; z <= cells.end.z; ++z)
         for (int y = cells.begin.y; y <= cells.end.y; ++y)
