@@ -76,6 +76,8 @@ private:
     void materials();
     void world();
     void start();
+    void functions();
+    void features();
     void fields();
     void grammars();
     void pipeline();
@@ -87,6 +89,10 @@ private:
     std::string out_;
     std::array<int, 3> size_{};
     std::vector<std::string> materials_, fields_, grammars_, lets_;
+    // User functions so far (each takes two floats); inside a body, its parameters replace the
+    // inputs, which function bodies may not read.
+    std::vector<std::string> functions_;
+    bool inFunction_ = false;
 };
 
 std::string Generator::floatLiteral() {
@@ -99,6 +105,16 @@ std::string Generator::leaf(Type type) {
     static constexpr std::array<std::string_view, 6> kInputs = {"x", "y", "z", "wx", "wy", "wz"};
     static constexpr std::array<std::string_view, 6> kSwizzles2 = {"xy", "xz", "zy", "yx", "zx", "yy"};
     static constexpr std::array<std::string_view, 4> kSwizzles3 = {"xyz", "zyx", "xzy", "yyx"};
+    if (inFunction_) {
+        const char* parameter = random_.chance(0.5) ? "a" : "b";
+        switch (type) {
+        case Type::Float: return random_.chance(0.6) ? std::string(parameter) : floatLiteral();
+        case Type::Int: return std::to_string(random_.range(0, 9));
+        case Type::Bool: return fmt::format("{} < {}", parameter, floatLiteral());
+        case Type::Vec2: return fmt::format("vec2({}, b)", parameter);
+        case Type::Vec3: return fmt::format("vec3(a, {}, {})", parameter, floatLiteral());
+        }
+    }
     const std::string_view vector = random_.chance(0.5) ? "p" : "wp";
     switch (type) {
     case Type::Float:
@@ -125,6 +141,10 @@ std::string Generator::expression(Type type, int depth) {
         std::string body = expression(Type::Float, depth - 1);
         lets_.pop_back();
         return fmt::format("(let {} = {} in {})", name, value, body);
+    }
+    if (type == Type::Float && !functions_.empty() && random_.chance(0.15)) {
+        const std::string& function = functions_[random_.below(uint32_t(functions_.size()))];
+        return fmt::format("{}({}, {})", function, expression(Type::Float, depth - 1), expression(Type::Float, depth - 1));
     }
     const auto found = overloadsByResult().find(type);
     if (found == overloadsByResult().end()) return leaf(type);
@@ -182,6 +202,50 @@ void Generator::start() {
         out_ += " }\n";
     }
     out_ += "}\n";
+}
+
+// Each function may call the ones before it, so a chain of calls inlines into shared nodes.
+void Generator::functions() {
+    const int count = random_.range(0, 3);
+    for (int i = 0; i < count; ++i) {
+        inFunction_ = true;
+        const std::string body = expression(Type::Float, random_.range(1, 3));
+        inFunction_ = false;
+        functions_.push_back(fmt::format("h{}", i));
+        out_ += fmt::format("fn h{}(a: float, b: float) -> float = {};\n", i, body);
+    }
+}
+
+// Dey's generators with a few of their keys (docs/language.md, "Features"), placed on the grid.
+void Generator::features() {
+    const int count = random_.range(0, 2);
+    const auto point = [&] {
+        return fmt::format("[{}, {}, {}]", random_.range(0, size_[0]), random_.range(0, size_[1]), random_.range(0, size_[2]));
+    };
+    for (int i = 0; i < count; ++i) {
+        const std::string name = fmt::format("feature{}", i);
+        std::string keys;
+        switch (random_.below(3)) {
+        case 0:
+            keys = fmt::format("arch {{ start = {}; end = [{}, {}, {}]; radius = {}; iterations = {};", point(),
+                               size_[0] + 1, random_.range(0, size_[1]), random_.range(0, size_[2]), random_.range(1, 4),
+                               10 * random_.range(1, 3));
+            break;
+        case 1:
+            keys = fmt::format("cave {{ start = {}; direction = [1, {}, 0]; mouth = {}; curl = {}; decay = {};", point(),
+                               number(random_.real(-1.0, 1.0)), number(random_.real(1.0, 4.0)),
+                               number(random_.real(0.0, 1.0)), number(random_.real(0.0, 1.0)));
+            break;
+        default:
+            keys = fmt::format("overhang {{ min = [0, 0, 0]; max = [{}, {}, {}]; lip_height = {}; base_depth = {};",
+                               size_[0], size_[1], size_[2], number(random_.real(0.0, 1.0)), number(random_.real(0.0, 1.0)));
+            break;
+        }
+        if (random_.chance(0.3)) keys += fmt::format(" rotate = [0, {}, 0];", random_.range(-90, 90));
+        if (!materials_.empty() && random_.chance(0.5)) keys += fmt::format(" material = {};", materialName());
+        fields_.push_back(name);
+        out_ += fmt::format("feature {} = {} }}\n", name, keys);
+    }
 }
 
 void Generator::fields() {
@@ -247,23 +311,27 @@ void Generator::grammars() {
     }
 }
 
+// Every field, feature and grammar runs at least once, in random order, plus up to two repeats.
 void Generator::pipeline() {
     static constexpr std::array<std::string_view, 4> kModes = {"set", "union", "subtract", "intersect"};
+    std::vector<std::string> stages = fields_;
+    stages.insert(stages.end(), grammars_.begin(), grammars_.end());
+    if (stages.empty()) {
+        out_ += "pipeline { start; }\n";
+        return;
+    }
+    for (int extra = random_.range(0, 2); extra > 0; --extra) stages.push_back(stages[random_.below(uint32_t(stages.size()))]);
+    for (size_t i = stages.size() - 1; i > 0; --i) std::swap(stages[i], stages[random_.below(uint32_t(i + 1))]);
     out_ += "pipeline { start;";
-    const int stages = random_.range(0, 5);
-    for (int s = 0; s < stages; ++s) {
-        const bool field = !fields_.empty() && (grammars_.empty() || random_.chance(0.5));
-        if (field) {
-            const std::string& name = fields_[random_.below(uint32_t(fields_.size()))];
-            if (!materials_.empty() && random_.chance(0.2)) {
-                out_ += fmt::format(" paint {} material {};", name, materialName());
-                continue;
-            }
+    for (const std::string& name : stages) {
+        if (std::find(grammars_.begin(), grammars_.end(), name) != grammars_.end()) {
+            out_ += fmt::format(" {};", name);
+        } else if (!materials_.empty() && random_.chance(0.2)) {
+            out_ += fmt::format(" paint {} material {};", name, materialName());
+        } else {
             out_ += fmt::format(" {} {}", kModes[random_.below(kModes.size())], name);
             if (!materials_.empty() && random_.chance(0.3)) out_ += fmt::format(" material {}", materialName());
             out_ += ";";
-        } else if (!grammars_.empty()) {
-            out_ += fmt::format(" {};", grammars_[random_.below(uint32_t(grammars_.size()))]);
         }
     }
     out_ += " }\n";
@@ -273,7 +341,9 @@ std::string Generator::program() {
     materials();
     world();
     start();
+    functions();
     fields();
+    features();
     grammars();
     pipeline();
     return out_;
