@@ -1,10 +1,12 @@
 // voxc-bench: times the grammar cases and a 5-octave fBm field on the Vulkan path and in the
-// interpreter, the same fBm with libnoise as a peer, and the L-system expansion on the host.
+// interpreter, the same fBm with libnoise as a peer, and on the host the L-system expansion and
+// codegen of the largest grammars the limits allow.
 // `voxc-bench --json` prints a JSON list of records; without it Google Benchmark's table.
 // Vulkan times cover execution and readback of an already-built package (pipelines compiled
 // once up front: that cost is printed to stderr, not included); interpreter times cover the
 // same work: start state plus one grammar iteration, or the field.
 #include "Cases.h"
+#include "CompileCases.h"
 #include "JsonReporter.h"
 #include "LsystemCases.h"
 
@@ -117,6 +119,7 @@ int main(int argc, char** argv) {
             if (uses("libnoise")) registerLibnoise(reporter, n);
         }
         if (uses("host")) bench::registerLsystemExpand(reporter);
+        if (uses("host")) bench::registerCompileCases(reporter);
         if (options.json) {
             benchmark::RunSpecifiedBenchmarks(&reporter);
         } else {
