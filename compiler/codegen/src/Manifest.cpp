@@ -65,6 +65,10 @@ BufferInfo bufferInfo(uint32_t binding) {
     case kBindingMaterials:
         return {"materials", "uint", "chunk_slots * chunk^3",
                 "voxel material ids (0 = none, else materials[].id) at the densities' addresses"};
+    case kBindingNonFinite:
+        return {"nonFinite", "uint", "3",
+                "the current stage's non-finite densities replaced by 0: count (low, high word), lowest grid index; "
+                "the engine resets it to {0, 0, 0xffffffff} before each stage"};
     }
     throw InternalError(fmt::format("a kernel declares binding {}, which the manifest does not describe", binding));
 }
@@ -81,6 +85,7 @@ Json bufferCount(uint32_t binding, const World& world) {
     case kBindingNoiseTables: return 256;
     case kBindingActiveDispatch: return 8;
     case kBindingSkipStats: return 2;
+    case kBindingNonFinite: return 3;
     default: return nullptr;
     }
 }
