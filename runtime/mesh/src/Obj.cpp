@@ -79,7 +79,8 @@ void writeMesh(OutputFiles& outputs, const std::string& path, const Mesh& mesh, 
     std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     if (extension == ".ply") return writePly(outputs, path, mesh, materials);
     if (extension == ".obj") return writeObj(outputs, path, mesh, materials);
-    throw UserError(fmt::format("unknown mesh format '{}' for '{}' (use .ply or .obj)", extension, path));
+    if (extension == ".glb") return writeGlb(outputs, path, mesh, materials);
+    throw UserError(fmt::format("unknown mesh format '{}' for '{}' (use .ply, .obj or .glb)", extension, path));
 }
 
 void writeMesh(const std::string& path, const Mesh& mesh, std::span<const Material> materials) {

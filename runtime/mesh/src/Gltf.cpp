@@ -1,0 +1,164 @@
+// glTF 2.0 binary (.glb), written with nlohmann-json for the JSON chunk and by hand for the
+// container (KhronosGroup/glTF Specification 2.0, "GLB File Format Specification").
+#include "MaterialLook.h"
+#include "voxc/core/Errors.h"
+#include "voxc/mesh/Export.h"
+
+#include <bit>
+#include <cstring>
+#include <fmt/format.h>
+#include <glm/common.hpp>
+#include <map>
+#include <nlohmann/json.hpp>
+
+namespace voxc {
+
+static_assert(std::endian::native == std::endian::little, "GLB is little-endian; the writer copies host floats and ints");
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+constexpr uint32_t kGlbMagic = 0x46546C67, kGlbVersion = 2, kJsonChunk = 0x4E4F534A, kBinChunk = 0x004E4942;
+constexpr int kFloat = 5126, kUnsignedByte = 5121, kUnsignedShort = 5123, kUnsignedInt = 5125;
+constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
+
+class BinaryBuffer {
+public:
+    // Appends `bytes` as a buffer view of its own, starting 4-byte aligned; returns its index.
+    size_t addView(const void* bytes, size_t size, int target, Json& views) {
+        data_.resize((data_.size() + 3) & ~size_t(3), 0);
+        const size_t offset = data_.size();
+        data_.resize(offset + size);
+        std::memcpy(data_.data() + offset, bytes, size);
+        views.push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", size}, {"target", target}});
+        return views.size() - 1;
+    }
+    const std::string& data() const { return data_; }
+
+private:
+    std::string data_;
+};
+
+void appendUint32(std::string& out, uint32_t value) {
+    char bytes[4];
+    std::memcpy(bytes, &value, 4);
+    out.append(bytes, 4);
+}
+
+// Triangles of each material id with any, ascending id; each list in the mesh's own order.
+std::map<uint8_t, std::vector<uint32_t>> trianglesByMaterial(const Mesh& mesh) {
+    std::map<uint8_t, std::vector<uint32_t>> groups;
+    for (size_t t = 0; t < mesh.triangles.size() / 3; ++t) {
+        std::vector<uint32_t>& indices = groups[mesh_export::triangleMaterial(mesh, t)];
+        indices.insert(indices.end(), mesh.triangles.begin() + std::ptrdiff_t(3 * t), mesh.triangles.begin() + std::ptrdiff_t(3 * t + 3));
+    }
+    return groups;
+}
+
+Json gltfDocument(const Mesh& mesh, std::span<const Material> materials, BinaryBuffer& bin) {
+    Json doc;
+    doc["asset"] = {{"version", "2.0"}, {"generator", "voxc"}};
+    doc["scene"] = 0;
+    if (mesh.triangles.empty()) { // a primitive needs indices, so an empty mesh is an empty scene
+        doc["scenes"] = Json::array({Json::object()});
+        return doc;
+    }
+    VOXC_ASSERT(mesh.normals.size() == mesh.positions.size());
+    const size_t vertexCount = mesh.positions.size();
+    Json views = Json::array(), accessors = Json::array();
+
+    glm::vec3 lo = mesh.positions[0], hi = mesh.positions[0];
+    for (const glm::vec3& p : mesh.positions) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    // The bounds are the float extrema exactly: validators compare them with the data.
+    auto bound = [](glm::vec3 v) { return Json::array({double(v.x), double(v.y), double(v.z)}); };
+    accessors.push_back({{"bufferView", bin.addView(mesh.positions.data(), vertexCount * 12, kArrayBuffer, views)},
+                         {"componentType", kFloat}, {"count", vertexCount}, {"type", "VEC3"}, {"min", bound(lo)}, {"max", bound(hi)}});
+    accessors.push_back({{"bufferView", bin.addView(mesh.normals.data(), vertexCount * 12, kArrayBuffer, views)},
+                         {"componentType", kFloat}, {"count", vertexCount}, {"type", "VEC3"}});
+    // Vertex colours: the vertex's material colour (voxc colours are linear, as glTF's are), as
+    // normalised RGBA bytes: 4 bytes keep every element 4-byte aligned.
+    std::vector<uint8_t> colors(vertexCount * 4);
+    for (size_t v = 0; v < vertexCount; ++v) {
+        const glm::vec3 c = mesh_export::lookOf(mesh_export::vertexMaterial(mesh, v), materials).color;
+        colors[4 * v] = mesh_export::colorByte(c.r);
+        colors[4 * v + 1] = mesh_export::colorByte(c.g);
+        colors[4 * v + 2] = mesh_export::colorByte(c.b);
+        colors[4 * v + 3] = 255;
+    }
+    accessors.push_back({{"bufferView", bin.addView(colors.data(), colors.size(), kArrayBuffer, views)},
+                         {"componentType", kUnsignedByte}, {"normalized", true}, {"count", vertexCount}, {"type", "VEC4"}});
+
+    // 16-bit indices while every index fits below the primitive-restart value 65535.
+    const bool shortIndices = vertexCount <= 65535;
+    Json primitives = Json::array(), gltfMaterials = Json::array();
+    for (const auto& [id, indices] : trianglesByMaterial(mesh)) {
+        size_t view;
+        if (shortIndices) {
+            const std::vector<uint16_t> narrow(indices.begin(), indices.end());
+            view = bin.addView(narrow.data(), narrow.size() * 2, kElementArrayBuffer, views);
+        } else {
+            view = bin.addView(indices.data(), indices.size() * 4, kElementArrayBuffer, views);
+        }
+        accessors.push_back({{"bufferView", view}, {"componentType", shortIndices ? kUnsignedShort : kUnsignedInt},
+                             {"count", indices.size()}, {"type", "SCALAR"}});
+        const mesh_export::MaterialLook look = mesh_export::lookOf(id, materials);
+        // COLOR_0 multiplies the base colour, so the base stays white; the declared colour and id
+        // travel in extras for tools that want them.
+        gltfMaterials.push_back({{"name", look.name},
+                                 {"pbrMetallicRoughness", {{"baseColorFactor", {1.0, 1.0, 1.0, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 1.0}}},
+                                 {"extras", {{"voxc_material_id", id}, {"voxc_color", {look.color.r, look.color.g, look.color.b}}}}});
+        primitives.push_back({{"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"COLOR_0", 2}}},
+                              {"indices", accessors.size() - 1}, {"material", gltfMaterials.size() - 1}, {"mode", 4}});
+    }
+    doc["scenes"] = Json::array({{{"nodes", {0}}}});
+    doc["nodes"] = Json::array({{{"mesh", 0}}});
+    doc["meshes"] = Json::array({{{"primitives", primitives}}});
+    doc["materials"] = gltfMaterials;
+    doc["accessors"] = accessors;
+    doc["bufferViews"] = views;
+    doc["buffers"] = Json::array({{{"byteLength", bin.data().size()}}});
+    return doc;
+}
+
+} // namespace
+
+std::string encodeGlb(const Mesh& mesh, std::span<const Material> materials) {
+    BinaryBuffer bin;
+    std::string json = gltfDocument(mesh, materials, bin).dump();
+    json.resize((json.size() + 3) & ~size_t(3), ' ');
+    std::string binary = bin.data();
+    binary.resize((binary.size() + 3) & ~size_t(3), '\0');
+
+    const size_t total = 12 + 8 + json.size() + (binary.empty() ? 0 : 8 + binary.size());
+    if (total > UINT32_MAX) throw UserError(fmt::format("the mesh is too large for a .glb file ({} bytes; the limit is 4 GiB)", total));
+    std::string out;
+    out.reserve(total);
+    appendUint32(out, kGlbMagic);
+    appendUint32(out, kGlbVersion);
+    appendUint32(out, uint32_t(total));
+    appendUint32(out, uint32_t(json.size()));
+    appendUint32(out, kJsonChunk);
+    out += json;
+    if (!binary.empty()) { // the spec asks to omit an empty BIN chunk
+        appendUint32(out, uint32_t(binary.size()));
+        appendUint32(out, kBinChunk);
+        out += binary;
+    }
+    return out;
+}
+
+void writeGlb(OutputFiles& outputs, const std::string& path, const Mesh& mesh, std::span<const Material> materials) {
+    outputs.add(path, encodeGlb(mesh, materials));
+}
+
+void writeGlb(const std::string& path, const Mesh& mesh, std::span<const Material> materials) {
+    OutputFiles outputs;
+    writeGlb(outputs, path, mesh, materials);
+    outputs.commit();
+}
+
+} // namespace voxc
