@@ -44,9 +44,10 @@ TEST(check_Features, KeyDiscipline) {
 }
 
 TEST(check_Features, ValuesOffTheThesisGridWarn) {
-    EXPECT_EQ(codes(check(kWorld + "feature a = cave { mouth = 5.1; }")), Codes{"W0205"});
-    EXPECT_EQ(codes(check(kWorld + "feature a = cave { mouth = 5.2; }")), Codes{});
-    EXPECT_EQ(codes(check(kWorld + "feature a = arch { peak = 7; }")), Codes{"W0205"});
+    const std::string pipeline = "pipeline { start; union a; }\n";
+    EXPECT_EQ(codes(check(kWorld + "feature a = cave { mouth = 5.1; }\n" + pipeline)), Codes{"W0205"});
+    EXPECT_EQ(codes(check(kWorld + "feature a = cave { mouth = 5.2; }\n" + pipeline)), Codes{});
+    EXPECT_EQ(codes(check(kWorld + "feature a = arch { peak = 7; }\n" + pipeline)), Codes{"W0205"});
 }
 
 } // namespace

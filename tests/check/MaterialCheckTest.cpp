@@ -192,7 +192,7 @@ TEST(check_Materials, PipelineErrors) {
 
 TEST(check_Materials, ContradictoryTestsNeverMatch) {
     EXPECT_EQ(codes(check(rule("[1, 1, 1]", "[MAT rock & MAT sand]", "[NOP]"))), Codes{"W0202"});
-    EXPECT_EQ(codes(check(rule("[1, 1, 1]", "[MAT rock & NMAT rock]", "[NOP]"))), Codes{"W0202"});
+    EXPECT_EQ(codes(check(rule("[1, 1, 1]", "[MAT rock & NMAT rock & NMAT sand]", "[NOP]"))), Codes{"W0202"});
     EXPECT_EQ(codes(check(rule("[1, 1, 1]", "[MAT rock & MAT rock & NMAT sand]", "[NOP]"))), Codes{});
     const CheckResult message = check(rule("[1, 1, 1]", "[PRES & MAT rock & MAT sand]", "[NOP]"));
     ASSERT_EQ(codes(message), Codes{"W0202"});

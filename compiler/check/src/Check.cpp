@@ -104,7 +104,8 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
     for (Field& feature : features.fields) program.fields.push_back(std::move(feature));
 
     program.pipeline.push_back({Stage::Kind::Start, 0, FieldMode::Set, {}, std::nullopt});
-    if (const ast::Block* block = uniqueBlock(context, file, "pipeline")) {
+    const ast::Block* pipelineBlock = uniqueBlock(context, file, "pipeline");
+    if (const ast::Block* block = pipelineBlock) {
         std::vector<std::string> fieldNames;
         for (const ast::FieldDecl& field : file.fields) fieldNames.push_back(field.name);
         for (const ast::FeatureDecl& feature : file.features) fieldNames.push_back(feature.name);
@@ -117,8 +118,10 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
     }
     // The estimate and the warnings only make sense about a program that is otherwise correct.
     if (!context.diagnostics.hasErrors()) checkWork(context, program);
-    if (!context.diagnostics.hasErrors())
+    if (!context.diagnostics.hasErrors()) {
         for (const CheckedGrammar& grammar : grammars) analyseGrammar(context, grammar);
+        warnUnused(context, file, program, pipelineBlock != nullptr);
+    }
     return program;
 }
 

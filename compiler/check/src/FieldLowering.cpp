@@ -163,7 +163,7 @@ Lowered FieldLowering::lowerNested(const ast::Expr& expr, Scope& scope) {
     switch (expr.kind) {
     case Kind::Number:
         if (!std::isfinite(expr.number)) {
-            context_.diagnostics.error("E0007", expr.loc, "number is too large to represent");
+            context_.diagnostics.error("E0007", expr.loc, "value is too large to represent");
             return Lowered::failed();
         }
         return Lowered::ofNumber(expr.number);

@@ -62,6 +62,10 @@ CheckedFeatures checkFeatures(Context& context, const ast::File& file, const std
 // passes Limits::maxWork. Call on a program without errors.
 void checkWork(Context& context, const Program& program);
 
+// W0206-W0208: fields and features, grammars and materials the pipeline never uses. Call on a
+// program without errors; `hasPipelineBlock` is false when the pipeline is the default one.
+void warnUnused(Context& context, const ast::File& file, const Program& program, bool hasPipelineBlock);
+
 // W0201-W0204 for one checked grammar.
 void analyseGrammar(Context& context, const CheckedGrammar& grammar);
 

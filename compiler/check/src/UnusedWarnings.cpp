@@ -1,0 +1,61 @@
+// W0206-W0208: declarations the pipeline never uses. Each is work the user wrote that has no
+// effect on the result, most often a stage left out of the pipeline or a misspelt material.
+#include "Sections.h"
+
+#include <fmt/format.h>
+
+namespace voxc::check {
+
+namespace {
+
+// Material ids anything in the program tests or writes.
+std::vector<bool> usedMaterials(const Program& program) {
+    std::vector<bool> used(256, false);
+    auto use = [&](std::optional<uint8_t> id) {
+        if (id) used[*id] = true;
+    };
+    for (const StartShape& shape : program.start) use(shape.material);
+    for (const Grammar& grammar : program.grammars)
+        for (const Rule& rule : grammar.rules) {
+            for (const SymbolCell& cell : rule.symbol)
+                for (const MaterialPredicate& predicate : cell.materialPredicates) use(predicate.material);
+            for (const TransformCell& cell : rule.transform) use(cell.material);
+        }
+    for (const Stage& stage : program.pipeline) use(stage.material);
+    return used;
+}
+
+} // namespace
+
+void warnUnused(Context& context, const ast::File& file, const Program& program, bool hasPipelineBlock) {
+    std::vector<bool> grammarRuns(program.grammars.size(), false);
+    std::vector<bool> fieldRuns(program.fields.size(), false);
+    for (const Stage& stage : program.pipeline) {
+        if (stage.kind == Stage::Kind::Grammar) grammarRuns[stage.index] = true;
+        if (stage.kind == Stage::Kind::Field) fieldRuns[stage.index] = true;
+    }
+    const std::string why = hasPipelineBlock ? "the pipeline does not name it"
+                                             : "there is no 'pipeline' block, so only the grammars run";
+    // program.fields holds the declared fields, then the features, as the pipeline indexes them.
+    for (size_t i = 0; i < program.fields.size(); ++i) {
+        if (fieldRuns[i]) continue;
+        const bool isFeature = i >= file.fields.size();
+        context.diagnostics.warning("W0206", program.fields[i].loc,
+                                    fmt::format("{} '{}' is never used: {}", isFeature ? "feature" : "field",
+                                                program.fields[i].name, why));
+    }
+    for (size_t i = 0; i < program.grammars.size(); ++i)
+        if (!grammarRuns[i])
+            context.diagnostics.warning("W0207", program.grammars[i].loc,
+                                        fmt::format("grammar '{}' is never used: the pipeline does not name it",
+                                                    program.grammars[i].name));
+    const std::vector<bool> used = usedMaterials(program);
+    for (const Material& material : program.materials)
+        if (!used[material.id])
+            context.diagnostics.warning("W0208", material.loc,
+                                        fmt::format("material '{}' is never used: no shape, rule or stage tests or "
+                                                    "writes it",
+                                                    material.name));
+}
+
+} // namespace voxc::check
