@@ -191,5 +191,28 @@ fi
 printf 'world { size = [16, 16, 16]; chunk = 8; }\nstart { fill { value = 0; } }\n' > "$work/air.vox"
 expect empty_mesh_warning 0 "warning: the mesh is empty" -- "$voxc" run "$work/air.vox" --device lavapipe -o "$work/air.ply"
 
+# compile replaces the package directory as a whole, touches nothing when its bytes would not
+# change, and never replaces a directory voxc did not write
+(cd "$work" && "$voxc" compile "$src/examples/overhang.vox" -o pkg_spelled >/dev/null 2>&1)
+stamp_before=$(find "$work/pkg_spelled" -printf '%i %T@ %p\n' | sort)
+expect compile_dot_slash_up_to_date 0 "up to date" -- bash -c 'cd "$1" && "$2" compile "$3" -o ./pkg_spelled/' _ \
+    "$work" "$voxc" "$src/examples/overhang.vox"
+expect compile_absolute_up_to_date 0 "up to date" -- "$voxc" compile "$src/examples/overhang.vox" -o "$work/pkg_spelled"
+expect_same compile_spelling_same_manifest "$work/pkg_overhang/manifest.json" "$work/pkg_spelled/manifest.json"
+if [ "$stamp_before" = "$(find "$work/pkg_spelled" -printf '%i %T@ %p\n' | sort)" ]; then
+    echo "ok   compile_up_to_date_untouched"; passed=$((passed + 1))
+else
+    echo "FAIL compile_up_to_date_untouched: inodes or mtimes changed"; failed=$((failed + 1))
+fi
+expect compile_replaces 0 "wrote" -- "$voxc" compile "$work/air.vox" -o "$work/pkg_spelled"
+if [ -e "$work/pkg_spelled/kernels/overhang_sweep0.spv" ] || compgen -G "$work/.pkg_spelled.voxc-tmp.*" >/dev/null; then
+    echo "FAIL compile_no_stale_kernels"; failed=$((failed + 1))
+else
+    echo "ok   compile_no_stale_kernels"; passed=$((passed + 1))
+fi
+mkdir "$work/notes" && printf 'mine\n' > "$work/notes/todo.txt"
+expect compile_foreign_dir 1 "not a voxc package.*todo\.txt" -- "$voxc" compile "$work/air.vox" -o "$work/notes"
+expect compile_foreign_dir_kept 0 "^mine$" -- cat "$work/notes/todo.txt"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
