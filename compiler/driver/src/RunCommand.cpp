@@ -7,6 +7,8 @@
 #include "voxc/core/Errors.h"
 #include "voxc/grid/Grid.h"
 #include "voxc/mesh/Export.h"
+#include "voxc/mesh/MarchingCubes.h"
+#include "voxc/mesh/MeshQuality.h"
 #include "voxc/mesh/SurfaceNets.h"
 #include "voxc/vulkan/Context.h"
 #include "voxc/vulkan/Executor.h"
@@ -25,6 +27,7 @@ struct RunOptions {
     std::string materialsPath;
     std::string device = "auto";
     float iso = 0.5f;
+    std::string mesher = "mc";
     bool validate = false;
     bool listDevices = false;
     WorldOverrides overrides;
@@ -37,8 +40,8 @@ void run(const RunOptions& options) {
     }
     if (options.file.empty()) throw UserError("run: a .vox file is required");
     if (options.meshPath.empty() && options.voxelsPath.empty() && options.materialsPath.empty())
-        throw UserError("run: nothing to write; give -o MESH.ply|.obj, --voxels FILE.npy and/or --materials FILE.npy");
-    if (!options.meshPath.empty()) requireExtension(options.meshPath, {".ply", ".obj"}, "mesh file");
+        throw UserError("run: nothing to write; give -o MESH.ply|.obj|.glb, --voxels FILE.npy and/or --materials FILE.npy");
+    if (!options.meshPath.empty()) requireExtension(options.meshPath, {".ply", ".obj", ".glb"}, "mesh file");
     if (!options.voxelsPath.empty()) requireExtension(options.voxelsPath, {".npy"}, "voxel file");
     if (!options.materialsPath.empty()) requireExtension(options.materialsPath, {".npy"}, "material file");
     const std::string libraryPath = options.meshPath.ends_with(".obj") ? objMaterialLibraryPath(options.meshPath) : "";
@@ -79,20 +82,22 @@ void run(const RunOptions& options) {
     std::string meshReport;
     if (!options.meshPath.empty()) {
         MeshStats stats;
-        const Mesh mesh = meshSurfaceNets(voxels, MeshOptions{.iso = options.iso}, &stats);
-        // Naive surface nets joins four faces at a saddle of the density field, so "watertight"
-        // here means closed (no boundary edge, no crack) without duplicate faces.
-        const MeshTopology topology = analyzeTopology(mesh);
-        if (!topology.closed() || topology.duplicateTriangles != 0)
-            throw InternalError(fmt::format("the mesh has {} boundary edges and {} duplicate faces",
-                                            topology.boundaryEdges, topology.duplicateTriangles));
+        const bool marchingCubes = options.mesher == "mc";
+        const MeshOptions meshOptions{.iso = options.iso};
+        const Mesh mesh = marchingCubes ? meshMarchingCubes(voxels, meshOptions, &stats) : meshSurfaceNets(voxels, meshOptions, &stats);
+        // Both meshers promise a closed mesh of finite vertices, marching cubes a manifold one too;
+        // naive surface nets may join four faces at a saddle of the field (reported, not an error).
+        const MeshQuality quality = measureMeshQuality(mesh);
+        if (quality.boundaryEdges != 0 || quality.nonFiniteVertices != 0 || quality.misorientedEdges != 0 ||
+            (marchingCubes && !quality.manifold()))
+            throw InternalError("the " + options.mesher + " mesh is broken: " + describeMeshQuality(quality));
         writeMesh(files, options.meshPath, mesh, program.materials);
         if (mesh.triangles.empty())
             std::cerr << fmt::format("voxc: warning: the mesh is empty: every voxel is on the same side of --iso {}\n", options.iso);
-        meshReport = fmt::format("wrote {}: {} vertices, {} triangles, watertight ({} non-manifold edges at saddles); "
-                                 "skipped {} of {} chunks with no surface\n",
-                                 options.meshPath, mesh.positions.size(), mesh.triangles.size() / 3,
-                                 topology.nonManifoldEdges, stats.skippedChunks, stats.chunks);
+        meshReport = fmt::format("wrote {} ({}): {}; {}; skipped {} of {} chunks with no surface\n", options.meshPath,
+                                 marchingCubes ? "marching cubes" : "surface nets", describeMeshQuality(quality),
+                                 quality.nonManifoldEdges == 0 ? "watertight" : "closed, not manifold",
+                                 stats.skippedChunks, stats.chunks);
     }
     files.commit();
     reportWritten({options.voxelsPath, options.materialsPath});
@@ -114,11 +119,13 @@ void addRunCommand(CLI::App& app) {
         app.add_subcommand("run", "Compile a .vox file, run it with Vulkan, mesh the result and export it "
                                   "(with material names and colours)");
     command->add_option("file", options->file, "The .vox file");
-    command->add_option("-o,--output", options->meshPath, "Mesh to write (.ply binary or .obj)");
+    command->add_option("-o,--output", options->meshPath, "Mesh to write (.ply binary, .obj or .glb)");
     command->add_option("--voxels", options->voxelsPath, "Also write the densities as a NumPy .npy file (float32)");
     command->add_option("--materials", options->materialsPath, "Also write the material ids as a NumPy .npy file (uint8)");
     command->add_option("--device", options->device, "auto (default: a GPU if present), lavapipe, gpu, or an index");
     command->add_option("--iso", options->iso, "Surface level for meshing (default 0.5)");
+    command->add_option("--mesher", options->mesher, "mc (marching cubes, manifold; the default) or surface-nets")
+        ->check(CLI::IsMember({"mc", "surface-nets"}));
     command->add_flag("--validate", options->validate, "Enable the Khronos validation layer; fail on any message");
     command->add_flag("--list-devices", options->listDevices, "List Vulkan devices and exit");
     addWorldOverrideFlags(*command, options->overrides);
