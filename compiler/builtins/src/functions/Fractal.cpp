@@ -12,14 +12,17 @@ int32_t octaveCount(int32_t octaves) { return std::min(std::max(octaves, 1), kMa
 
 glm::vec3 scaled(glm::vec3 p, float s) { return {p.x * s, p.y * s, p.z * s}; }
 
-// The three fractals share the octave loop; `Fold` turns an octave's noise into its term.
+// The three fractals share the octave loop; `Fold` turns an octave's noise into its term. The
+// sum starts at the first octave's term, not at 0 + term: that addition turns -0 into +0, and a
+// device may drop an addition of the constant 0 (lavapipe does), keeping -0.
 template <typename Fold>
 float octaveSum(glm::vec3 p, int32_t octaves, float lacunarity, float gain, uint32_t seed, Fold fold) {
     float sum = 0.0f, amplitude = 1.0f, frequency = 1.0f;
     const int32_t count = octaveCount(octaves);
     for (int32_t k = 0; k < count; ++k) {
         const float n = perlin3(scaled(p, frequency), substream(seed, uint32_t(k)));
-        sum = sum + amplitude * fold(n);
+        const float weighted = amplitude * fold(n);
+        sum = k == 0 ? weighted : sum + weighted;
         amplitude = amplitude * gain;
         frequency = frequency * lacunarity;
     }

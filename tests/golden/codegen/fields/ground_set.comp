@@ -283,7 +283,8 @@ float noiseOctaveSum(vec3 p, int octaves, float lacunarity, float gain, uint see
             weight = min(max(s * 2.0, 0.0), 1.0);
             term = s;
         }
-        sum = sum + amplitude * term;
+        precise float weighted = amplitude * term;
+        sum = k == 0 ? weighted : sum + weighted; // not 0 + term, which a driver may fold to term
         amplitude = amplitude * gain;
         frequency = frequency * lacunarity;
     }
