@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cfloat>
 #include <cmath>
 #include <map>
 #include <random>
@@ -151,6 +152,36 @@ TEST(builtins_Intervals, EveryRuleIsConservativeUnderSampling) {
         EXPECT_GT(bounded, 0) << info.name << " never gives a bounded interval";
     }
     EXPECT_GT(exactResults, 0); // the exact paths ran
+}
+
+// Point arguments at the float's special values (docs/language.md, "Non-finite values"): where
+// the record's result is NaN the rule must have given up, elsewhere the result lies inside (and
+// is the exact float where the rule says so). NaN itself has no interval, so it is not drawn.
+TEST(builtins_Intervals, EveryRuleHoldsAtInfinitiesAndTheFloatLimits) {
+    const float specials[] = {INFINITY, -INFINITY, FLT_MAX, -FLT_MAX, 0.0f, -0.0f, 1.0f, -2.0f, 0.5f, 1e30f, -3e38f};
+    Sampler sampler;
+    for (const FunctionInfo& info : functions()) {
+        const RangeRule rule = rangeRule(info.name);
+        if (!rule) continue;
+        for (const std::vector<Type>& signature : overloads(info)) {
+            for (int trial = 0; trial < 300; ++trial) {
+                std::vector<Interval> boxes;
+                for (Type t : signature) {
+                    Interval box = sampler.interval(t, 4.0f);
+                    if (t == T::Float || t == T::Vec2 || t == T::Vec3) {
+                        for (int c = 0; c < components(t); ++c)
+                            box.lo[c] = box.hi[c] = specials[sampler.integer(0, int(std::size(specials)) - 1)];
+                        box.exact = true;
+                    }
+                    boxes.push_back(box);
+                }
+                std::vector<Value> args;
+                for (const Interval& box : boxes) args.push_back(sampler.value(box));
+                const std::string error = outside(rule(boxes), info.eval(args));
+                ASSERT_TRUE(error.empty()) << info.name << describe(boxes) << ": " << error;
+            }
+        }
+    }
 }
 
 Interval f(double lo, double hi) { return {T::Float, {lo, 0, 0}, {hi, 0, 0}, false}; }

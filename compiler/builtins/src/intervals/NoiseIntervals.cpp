@@ -37,8 +37,11 @@ bool finitePoint(const Interval& p) { return p.type == Type::Vec3 && finite(p); 
 Interval perlinRule(std::span<const Interval> a) {
     return finitePoint(a[0]) ? symmetric(kPerlinBound + kNoiseSlack) : Interval::unknown(Type::Float);
 }
+// The skew (p.x + p.y + p.z) / 3 added to a coordinate overflows, giving NaN, only past a
+// quarter of the float range.
 Interval simplexRule(std::span<const Interval> a) {
-    return finitePoint(a[0]) ? symmetric(kSimplexBound + kNoiseSlack) : Interval::unknown(Type::Float);
+    const bool skewFits = finitePoint(a[0]) && maxAbs(a[0]) * 4 < kFloatMax;
+    return skewFits ? symmetric(kSimplexBound + kNoiseSlack) : Interval::unknown(Type::Float);
 }
 Interval valueRule(std::span<const Interval> a) { // lattice values in [-1, 1), interpolated
     return finitePoint(a[0]) ? symmetric(1.0 + kNoiseSlack) : Interval::unknown(Type::Float);
