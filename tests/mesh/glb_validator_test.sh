@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Every .glb voxc writes passes the Khronos validator and loads in three.js (check_glb.mjs): the
+# fixtures of spec G1 and every example run through `voxc run` with both meshers. A missing
+# node or missing Node tools fail the test (scripts/install-node-tools.sh installs them).
+# Usage: glb_validator_test.sh VOXC_GLB_FIXTURES VOXC SOURCE_DIR
+set -uo pipefail
+fixtures=$1 voxc=$2 src=$3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+check() { node "$src/tests/mesh/check_glb.mjs" "$src/.node-tools" "$@"; }
+command -v node >/dev/null || { echo "FAIL node is missing (scripts/install-deps.sh installs it)"; exit 1; }
+failed=0
+
+"$fixtures" "$work/fixtures" || { echo "FAIL writing the fixtures"; exit 1; }
+check "$work"/fixtures/*.glb || failed=1
+# The checker must reject a file with a wrong bound, or it is not looking.
+if check "$work"/fixtures/bad/wrong_bounds.glb >"$work/bad.log" 2>&1; then
+    echo "FAIL the checker accepted a file with a wrong POSITION bound"; failed=1
+elif grep -q "ACCESSOR_MAX_MISMATCH" "$work/bad.log"; then
+    echo "ok   the checker rejects a wrong POSITION bound (ACCESSOR_MAX_MISMATCH)"
+else
+    echo "FAIL the checker failed on the wrong bound for another reason:"; cat "$work/bad.log"; failed=1
+fi
+
+for example in "$src"/examples/*.vox; do
+    name=$(basename "$example" .vox)
+    for mesher in mc surface-nets; do
+        if ! "$voxc" run "$example" --device lavapipe --mesher "$mesher" -o "$work/${name}_$mesher.glb" 2>"$work/run.log"; then
+            echo "FAIL voxc run $name --mesher $mesher"; cat "$work/run.log"; failed=1
+        fi
+    done
+done
+check "$work"/*.glb || failed=1
+exit $failed
