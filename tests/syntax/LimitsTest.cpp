@@ -119,6 +119,21 @@ TEST(syntax_Limits, LongOperatorChainsAreBoundedByDepth) {
     EXPECT_EQ(errors[0].loc.column, 11u);
 }
 
+// Garbage stops the parse once the errors pass the cap (the lexer would otherwise raise one
+// exception per byte): the first 20 errors and the "too many errors" line.
+TEST(syntax_Limits, GarbageStopsAtTheErrorCap) {
+    for (const std::string& garbage : {repeat("@", 100000), repeat("] ", 100000)}) {
+        std::vector<Diagnostic> errors = parseErrors(garbage);
+        ASSERT_FALSE(errors.empty());
+        EXPECT_EQ(errors.front().code, "E0001");
+        EXPECT_EQ(errors.front().loc.column, 1u);
+        if (garbage[0] == '@') {
+            ASSERT_EQ(errors.size(), size_t(Diagnostics::kMaxErrors) + 1);
+            EXPECT_EQ(errors.back().code, "");
+        }
+    }
+}
+
 TEST(syntax_Limits, ACustomLimitApplies) {
     Diagnostics diagnostics;
     parse(SourceFile("t.vox", parens(9).text), diagnostics, 13);

@@ -18,6 +18,12 @@ namespace voxc {
 
 namespace {
 
+// Thrown to abandon a parse once more errors than Diagnostics shows have been found: the rest
+// would be dropped anyway, and a file of garbage would otherwise cost an exception per byte.
+struct TooManyErrors {};
+
+bool errorsFull(const Diagnostics& diagnostics) { return diagnostics.errorCount() >= Diagnostics::kMaxErrors; }
+
 // Routes the lexer's "no token matches here" errors into the diagnostics.
 class ReportingLexer : public grammar::VoxcLexer {
 public:
@@ -25,7 +31,9 @@ public:
         : grammar::VoxcLexer(input), diagnostics_(diagnostics) {}
 
     void notifyListeners(const antlr4::LexerNoViableAltException&) override {
-        reportUnexpectedCharacter(*this, diagnostics_);
+        const bool full = errorsFull(diagnostics_);
+        reportUnexpectedCharacter(*this, diagnostics_); // past the cap: adds the "too many errors" line
+        if (full) throw TooManyErrors{};
     }
 
 private:
@@ -58,6 +66,16 @@ class DepthLimitedParser : public grammar::VoxcParser {
 public:
     DepthLimitedParser(antlr4::TokenStream* tokens, uint32_t maxNesting, Diagnostics& diagnostics)
         : grammar::VoxcParser(tokens), maxNesting_(maxNesting), diagnostics_(diagnostics) {}
+
+    // Recovery keeps reporting to the end of the file; past the cap nothing more is shown.
+    antlr4::Token* consume() override {
+        if (errorsFull(diagnostics_)) {
+            const antlr4::Token* at = getCurrentToken();
+            diagnostics_.error("E0001", at ? tokenLoc(*at) : SourceLoc{}, "too many syntax errors");
+            throw TooManyErrors{};
+        }
+        return grammar::VoxcParser::consume();
+    }
 
     using grammar::VoxcParser::enterRecursionRule;
     void enterRule(antlr4::ParserRuleContext* ctx, size_t state, size_t ruleIndex) override {
@@ -150,6 +168,8 @@ ast::File parseReporting(const SourceFile& source, Diagnostics& diagnostics, uin
     try {
         tree = parser.file();
     } catch (const NestingTooDeep&) {
+        return {};
+    } catch (const TooManyErrors&) {
         return {};
     }
     tokens.fill();
