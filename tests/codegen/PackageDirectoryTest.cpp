@@ -5,6 +5,7 @@
 #include "voxc/codegen/Codegen.h"
 #include "voxc/codegen/PackageWriter.h"
 #include "voxc/core/Errors.h"
+#include "voxc/core/TempFiles.h"
 
 #include <atomic>
 #include <csignal>
@@ -115,6 +116,7 @@ TEST_F(codegen_PackageDirectory, ReplacingRemovesStaleKernels) {
     EXPECT_EQ(readTree(pkg), packageFiles(smallerPackage(), kSource));
     EXPECT_FALSE(fs::exists(pkg / "kernels/smooth_sweep0.spv"));
     EXPECT_TRUE(siblingsOf("pkg").empty()); // the old package and the temp directory are gone
+    EXPECT_EQ(cleanupEntriesInUse(), 0);
 }
 
 TEST_F(codegen_PackageDirectory, EqualBytesLeaveTheDirectoryUntouched) {
@@ -211,6 +213,28 @@ TEST_F(codegen_PackageDirectory, AFailedWriteLeavesTheOldPackage) {
     std::signal(SIGXFSZ, previousHandler);
 
     EXPECT_NE(message.find("cannot write package"), std::string::npos) << message;
+    EXPECT_EQ(readTree(pkg), before);
+    EXPECT_TRUE(siblingsOf("pkg").empty());
+}
+
+// Ctrl-C in the middle of writing the new package (raised from the file size limit's signal, so
+// it lands inside a write, not at a chosen line) removes the temp directory; the old package stays.
+TEST_F(codegen_PackageDirectory, SigintDuringTheWriteRemovesTheTempDirectory) {
+    const fs::path pkg = root_ / "pkg";
+    writePackage(smallerPackage(), pkg.string(), kSource);
+    const Tree before = readTree(pkg);
+    EXPECT_EXIT(
+        {
+            installTempFileCleanup();
+            std::signal(SIGXFSZ, [](int) { ::raise(SIGINT); });
+            struct rlimit small {};
+            ::getrlimit(RLIMIT_FSIZE, &small);
+            small.rlim_cur = 4096;
+            ::setrlimit(RLIMIT_FSIZE, &small);
+            writePackage(samplePackage(), pkg.string(), kSource);
+            std::exit(0);
+        },
+        testing::KilledBySignal(SIGINT), "");
     EXPECT_EQ(readTree(pkg), before);
     EXPECT_TRUE(siblingsOf("pkg").empty());
 }

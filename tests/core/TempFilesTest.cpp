@@ -110,6 +110,29 @@ TEST(core_TempFilesDeathTest, inactiveEntryIsLeftAlone) {
     EXPECT_EQ(readFile(dir + "someone_elses.tmp"), "not voxc's");
 }
 
+// A temp directory (a package being built) goes with everything in it, however many files; the
+// directory beside it stays.
+TEST(core_TempFilesDeathTest, treeEntryRemovesTheDirectoryAndItsFiles) {
+    const std::string dir = freshDir("tree");
+    fs::create_directories(dir + "pkg.tmp/kernels/deeper");
+    for (int i = 0; i < 300; ++i) putFile(dir + "pkg.tmp/kernels/k" + std::to_string(i) + ".spv", "spirv");
+    putFile(dir + "pkg.tmp/manifest.json", "{}");
+    putFile(dir + "pkg.tmp/kernels/deeper/x", "x");
+    fs::create_directories(dir + "pkg");
+    putFile(dir + "pkg/manifest.json", "the old package");
+    EXPECT_EXIT(
+        {
+            installTempFileCleanup();
+            CleanupEntry entry(dir + "pkg.tmp");
+            entry.removeTreeOnSignal();
+            ::raise(SIGTERM);
+        },
+        testing::KilledBySignal(SIGTERM), "");
+    EXPECT_FALSE(fs::exists(dir + "pkg.tmp"));
+    EXPECT_EQ(readFile(dir + "pkg/manifest.json"), "the old package");
+    EXPECT_EQ(entriesIn(dir), 1u);
+}
+
 // `nohup voxc ...`: a signal ignored at start stays ignored, so the process lives on.
 TEST(core_TempFilesDeathTest, ignoredSignalStaysIgnored) {
     EXPECT_EXIT(

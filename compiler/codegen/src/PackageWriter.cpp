@@ -5,6 +5,7 @@
 
 #include "ExistingPackage.h"
 #include "voxc/core/Errors.h"
+#include "voxc/core/TempFiles.h"
 
 #include <cerrno>
 #include <csignal>
@@ -167,6 +168,10 @@ PackageWrite writePackage(const KernelPackage& package, const std::string& dirNa
     if (error) fail(dir, fmt::format("cannot create {}: {}", dir.parent_path().string(), error.message()));
     removeAbandonedTempDirectories(dir);
     const fs::path temp = createTempSibling(dir);
+    // Ctrl-C while the package is built or swapped removes the temp directory (after a swap it
+    // holds the old package, which goes anyway).
+    CleanupEntry cleanup(temp.string());
+    cleanup.removeTreeOnSignal();
     try {
         writeTree(dir, temp, files);
         if (!existing) {

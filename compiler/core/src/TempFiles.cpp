@@ -5,8 +5,11 @@
 #include <array>
 #include <atomic>
 #include <climits>
+#include <cerrno>
 #include <csignal>
 #include <cstring>
+#include <dirent.h>
+#include <fcntl.h>
 #include <filesystem>
 #include <fmt/format.h>
 #include <mutex>
@@ -16,7 +19,7 @@ namespace voxc {
 
 namespace {
 
-enum SlotState : int { kFree, kIgnore, kRemove, kRestore };
+enum SlotState : int { kFree, kIgnore, kRemove, kRestore, kRemoveTree };
 
 struct Slot {
     std::atomic<int> state{kFree};
@@ -28,14 +31,47 @@ static_assert(std::atomic<int>::is_always_lock_free, "the signal handler reads s
 
 // More than voxc ever has in flight: a commit of N files holds at most 2N entries.
 constexpr int kSlots = 64;
+// Subdirectory levels below a kRemoveTree directory that the handler removes (a package has one).
+constexpr int kMaxTreeDepth = 4;
 std::array<Slot, kSlots> slots;
 
 constexpr int kCleanupSignals[] = {SIGINT, SIGTERM, SIGHUP};
+
+// Removes the directory `name` (relative to `parentFd`) and everything in it, at most `depth`
+// levels of subdirectories, with async-signal-safe calls only (openat, getdents64, unlinkat,
+// lseek, close) and no allocation. Each pass rereads the directory from its start, because
+// entries unlinked while it is being read may make the read skip others.
+void removeTree(int parentFd, const char* name, int depth) {
+    const int fd = ::openat(parentFd, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    if (fd < 0) return;
+    alignas(dirent64) char buffer[2048];
+    for (bool removed = true; removed;) {
+        removed = false;
+        ::lseek(fd, 0, SEEK_SET);
+        for (ssize_t n; (n = ::getdents64(fd, buffer, sizeof buffer)) > 0;) {
+            for (ssize_t at = 0; at < n;) {
+                const auto* entry = reinterpret_cast<const dirent64*>(buffer + at);
+                at += entry->d_reclen;
+                const char* child = entry->d_name;
+                if (child[0] == '.' && (child[1] == 0 || (child[1] == '.' && child[2] == 0))) continue;
+                if (::unlinkat(fd, child, 0) == 0) {
+                    removed = true;
+                } else if (errno == EISDIR && depth > 0) {
+                    removeTree(fd, child, depth - 1);
+                    removed = true;
+                }
+            }
+        }
+    }
+    ::close(fd);
+    ::unlinkat(parentFd, name, AT_REMOVEDIR);
+}
 
 extern "C" void cleanUpAndDie(int signal) {
     for (Slot& slot : slots) {
         switch (slot.state.load(std::memory_order_acquire)) {
         case kRemove: ::unlink(slot.path); break;
+        case kRemoveTree: removeTree(AT_FDCWD, slot.path, kMaxTreeDepth); break;
         case kRestore:
             ::rename(slot.path, slot.target);
             ::unlink(slot.path);
@@ -116,6 +152,11 @@ void CleanupEntry::restoreOnSignal(const std::string& target) {
     VOXC_ASSERT(slot.state.load() != kRestore);
     copyPath(slot.target, std::filesystem::absolute(target).string());
     slot.state.store(kRestore, std::memory_order_release);
+}
+
+void CleanupEntry::removeTreeOnSignal() {
+    VOXC_ASSERT(slot_ >= 0);
+    slots[size_t(slot_)].state.store(kRemoveTree, std::memory_order_release);
 }
 
 void CleanupEntry::ignoreOnSignal() {

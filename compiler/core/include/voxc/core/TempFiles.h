@@ -34,6 +34,9 @@ public:
     // On a signal: rename the path (a backup) over `target`, then unlink the path (in case both
     // were links to one file, where rename does nothing).
     void restoreOnSignal(const std::string& target);
+    // On a signal: remove the path, a temp directory, and everything in it (up to four levels of
+    // subdirectories; `voxc compile` builds its package in one).
+    void removeTreeOnSignal();
     // On a signal: nothing.
     void ignoreOnSignal();
 
