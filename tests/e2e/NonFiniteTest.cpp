@@ -4,6 +4,7 @@
 // here every density must be finite and both backends must count the same replacements per
 // stage, through the staging path and without tile skipping too.
 #include "GridCompare.h"
+#include "NonFiniteReport.h"
 #include "voxc/check/Check.h"
 #include "voxc/codegen/Codegen.h"
 #include "voxc/interp/Interpreter.h"
@@ -13,6 +14,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace voxc {
@@ -99,6 +101,35 @@ TEST(NonFinite, VulkanCountsWhatTheInterpreterCounts) {
             if (cpu.count) EXPECT_EQ(result.nonFinite[s].firstIndex, cpu.firstIndex);
         }
     }
+}
+
+// `voxc interp` and `voxc run` print the same warning lines: one per stage with replacements,
+// located at the stage and naming it, with the count.
+TEST(NonFinite, InterpAndRunReportTheSameWarnings) {
+    const Program program = nonFiniteCase();
+    std::vector<NonFiniteCount> counts;
+    interpret(program, InterpOptions{.nonFinite = &counts});
+    std::vector<SourceLoc> pipelineLocs;
+    for (const Stage& stage : program.pipeline) pipelineLocs.push_back(stage.loc);
+    const std::string interpLines = driver::formatNonFiniteWarnings(program, "nonfinite.vox", pipelineLocs, counts);
+
+    const KernelPackage package = codegen::compileProgram(program, {});
+    VulkanExecutor executor(lavapipe(), package);
+    const RunResult result = executor.run();
+    std::vector<SourceLoc> packageLocs;
+    for (const StagePlan& stage : package.stages) packageLocs.push_back(stage.loc);
+    EXPECT_EQ(driver::formatNonFiniteWarnings(program, "nonfinite.vox", packageLocs, result.nonFinite), interpLines);
+
+    const Stage& pole = program.pipeline[fieldStage(program, "pole")];
+    const glm::ivec3 size = program.world.size;
+    EXPECT_NE(interpLines.find(fmt::format("nonfinite.vox:{}:{}: warning: stage `union pole`: {} non-finite densities",
+                                           pole.loc.line, pole.loc.column, uint64_t(size.x) * size.y * size.z)),
+              std::string::npos)
+        << interpLines;
+    size_t lines = 0;
+    for (const NonFiniteCount& count : counts) lines += count.count > 0;
+    EXPECT_EQ(size_t(std::count(interpLines.begin(), interpLines.end(), '\n')), lines);
+    EXPECT_EQ(interpLines.find("slope"), std::string::npos); // no replacement, no line
 }
 
 // The counters restart with every run of an executor.
