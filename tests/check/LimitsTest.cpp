@@ -121,6 +121,7 @@ TEST(check_Limits, NumbersBeyondTheRangeAreE0007Everywhere) {
         {"sphere radius", kWorld + "start { sphere { center = [4, 4, 4]; radius = 1e400; } }\n", 2, 47},
         {"grammar cell", test::oneRule("[1, 1, 1]", "[GEQ 1e999]", "[SET 1]"), 7, 19},
         {"cell beyond float", test::oneRule("[1, 1, 1]", "[GEQ 1e39]", "[SET 1]"), 7, 19},
+        {"clamp bound", test::oneRule("[1, 1, 1]", "[GEQ 0.5]", "[SET 1]", "", "clamp = [-1e39, 1];"), 3, 10},
         {"field literal", kWorld + "field f = x + 1e400;\n", 2, 15},
         {"field beyond float", kWorld + "field f = x + 1e39;\n", 2, 11},
         {"field folded", kWorld + "field f = x + 1e300 * 1e300;\n", 2, 15},

@@ -161,6 +161,14 @@ std::optional<std::array<double, 2>> readRange(Context& context, const ast::Assi
     auto lo = scalar(context, a, (*elements)[0], "a number");
     auto hi = scalar(context, a, (*elements)[1], "a number");
     if (!lo || !hi) return std::nullopt;
+    // The bounds are stored as floats; one beyond the float range would become an infinity.
+    for (size_t i = 0; i < 2; ++i) {
+        const double v = i == 0 ? *lo : *hi;
+        if (std::fabs(v) <= double(std::numeric_limits<float>::max())) continue;
+        context.diagnostics.error("E0007", (*elements)[i].loc,
+                                  fmt::format("'{}' bound {} does not fit in a 32-bit float", a.key, formatNumber(v)));
+        return std::nullopt;
+    }
     if (*lo > *hi) {
         context.diagnostics.error("E0007", a.value.loc,
                                   fmt::format("'{}' is empty: low {} is greater than high {}", a.key,

@@ -55,7 +55,7 @@ std::optional<int64_t> readInteger(Context& context, const ast::Assignment& a, i
 std::optional<std::array<double, 3>> readNumberVec3(Context& context, const ast::Assignment& a, double min,
                                                     double max);
 std::optional<glm::ivec3> readIntegerVec3(Context& context, const ast::Assignment& a, int64_t min, int64_t max);
-// `[lo, hi]` of numbers with lo <= hi.
+// `[lo, hi]` of numbers with lo <= hi, each within the float range.
 std::optional<std::array<double, 2>> readRange(Context& context, const ast::Assignment& a);
 // `[[x, y, z], [x, y, z]]` of integers.
 std::optional<std::array<glm::ivec3, 2>> readBox(Context& context, const ast::Assignment& a);
