@@ -112,11 +112,14 @@ TEST_F(codegen_PackageDirectory, ReplacingRemovesStaleKernels) {
     const fs::path pkg = root_ / "pkg";
     EXPECT_EQ(writePackage(samplePackage(), pkg.string(), kSource), PackageWrite::Created);
     ASSERT_TRUE(fs::exists(pkg / "kernels/smooth_sweep0.spv"));
+    const fs::perms groupOnly = fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec;
+    fs::permissions(pkg, groupOnly);
     EXPECT_EQ(writePackage(smallerPackage(), pkg.string(), kSource), PackageWrite::Replaced);
     EXPECT_EQ(readTree(pkg), packageFiles(smallerPackage(), kSource));
     EXPECT_FALSE(fs::exists(pkg / "kernels/smooth_sweep0.spv"));
     EXPECT_TRUE(siblingsOf("pkg").empty()); // the old package and the temp directory are gone
     EXPECT_EQ(cleanupEntriesInUse(), 0);
+    EXPECT_EQ(fs::status(pkg).permissions(), groupOnly); // the directory's permissions are kept
 }
 
 TEST_F(codegen_PackageDirectory, EqualBytesLeaveTheDirectoryUntouched) {

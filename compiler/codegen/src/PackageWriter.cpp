@@ -168,11 +168,12 @@ PackageWrite writePackage(const KernelPackage& package, const std::string& dirNa
     if (error) fail(dir, fmt::format("cannot create {}: {}", dir.parent_path().string(), error.message()));
     removeAbandonedTempDirectories(dir);
     const fs::path temp = createTempSibling(dir);
-    // Ctrl-C while the package is built or swapped removes the temp directory (after a swap it
-    // holds the old package, which goes anyway).
-    CleanupEntry cleanup(temp.string());
-    cleanup.removeTreeOnSignal();
+    CleanupEntry cleanup;
     try {
+        // Ctrl-C while the package is built or swapped removes the temp directory (after a swap
+        // it holds the old package, which goes anyway).
+        cleanup = CleanupEntry(temp.string());
+        cleanup.removeTreeOnSignal();
         writeTree(dir, temp, files);
         if (!existing) {
             if (renameIntoPlace(dir, temp)) {
@@ -181,6 +182,9 @@ PackageWrite writePackage(const KernelPackage& package, const std::string& dirNa
             }
             existingPackage(dir); // refuses a foreign directory that appeared meanwhile
         }
+        // The new package keeps the directory's permissions (a user may have opened it to a group).
+        std::error_code ignored;
+        fs::permissions(temp, fs::status(dir, ignored).permissions(), ignored);
         exchangeIntoPlace(dir, temp);
         syncDirectory(dir.parent_path());
         return PackageWrite::Replaced;
