@@ -1,8 +1,10 @@
 #pragma once
 // The checker: source text -> voxc::Program, or located diagnostics saying why not.
-// It reads the file, parses it (syntax errors stop here), folds constants, validates every
-// block and key, converts printed symbol/transform layouts into Program's cell order,
-// builds the pipeline and finally runs the warning analyses (W0201-W0204).
+// It reads the file (at most Limits::maxSourceBytes), parses it (syntax errors and nesting
+// beyond Limits::maxNesting stop here), folds constants, validates every block and key,
+// converts printed symbol/transform layouts into Program's cell order, builds the pipeline,
+// checks its work estimate against Limits::maxWork and finally runs the warning analyses
+// (W0201-W0208).
 #include "voxc/program/Program.h"
 #include "voxc/syntax/Diagnostics.h"
 #include "voxc/syntax/SourceFile.h"
