@@ -11,9 +11,8 @@ struct Mesh {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;   // unit length, one per position, pointing from solid to air
     std::vector<uint32_t> triangles;  // three indices per triangle, counter-clockwise seen from outside
-    // Material ids (voxc::Material; 0 = none). A vertex takes the most common material among the
-    // solid corners of its cell (ties: the lowest id); a triangle takes the material of the solid
-    // voxel of the grid edge its quad crosses. Same length as positions / triangles.size() / 3.
+    // Material ids (voxc::Material; 0 = none), read from solid voxels by the mesher's rules
+    // (MarchingCubes.h; surface nets: docs/architecture.md). Same length as positions / triangles.size() / 3.
     std::vector<uint8_t> vertexMaterials;
     std::vector<uint8_t> triangleMaterials;
 };
