@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 #include <tuple>
 
 using namespace voxc;
@@ -224,4 +225,32 @@ TEST(vulkan_DispatchPlan, FieldBoxesDispatchOneByOneAndCarryTheirConstant) {
     KernelPackage gap = package;
     gap.stages.back().fieldBoxes.pop_back();
     EXPECT_THROW(validatePackage(gap), InternalError);
+}
+
+// The executor copies a stage's non-finite counts out where the stage's dispatches end, so every
+// dispatch names its stage, and the stages come in plan order (InvalidateRanges included).
+TEST(vulkan_DispatchPlan, EveryDispatchNamesItsStageInPlanOrder) {
+    const World world = makeWorld({20, 12, 9}, {-37, -5, -100}, 8);
+    TestGrammar grammar;
+    grammar.iterations = 2;
+    grammar.sweeps = {{TestKernel::AddOne, {1, 2, 1}}};
+    KernelPackage package = makePackage(world, true, {grammar});
+    StagePlan field;
+    field.kind = Stage::Kind::Field;
+    field.fieldKernel = package.stages[0].startKernel;
+    field.fieldMode = FieldMode::Union;
+    package.stages.push_back(field);
+    validatePackage(package);
+    for (int32_t tileShift : {-1, 3}) {
+        DispatchCursor cursor(package, kNoLimit, tileShift);
+        std::vector<uint32_t> stages;
+        Dispatch d;
+        while (cursor.next(d)) stages.push_back(d.stage);
+        ASSERT_FALSE(stages.empty());
+        EXPECT_TRUE(std::is_sorted(stages.begin(), stages.end()));
+        // start, grammar, field: each has dispatches of its own, except that the test grammar has no
+        // active-tiles kernel, so skipping tiles leaves its sweep out.
+        const std::set<uint32_t> expected = tileShift < 0 ? std::set<uint32_t>{0, 1, 2} : std::set<uint32_t>{0, 2};
+        EXPECT_EQ(std::set<uint32_t>(stages.begin(), stages.end()), expected);
+    }
 }
