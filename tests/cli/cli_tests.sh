@@ -55,6 +55,18 @@ expect empty 1 "empty\.vox.*error E0009" -- "$voxc" check "$work/empty.vox"
 expect missing 1 "nope\.vox.*E0100" -- "$voxc" check "$work/nope.vox"
 expect missing_run 1 "E0100" -- "$voxc" run "$work/nope.vox" -o "$work/nope.ply"
 expect_no_file no_partial_mesh "$work/nope.ply"
+# limits: an endless device stops at the source cap; a pipeline past the work budget fails at the
+# stage, and --max-work raises the budget (docs/language.md, "Limits")
+expect dev_zero 1 "E0012.*larger than the limit" -- "$voxc" check /dev/zero
+{
+    printf 'world { size = [16, 16, 16]; }\ngrammar g {\n  iterations = 100000;\n'
+    printf '  rule r { size = [1, 1, 1]; symbol { [GEQ 0.5] } transform { [SET 1] } }\n}\npipeline {\n  start;\n'
+    for _ in $(seq 300); do printf '  g;\n'; done
+    printf '}\n'
+} > "$work/busy.vox"
+expect over_budget 1 "busy\.vox:[0-9]+:3: error E0012.*--max-work" -- "$voxc" check "$work/busy.vox"
+expect max_work_raises 0 "ok" -- "$voxc" check --max-work 1e14 "$work/busy.vox"
+expect max_work_lowers 1 "E0012" -- "$voxc" interp --max-work 1000 "$src/examples/overhang.vox"
 expect bad_chunk 1 "power of two" -- "$voxc" run "$src/examples/overhang.vox" --chunk 12 -o "$work/x.ply"
 expect bad_mesh_ext 1 "must end in" -- "$voxc" run "$src/examples/overhang.vox" -o "$work/x.stl"
 expect bad_slice 1 "slice" -- "$voxc" interp "$src/examples/overhang.vox" --slice q=3
