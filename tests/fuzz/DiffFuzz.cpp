@@ -5,7 +5,9 @@
 //   voxc_diff_fuzz [--seed S] [--programs N] [--seconds T] [--out DIR] [--verbose] [FILE.vox ...]
 //
 // Program i of a run is generated from seed S + i. Files given on the command line are compared
-// instead of generated programs. A program that differs, or that the checker accepted but voxc
+// instead of generated programs; a file whose text holds `voxc_diff_fuzz tolerance: T` (in a
+// comment) is compared within T, the documented tolerance of the records it calls, instead of bit
+// for bit (NaN must still meet NaN). A program that differs, or that the checker accepted but voxc
 // then failed on, is written to DIR (default diff-findings/) and makes the exit status 1; so does
 // a run where the checker rejected more than half the generated programs (the generator would be
 // testing nothing). Programs the checker rejects are counted, not compared.
@@ -19,6 +21,8 @@
 #include "voxc/vulkan/Executor.h"
 
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fmt/format.h>
@@ -26,6 +30,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace {
@@ -43,8 +48,13 @@ struct Tally {
     uint64_t compared = 0, rejected = 0, findings = 0, voxels = 0, solidVoxels = 0;
 };
 
-// The first few voxels where the two grids differ, or nothing when they agree bit for bit.
-std::optional<std::string> differences(const voxc::DenseGrid& expected, const voxc::DenseGrid& actual) {
+bool sameDensity(float a, float b, float tolerance) {
+    if (tolerance == 0.0f || std::isnan(a) || std::isnan(b)) return std::memcmp(&a, &b, sizeof a) == 0;
+    return std::fabs(a - b) <= tolerance;
+}
+
+// The first few voxels where the two grids differ, or nothing when they agree.
+std::optional<std::string> differences(const voxc::DenseGrid& expected, const voxc::DenseGrid& actual, float tolerance) {
     if (expected.size() != actual.size()) return "grid sizes differ";
     std::string report;
     size_t count = 0;
@@ -54,7 +64,7 @@ std::optional<std::string> differences(const voxc::DenseGrid& expected, const vo
             for (int x = 0; x < size.x; ++x) {
                 const float a = expected.at({x, y, z}), b = actual.at({x, y, z});
                 const int ma = expected.materialAt({x, y, z}), mb = actual.materialAt({x, y, z});
-                if (std::memcmp(&a, &b, sizeof a) == 0 && ma == mb) continue;
+                if (sameDensity(a, b, tolerance) && ma == mb) continue;
                 if (count++ < 5)
                     report += fmt::format("  voxel ({},{},{}): interpreter {} (material {}), vulkan {} (material {})\n", x,
                                           y, z, a, ma, b, mb);
@@ -66,6 +76,13 @@ std::optional<std::string> differences(const voxc::DenseGrid& expected, const vo
 voxc::VulkanContext& lavapipe() {
     static voxc::VulkanContext context(voxc::ContextOptions{.device = "lavapipe"});
     return context;
+}
+
+// `voxc_diff_fuzz tolerance: T` in the text, or 0 (bit for bit).
+float declaredTolerance(const std::string& text) {
+    constexpr std::string_view kKey = "voxc_diff_fuzz tolerance:";
+    const size_t at = text.find(kKey);
+    return at == std::string::npos ? 0.0f : std::stof(text.substr(at + kKey.size()));
 }
 
 // Checks, runs and compares one program; returns what went wrong, if anything.
@@ -83,7 +100,7 @@ std::optional<std::string> compare(const std::string& name, const std::string& t
         ++tally.compared;
         tally.voxels += expected.data().size();
         for (float density : expected.data()) tally.solidVoxels += density >= 0.5f;
-        return differences(expected, actual);
+        return differences(expected, actual, declaredTolerance(text));
     } catch (const voxc::UserError& error) {
         // A limit of the run (a work budget, a device limit) rather than a disagreement.
         ++tally.rejected;
@@ -121,6 +138,7 @@ void recordFinding(const Options& options, const std::string& name, const std::s
     const std::filesystem::path path = options.out / std::filesystem::path(name).filename();
     std::ofstream(path) << "// voxc_diff_fuzz finding: " << what.substr(0, what.find('\n')) << "\n" << text;
     fmt::print("FINDING {}: {}  program written to {}\n", name, what, path.string());
+    std::fflush(stdout);
 }
 
 } // namespace
