@@ -143,6 +143,19 @@ TEST_F(codegen_Package, ManifestDescribesKernelsAndDispatch) {
     EXPECT_EQ(smooth["phases"][0]["count"], nlohmann::json::array({9, 9, 5}));
 }
 
+// The source hash is SHA-256: FIPS 180-4's examples, including the two-block padding case and a
+// long message.
+TEST_F(codegen_Package, ManifestHashesTheSourceWithSha256) {
+    const KernelPackage package = compileProgram(test::sampleProgram());
+    const auto hashOf = [&](std::string text) {
+        return nlohmann::json::parse(packageManifest(package, {"x.vox", std::move(text)}))["source"]["sha256"];
+    };
+    EXPECT_EQ(hashOf(""), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+    EXPECT_EQ(hashOf("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
+              "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
+    EXPECT_EQ(hashOf(std::string(1000000, 'a')), "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+}
+
 #ifdef VOXC_HAVE_CHECK
 TEST_F(codegen_Package, ManifestListsFieldStages) {
     CheckResult checked = checkFile(std::string(VOXC_EXAMPLES_DIR) + "/fields.vox");
