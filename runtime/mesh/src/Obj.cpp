@@ -41,7 +41,7 @@ void writeObj(OutputFiles& outputs, const std::string& path, const Mesh& mesh, s
         for (size_t t = 0; t < triangleCount; ++t) ids.insert(mesh_export::triangleMaterial(mesh, t));
 
     fmt::memory_buffer out;
-    fmt::format_to(std::back_inserter(out), "# voxc surface nets: {} vertices, {} triangles\n", mesh.positions.size(), triangleCount);
+    fmt::format_to(std::back_inserter(out), "# voxc mesh: {} vertices, {} triangles\n", mesh.positions.size(), triangleCount);
     const std::string libraryPath = objMaterialLibraryPath(path);
     if (withMaterials)
         fmt::format_to(std::back_inserter(out), "mtllib {}\n", std::filesystem::path(libraryPath).filename().string());

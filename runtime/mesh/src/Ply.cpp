@@ -23,7 +23,7 @@ constexpr const char* kMaterialProperties[] = {"material", "red", "green", "blue
 constexpr size_t kVertexBytes = 24, kMaterialBytes = 4, kFaceBytes = 13, kFaceMaterialBytes = 1;
 
 std::string plyHeader(size_t vertexCount, size_t faceCount, bool materials) {
-    std::string header = "ply\nformat binary_little_endian 1.0\ncomment voxc surface nets\n";
+    std::string header = "ply\nformat binary_little_endian 1.0\ncomment voxc mesh\n";
     header += fmt::format("element vertex {}\n", vertexCount);
     for (const char* name : kVertexProperties) header += fmt::format("property float {}\n", name);
     if (materials)
