@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <string>
 
 #ifndef VOXC_VERSION
 #error "VOXC_VERSION must be defined by the build"
@@ -24,6 +25,10 @@ using Json = nlohmann::ordered_json; // keys stay in the order written
 constexpr int kManifestSchemaVersion = 1;
 
 Json vec(glm::ivec3 v) { return Json::array({v.x, v.y, v.z}); }
+
+// A float as the shortest decimal that reads back as the same float (0.45, not the double
+// 0.44999998807907104 that the float widens to).
+Json floatJson(float value) { return std::stod(fmt::format("{}", value)); }
 
 // log2 of the chunk size (a power of two).
 int chunkShift(const World& world) { return std::countr_zero(uint32_t(world.chunkSize)); }
@@ -137,7 +142,7 @@ Json pushConstantsJson() {
 Json materialsJson(const KernelPackage& package) {
     Json materials = Json::array();
     for (const Material& m : package.materials)
-        materials.push_back(Json{{"id", m.id}, {"name", m.name}, {"color", Json::array({m.color.r, m.color.g, m.color.b})}});
+        materials.push_back(Json{{"id", m.id}, {"name", m.name}, {"color", Json::array({floatJson(m.color.r), floatJson(m.color.g), floatJson(m.color.b)})}});
     return materials;
 }
 
@@ -188,7 +193,7 @@ Json stageJson(const KernelPackage& package, const StagePlan& stage) {
         Json boxes = Json::array();
         for (const FieldBox& box : stage.fieldBoxes) {
             Json entry = Json::array({{box.min.x, box.min.y, box.min.z}, {box.max.x, box.max.y, box.max.z}});
-            if (box.constant) entry.push_back(box.value);
+            if (box.constant) entry.push_back(floatJson(box.value));
             if (box.unchanged) entry.push_back("unchanged");
             boxes.push_back(entry);
         }
