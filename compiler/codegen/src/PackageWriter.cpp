@@ -131,7 +131,11 @@ void exchangeIntoPlace(const fs::path& dir, const fs::path& temp) {
     if (::renameat2(AT_FDCWD, temp.c_str(), AT_FDCWD, dir.c_str(), RENAME_EXCHANGE) != 0) {
         if (errno != EINVAL && errno != ENOSYS) fail(dir, std::strerror(errno));
         const fs::path old = createTempSibling(dir);
-        if (::rename(dir.c_str(), old.c_str()) != 0) fail(dir, std::strerror(errno));
+        if (::rename(dir.c_str(), old.c_str()) != 0) {
+            const int renameError = errno;
+            ::rmdir(old.c_str());
+            fail(dir, std::strerror(renameError));
+        }
         if (::rename(temp.c_str(), dir.c_str()) != 0) {
             const int renameError = errno;
             ::rename(old.c_str(), dir.c_str());
