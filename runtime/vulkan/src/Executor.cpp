@@ -3,6 +3,7 @@
 #include "ContextImpl.h"
 #include "DeviceBuffer.h"
 #include "KernelPipelines.h"
+#include "NonFiniteCounters.h"
 #include "voxc/builtins/Shapes.h"
 #include "voxc/core/Errors.h"
 #include "voxc/vulkan/DispatchPlan.h"
@@ -81,9 +82,7 @@ struct VulkanExecutor::Impl {
     DeviceBuffer voxels, materials, chunkTable, noiseTables, readback;
     // Tile skipping (kBindingTileRanges..kBindingSkipStats); small, so they exist either way.
     DeviceBuffer tileRanges, tileDirty, activeTiles, activeDispatch, skipStats;
-    // The current stage's non-finite replacements (kBindingNonFinite) and, per package stage, a
-    // copy taken when the stage ends (kNonFiniteBytes each).
-    DeviceBuffer nonFinite, nonFiniteByStage;
+    NonFiniteCounters nonFinite; // kBindingNonFinite and its per-stage copies
     VkCommandPool commandPool = VK_NULL_HANDLE;
     Frame frames[2];
     double setupMs = 0;
@@ -104,23 +103,17 @@ struct VulkanExecutor::Impl {
     void readMaterials(const DeviceBuffer& source, VkDeviceSize offset, ChunkedGrid& grid) const;
     // Every tile range stale, no active-dispatch record in use, statistics zero.
     void recordTileReset(VkCommandBuffer cmd);
-    // Counts zero, lowest index ~0u, so the kernels' atomicAdd / atomicMin start afresh.
-    void recordNonFiniteReset(VkCommandBuffer cmd);
-    // Copies the counts of package stage `stage` out and resets them for the next stage.
+    // Copies the non-finite counts of package stage `stage` out and resets them for the next stage.
     void recordStageEnd(VkCommandBuffer cmd, uint32_t stage, Access& last);
-    std::vector<NonFiniteCount> readNonFinite() const;
 };
-
-namespace {
-constexpr VkDeviceSize kNonFiniteBytes = 3 * sizeof(uint32_t); // nonfinite.glsl: count low, high, lowest index
-}
 
 VulkanExecutor::Impl::~Impl() {
     if (ctx.device) ctx.api.vkDeviceWaitIdle(ctx.device);
     for (Frame& frame : frames)
         if (frame.fence) ctx.api.vkDestroyFence(ctx.device, frame.fence, nullptr);
     if (commandPool) ctx.api.vkDestroyCommandPool(ctx.device, commandPool, nullptr);
-    for (DeviceBuffer* b : {&nonFiniteByStage, &nonFinite, &skipStats, &activeDispatch, &activeTiles, &tileDirty, &tileRanges})
+    nonFinite.destroy(ctx);
+    for (DeviceBuffer* b : {&skipStats, &activeDispatch, &activeTiles, &tileDirty, &tileRanges})
         destroyBuffer(ctx, *b);
     destroyBuffer(ctx, readback);
     destroyBuffer(ctx, noiseTables);
@@ -166,34 +159,13 @@ void VulkanExecutor::Impl::createBuffers() {
     activeTiles = createBuffer(ctx, tiles * sizeof(uint32_t), storage, local);
     activeDispatch = createBuffer(ctx, 8 * sizeof(uint32_t), storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, local);
     skipStats = createBuffer(ctx, 2 * sizeof(uint32_t), storage, MemoryUse::HostAccess);
-    nonFinite = createBuffer(ctx, kNonFiniteBytes, storage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, local);
-    nonFiniteByStage = createBuffer(ctx, std::max<VkDeviceSize>(1, package.stages.size()) * kNonFiniteBytes,
-                                    VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostAccess);
-}
-
-void VulkanExecutor::Impl::recordNonFiniteReset(VkCommandBuffer cmd) {
-    ctx.api.vkCmdFillBuffer(cmd, nonFinite.buffer, 0, 2 * sizeof(uint32_t), 0);
-    ctx.api.vkCmdFillBuffer(cmd, nonFinite.buffer, 2 * sizeof(uint32_t), sizeof(uint32_t), 0xFFFFFFFFu);
+    nonFinite.create(ctx, package.stages.size(), local);
 }
 
 void VulkanExecutor::Impl::recordStageEnd(VkCommandBuffer cmd, uint32_t stage, Access& last) {
     memoryBarrier(ctx.api, cmd, last, kTransferReadWrite);
-    const VkBufferCopy region{0, VkDeviceSize(stage) * kNonFiniteBytes, kNonFiniteBytes};
-    ctx.api.vkCmdCopyBuffer(cmd, nonFinite.buffer, nonFiniteByStage.buffer, 1, &region);
-    memoryBarrier(ctx.api, cmd, kTransferReadWrite, kTransferWrite);
-    recordNonFiniteReset(cmd);
+    nonFinite.recordStageEnd(ctx, cmd, stage);
     last = kTransferWrite;
-}
-
-std::vector<NonFiniteCount> VulkanExecutor::Impl::readNonFinite() const {
-    invalidateForHost(ctx, nonFiniteByStage);
-    std::vector<NonFiniteCount> counts(package.stages.size());
-    const auto* words = static_cast<const uint32_t*>(nonFiniteByStage.mapped);
-    for (size_t i = 0; i < counts.size(); ++i) {
-        counts[i].count = uint64_t(words[3 * i]) | uint64_t(words[3 * i + 1]) << 32;
-        counts[i].firstIndex = counts[i].count ? words[3 * i + 2] : 0;
-    }
-    return counts;
 }
 
 void VulkanExecutor::Impl::recordTileReset(VkCommandBuffer cmd) {
@@ -324,7 +296,7 @@ VulkanExecutor::VulkanExecutor(VulkanContext& context, const KernelPackage& pack
     byBinding[kBindingActiveDispatch] = s.activeDispatch.buffer;
     byBinding[kBindingSkipStats] = s.skipStats.buffer;
     byBinding[kBindingMaterials] = s.materials.buffer;
-    byBinding[kBindingNonFinite] = s.nonFinite.buffer;
+    byBinding[kBindingNonFinite] = s.nonFinite.counterBuffer();
     bindBuffers(s.ctx, s.pipelines, byBinding);
     s.setupMs = millisecondsSince(start);
 }
@@ -361,9 +333,7 @@ RunResult VulkanExecutor::run() {
             api.vkCmdFillBuffer(frame.cmd, s.voxels.buffer, 0, VK_WHOLE_SIZE, 0);
             api.vkCmdFillBuffer(frame.cmd, s.materials.buffer, 0, VK_WHOLE_SIZE, 0); // every voxel `none`
             if (s.tileShift >= 0) s.recordTileReset(frame.cmd);
-            // A stage without dispatches keeps its zero counts.
-            api.vkCmdFillBuffer(frame.cmd, s.nonFiniteByStage.buffer, 0, VK_WHOLE_SIZE, 0);
-            s.recordNonFiniteReset(frame.cmd);
+            s.nonFinite.recordRunStart(s.ctx, frame.cmd);
             last = kTransferWrite;
         }
         api.vkCmdBindDescriptorSets(frame.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, s.pipelines.layout, 0, 1,
@@ -431,7 +401,7 @@ RunResult VulkanExecutor::run() {
         std::memcpy(counts, s.skipStats.mapped, sizeof counts);
         result.skip = TileSkipStats{true, 1 << s.tileShift, counts[1], counts[0]};
     }
-    result.nonFinite = s.readNonFinite();
+    result.nonFinite = s.nonFinite.read(s.ctx);
     return result;
 }
 
