@@ -37,6 +37,13 @@ public:
     }
     float at(glm::ivec3 p) const { return values_[index(p)]; }
     uint8_t materialAt(glm::ivec3 p) const { return materials_[index(p)]; }
+    // Flat access for the hot loops: index(p) + offset(d) is the sample at p + d.
+    size_t index(glm::ivec3 p) const {
+        const glm::ivec3 q = p - first_;
+        return size_t(q.x) + size_t(extent_.x) * (size_t(q.y) + size_t(extent_.y) * size_t(q.z));
+    }
+    ptrdiff_t offset(glm::ivec3 d) const { return d.x + ptrdiff_t(extent_.x) * (d.y + ptrdiff_t(extent_.y) * d.z); }
+    float atIndex(size_t i) const { return values_[i]; }
     glm::vec3 gradient(glm::ivec3 p) const {
         return 0.5f * glm::vec3(at(p + glm::ivec3(1, 0, 0)) - at(p - glm::ivec3(1, 0, 0)),
                                 at(p + glm::ivec3(0, 1, 0)) - at(p - glm::ivec3(0, 1, 0)),
@@ -44,10 +51,6 @@ public:
     }
 
 private:
-    size_t index(glm::ivec3 p) const {
-        const glm::ivec3 q = p - first_;
-        return size_t(q.x) + size_t(extent_.x) * (size_t(q.y) + size_t(extent_.y) * size_t(q.z));
-    }
     glm::ivec3 first_, extent_;
     std::vector<float> values_;
     std::vector<uint8_t> materials_;
@@ -103,13 +106,16 @@ ChunkMesh extractChunk(const ChunkedGrid& grid, float iso, glm::ivec3 worldChunk
 
     // Every crossed edge of the chunk's cells: lower corners in [begin, end] (the high faces
     // included), but along its own axis an edge starting at `end` belongs to no cell here.
+    const ptrdiff_t axisOffset[3] = {samples.offset(axisStep(0)), samples.offset(axisStep(1)), samples.offset(axisStep(2))};
     for (int z = cells.begin.z; z <= cells.end.z; ++z)
         for (int y = cells.begin.y; y <= cells.end.y; ++y)
             for (int x = cells.begin.x; x <= cells.end.x; ++x) {
                 const glm::ivec3 lower(x, y, z);
+                const size_t at = samples.index(lower);
+                const bool solid = samples.atIndex(at) > iso;
                 for (int axis = 0; axis < 3; ++axis) {
                     if (lower[axis] == cells.end[axis]) continue;
-                    if ((samples.at(lower) > iso) == (samples.at(lower + axisStep(axis)) > iso)) continue;
+                    if (solid == (samples.atIndex(size_t(ptrdiff_t(at) + axisOffset[axis])) > iso)) continue;
                     EdgeVertex v = edgeVertex(samples, lower, axis, iso, layout.gridOrigin);
                     v.edge = domain.key(lower) * 3 + uint64_t(axis);
                     mesh.vertices.push_back(v);
@@ -117,24 +123,29 @@ ChunkMesh extractChunk(const ChunkedGrid& grid, float iso, glm::ivec3 worldChunk
             }
 
     const std::array<CellCase, 256>& table = caseTable();
+    ptrdiff_t cornerOffsets[8];
+    for (int c = 0; c < 8; ++c) cornerOffsets[c] = samples.offset(cornerOffset(c));
+    // Edge e of a cell as a key offset from the cell's own key: its lower corner's key, times 3, plus its axis.
+    int64_t edgeKeyOffsets[12];
+    for (int e = 0; e < 12; ++e) {
+        const glm::ivec3 d = cornerOffset(edgeCorners(e)[0]);
+        edgeKeyOffsets[e] = int64_t(domain.key(d) - domain.key(glm::ivec3(0))) * 3 + edgeAxis(e);
+    }
     for (int z = cells.begin.z; z < cells.end.z; ++z)
         for (int y = cells.begin.y; y < cells.end.y; ++y)
             for (int x = cells.begin.x; x < cells.end.x; ++x) {
                 const glm::ivec3 cell(x, y, z);
+                const size_t at = samples.index(cell);
                 unsigned solid = 0;
                 for (int c = 0; c < 8; ++c)
-                    if (samples.at(cell + cornerOffset(c)) > iso) solid |= 1u << c;
+                    if (samples.atIndex(size_t(ptrdiff_t(at) + cornerOffsets[c])) > iso) solid |= 1u << c;
                 const CellCase& cellCase = table[solid];
                 if (cellCase.triangleCount == 0) continue;
                 const uint64_t cellKey = domain.key(cell);
                 const uint8_t material = majorityMaterial(samples, cell, solid);
                 for (int t = 0; t < cellCase.triangleCount; ++t) {
                     CellTriangle triangle{cellKey, {}, material};
-                    for (int k = 0; k < 3; ++k) {
-                        const int edge = cellCase.edges[size_t(t * 3 + k)];
-                        const glm::ivec3 lower = cell + cornerOffset(edgeCorners(edge)[0]);
-                        triangle.edges[size_t(k)] = domain.key(lower) * 3 + uint64_t(edgeAxis(edge));
-                    }
+                    for (int k = 0; k < 3; ++k) triangle.edges[size_t(k)] = uint64_t(int64_t(cellKey * 3) + edgeKeyOffsets[cellCase.edges[size_t(t * 3 + k)]]);
                     mesh.triangles.push_back(triangle);
                 }
             }

@@ -164,8 +164,6 @@ std::array<CellCase, 256> deriveTable() {
 
 } // namespace
 
-glm::ivec3 cornerOffset(int corner) { return {corner & 1, (corner >> 1) & 1, (corner >> 2) & 1}; }
-
 std::array<int, 2> edgeCorners(int edge) {
     const int axis = edge / 4, k = edge % 4, u = (axis + 1) % 3, v = (axis + 2) % 3;
     const int lower = (k & 1) << u | (k >> 1) << v;

@@ -35,7 +35,7 @@ namespace marching_cubes {
 
 // Corner c of a cell is at offset (c&1, (c>>1)&1, (c>>2)&1); case bit c is set when corner c is
 // solid. Edge e runs along axis e/4 from its lower corner edgeCorners(e)[0] to [1].
-glm::ivec3 cornerOffset(int corner);
+inline glm::ivec3 cornerOffset(int corner) { return {corner & 1, (corner >> 1) & 1, (corner >> 2) & 1}; }
 std::array<int, 2> edgeCorners(int edge);
 inline int edgeAxis(int edge) { return edge / 4; }
 
