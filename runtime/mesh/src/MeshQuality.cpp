@@ -3,17 +3,18 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
-#include <unordered_map>
+#include <algorithm>
+#include <vector>
 
 namespace voxc {
 namespace {
 
 bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// Uses of one undirected edge, counted per direction.
-struct EdgeUses {
-    uint32_t forward = 0; // from the smaller index to the larger
-    uint32_t backward = 0;
+// One use of an undirected edge, stored in the bucket of its smaller vertex.
+struct EdgeUse {
+    uint32_t larger;
+    bool forward; // the triangle runs it from the smaller vertex to the larger
 };
 
 } // namespace
@@ -25,11 +26,25 @@ MeshQuality measureMeshQuality(const Mesh& mesh) {
     for (size_t v = 0; v < mesh.positions.size(); ++v)
         if (!finite(mesh.positions[v]) || (v < mesh.normals.size() && !finite(mesh.normals[v]))) ++q.nonFiniteVertices;
 
-    std::unordered_map<uint64_t, EdgeUses> edges;
-    edges.reserve(mesh.triangles.size());
+    // Edge uses bucketed by their smaller vertex (a counting sort: linear in the mesh size).
+    auto validTriangle = [&](size_t t) {
+        return mesh.triangles[t] < q.vertices && mesh.triangles[t + 1] < q.vertices && mesh.triangles[t + 2] < q.vertices;
+    };
+    std::vector<size_t> bucketStart(q.vertices + 1, 0);
+    for (size_t t = 0; t + 3 <= mesh.triangles.size(); t += 3) {
+        if (!validTriangle(t)) continue;
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t from = mesh.triangles[t + size_t(k)], to = mesh.triangles[t + size_t((k + 1) % 3)];
+            if (from != to) ++bucketStart[std::min(from, to) + 1];
+        }
+    }
+    for (size_t v = 0; v < q.vertices; ++v) bucketStart[v + 1] += bucketStart[v];
+    std::vector<EdgeUse> uses(bucketStart[q.vertices]);
+    std::vector<size_t> fill(bucketStart.begin(), bucketStart.end() - 1);
+
     for (size_t t = 0; t + 3 <= mesh.triangles.size(); t += 3) {
         const uint32_t i[3] = {mesh.triangles[t], mesh.triangles[t + 1], mesh.triangles[t + 2]};
-        if (i[0] >= q.vertices || i[1] >= q.vertices || i[2] >= q.vertices) {
+        if (!validTriangle(t)) {
             ++q.badIndexTriangles;
             continue;
         }
@@ -44,15 +59,22 @@ MeshQuality measureMeshQuality(const Mesh& mesh) {
         for (int k = 0; k < 3; ++k) {
             const uint32_t from = i[k], to = i[(k + 1) % 3];
             if (from == to) continue;
-            EdgeUses& uses = edges[uint64_t(std::min(from, to)) << 32 | std::max(from, to)];
-            (from < to ? uses.forward : uses.backward) += 1;
+            uses[fill[std::min(from, to)]++] = {std::max(from, to), from < to};
         }
     }
-    for (const auto& [key, uses] : edges) {
-        const uint32_t total = uses.forward + uses.backward;
-        if (total == 1) ++q.boundaryEdges;
-        if (total > 2) ++q.nonManifoldEdges;
-        if (total == 2 && uses.forward != 1) ++q.misorientedEdges;
+    for (size_t v = 0; v < q.vertices; ++v) {
+        const auto first = uses.begin() + std::ptrdiff_t(bucketStart[v]), last = uses.begin() + std::ptrdiff_t(bucketStart[v + 1]);
+        std::sort(first, last, [](const EdgeUse& a, const EdgeUse& b) { return a.larger < b.larger; });
+        for (auto run = first; run != last;) {
+            auto end = run;
+            size_t forward = 0;
+            for (; end != last && end->larger == run->larger; ++end) forward += end->forward;
+            const size_t total = size_t(end - run);
+            if (total == 1) ++q.boundaryEdges;
+            if (total > 2) ++q.nonManifoldEdges;
+            if (total == 2 && forward != 1) ++q.misorientedEdges;
+            run = end;
+        }
     }
     return q;
 }
