@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <glm/common.hpp>
 #include <map>
+#include <meshoptimizer.h>
 #include <nlohmann/json.hpp>
 
 namespace voxc {
@@ -56,6 +57,37 @@ std::map<uint8_t, std::vector<uint32_t>> trianglesByMaterial(const Mesh& mesh) {
     return groups;
 }
 
+// The vertex streams a .glb carries, in the order written.
+struct VertexStreams {
+    std::vector<glm::vec3> positions, normals;
+    std::vector<uint8_t> materials;
+};
+
+// Reorders for a GPU (meshoptimizer): each primitive's triangles for the post-transform vertex
+// cache (windings kept), then the shared vertices in the order the primitives first use them.
+VertexStreams optimizeForRendering(const Mesh& mesh, std::map<uint8_t, std::vector<uint32_t>>& groups) {
+    const size_t vertexCount = mesh.positions.size();
+    std::vector<uint32_t> all;
+    for (auto& [id, indices] : groups) {
+        std::vector<uint32_t> ordered(indices.size());
+        meshopt_optimizeVertexCache(ordered.data(), indices.data(), indices.size(), vertexCount);
+        indices = std::move(ordered);
+        all.insert(all.end(), indices.begin(), indices.end());
+    }
+    std::vector<uint32_t> remap(vertexCount);
+    const size_t used = meshopt_optimizeVertexFetchRemap(remap.data(), all.data(), all.size(), vertexCount);
+    VertexStreams streams{std::vector<glm::vec3>(used), std::vector<glm::vec3>(used), std::vector<uint8_t>(used)};
+    for (size_t v = 0; v < vertexCount; ++v) {
+        if (remap[v] == ~0u) continue; // used by no triangle: left out
+        streams.positions[remap[v]] = mesh.positions[v];
+        streams.normals[remap[v]] = mesh.normals[v];
+        streams.materials[remap[v]] = mesh_export::vertexMaterial(mesh, v);
+    }
+    for (auto& [id, indices] : groups)
+        for (uint32_t& i : indices) i = remap[i];
+    return streams;
+}
+
 Json gltfDocument(const Mesh& mesh, std::span<const Material> materials, BinaryBuffer& bin) {
     Json doc;
     doc["asset"] = {{"version", "2.0"}, {"generator", "voxc"}};
@@ -65,25 +97,27 @@ Json gltfDocument(const Mesh& mesh, std::span<const Material> materials, BinaryB
         return doc;
     }
     VOXC_ASSERT(mesh.normals.size() == mesh.positions.size());
-    const size_t vertexCount = mesh.positions.size();
+    std::map<uint8_t, std::vector<uint32_t>> groups = trianglesByMaterial(mesh);
+    const VertexStreams streams = optimizeForRendering(mesh, groups);
+    const size_t vertexCount = streams.positions.size();
     Json views = Json::array(), accessors = Json::array();
 
-    glm::vec3 lo = mesh.positions[0], hi = mesh.positions[0];
-    for (const glm::vec3& p : mesh.positions) {
+    glm::vec3 lo = streams.positions[0], hi = streams.positions[0];
+    for (const glm::vec3& p : streams.positions) {
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }
     // The bounds are the float extrema exactly: validators compare them with the data.
     auto bound = [](glm::vec3 v) { return Json::array({double(v.x), double(v.y), double(v.z)}); };
-    accessors.push_back({{"bufferView", bin.addView(mesh.positions.data(), vertexCount * 12, kArrayBuffer, views)},
+    accessors.push_back({{"bufferView", bin.addView(streams.positions.data(), vertexCount * 12, kArrayBuffer, views)},
                          {"componentType", kFloat}, {"count", vertexCount}, {"type", "VEC3"}, {"min", bound(lo)}, {"max", bound(hi)}});
-    accessors.push_back({{"bufferView", bin.addView(mesh.normals.data(), vertexCount * 12, kArrayBuffer, views)},
+    accessors.push_back({{"bufferView", bin.addView(streams.normals.data(), vertexCount * 12, kArrayBuffer, views)},
                          {"componentType", kFloat}, {"count", vertexCount}, {"type", "VEC3"}});
     // Vertex colours: the vertex's material colour (voxc colours are linear, as glTF's are), as
     // normalised RGBA bytes: 4 bytes keep every element 4-byte aligned.
     std::vector<uint8_t> colors(vertexCount * 4);
     for (size_t v = 0; v < vertexCount; ++v) {
-        const glm::vec3 c = mesh_export::lookOf(mesh_export::vertexMaterial(mesh, v), materials).color;
+        const glm::vec3 c = mesh_export::lookOf(streams.materials[v], materials).color;
         colors[4 * v] = mesh_export::colorByte(c.r);
         colors[4 * v + 1] = mesh_export::colorByte(c.g);
         colors[4 * v + 2] = mesh_export::colorByte(c.b);
@@ -95,7 +129,7 @@ Json gltfDocument(const Mesh& mesh, std::span<const Material> materials, BinaryB
     // 16-bit indices while every index fits below the primitive-restart value 65535.
     const bool shortIndices = vertexCount <= 65535;
     Json primitives = Json::array(), gltfMaterials = Json::array();
-    for (const auto& [id, indices] : trianglesByMaterial(mesh)) {
+    for (const auto& [id, indices] : groups) {
         size_t view;
         if (shortIndices) {
             const std::vector<uint16_t> narrow(indices.begin(), indices.end());

@@ -27,12 +27,14 @@ void writePly(OutputFiles& outputs, const std::string& path, const Mesh& mesh, s
 void writeObj(const std::string& path, const Mesh& mesh, std::span<const Material> materials = {});
 void writeObj(OutputFiles& outputs, const std::string& path, const Mesh& mesh, std::span<const Material> materials = {});
 // glTF 2.0 binary: one node and mesh, one primitive per material id that has triangles (ascending
-// id, the mesh's triangle order within each), all sharing POSITION (with exact float bounds),
+// id), all sharing POSITION (with exact float bounds),
 // NORMAL and COLOR_0 (the vertex's material colour as normalised RGBA bytes, linear like voxc's
 // colours); indices 16-bit up to 65,535 vertices, else 32-bit. Each glTF material has the voxc
 // name, a white base colour (COLOR_0 multiplies it) and extras voxc_material_id / voxc_color.
-// Y up and counter-clockwise front faces, as voxc meshes already are. An empty mesh is a scene
-// without nodes and without a BIN chunk.
+// Y up and counter-clockwise front faces, as voxc meshes already are. Ordered for rendering with
+// meshoptimizer: each primitive's triangles for the vertex cache (windings kept), then the vertices
+// in first-use order (unused ones left out); the same mesh, deterministically renumbered. An empty
+// mesh is a scene without nodes and without a BIN chunk.
 std::string encodeGlb(const Mesh& mesh, std::span<const Material> materials = {});
 void writeGlb(const std::string& path, const Mesh& mesh, std::span<const Material> materials = {});
 void writeGlb(OutputFiles& outputs, const std::string& path, const Mesh& mesh, std::span<const Material> materials = {});
