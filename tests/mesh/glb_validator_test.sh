@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Every .glb voxc writes passes the Khronos validator and loads in three.js (check_glb.mjs): the
-# fixtures of spec G1 and every example run through `voxc run` with both meshers. A missing
+# fixtures of spec G1 and every example run through `voxc run` with both meshers; and every
+# example's default mesh is reported closed, manifold and free of zero-area triangles. A missing
 # node or missing Node tools fail the test (scripts/install-node-tools.sh installs them).
 # Usage: glb_validator_test.sh VOXC_GLB_FIXTURES VOXC SOURCE_DIR
 set -uo pipefail
@@ -29,6 +30,13 @@ for example in "$src"/examples/*.vox; do
             echo "FAIL voxc run $name --mesher $mesher"; cat "$work/run.log"; failed=1
         fi
     done
+    # The default mesher, as reported by the independent checker: closed, manifold, no zero-area triangle.
+    "$voxc" run "$example" --device lavapipe -o "$work/${name}_default.ply" 2>"$work/default.log"
+    if grep -Eq "\(marching cubes\): [1-9][0-9]* vertices, [1-9][0-9]* triangles, 0 boundary edges, 0 non-manifold edges, 0 zero-area triangles; watertight" "$work/default.log"; then
+        echo "ok   $name: the default mesh is closed and manifold without zero-area triangles"
+    else
+        echo "FAIL $name: the default mesh report is not clean:"; cat "$work/default.log"; failed=1
+    fi
 done
 check "$work"/*.glb || failed=1
 exit $failed
