@@ -103,6 +103,25 @@ TEST(check_Limits, ExpressionDepthThroughCallsIsCapped) {
     EXPECT_NE(last.message.find("(through f19 -> f18"), std::string::npos) << last.message;
 }
 
+// `fn f(p0: float, ...) -> float = p0;` called with x for every parameter.
+std::string manyParameters(int count) {
+    std::string parameters, arguments;
+    for (int i = 0; i < count; ++i) {
+        parameters += (i ? ", p" : "p") + std::to_string(i) + ": float";
+        arguments += i ? ", x" : "x";
+    }
+    return kWorld + "fn f(" + parameters + ") -> float = p0;\nfield g = f(" + arguments + ");\n";
+}
+
+TEST(check_Limits, FunctionParametersAreCapped) {
+    EXPECT_FALSE(check(manyParameters(64)).hasErrors());
+    CheckResult result = check(manyParameters(65));
+    ASSERT_EQ(codes(result), std::vector<std::string>{"E0012"}) << result.rendered();
+    EXPECT_EQ(result.diagnostics[0].loc.line, 2u);
+    EXPECT_EQ(result.diagnostics[0].loc.column, 4u);
+    EXPECT_NE(result.diagnostics[0].message.find("65 parameters"), std::string::npos);
+}
+
 struct OutOfRange {
     const char* what;
     std::string text;

@@ -24,6 +24,14 @@ bool checkType(Context& context, const std::string& name, SourceLoc loc) {
 
 // Validates the declaration; true when its signature is usable.
 bool checkSignature(Context& context, const ast::FunctionDecl& function) {
+    // Parameters are looked up by scanning, and compared pairwise for duplicates below.
+    if (function.parameters.size() > size_t(context.limits.maxParameters)) {
+        context.diagnostics.error("E0012", function.loc,
+                                  fmt::format("function '{}' has {} parameters, more than the limit of {}",
+                                              function.name, function.parameters.size(),
+                                              context.limits.maxParameters));
+        return false;
+    }
     bool ok = checkType(context, function.result, function.resultLoc);
     for (size_t i = 0; i < function.parameters.size(); ++i) {
         const ast::Parameter& parameter = function.parameters[i];

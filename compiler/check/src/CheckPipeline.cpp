@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <unordered_map>
 
 namespace voxc::check {
 
@@ -71,6 +72,10 @@ std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
     std::vector<std::string_view> known{"start"};
     for (const std::string& name : grammarNames) known.push_back(name);
     for (const std::string& name : fieldNames) known.push_back(name);
+    // The first declaration of each name, found by lookup: a pipeline may name thousands of stages.
+    std::unordered_map<std::string_view, uint32_t> grammarIndex, fieldIndex;
+    for (size_t i = 0; i < grammarNames.size(); ++i) grammarIndex.emplace(grammarNames[i], uint32_t(i));
+    for (size_t i = 0; i < fieldNames.size(); ++i) fieldIndex.emplace(fieldNames[i], uint32_t(i));
     std::vector<Stage> stages;
     for (size_t i = 0; i < block.names.size(); ++i) {
         const ast::NameStatement& entry = block.names[i];
@@ -89,16 +94,16 @@ std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
                 rejectClause(context, entry, "is the start state (give its shapes a 'material' key instead)");
             continue;
         }
-        auto grammar = std::find(grammarNames.begin(), grammarNames.end(), entry.name);
-        auto field = std::find(fieldNames.begin(), fieldNames.end(), entry.name);
-        if (grammar != grammarNames.end()) {
+        auto grammar = grammarIndex.find(entry.name);
+        auto field = fieldIndex.find(entry.name);
+        if (grammar != grammarIndex.end()) {
             if (entry.mode)
                 context.diagnostics.error("E0010", entry.modeLoc,
                                           fmt::format("'{}' is a grammar; only field stages take a mode", entry.name));
             else if (rejectClause(context, entry, "is a grammar"))
-                stages.push_back({Stage::Kind::Grammar, uint32_t(grammar - grammarNames.begin()), FieldMode::Set, entry.loc, std::nullopt});
-        } else if (field != fieldNames.end()) {
-            const size_t index = size_t(field - fieldNames.begin());
+                stages.push_back({Stage::Kind::Grammar, grammar->second, FieldMode::Set, entry.loc, std::nullopt});
+        } else if (field != fieldIndex.end()) {
+            const size_t index = field->second;
             if (!entry.mode) {
                 context.diagnostics.error("E0009", entry.loc,
                                           fmt::format("field stage '{}' needs a mode: 'set {}', 'union {}', "
@@ -124,7 +129,9 @@ std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
         } else {
             context.diagnostics.error("E0002", entry.loc,
                                       fmt::format("unknown grammar or field '{}' in the pipeline{}", entry.name,
-                                                  didYouMean(entry.name, known)));
+                                                  errorsStillShown(context.diagnostics)
+                                                      ? didYouMean(entry.name, known)
+                                                      : std::string()));
         }
     }
     return stages;

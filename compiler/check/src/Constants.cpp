@@ -54,7 +54,8 @@ std::optional<double> Constants::fold(const ast::Expr& expr, bool& failed) const
             return it->second.value;
         }
         std::vector<std::string_view> names;
-        for (const auto& entry : entries_) names.push_back(entry.first);
+        if (errorsStillShown(diagnostics_))
+            for (const auto& entry : entries_) names.push_back(entry.first);
         diagnostics_.error("E0002", expr.loc,
                            fmt::format("unknown constant '{}'{}", expr.name, didYouMean(expr.name, names)));
         failed = true;

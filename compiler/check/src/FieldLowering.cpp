@@ -291,14 +291,17 @@ Lowered FieldLowering::lowerCall(const ast::Expr& expr, Scope& scope) {
     if (auto it = functions_.find(expr.name); it != functions_.end()) return callUser(*it->second, expr, std::move(args));
     if (findFunction(expr.name)) return callBuiltin(expr.name, std::move(args), expr.loc, expr.name);
     std::vector<std::string_view> known;
-    for (const FunctionInfo& f : functions()) known.push_back(f.name);
-    for (const auto& entry : functions_) known.push_back(entry.first);
+    if (errorsStillShown(context_.diagnostics)) {
+        for (const FunctionInfo& f : functions()) known.push_back(f.name);
+        for (const auto& entry : functions_) known.push_back(entry.first);
+    }
     context_.diagnostics.error("E0002", expr.nameLoc,
                                fmt::format("unknown function '{}'{}", expr.name, didYouMean(expr.name, known)));
     return Lowered::failed();
 }
 
 Lowered FieldLowering::callUser(const ast::FunctionDecl& function, const ast::Expr& at, std::vector<Lowered> args) {
+    if (function.parameters.size() > size_t(context_.limits.maxParameters)) return Lowered::failed(); // reported
     if (std::find(callStack_.begin(), callStack_.end(), function.name) != callStack_.end()) {
         context_.diagnostics.error("E0013", at.nameLoc,
                                    fmt::format("'{}' calls itself (through {}): functions are inlined, so recursion "

@@ -30,11 +30,19 @@ size_t editDistance(std::string_view a, std::string_view b) {
 
 } // namespace
 
+// Names longer than this get no suggestion: comparing two long names costs the product of
+// their lengths, and a file may hold names of megabytes.
+constexpr size_t kMaxSuggestedLength = 64;
+
 std::string didYouMean(std::string_view name, std::span<const std::string_view> candidates) {
+    if (name.size() > kMaxSuggestedLength) return {};
     size_t limit = std::max<size_t>(1, name.size() / 3);
     std::string_view best;
     size_t bestDistance = limit + 1;
     for (std::string_view candidate : candidates) {
+        // The distance is at least the difference in length.
+        const size_t lengthDifference = std::max(name.size(), candidate.size()) - std::min(name.size(), candidate.size());
+        if (lengthDifference >= bestDistance) continue;
         size_t distance = editDistance(name, candidate);
         if (distance < bestDistance) {
             best = candidate;

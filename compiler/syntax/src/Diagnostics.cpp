@@ -8,28 +8,21 @@ namespace voxc {
 
 namespace {
 
-bool sameLoc(const SourceLoc& a, const SourceLoc& b) {
-    return a.line == b.line && a.column == b.column && a.length == b.length;
-}
-
-bool sameNotes(const std::vector<DiagnosticNote>& a, const std::vector<DiagnosticNote>& b) {
-    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const DiagnosticNote& x, const DiagnosticNote& y) {
-        return sameLoc(x.loc, y.loc) && x.message == y.message;
-    });
-}
-
-bool sameDiagnostic(const Diagnostic& a, const Diagnostic& b) {
-    return a.severity == b.severity && a.code == b.code && sameLoc(a.loc, b.loc) && a.message == b.message &&
-           sameNotes(a.notes, b.notes);
+// Everything that makes two diagnostics the same, as one string, so that duplicates are found
+// in a set rather than by comparing with every diagnostic so far (100000 warnings took 36 s).
+std::string identity(const Diagnostic& d) {
+    std::string key = fmt::format("{}\x1f{}\x1f{}:{}:{}\x1f{}", int(d.severity), d.code, d.loc.line, d.loc.column,
+                                  d.loc.length, d.message);
+    for (const DiagnosticNote& note : d.notes)
+        key += fmt::format("\x1e{}:{}:{}\x1f{}", note.loc.line, note.loc.column, note.loc.length, note.message);
+    return key;
 }
 
 } // namespace
 
 void Diagnostics::report(Diagnostic diagnostic) {
     if (truncated_ && diagnostic.severity == Severity::Error) return;
-    if (std::any_of(diagnostics_.begin(), diagnostics_.end(),
-                    [&](const Diagnostic& seen) { return sameDiagnostic(seen, diagnostic); }))
-        return;
+    if (!seen_.insert(identity(diagnostic)).second) return;
     if (diagnostic.severity == Severity::Error && errorCount_ == kMaxErrors) {
         truncated_ = true;
         diagnostics_.push_back({Severity::Error, "", {},

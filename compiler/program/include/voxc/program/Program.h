@@ -179,6 +179,7 @@ struct Limits {
     // Expression nodes lowering one field or function may visit, a function counting once per
     // distinct argument list.
     int64_t maxLoweringSteps = 1000000;
+    int32_t maxParameters = 64; // of one user function
     // A field's DAG after inlining: nodes, and the longest operand chain (also the deepest
     // expression nesting, counted through inlined calls, that lowering accepts).
     int32_t maxFieldNodes = 100000;

@@ -5,6 +5,7 @@
 
 #include <string>
 #include <string_view>
+#include <unordered_set>
 #include <vector>
 
 namespace voxc {
@@ -49,6 +50,7 @@ public:
 
 private:
     std::vector<Diagnostic> diagnostics_;
+    std::unordered_set<std::string> seen_; // every diagnostic reported, for dropping duplicates
     int errorCount_ = 0;
     bool truncated_ = false;
 };
