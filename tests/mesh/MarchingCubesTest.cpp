@@ -194,6 +194,19 @@ TEST(mesh_MarchingCubes, chunksMeshedSeparatelyAgreeOnTheirBorders) {
     for (const auto& [edge, v] : welded) EXPECT_EQ(v.position, whole.positions[i++]);
 }
 
+// M2 with a cavity: the inner surface faces into the cavity, so its volume counts negative and
+// the signed volume is the solid voxel count (each box edge loses a chamfer: within 1%).
+TEST(mesh_MarchingCubes, cavityCountsNegativeInTheVolume) {
+    const auto outer = test::box({2, 2, 2}, {26, 22, 25}), cavity = test::box({8, 7, 9}, {17, 15, 18});
+    const ChunkedGrid grid = makeGrid({0, 0, 0}, {28, 24, 27}, 8, [&](glm::vec3 p) { return outer(p) - cavity(p); });
+    size_t solid = 0;
+    for (float d : grid.data()) solid += d > 0.5f;
+    const Mesh mesh = meshMarchingCubes(grid, MeshOptions{});
+    expectManifold(mesh);
+    EXPECT_EQ(euler(mesh), 4); // two spheres
+    EXPECT_NEAR(measureMeshQuality(mesh).signedVolume, double(solid), 0.01 * double(solid));
+}
+
 // M8: samples exactly at iso. Closed and manifold, and the margin keeps every triangle's area.
 TEST(mesh_MarchingCubes, isoTiesKeepTrianglesApart) {
     const auto integerPlane = ramp([](glm::vec3 p) { return p.y - 24.0f; }, 1.0f);

@@ -13,6 +13,7 @@
 #include "voxc/vulkan/Context.h"
 #include "voxc/vulkan/Executor.h"
 
+#include <cmath>
 #include <fmt/format.h>
 #include <iostream>
 
@@ -42,6 +43,7 @@ void run(const RunOptions& options) {
     if (options.meshPath.empty() && options.voxelsPath.empty() && options.materialsPath.empty())
         throw UserError("run: nothing to write; give -o MESH.ply|.obj|.glb, --voxels FILE.npy and/or --materials FILE.npy");
     if (!options.meshPath.empty()) requireExtension(options.meshPath, {".ply", ".obj", ".glb"}, "mesh file");
+    if (!std::isfinite(options.iso)) throw UserError(fmt::format("--iso {}: the surface level must be a finite number", options.iso));
     if (!options.voxelsPath.empty()) requireExtension(options.voxelsPath, {".npy"}, "voxel file");
     if (!options.materialsPath.empty()) requireExtension(options.materialsPath, {".npy"}, "material file");
     const std::string libraryPath = options.meshPath.ends_with(".obj") ? objMaterialLibraryPath(options.meshPath) : "";
