@@ -110,6 +110,7 @@ TEST(mesh_McTable, crossingInterpolatesFromTheLowerSample) {
     // A sample exactly at iso is air; the crossing stays the margin away from it.
     EXPECT_EQ(marching_cubes::crossing(1.0f, 0.5f, 0.5f), 1.0f - kCrossingMargin);
     EXPECT_EQ(marching_cubes::crossing(0.5f, 1.0f, 0.5f), kCrossingMargin);
+    EXPECT_EQ(marching_cubes::crossing(1.0f, 0.5f, 0.5f, 0.125f), 0.875f);
     // Far-apart samples do not overflow.
     EXPECT_EQ(marching_cubes::crossing(3e38f, -3e38f, 0.5f), 0.5f);
 }

@@ -222,6 +222,22 @@ TEST(mesh_MarchingCubes, isoTiesKeepTrianglesApart) {
     }
 }
 
+// Far from the origin floats are coarser, so the margin widens with the grid's largest coordinate:
+// ties still give no zero-area triangle up to 2^17.
+TEST(mesh_MarchingCubes, isoTiesFarFromTheOriginKeepTrianglesApart) {
+    EXPECT_EQ(marching_cubes::crossingMargin(ChunkLayout::make({0, 0, 0}, {64, 64, 64}, 32)), kCrossingMargin);
+    EXPECT_EQ(marching_cubes::crossingMargin(ChunkLayout::make({20000, 0, 0}, {64, 64, 64}, 32)), 1.0f / 32.0f);
+    EXPECT_EQ(marching_cubes::crossingMargin(ChunkLayout::make({-3000000, 0, 0}, {64, 64, 64}, 32)), 0.125f);
+    for (const glm::ivec3 origin : {glm::ivec3(20000, 20000, -20000), glm::ivec3(100003, 70000, -65541)}) {
+        ChunkedGrid grid(ChunkLayout::make(origin, {20, 20, 20}, 16));
+        std::mt19937 random(5);
+        for (float& d : grid.data()) d = float(random() % 3) * 0.5f; // a third of the samples at iso
+        const Mesh mesh = meshMarchingCubes(grid, MeshOptions{});
+        ASSERT_GT(mesh.triangles.size(), 10000u);
+        expectManifold(mesh);
+    }
+}
+
 // Materials follow the documented rules: a vertex its edge's solid voxel, a triangle the
 // majority of its cell's solid corners.
 TEST(mesh_MarchingCubes, materialsComeFromSolidVoxels) {

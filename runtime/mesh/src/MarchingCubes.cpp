@@ -62,10 +62,10 @@ glm::ivec3 axisStep(int axis) {
     return step;
 }
 
-EdgeVertex edgeVertex(const Samples& samples, glm::ivec3 lower, int axis, float iso, glm::ivec3 gridOrigin) {
+EdgeVertex edgeVertex(const Samples& samples, glm::ivec3 lower, int axis, float iso, float margin, glm::ivec3 gridOrigin) {
     const glm::ivec3 upper = lower + axisStep(axis);
     const float d0 = samples.at(lower), d1 = samples.at(upper);
-    const float t = crossing(d0, d1, iso);
+    const float t = crossing(d0, d1, iso, margin);
     glm::vec3 position(gridOrigin + lower);
     position[axis] += t;
     const glm::vec3 gradient = (1.0f - t) * samples.gradient(lower) + t * samples.gradient(upper);
@@ -103,6 +103,7 @@ ChunkMesh extractChunk(const ChunkedGrid& grid, float iso, glm::ivec3 worldChunk
     ChunkMesh mesh;
     if (cells.empty()) return mesh;
     const Samples samples(grid, cells.begin - 1, cells.end - cells.begin + 3);
+    const float margin = crossingMargin(layout);
 
     // Every crossed edge of the chunk's cells: lower corners in [begin, end] (the high faces
     // included), but along its own axis an edge starting at `end` belongs to no cell here.
@@ -116,7 +117,7 @@ ChunkMesh extractChunk(const ChunkedGrid& grid, float iso, glm::ivec3 worldChunk
                 for (int axis = 0; axis < 3; ++axis) {
                     if (lower[axis] == cells.end[axis]) continue;
                     if (solid == (samples.atIndex(size_t(ptrdiff_t(at) + axisOffset[axis])) > iso)) continue;
-                    EdgeVertex v = edgeVertex(samples, lower, axis, iso, layout.gridOrigin);
+                    EdgeVertex v = edgeVertex(samples, lower, axis, iso, margin, layout.gridOrigin);
                     v.edge = domain.key(lower) * 3 + uint64_t(axis);
                     mesh.vertices.push_back(v);
                 }

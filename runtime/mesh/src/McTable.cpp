@@ -11,6 +11,8 @@
 #include "voxc/core/Errors.h"
 
 #include <algorithm>
+#include <cmath>
+#include <glm/common.hpp>
 #include <glm/vec2.hpp>
 #include <glm/geometric.hpp>
 #include <limits>
@@ -175,11 +177,18 @@ const std::array<CellCase, 256>& caseTable() {
     return table;
 }
 
-float crossing(float d0, float d1, float iso) {
+float crossingMargin(const ChunkLayout& layout) {
+    const glm::ivec3 far = glm::max(glm::abs(layout.gridOrigin - 1), glm::abs(layout.gridOrigin + layout.gridSize));
+    const float largest = float(std::max({far.x, far.y, far.z}));
+    const float spacing = std::nextafter(largest, INFINITY) - largest;
+    return std::clamp(16.0f * spacing, kCrossingMargin, 0.125f);
+}
+
+float crossing(float d0, float d1, float iso, float margin) {
     // In double: iso lies between the samples, so t is in [0, 1] even where the float difference
     // of far-apart samples would overflow.
     const float t = float((double(iso) - d0) / (double(d1) - d0));
-    return std::clamp(t, kCrossingMargin, 1.0f - kCrossingMargin);
+    return std::clamp(t, margin, 1.0f - margin);
 }
 
 } // namespace voxc::marching_cubes

@@ -1,9 +1,9 @@
 #include "voxc/mesh/MeshQuality.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
-#include <algorithm>
 #include <vector>
 
 namespace voxc {

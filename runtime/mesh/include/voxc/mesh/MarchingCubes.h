@@ -10,8 +10,8 @@
 //
 // - Vertex identity is the crossed grid edge: one vertex per edge, at
 //   p0 + t along the edge, t = (iso - d0) / (d1 - d0) from the edge's lower corner p0 (in double,
-//   then float), kept within [kCrossingMargin, 1 - kCrossingMargin] so that samples exactly at iso
-//   cannot put two vertices at one point and collapse a triangle.
+//   then float), kept a margin (crossingMargin) away from both corners so that samples exactly at
+//   iso cannot put two vertices at one point and collapse a triangle.
 // - Vertices are ordered by global edge, triangles by global cell then table order, so the mesh
 //   is bit-identical for every chunk size and thread order.
 // - Materials: a vertex takes the material of its edge's solid voxel (as a surface-nets quad
@@ -25,8 +25,8 @@
 
 namespace voxc {
 
-// 2^-10 voxel: far above the float spacing of world coordinates below 2^14 (2^-10 at 2^13),
-// far below anything visible; an integer plane at iso moves by this much.
+// The least margin, 2^-10 voxel: invisible (an integer plane at iso moves by this much) and 16
+// float spacings wide for world coordinates below 2^10.
 inline constexpr float kCrossingMargin = 1.0f / 1024.0f;
 
 Mesh meshMarchingCubes(const ChunkedGrid& grid, const MeshOptions& options, MeshStats* stats = nullptr);
@@ -50,8 +50,14 @@ struct CellCase {
 // cut it the same way: a face whose solid corners are diagonal (ambiguous) keeps them apart.
 const std::array<CellCase, 256>& caseTable();
 
-// The crossing of an edge as a fraction of its length from the lower sample d0 towards d1.
-float crossing(float d0, float d1, float iso);
+// The grid's margin: 16 float spacings of its largest world coordinate, at least kCrossingMargin
+// and at most 1/8 voxel. Up to 2^17 it keeps every triangle's area above zero in float; beyond,
+// positions are too coarse for any margin, and zero-area triangles are possible (and reported).
+float crossingMargin(const ChunkLayout& layout);
+
+// The crossing of an edge as a fraction of its length from the lower sample d0 towards d1, at
+// least `margin` from either end.
+float crossing(float d0, float d1, float iso, float margin = kCrossingMargin);
 
 // One chunk's share of the mesh, keyed by global grid edge and cell (exposed for the seam tests):
 // the vertices of every crossed edge its cells use, including those on its high faces that the
