@@ -126,7 +126,7 @@ ChunkMesh extractChunk(const ChunkedGrid& grid, float iso, glm::ivec3 worldChunk
     const std::array<CellCase, 256>& table = caseTable();
     ptrdiff_t cornerOffsets[8];
     for (int c = 0; c < 8; ++c) cornerOffsets[c] = samples.offset(cornerOffset(c));
-    // Edge e of a cell as a key offset from the cell's own key: its lower corner's key, times 3, plus its axis.
+    // Edge e of a cell as an offset from the cell's key times 3 (keys are linear in the corner).
     int64_t edgeKeyOffsets[12];
     for (int e = 0; e < 12; ++e) {
         const glm::ivec3 d = cornerOffset(edgeCorners(e)[0]);
@@ -146,7 +146,10 @@ ChunkMesh extractChunk(const ChunkedGrid& grid, float iso, glm::ivec3 worldChunk
                 const uint8_t material = majorityMaterial(samples, cell, solid);
                 for (int t = 0; t < cellCase.triangleCount; ++t) {
                     CellTriangle triangle{cellKey, {}, material};
-                    for (int k = 0; k < 3; ++k) triangle.edges[size_t(k)] = uint64_t(int64_t(cellKey * 3) + edgeKeyOffsets[cellCase.edges[size_t(t * 3 + k)]]);
+                    for (int k = 0; k < 3; ++k) {
+                        const int edge = cellCase.edges[size_t(t * 3 + k)];
+                        triangle.edges[size_t(k)] = uint64_t(int64_t(cellKey * 3) + edgeKeyOffsets[edge]);
+                    }
                     mesh.triangles.push_back(triangle);
                 }
             }
