@@ -87,5 +87,18 @@ TEST(check_Work, RulesTimesCellsPerSweepAreBounded) {
     EXPECT_NE(result.diagnostics[0].message.find("3 x 9 window cells"), std::string::npos);
 }
 
+// Each distinct field stage compiles into a kernel; repeating one does not.
+TEST(check_Work, DistinctKernelsAreBounded) {
+    Limits limits;
+    limits.maxKernels = 3;
+    const std::string head = "world { size = [8, 8, 8]; }\nfield a = x;\nfield b = y;\npipeline {\n  start;\n"
+                             "  union a;\n  union a;\n  subtract a;\n  union b;\n";
+    EXPECT_FALSE(checkSource(SourceFile("t.vox", head + "  union b;\n}\n"), limits).hasErrors());
+    CheckResult result = checkSource(SourceFile("t.vox", head + "  set b;\n}\n"), limits);
+    ASSERT_EQ(codes(result), Codes{"E0012"}) << result.rendered();
+    EXPECT_EQ(result.diagnostics[0].loc.line, 10u);
+    EXPECT_NE(result.diagnostics[0].message.find("needs 4 kernels"), std::string::npos);
+}
+
 } // namespace
 } // namespace voxc

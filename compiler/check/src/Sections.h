@@ -59,7 +59,8 @@ CheckedFeatures checkFeatures(Context& context, const ast::File& file, const std
                               uint32_t seed);
 
 // E0012 at the stage where the pipeline's estimated work (docs/language.md, "Work estimate")
-// passes Limits::maxWork. Call on a program without errors.
+// passes Limits::maxWork, or its distinct kernels pass Limits::maxKernels. Call on a program
+// without errors.
 void checkWork(Context& context, const Program& program);
 
 // W0206-W0208: fields and features, grammars and materials the pipeline never uses. Call on a

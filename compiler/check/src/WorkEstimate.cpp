@@ -8,6 +8,9 @@
 
 #include <fmt/format.h>
 
+#include <set>
+#include <tuple>
+
 namespace voxc::check {
 
 namespace {
@@ -58,9 +61,35 @@ StageWork stageWork(const Program& program, const Stage& stage, double voxels) {
     return {};
 }
 
+// Compiling a kernel costs milliseconds whatever its size, so a pipeline of thousands of distinct
+// stages would compile for minutes: each field stage of a new (field, mode, material) is one
+// kernel, each window size (sweep) of a grammar not run before another. Reported at the stage
+// that passes Limits::maxKernels.
+void checkKernelCount(Context& context, const Program& program) {
+    std::set<std::tuple<uint32_t, FieldMode, int>> fieldStages;
+    std::set<uint32_t> grammars;
+    int64_t kernels = 0;
+    for (const Stage& stage : program.pipeline) {
+        if (stage.kind == Stage::Kind::Field && fieldStages.emplace(stage.index, stage.mode, stage.material ? *stage.material : -1).second)
+            kernels += 1;
+        else if (stage.kind == Stage::Kind::Grammar && grammars.insert(stage.index).second)
+            kernels += int64_t(orderSweeps(program.grammars[stage.index]).size());
+        else
+            continue;
+        if (kernels <= context.limits.maxKernels) continue;
+        context.diagnostics.error("E0012", stage.loc,
+                                  fmt::format("the pipeline needs {} kernels here, more than the limit of {} (a field "
+                                              "stage of a new field, mode or material is one kernel, each window size "
+                                              "of a grammar not run before one more)",
+                                              kernels, context.limits.maxKernels));
+        return;
+    }
+}
+
 } // namespace
 
 void checkWork(Context& context, const Program& program) {
+    checkKernelCount(context, program);
     const glm::ivec3 size = program.world.size;
     const double voxels = double(size.x) * size.y * size.z;
     const double budget = double(context.limits.maxWork);

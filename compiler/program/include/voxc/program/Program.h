@@ -184,6 +184,9 @@ struct Limits {
     // expression nesting, counted through inlined calls, that lowering accepts).
     int32_t maxFieldNodes = 100000;
     int32_t maxFieldDepth = 1024;
+    // Distinct kernels the pipeline needs (field stages of a new field, mode or material; sweeps
+    // of a grammar not run before): compiling each costs milliseconds.
+    int64_t maxKernels = 512;
     // Estimated work of the whole pipeline (see docs/language.md, "Work estimate"); `--max-work`.
     int64_t maxWork = int64_t(100) * 1000 * 1000 * 1000;
 };
