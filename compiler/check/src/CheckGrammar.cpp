@@ -162,17 +162,17 @@ void checkSweepSizes(Context& context, const ast::Block& block, const Grammar& g
     for (const Rule& rule : grammar.rules) {
         const int count = ++rulesPerSize[{rule.size.x, rule.size.y, rule.size.z}];
         const int64_t cells = int64_t(rule.size.x) * rule.size.y * rule.size.z;
+        const int64_t cellLimit = context.limits.maxSweepRuleCells;
         if (count == context.limits.maxRulesPerSweep + 1)
             context.diagnostics.error("E0012", block.labelLoc,
                                       fmt::format("grammar '{}' has more than {} rules of size {}", grammar.name,
                                                   context.limits.maxRulesPerSweep, formatVec(rule.size)));
-        else if (count * cells > context.limits.maxSweepRuleCells && (count - 1) * cells <= context.limits.maxSweepRuleCells)
+        else if (count * cells > cellLimit && (count - 1) * cells <= cellLimit)
             context.diagnostics.error(
                 "E0012", rule.loc,
                 fmt::format("grammar '{}' has {} rules of size {} with this one: {} x {} window cells is more than "
                             "the limit of {} per sweep (the size of its kernel)",
-                            grammar.name, count, formatVec(rule.size), count, cells,
-                            context.limits.maxSweepRuleCells));
+                            grammar.name, count, formatVec(rule.size), count, cells, cellLimit));
     }
 }
 

@@ -70,7 +70,8 @@ void checkKernelCount(Context& context, const Program& program) {
     std::set<uint32_t> grammars;
     int64_t kernels = 0;
     for (const Stage& stage : program.pipeline) {
-        if (stage.kind == Stage::Kind::Field && fieldStages.emplace(stage.index, stage.mode, stage.material ? *stage.material : -1).second)
+        const int material = stage.material ? int(*stage.material) : -1;
+        if (stage.kind == Stage::Kind::Field && fieldStages.emplace(stage.index, stage.mode, material).second)
             kernels += 1;
         else if (stage.kind == Stage::Kind::Grammar && grammars.insert(stage.index).second)
             kernels += int64_t(orderSweeps(program.grammars[stage.index]).size());
