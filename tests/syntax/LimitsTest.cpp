@@ -42,6 +42,12 @@ Nested fieldParens(size_t levels) {
     return {"field f = " + repeat("(", levels) + "x" + repeat(")", levels) + ";", uint32_t(11 + levels)};
 }
 Nested fieldUnary(size_t levels) { return {"field f = " + repeat("!", levels) + "x;", uint32_t(11 + levels)}; }
+// Calls nest a level per call: `abs(abs(x))`.
+Nested calls(size_t levels) {
+    return {"field f = " + repeat("abs(", levels) + "x" + repeat(")", levels) + ";", uint32_t(11 + 4 * levels)};
+}
+// `.x` chains left-associatively: `x.x.x` is reported at its first operand.
+Nested swizzles(size_t levels) { return {"field f = x" + repeat(".x", levels) + ";", 11}; }
 // Each `let v = 1 in ` is 13 characters; the innermost let's value passes the limit.
 Nested lets(size_t levels) {
     return {"field f = " + repeat("let v = 1 in ", levels) + "v;", uint32_t(11 + 13 * (levels - 1) + 8)};
@@ -73,6 +79,8 @@ const Construct kConstructs[] = {
     {"negations", negations, 252},
     {"field parentheses", fieldParens, 252},
     {"field unary operators", fieldUnary, 252},
+    {"calls", calls, 252},
+    {"swizzles", swizzles, 252},
     {"let chains", lets, 252},
     {"conditional chains", conditionals, 252},
     // file, item, block, member, assignment, then the number's value and expression: 256 - 7.
