@@ -285,6 +285,16 @@ void Generator::grammars() {
         grammars_.push_back(fmt::format("g{}", g));
         out_ += fmt::format("grammar g{} {{\n  iterations = {};\n", g, random_.range(1, 4));
         if (random_.chance(0.5)) out_ += "  clamp = [0, 1];\n";
+        if (random_.chance(0.3))
+            out_ += fmt::format("  stride = [{}, {}, {}];\n", random_.range(1, 2), random_.range(1, 2), random_.range(1, 2));
+        if (random_.chance(0.3)) {
+            std::array<int, 3> lo{}, hi{};
+            for (int a = 0; a < 3; ++a) {
+                lo[a] = random_.range(0, (size_[a] - 1) / 2);
+                hi[a] = random_.range(lo[a] + 1, size_[a]);
+            }
+            out_ += fmt::format("  bounds = [[{}, {}, {}], [{}, {}, {}]];\n", lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
+        }
         const int rules = random_.range(1, 3);
         for (int r = 0; r < rules; ++r) {
             const std::array<int, 3> window = {random_.range(1, 3), random_.range(1, 3), random_.range(1, 2)};
