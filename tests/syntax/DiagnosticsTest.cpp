@@ -36,6 +36,23 @@ TEST(syntax_Diagnostics, CaretClipsToTheLineAndKeepsTabsAndUtf8Aligned) {
                                  "      | \t       ^\n");
 }
 
+// A long line is shown as 160 characters around the caret (60 before it), marked with "...".
+TEST(syntax_Diagnostics, LongLinesShowAWindowAroundTheCaret) {
+    std::string line;
+    for (int i = 0; i < 1000; ++i) line += char('a' + i % 26);
+    SourceFile source("t.vox", line + "\n");
+    Diagnostic d{Severity::Error, "E0001", {1, 501, 1000}, "m", {}};
+    EXPECT_EQ(render(d, source), "t.vox:1:501: error E0001: m\n"
+                                 "    1 | ..." + line.substr(440, 160) + "...\n"
+                                 "      | " + std::string(63, ' ') + "^" + std::string(99, '~') + "\n");
+    // Near the start nothing is cut before; near the end nothing after.
+    d.loc = {1, 3, 1};
+    EXPECT_EQ(render(d, source), "t.vox:1:3: error E0001: m\n    1 | " + line.substr(0, 160) + "...\n      |   ^\n");
+    d.loc = {1, 1000, 1};
+    EXPECT_EQ(render(d, source), "t.vox:1:1000: error E0001: m\n    1 | ..." + line.substr(840) + "\n      | " +
+                                     std::string(3 + 159, ' ') + "^\n");
+}
+
 TEST(syntax_Diagnostics, DeduplicatesIdenticalDiagnostics) {
     Diagnostics diagnostics;
     diagnostics.error("E0002", {1, 1, 1}, "unknown");

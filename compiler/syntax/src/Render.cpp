@@ -3,6 +3,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <vector>
+
 namespace voxc {
 
 namespace {
@@ -18,24 +21,34 @@ const char* severityName(Severity severity) {
 
 bool isContinuationByte(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
 
+// Lines longer than this many characters are shown as a window around the caret, so that a
+// file of one 4 MB line does not print 4 MB per diagnostic.
+constexpr size_t kMaxShownCharacters = 160;
+constexpr size_t kShownBeforeCaret = 60;
+
 // The source line and a caret line under columns [column, column + length) (in characters),
 // clipped to the line. Tabs before the caret are kept so the caret lines up in a terminal.
 std::string snippet(const SourceFile& source, SourceLoc loc) {
     std::string_view text = source.line(loc.line);
-    std::string margin;
-    uint32_t column = 1;
-    size_t i = 0;
-    for (; i < text.size() && column < loc.column; ++i) {
-        if (isContinuationByte(text[i])) continue;
-        margin += text[i] == '\t' ? '\t' : ' ';
-        ++column;
+    std::vector<size_t> starts; // byte offset of each character
+    for (size_t i = 0; i < text.size(); ++i)
+        if (!isContinuationByte(text[i])) starts.push_back(i);
+    const size_t caret = std::min<size_t>(loc.column == 0 ? 0 : loc.column - 1, starts.size());
+    size_t first = 0, last = starts.size(); // shown characters [first, last)
+    if (starts.size() > kMaxShownCharacters) {
+        first = caret > kShownBeforeCaret ? std::min(caret - kShownBeforeCaret, starts.size() - kMaxShownCharacters) : 0;
+        last = first + kMaxShownCharacters;
     }
-    uint32_t remaining = 0;
-    for (size_t k = i; k < text.size(); ++k)
-        if (!isContinuationByte(text[k])) ++remaining;
-    uint32_t width = std::max<uint32_t>(1, std::min(loc.length, remaining));
+    auto byteAt = [&](size_t character) { return character < starts.size() ? starts[character] : text.size(); };
+    const std::string before = first > 0 ? "..." : "";
+    const std::string after = last < starts.size() ? "..." : "";
+    std::string margin(before.size(), ' ');
+    for (size_t c = first; c < caret; ++c) margin += text[starts[c]] == '\t' ? '\t' : ' ';
+    const size_t remaining = last > caret ? last - caret : 0;
+    const size_t width = std::max<size_t>(1, std::min<size_t>(loc.length, remaining));
     std::string gutter = fmt::format("{:>5} | ", loc.line);
-    return fmt::format("{}{}\n      | {}^{}\n", gutter, text, margin, std::string(width - 1, '~'));
+    return fmt::format("{}{}{}{}\n      | {}^{}\n", gutter, before, text.substr(byteAt(first), byteAt(last) - byteAt(first)),
+                       after, margin, std::string(width - 1, '~'));
 }
 
 void renderOne(std::string& out, Severity severity, std::string_view code, SourceLoc loc, std::string_view message,
