@@ -78,7 +78,8 @@ void checkKernelCount(Context& context, const Program& program) {
         else
             continue;
         if (kernels <= context.limits.maxKernels) continue;
-        const bool located = stage.loc.line != 0 || stage.kind != Stage::Kind::Grammar; // the default pipeline's are not
+        // The default pipeline's grammar stages have no location of their own.
+        const bool located = stage.loc.line != 0 || stage.kind != Stage::Kind::Grammar;
         context.diagnostics.error("E0012", located ? stage.loc : program.grammars[stage.index].loc,
                                   fmt::format("the pipeline needs {} kernels here, more than the limit of {} (a field "
                                               "stage of a new field, mode or material is one kernel, each window size "

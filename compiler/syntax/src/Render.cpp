@@ -36,7 +36,8 @@ std::string snippet(const SourceFile& source, SourceLoc loc) {
     const size_t caret = std::min<size_t>(loc.column == 0 ? 0 : loc.column - 1, starts.size());
     size_t first = 0, last = starts.size(); // shown characters [first, last)
     if (starts.size() > kMaxShownCharacters) {
-        first = caret > kShownBeforeCaret ? std::min(caret - kShownBeforeCaret, starts.size() - kMaxShownCharacters) : 0;
+        const size_t lastFirst = starts.size() - kMaxShownCharacters;
+        first = caret > kShownBeforeCaret ? std::min(caret - kShownBeforeCaret, lastFirst) : 0;
         last = first + kMaxShownCharacters;
     }
     auto byteAt = [&](size_t character) { return character < starts.size() ? starts[character] : text.size(); };
@@ -47,8 +48,8 @@ std::string snippet(const SourceFile& source, SourceLoc loc) {
     const size_t remaining = last > caret ? last - caret : 0;
     const size_t width = std::max<size_t>(1, std::min<size_t>(loc.length, remaining));
     std::string gutter = fmt::format("{:>5} | ", loc.line);
-    return fmt::format("{}{}{}{}\n      | {}^{}\n", gutter, before, text.substr(byteAt(first), byteAt(last) - byteAt(first)),
-                       after, margin, std::string(width - 1, '~'));
+    const std::string_view shown = text.substr(byteAt(first), byteAt(last) - byteAt(first));
+    return fmt::format("{}{}{}{}\n      | {}^{}\n", gutter, before, shown, after, margin, std::string(width - 1, '~'));
 }
 
 void renderOne(std::string& out, Severity severity, std::string_view code, SourceLoc loc, std::string_view message,
