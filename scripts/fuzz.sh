@@ -4,16 +4,17 @@
 #   scripts/fuzz.sh TARGET|all SECONDS [--runs N] [--fresh] [--keep-going] [--no-build]
 #   scripts/fuzz.sh --build
 #
-# TARGET is parse, check or lower (libFuzzer, ASan + UBSan, in the clang tree build-fuzz/, configured
-# and built here when needed; VOXC_FUZZ_BUILD_DIR overrides it) or diff (the differential fuzzer,
-# interpreter vs Vulkan, in the g++ tree build/; VOXC_BUILD_DIR overrides it). `all` runs parse,
-# check and lower, SECONDS each. --runs N stops a target after N inputs. Inputs come from the seeds
-# (examples/, every .vox under tests/), tests/fuzz/regressions/TARGET and a working corpus kept in
+# TARGET is parse, check or lower (libFuzzer, ASan + UBSan, in the clang tree build-fuzz/,
+# configured and built here when needed; VOXC_FUZZ_BUILD_DIR overrides it) or diff (the
+# differential fuzzer, interpreter vs Vulkan, in the g++ tree build/; VOXC_BUILD_DIR overrides it).
+# `all` runs parse, check and lower, SECONDS each. --runs N stops a target after N inputs.
+# Inputs come from the seeds (examples/, every .vox under tests/), tests/fuzz/regressions/TARGET,
+# the committed corpus tests/fuzz/corpus/TARGET (where there is one) and a working corpus kept in
 # the build tree; --fresh uses a temporary one instead, so a run starts from the committed inputs
 # only. --keep-going runs libFuzzer in fork mode and carries on past crashes, hangs and OOMs (each
 # saved under the build tree's fuzz/artifacts/TARGET/). --no-build runs the targets as built (for
-# several runs at once on one tree). Prints executions, coverage and findings per
-# target and exits non-zero on any crash, hang (> 1 s per input), OOM or sanitizer report.
+# several runs at once on one tree). Prints executions, coverage and findings per target and
+# exits non-zero on any crash, hang (> 1 s per input), OOM or sanitizer report.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 fuzz_build=${VOXC_FUZZ_BUILD_DIR:-$root/build-fuzz}
@@ -88,8 +89,9 @@ for t in "${targets[@]}"; do
              -max_total_time="$seconds" -runs="$runs" -artifact_prefix="$artifacts" -print_final_stats=1)
     [ $keep_going -eq 0 ] || options+=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
     status=0 started=$SECONDS
-    "$fuzz_build/tests/fuzz/voxc_fuzz_$t" "${options[@]}" "$corpus" "$seeds" "$root/tests/fuzz/regressions/$t" \
-        > "$log" 2>&1 || status=$?
+    inputs=("$corpus" "$seeds" "$root/tests/fuzz/regressions/$t")
+    [ ! -d "$root/tests/fuzz/corpus/$t" ] || inputs+=("$root/tests/fuzz/corpus/$t")
+    "$fuzz_build/tests/fuzz/voxc_fuzz_$t" "${options[@]}" "${inputs[@]}" > "$log" 2>&1 || status=$?
     elapsed=$((SECONDS - started))
     found=$(grep -aoE 'Test unit written to .*' "$log" | sort -u | wc -l)
     # The last progress line ("#N ... cov: C ft: F corp: K/..") holds the totals; final stats
