@@ -87,6 +87,20 @@ TEST(check_Work, RulesTimesCellsPerSweepAreBounded) {
     EXPECT_NE(result.diagnostics[0].message.find("3 x 9 window cells"), std::string::npos);
 }
 
+TEST(check_Work, TestsPerCellAreBounded) {
+    auto cell = [](int tests) {
+        std::string text = "GEQ 0";
+        for (int i = 1; i < tests; ++i) text += " & GEQ 0." + std::to_string(i);
+        return "[" + text + "]";
+    };
+    EXPECT_FALSE(test::check(test::oneRule("[1, 1, 1]", cell(32), "[SET 1]")).hasErrors());
+    CheckResult result = test::check(test::oneRule("[1, 1, 1]", cell(33), "[SET 1]"));
+    ASSERT_EQ(codes(result), Codes{"E0012"}) << result.rendered();
+    EXPECT_EQ(result.diagnostics[0].loc.line, 7u);
+    EXPECT_EQ(result.diagnostics[0].loc.column, 15u);
+    EXPECT_NE(result.diagnostics[0].message.find("joins 33 tests"), std::string::npos);
+}
+
 // Each distinct field stage compiles into a kernel; repeating one does not.
 TEST(check_Work, DistinctKernelsAreBounded) {
     Limits limits;

@@ -178,6 +178,13 @@ std::optional<uint8_t> readMaterialOperand(Context& context, const ast::Term& te
 } // namespace
 
 std::optional<SymbolCell> convertSymbolCell(Context& context, const ast::Cell& cell) {
+    // Every test of every cell is compiled into the sweep's kernel and run at every anchor.
+    if (cell.terms.size() > size_t(context.limits.maxCellTerms)) {
+        context.diagnostics.error("E0012", cell.loc,
+                                  fmt::format("this cell joins {} tests with '&', more than the limit of {}",
+                                              cell.terms.size(), context.limits.maxCellTerms));
+        return std::nullopt;
+    }
     SymbolCell out;
     bool ok = true;
     for (const ast::Term& term : cell.terms) {

@@ -17,7 +17,8 @@ namespace voxc::check {
 std::optional<std::vector<const ast::Cell*>> readLayout(Context& context, const ast::Block& block, glm::ivec3 size);
 
 // `GEQ 0.5 & LT 0.9 & MAT rock`: operator names (E0011), arity (E0006), values and material
-// names (E0002). IGN terms are dropped, since an empty predicate list already means IGN.
+// names (E0002), at most Limits::maxCellTerms of them (E0012). IGN terms are dropped, since an
+// empty predicate list already means IGN.
 std::optional<SymbolCell> convertSymbolCell(Context& context, const ast::Cell& cell);
 
 // `ADD -0.5`, `MAT sand` or `SET 1 & MAT sand`: one density operator (NOP when only a material
