@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 namespace voxc {
 namespace {
 
@@ -155,6 +158,18 @@ TEST(check_Limits, NumbersBeyondTheRangeAreE0007Everywhere) {
         EXPECT_EQ(first.code, "E0007") << result.rendered();
         EXPECT_EQ(first.loc.line, c.line) << result.rendered();
         EXPECT_EQ(first.loc.column, c.column) << result.rendered();
+    }
+}
+
+// `voxc explore` replaces constants by value; a NaN would pass every range check.
+TEST(check_Limits, NonFiniteConstantOverridesAreE0007) {
+    for (double value : {std::nan(""), std::numeric_limits<double>::infinity()}) {
+        CheckOptions options;
+        options.constOverrides["R"] = value;
+        CheckResult result = checkSource(SourceFile("t.vox", "const R = 1;\n" + kWorld + "field f = x * R;\n"), options);
+        ASSERT_EQ(codes(result), std::vector<std::string>{"E0007"}) << result.rendered();
+        EXPECT_EQ(result.diagnostics[0].loc.line, 1u);
+        EXPECT_EQ(result.diagnostics[0].loc.column, 7u);
     }
 }
 

@@ -15,7 +15,16 @@ void Constants::declare(const ast::ConstDecl& decl) {
         return;
     }
     std::optional<double> value = decl.value ? evaluate(*decl.value) : std::nullopt;
-    if (auto it = overrides_.find(decl.name); it != overrides_.end()) value = it->second;
+    if (auto it = overrides_.find(decl.name); it != overrides_.end()) {
+        value = it->second;
+        // A NaN would pass every range check (comparisons with it are false) and reach the program.
+        if (!std::isfinite(*value)) {
+            diagnostics_.error("E0007", decl.loc,
+                               fmt::format("the override of constant '{}' is {}, not a finite number", decl.name,
+                                           *value));
+            value = std::nullopt;
+        }
+    }
     entries_.emplace(decl.name, Entry{decl.loc, value});
 }
 
