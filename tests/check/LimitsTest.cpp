@@ -166,7 +166,8 @@ TEST(check_Limits, NonFiniteConstantOverridesAreE0007) {
     for (double value : {std::nan(""), std::numeric_limits<double>::infinity()}) {
         CheckOptions options;
         options.constOverrides["R"] = value;
-        CheckResult result = checkSource(SourceFile("t.vox", "const R = 1;\n" + kWorld + "field f = x * R;\n"), options);
+        const std::string text = "const R = 1;\n" + kWorld + "field f = x * R;\n";
+        CheckResult result = checkSource(SourceFile("t.vox", text), options);
         ASSERT_EQ(codes(result), std::vector<std::string>{"E0007"}) << result.rendered();
         EXPECT_EQ(result.diagnostics[0].loc.line, 1u);
         EXPECT_EQ(result.diagnostics[0].loc.column, 7u);

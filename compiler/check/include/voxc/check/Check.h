@@ -31,7 +31,8 @@ struct CheckOptions {
     // Replaces the value of each named `const`, as if its declaration said `const NAME = value;`
     // (its own expression is still checked), so every use sees the new value: constants folded
     // from it, grammar cells, world and shape keys, field expressions. A name the file does not
-    // declare is error E0002 without a location; a NaN or infinite value is E0007 at the declaration. `voxc explore` sweeps a constant this way.
+    // declare is error E0002 without a location; a NaN or infinite value is E0007 at the
+    // declaration. `voxc explore` sweeps a constant this way.
     std::map<std::string, double, std::less<>> constOverrides;
 };
 
