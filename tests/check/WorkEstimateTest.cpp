@@ -87,6 +87,18 @@ TEST(check_Work, RulesTimesCellsPerSweepAreBounded) {
     EXPECT_NE(result.diagnostics[0].message.find("3 x 9 window cells"), std::string::npos);
 }
 
+TEST(check_Work, StartShapesAreBounded) {
+    Limits limits;
+    limits.maxStartShapes = 2;
+    const std::string head = "world { size = [8, 8, 8]; }\nstart {\n  fill { value = 0; }\n  fill { value = 1; }\n";
+    EXPECT_FALSE(checkSource(SourceFile("t.vox", head + "}\n"), limits).hasErrors());
+    CheckResult result = checkSource(SourceFile("t.vox", head + "  fill { value = 0.5; }\n}\n"), limits);
+    ASSERT_EQ(codes(result), Codes{"E0012"}) << result.rendered();
+    EXPECT_EQ(result.diagnostics[0].loc.line, 5u);
+    EXPECT_EQ(result.diagnostics[0].loc.column, 3u);
+    EXPECT_NE(result.diagnostics[0].message.find("3 shapes, more than the limit of 2"), std::string::npos);
+}
+
 TEST(check_Work, TestsPerCellAreBounded) {
     auto cell = [](int tests) {
         std::string text = "GEQ 0";

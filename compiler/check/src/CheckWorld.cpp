@@ -134,6 +134,13 @@ std::vector<StartShape> checkStart(Context& context, const ast::Block& block) {
                                   fmt::format("unexpected key '{}' in 'start' block; it holds shapes such as "
                                               "'box {{ ... }}'",
                                               a.key));
+    // All shapes compile into the one start kernel (2000 shapes take seconds to compile).
+    if (block.blocks.size() > size_t(context.limits.maxStartShapes)) {
+        context.diagnostics.error("E0012", block.blocks[size_t(context.limits.maxStartShapes)].loc,
+                                  fmt::format("the start state has {} shapes, more than the limit of {}",
+                                              block.blocks.size(), context.limits.maxStartShapes));
+        return {};
+    }
     std::vector<StartShape> shapes;
     for (const ast::Block& shapeBlock : block.blocks)
         if (auto shape = checkShape(context, shapeBlock)) shapes.push_back(*shape);

@@ -174,6 +174,7 @@ struct Limits {
     // Rules x window cells of one sweep: the size of its generated kernel; tests per symbol cell.
     int64_t maxSweepRuleCells = 4096;
     int32_t maxCellTerms = 32;
+    int32_t maxStartShapes = 256;
     int64_t maxSourceBytes = int64_t(4) << 20;
     // Depth of the parse tree: brackets, blocks, unary operators, `let`, `?:` and operator chains.
     int32_t maxNesting = 256;
