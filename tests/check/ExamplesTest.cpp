@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 namespace voxc {
 namespace {
 
@@ -17,6 +19,21 @@ TEST_P(check_Examples, CheckCleanly) {
 }
 
 INSTANTIATE_TEST_SUITE_P(files, check_Examples, testing::Values("overhang", "cave_grammar", "terrain"));
+
+// Every example, grammar or not, checks without a diagnostic: no unused declaration (W0206-W0208),
+// and well inside every limit, the work budget included.
+TEST(check_Examples, EveryExampleChecksWithoutWarnings) {
+    size_t examples = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(VOXC_EXAMPLES_DIR)) {
+        if (entry.path().extension() != ".vox") continue;
+        ++examples;
+        Limits limits;
+        limits.maxWork /= 100;
+        CheckResult result = checkFile(entry.path().string(), limits);
+        EXPECT_TRUE(result.diagnostics.empty()) << result.rendered();
+    }
+    EXPECT_GE(examples, 8u);
+}
 
 TEST(check_Examples, OverhangIsDeyTable33) {
     CheckResult result = checkFile(std::string(VOXC_EXAMPLES_DIR) + "/overhang.vox");
