@@ -7,7 +7,7 @@ packages=(
   glslang-dev glslang-tools spirv-tools
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
   libglm-dev libfmt-dev libcli11-dev nlohmann-json3-dev libmeshoptimizer-dev
-  libgtest-dev libbenchmark-dev libnoise-dev zlib1g-dev
+  libgtest-dev libbenchmark-dev libnoise-dev zlib1g-dev libpng-dev
   ccache python3-numpy
   clang libclang-rt-14-dev
 )

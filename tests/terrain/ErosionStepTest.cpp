@@ -1,0 +1,121 @@
+// The spec's worked single step (B4.1): a 2x1 closed grid, b = (1, 0), d1 = (0.5, 0).
+// Expected values are the spec's closed forms in double; float32 results within 1e-6.
+#include "voxc/generators/terrain/Erosion.h"
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <limits>
+
+namespace voxc::terrain {
+namespace {
+
+constexpr double kTolerance = 1e-6;
+
+ErosionParams workedParams(Transport transport) {
+    ErosionParams p;
+    p.pipeArea = 1.0f;
+    p.gravity = 4.0f;
+    p.pipeLength = 1.0f;
+    p.cellSize = 1.0f;
+    p.dt = 0.1f;
+    p.capacity = 1.0f;
+    p.suspension = 0.5f;
+    p.deposition = 0.5f;
+    p.evaporation = 0.1f;
+    p.depthLimit = std::numeric_limits<float>::infinity();
+    p.rain = RainMode::None; // the rain hook: d1 is set directly
+    p.transport = transport;
+    return p;
+}
+
+ErosionGrid workedGrid() {
+    ErosionGrid grid(2, 1);
+    grid.base.values = {1.0f, 0.0f};
+    grid.water.values = {0.5f, 0.0f};
+    return grid;
+}
+
+// Closed forms of the worked step (spec B4.1).
+const double kU0 = 0.3 / 0.47;                    // u(0) = dW_X / d_mean
+const double kSuspended = 0.1 * 0.5 * std::sqrt(0.5) * kU0; // dt * K_s * C(0), C(0) = sin(phi) * |u|
+
+TEST(ErosionStepTest, FluxWaterAndVelocityOfTheWorkedStep) {
+    const ErosionParams params = workedParams(Transport::Conservative);
+    ErosionGrid grid = workedGrid();
+    updateFlux(grid, params);
+    EXPECT_NEAR(grid.fluxR.values[0], 0.6, kTolerance);
+    for (const Field2* flux : {&grid.fluxL, &grid.fluxT, &grid.fluxB}) EXPECT_EQ(flux->values[0], 0.0f);
+    for (const Field2* flux : {&grid.fluxL, &grid.fluxR, &grid.fluxT, &grid.fluxB}) EXPECT_EQ(flux->values[1], 0.0f);
+    updateWaterAndVelocity(grid, params);
+    EXPECT_NEAR(grid.water.values[0], 0.44, kTolerance);
+    EXPECT_NEAR(grid.water.values[1], 0.06, kTolerance);
+    EXPECT_NEAR(grid.velocityU.values[0], kU0, kTolerance);
+    EXPECT_NEAR(grid.velocityU.values[0], 0.638298, kTolerance); // the spec's printed value
+    EXPECT_EQ(grid.velocityU.values[1], 5.0f); // 0.3 / 0.03 = 10, clamped to 0.5 * l_x / dt
+    EXPECT_EQ(grid.velocityV.values[0], 0.0f);
+}
+
+TEST(ErosionStepTest, ErosionOfTheWorkedStep) {
+    const ErosionParams params = workedParams(Transport::Conservative);
+    ErosionGrid grid = workedGrid();
+    updateFlux(grid, params);
+    updateWaterAndVelocity(grid, params);
+    erodeAndDeposit(grid, params);
+    EXPECT_NEAR(grid.base.values[0] + grid.difference.values[0], 1.0 - kSuspended, kTolerance);
+    EXPECT_NEAR(grid.base.values[0] + grid.difference.values[0], 0.977433, kTolerance);
+    EXPECT_EQ(grid.difference.values[1], 0.0f);
+    EXPECT_NEAR(grid.suspended.values[0], 0.022567, kTolerance);
+    EXPECT_EQ(grid.suspended.values[1], 0.0f);
+}
+
+TEST(ErosionStepTest, WholeStepWithMeiTransport) {
+    ErosionGrid grid = workedGrid();
+    erosionStep(grid, workedParams(Transport::Mei), 0, 0);
+    EXPECT_NEAR(grid.sediment.values[0], kSuspended, kTolerance);
+    EXPECT_NEAR(grid.sediment.values[1], 0.5 * kSuspended, kTolerance); // sampled half way back
+    EXPECT_NEAR(grid.sediment.values[1], 0.011284, kTolerance);
+    EXPECT_NEAR(grid.water.values[0], 0.4356, kTolerance);
+    EXPECT_NEAR(grid.water.values[1], 0.0594, kTolerance);
+    // The backward sample creates sediment: sum(b + s) = 1.011284.
+    const double solid = grid.base.values[0] + grid.difference.values[0] + grid.base.values[1] + grid.difference.values[1] +
+                         grid.sediment.values[0] + grid.sediment.values[1];
+    EXPECT_NEAR(solid, 1.0 + 0.5 * kSuspended, kTolerance);
+}
+
+TEST(ErosionStepTest, WholeStepWithConservativeTransport) {
+    ErosionGrid grid = workedGrid();
+    erosionStep(grid, workedParams(Transport::Conservative), 0, 0);
+    const double moved = 0.1 * kU0; // u(0) dt / l_x of a cell
+    EXPECT_NEAR(grid.sediment.values[0], kSuspended * (1.0 - moved), kTolerance);
+    EXPECT_NEAR(grid.sediment.values[0], 0.021127, kTolerance);
+    EXPECT_NEAR(grid.sediment.values[1], kSuspended * moved, kTolerance);
+    EXPECT_NEAR(grid.sediment.values[1], 0.001440, kTolerance);
+    EXPECT_NEAR(grid.water.values[0], 0.4356, kTolerance);
+    EXPECT_NEAR(grid.water.values[1], 0.0594, kTolerance);
+    const double solid = grid.base.values[0] + grid.difference.values[0] + grid.base.values[1] + grid.difference.values[1] +
+                         grid.sediment.values[0] + grid.sediment.values[1];
+    EXPECT_NEAR(solid, 1.0, kTolerance);
+}
+
+TEST(ErosionStepTest, DropsAreDeterministicAndWithinTheirRanges) {
+    ErosionParams params;
+    params.seed = 7;
+    for (uint32_t step = 0; step < 100; ++step) {
+        const Drop drop = dropAt(params, 64, 32, 8, step);
+        EXPECT_GE(drop.intensity, params.rainMin);
+        EXPECT_LE(drop.intensity, params.rainMax);
+        EXPECT_GE(drop.radius, params.radiusMin);
+        EXPECT_LE(drop.radius, params.radiusMax);
+        EXPECT_GE(drop.centreX, 0.0f);
+        EXPECT_LT(drop.centreX, 64.0f);
+        EXPECT_GE(drop.centreY, 0.0f);
+        EXPECT_LT(drop.centreY, 32.0f);
+        const Drop again = dropAt(params, 64, 32, 8, step);
+        EXPECT_EQ(drop.centreX, again.centreX);
+        EXPECT_EQ(drop.intensity, again.intensity);
+    }
+    EXPECT_NE(dropAt(params, 64, 32, 8, 0).centreX, dropAt(params, 64, 32, 9, 0).centreX); // the level keys the hash
+}
+
+} // namespace
+} // namespace voxc::terrain
