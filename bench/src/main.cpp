@@ -9,6 +9,7 @@
 #include "CompileCases.h"
 #include "JsonReporter.h"
 #include "LsystemCases.h"
+#include "TerrainCases.h"
 
 #include "voxc/codegen/Codegen.h"
 #include "voxc/core/Errors.h"
@@ -119,6 +120,7 @@ int main(int argc, char** argv) {
             if (uses("libnoise")) registerLibnoise(reporter, n);
         }
         if (uses("host")) bench::registerLsystemExpand(reporter);
+        if (uses("host")) bench::registerErosion(reporter);
         if (uses("host")) bench::registerCompileCases(reporter);
         if (options.json) {
             benchmark::RunSpecifiedBenchmarks(&reporter);
