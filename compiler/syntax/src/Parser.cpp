@@ -55,7 +55,7 @@ void reportUnterminatedComments(antlr4::CommonTokenStream& tokens, Diagnostics& 
 struct NestingTooDeep {};
 
 std::string nestingMessage(uint32_t maxNesting) {
-    return fmt::format("nesting is deeper than the limit of {} levels (each bracket, block, unary operator, "
+    return fmt::format("nesting is deeper than the limit of {} levels (each bracket, call, block, unary operator, "
                        "'let', '?:' branch and operator of a chain adds a level)",
                        maxNesting);
 }
