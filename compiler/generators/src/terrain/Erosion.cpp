@@ -55,12 +55,12 @@ float uniform(uint32_t seed, int32_t level, uint32_t step, uint32_t draw) {
     return float(h >> 8) * 0x1p-24f;
 }
 
-// Bed height b = base + S_h at a clamped cell.
-float bed(const ErosionGrid& g, int32_t x, int32_t y) {
-    x = std::clamp(x, 0, g.width() - 1);
-    y = std::clamp(y, 0, g.height() - 1);
-    const size_t i = g.base.index(x, y);
-    return g.base.values[i] + g.difference.values[i];
+// surface = b (+ d when withWater), b = base + S_h, precomputed so every neighbour read is one load.
+void computeSurface(ErosionGrid& g, bool withWater) {
+    for (size_t i = 0; i < g.surface.values.size(); ++i) {
+        const float b = g.base.values[i] + g.difference.values[i];
+        g.surface.values[i] = withWater ? b + g.water.values[i] : b;
+    }
 }
 
 // A flux channel's value at (x, y), 0 outside the grid (closed boundary).
@@ -108,7 +108,9 @@ void validateErosion(const ErosionParams& p) {
 ErosionGrid::ErosionGrid(int32_t width, int32_t height)
     : base(width, height), rain(width, height, 1.0f), capacity(width, height, 1.0f), difference(width, height), water(width, height),
       sediment(width, height), fluxL(width, height), fluxR(width, height), fluxT(width, height), fluxB(width, height),
-      velocityU(width, height), velocityV(width, height), suspended(width, height), differenceNext(width, height) {}
+      velocityU(width, height), velocityV(width, height), suspended(width, height), differenceNext(width, height),
+      surface(width, height), arrivalX(width, height), arrivalY(width, height), arrivalFracX(width, height),
+      arrivalFracY(width, height) {}
 
 Drop dropAt(const ErosionParams& p, int32_t width, int32_t height, int32_t level, uint32_t step) {
     Drop drop;
@@ -142,14 +144,15 @@ void updateFlux(ErosionGrid& g, const ErosionParams& p) {
     const float coefficient = (p.dt * p.pipeArea) * p.gravity;
     const float area = p.cellSize * p.cellSize;
     const int32_t w = g.width(), h = g.height();
+    computeSurface(g, true);
     for (int32_t y = 0; y < h; ++y)
         for (int32_t x = 0; x < w; ++x) {
             const size_t i = g.water.index(x, y);
             const float d = g.water.values[i];
-            const float level = bed(g, x, y) + d;
+            const float level = g.surface.values[i];
             auto outflow = [&](float flux, int32_t nx, int32_t ny) {
                 if (nx < 0 || ny < 0 || nx >= w || ny >= h) return 0.0f;
-                const float drop = level - (bed(g, nx, ny) + g.water.at(nx, ny));
+                const float drop = level - g.surface.at(nx, ny);
                 return std::max(0.0f, flux + (coefficient * drop) / p.pipeLength);
             };
             float fl = outflow(g.fluxL.values[i], x - 1, y), fr = outflow(g.fluxR.values[i], x + 1, y);
@@ -199,12 +202,14 @@ void updateWaterAndVelocity(ErosionGrid& g, const ErosionParams& p) {
 void erodeAndDeposit(ErosionGrid& g, const ErosionParams& p) {
     const float e = p.depthLimit;
     const bool limited = std::isfinite(e);
+    computeSurface(g, false);
+    const Field2& bed = g.surface;
     for (int32_t y = 0; y < g.height(); ++y)
         for (int32_t x = 0; x < g.width(); ++x) {
             const size_t i = g.water.index(x, y);
-            const float b = bed(g, x, y);
-            const float px = std::clamp(b - std::min(bed(g, x - 1, y), bed(g, x + 1, y)), 0.0f, 1.0f);
-            const float py = std::clamp(b - std::min(bed(g, x, y - 1), bed(g, x, y + 1)), 0.0f, 1.0f);
+            const float b = bed.values[i];
+            const float px = std::clamp(b - std::min(bed.clamped(x - 1, y), bed.clamped(x + 1, y)), 0.0f, 1.0f);
+            const float py = std::clamp(b - std::min(bed.clamped(x, y - 1), bed.clamped(x, y + 1)), 0.0f, 1.0f);
             const float q = px * px + py * py;
             const float sinTilt = std::max(std::sqrt(q / (1.0f + q)), p.minTilt);
             const float u = g.velocityU.values[i], v = g.velocityV.values[i];
@@ -246,29 +251,36 @@ void transportMei(ErosionGrid& g, const ErosionParams& p) {
         }
 }
 
-// Weight a splat from departure coordinate `target` (already clamped) gives to cell `cell` along one axis.
-float splatWeight(float target, int32_t cell) {
-    const float base = std::floor(target);
-    const float frac = target - base;
-    if (float(cell) == base) return 1.0f - frac;
-    if (float(cell) == base + 1.0f) return frac;
+// Weight a splat arriving at floor + frac (clamped into the grid) gives to cell `cell` along one axis.
+float splatWeight(float floor, float frac, int32_t cell) {
+    if (float(cell) == floor) return 1.0f - frac;
+    if (float(cell) == floor + 1.0f) return frac;
     return 0.0f;
 }
 
 // Forward splat as a gather: each source within one cell sends s1 bilinearly to its clamped arrival
-// point; |u dt| <= 0.5 cell keeps every arrival within the 3x3 neighbourhood. Sources in row-major order.
+// point; |u dt| <= 0.5 cell keeps every arrival within the 3x3 neighbourhood. The arrivals are
+// computed once per cell first; then each cell sums its sources in row-major order.
 void transportConservative(ErosionGrid& g, const ErosionParams& p) {
     const int32_t w = g.width(), h = g.height();
     for (int32_t y = 0; y < h; ++y)
         for (int32_t x = 0; x < w; ++x) {
+            const size_t i = g.water.index(x, y);
+            const float tx = std::clamp(float(x) + (g.velocityU.values[i] * p.dt) / p.cellSize, 0.0f, float(w - 1));
+            const float ty = std::clamp(float(y) + (g.velocityV.values[i] * p.dt) / p.cellSize, 0.0f, float(h - 1));
+            g.arrivalX.values[i] = std::floor(tx);
+            g.arrivalY.values[i] = std::floor(ty);
+            g.arrivalFracX.values[i] = tx - g.arrivalX.values[i];
+            g.arrivalFracY.values[i] = ty - g.arrivalY.values[i];
+        }
+    for (int32_t y = 0; y < h; ++y)
+        for (int32_t x = 0; x < w; ++x) {
             float sum = 0.0f;
-            for (int32_t sy = y - 1; sy <= y + 1; ++sy)
-                for (int32_t sx = x - 1; sx <= x + 1; ++sx) {
-                    if (sx < 0 || sy < 0 || sx >= w || sy >= h) continue;
+            for (int32_t sy = std::max(0, y - 1); sy <= std::min(h - 1, y + 1); ++sy)
+                for (int32_t sx = std::max(0, x - 1); sx <= std::min(w - 1, x + 1); ++sx) {
                     const size_t j = g.water.index(sx, sy);
-                    const float tx = std::clamp(float(sx) + (g.velocityU.values[j] * p.dt) / p.cellSize, 0.0f, float(w - 1));
-                    const float ty = std::clamp(float(sy) + (g.velocityV.values[j] * p.dt) / p.cellSize, 0.0f, float(h - 1));
-                    const float wx = splatWeight(tx, x), wy = splatWeight(ty, y);
+                    const float wx = splatWeight(g.arrivalX.values[j], g.arrivalFracX.values[j], x);
+                    const float wy = splatWeight(g.arrivalY.values[j], g.arrivalFracY.values[j], y);
                     if (wx != 0.0f && wy != 0.0f) sum = sum + g.suspended.values[j] * (wx * wy);
                 }
             g.sediment.at(x, y) = sum;
