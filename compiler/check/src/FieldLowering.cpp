@@ -8,6 +8,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
+#include <utility>
 
 namespace voxc::check {
 
@@ -146,6 +147,7 @@ Lowered FieldLowering::input(FieldInput which, SourceLoc loc) {
 Lowered FieldLowering::lower(const ast::Expr& expr, Scope& scope) {
     if (++steps_ > uint64_t(context_.limits.maxLoweringSteps)) return Lowered::failed();
     if (depth_ >= uint32_t(context_.limits.maxFieldDepth)) {
+        if (std::exchange(tooDeep_, true)) return Lowered::failed(); // one report per field or function
         context_.diagnostics.error(
             "E0012", expr.loc,
             fmt::format("this expression nests deeper than the limit of {} levels once function calls are inlined{}",

@@ -80,7 +80,8 @@ private:
     std::vector<std::string> callStack_; // user functions being inlined, outermost first
     std::map<std::pair<const ast::FunctionDecl*, std::vector<uint32_t>>, Lowered> inlined_;
     uint64_t steps_ = 0;
-    uint32_t depth_ = 0; // lower() calls in progress
+    uint32_t depth_ = 0;   // lower() calls in progress
+    bool tooDeep_ = false; // the depth limit was reported
 };
 
 } // namespace voxc::check
