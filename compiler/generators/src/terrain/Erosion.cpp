@@ -37,16 +37,13 @@ const std::array<Preset, 4> kPresets{{
     {"combined", tableParams(2.0f, 0.9f, 0.69f, 0.46f, 0.1f, 0.36f, 0.2f, 29.7f, 15.4f, 0.1f), {{8, 1000}, {9, 200}, {10, 100}, {11, 0}}},
 }};
 
-void requireFinite(const char* name, float value) {
+// Ranges keep every intermediate float32 value of a step finite (docs/terrain.md, "Value ranges").
+// Table 5.2's values are all within a factor 10 of 1; these ranges leave three decades either side.
+constexpr float kMaxRate = 1e3f, kMinLength = 1e-3f, kMinDt = 1e-4f, kMaxDt = 1e2f, kMaxRadius = 1e5f;
+
+void requireRange(const char* name, float value, float minimum, float maximum) {
     if (!std::isfinite(value)) throw ParameterError(name, value, "must be finite");
-}
-void requirePositive(const char* name, float value) {
-    requireFinite(name, value);
-    if (!(value > 0.0f)) throw ParameterError(name, value, "must be > 0");
-}
-void requireNonNegative(const char* name, float value) {
-    requireFinite(name, value);
-    if (value < 0.0f) throw ParameterError(name, value, "must be >= 0");
+    if (value < minimum || value > maximum) throw ParameterError(name, value, fmt::format("must lie in [{}, {}]", minimum, maximum));
 }
 
 // Uniform in [0, 1) with a 24-bit mantissa from the counter hash of (seed, level, step, draw).
@@ -79,23 +76,23 @@ const Preset* findPreset(std::string_view name) {
 }
 
 void validateErosion(const ErosionParams& p) {
-    requirePositive("dt", p.dt);
-    requirePositive("pipe_length", p.pipeLength);
-    requirePositive("cell_size", p.cellSize);
-    requireNonNegative("pipe_area", p.pipeArea);
-    requireNonNegative("gravity", p.gravity);
-    requireNonNegative("sediment_capacity", p.capacity);
-    requireNonNegative("suspension_rate", p.suspension);
-    requireNonNegative("deposition_rate", p.deposition);
-    requireNonNegative("evaporation", p.evaporation);
-    requireNonNegative("rain_min", p.rainMin);
-    requireNonNegative("rain_max", p.rainMax);
-    requireNonNegative("radius_min", p.radiusMin);
-    requireNonNegative("radius_max", p.radiusMax);
-    requireNonNegative("uniform_rain", p.uniformRain);
-    requireNonNegative("min_tilt", p.minTilt);
-    if (p.minTilt > 1.0f) throw ParameterError("min_tilt", p.minTilt, "is a floor on sin(phi) and must be <= 1");
-    if (!(p.depthLimit > 0.0f) || std::isnan(p.depthLimit)) throw ParameterError("E", p.depthLimit, "must be > 0 (infinity disables the limit)");
+    requireRange("dt", p.dt, kMinDt, kMaxDt);
+    requireRange("pipe_length", p.pipeLength, kMinLength, kMaxRate);
+    requireRange("cell_size", p.cellSize, kMinLength, kMaxRate);
+    requireRange("pipe_area", p.pipeArea, 0.0f, kMaxRate);
+    requireRange("gravity", p.gravity, 0.0f, kMaxRate);
+    requireRange("sediment_capacity", p.capacity, 0.0f, kMaxRate);
+    requireRange("suspension_rate", p.suspension, 0.0f, kMaxRate);
+    requireRange("deposition_rate", p.deposition, 0.0f, kMaxRate);
+    requireRange("evaporation", p.evaporation, 0.0f, kMaxRate);
+    requireRange("rain_min", p.rainMin, 0.0f, kMaxRate);
+    requireRange("rain_max", p.rainMax, 0.0f, kMaxRate);
+    requireRange("radius_min", p.radiusMin, 0.0f, kMaxRadius);
+    requireRange("radius_max", p.radiusMax, 0.0f, kMaxRadius);
+    requireRange("uniform_rain", p.uniformRain, 0.0f, kMaxRate);
+    requireRange("min_tilt", p.minTilt, 0.0f, 1.0f); // a floor on sin(phi)
+    if (!(p.depthLimit > 0.0f && (p.depthLimit <= kMaxRate || std::isinf(p.depthLimit))))
+        throw ParameterError("E", p.depthLimit, "must lie in (0, 1000], or be infinity to disable the limit");
     if (p.rainMin > p.rainMax) throw ParameterError("rain_min", p.rainMin, fmt::format("must be <= rain_max ({})", p.rainMax));
     if (p.radiusMin > p.radiusMax) throw ParameterError("radius_min", p.radiusMin, fmt::format("must be <= radius_max ({})", p.radiusMax));
     // Stability: evaporation may not remove more water than there is, deposition no more sediment.

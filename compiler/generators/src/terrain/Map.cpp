@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <string>
 
 namespace voxc::terrain {
 
@@ -18,29 +19,56 @@ double Domain::cellSize(int32_t level) const { return size / std::ldexp(1.0, lev
 
 namespace {
 
-void requireFinite(const char* name, double value) {
-    if (!std::isfinite(value)) throw ParameterError(name, value, "must be finite");
-}
+// Ranges keep every intermediate float32 value finite (docs/terrain.md, "Value ranges").
+constexpr double kMaxCoordinate = 1e9; // world voxels: positions, sizes, widths, heights
+constexpr double kMinSize = 1e-3;      // world voxels: the domain's edge
+constexpr double kMinHeight = 1.0;     // world voxels: max_height, so normalised heights stay <= 1e9
+constexpr double kMaxFactor = 1e3;     // per-point noise amplitude and warps, rain and capacity multipliers
+constexpr double kMaxScale = 1e6;      // noise scale and diffusion multiplier
 
-void requireAtLeast(const char* name, double value, double minimum) {
-    requireFinite(name, value);
-    if (value < minimum) throw ParameterError(name, value, fmt::format("must be >= {}", minimum));
+void requireRange(const std::string& name, double value, double minimum, double maximum) {
+    if (!std::isfinite(value)) throw ParameterError(name, value, "must be finite");
+    if (value < minimum || value > maximum) throw ParameterError(name, value, fmt::format("must lie in [{}, {}]", minimum, maximum));
 }
 
 void validateMetaPoint(const MetaPoint& meta, uint32_t pieces) {
-    requireFinite("u", meta.u);
-    if (meta.u < 0.0 || meta.u > double(pieces)) throw ParameterError("u", meta.u, fmt::format("must lie in [0, {}]", pieces));
-    requireAtLeast("radius", meta.radius, 0.0);
-    requireAtLeast("left.width", meta.left.x, 0.0);
-    requireFinite("left.height", meta.left.y);
-    requireAtLeast("right.width", meta.right.x, 0.0);
-    requireFinite("right.height", meta.right.y);
-    requireAtLeast("hardness", meta.hardness, 0.0);
-    if (meta.hardness > 1.0) throw ParameterError("hardness", meta.hardness, "must be <= 1 (alpha + beta <= 1)");
-    for (auto [name, value] : {std::pair{"noise_amplitude", meta.noiseAmplitude}, {"noise_roughness", meta.noiseRoughness},
-                               {"warp_low", meta.warpLow}, {"warp_high", meta.warpHigh}, {"rain", meta.rain},
-                               {"capacity", meta.capacity}})
-        requireFinite(name, value);
+    requireRange("u", meta.u, 0.0, double(pieces));
+    requireRange("radius", meta.radius, 0.0, kMaxCoordinate);
+    requireRange("left.width", meta.left.x, 0.0, kMaxCoordinate);
+    requireRange("left.height", meta.left.y, -kMaxCoordinate, kMaxCoordinate);
+    requireRange("right.width", meta.right.x, 0.0, kMaxCoordinate);
+    requireRange("right.height", meta.right.y, -kMaxCoordinate, kMaxCoordinate);
+    requireRange("hardness", meta.hardness, 0.0, 1.0); // alpha + beta <= 1
+    requireRange("noise_amplitude", meta.noiseAmplitude, -kMaxFactor, kMaxFactor);
+    requireRange("noise_roughness", meta.noiseRoughness, 0.0, 1.0);
+    requireRange("warp_low", meta.warpLow, -kMaxFactor, kMaxFactor);
+    requireRange("warp_high", meta.warpHigh, -kMaxFactor, kMaxFactor);
+    requireRange("rain", meta.rain, 0.0, kMaxFactor);
+    requireRange("capacity", meta.capacity, 0.0, kMaxFactor);
+}
+
+void validateSpline(const Spline& spline, const Limits& limits) {
+    const size_t points = spline.controlPoints.size();
+    if (points < 4 || (points - 1) % 3 != 0)
+        throw ParameterError("control points", double(points), "a spline needs 3 * pieces + 1 control points (4, 7, 10, ...)");
+    if (spline.pieces() > limits.maxCurvesPerSpline) throw LimitError("the Bezier pieces of a spline", spline.pieces(), limits.maxCurvesPerSpline);
+    if (spline.metaPoints.size() > limits.maxMetaPointsPerSpline)
+        throw LimitError("the meta points of a spline", spline.metaPoints.size(), limits.maxMetaPointsPerSpline);
+    if (spline.samplings == 0) throw ParameterError("samplings", 0.0, "must be >= 1");
+    if (spline.samplings > limits.maxSamplings) throw LimitError("samplings", spline.samplings, limits.maxSamplings);
+    if (spline.minLevel > spline.maxLevel)
+        throw ParameterError("spline levels", spline.minLevel, fmt::format("min level must be <= max level ({})", spline.maxLevel));
+    for (const glm::dvec3& point : spline.controlPoints) {
+        requireRange("control point x", point.x, -kMaxCoordinate, kMaxCoordinate);
+        requireRange("control point y", point.y, -kMaxCoordinate, kMaxCoordinate);
+        requireRange("control point z", point.z, -kMaxCoordinate, kMaxCoordinate);
+    }
+    double previousU = 0.0;
+    for (const MetaPoint& meta : spline.metaPoints) {
+        validateMetaPoint(meta, spline.pieces());
+        if (meta.u < previousU) throw ParameterError("u", meta.u, "meta points must be sorted by u");
+        previousU = meta.u;
+    }
 }
 
 } // namespace
@@ -50,39 +78,21 @@ void validateMap(const TerrainMap& map, const Limits& limits) {
     if (domain.minLevel < limits.minLevel || domain.maxLevel > limits.maxLevel || domain.minLevel > domain.maxLevel)
         throw ParameterError("levels", domain.maxLevel,
                              fmt::format("need {} <= min level ({}) <= max level <= {}", limits.minLevel, domain.minLevel, limits.maxLevel));
-    requireFinite("origin.x", domain.origin.x);
-    requireFinite("origin.z", domain.origin.y);
-    requireFinite("size", domain.size);
-    if (domain.size <= 0.0) throw ParameterError("size", domain.size, "must be > 0");
-    requireFinite("max_height", domain.maxHeight);
-    if (domain.maxHeight <= 0.0) throw ParameterError("max_height", domain.maxHeight, "must be > 0");
-    requireAtLeast("noise.amplitude", map.noise.amplitude, 0.0);
-    requireFinite("noise.scale", map.noise.scale);
-    requireAtLeast("diffusion.multiplier", map.diffusion.multiplier, 0.0);
+    requireRange("origin.x", domain.origin.x, -kMaxCoordinate, kMaxCoordinate);
+    requireRange("origin.z", domain.origin.y, -kMaxCoordinate, kMaxCoordinate);
+    requireRange("size", domain.size, kMinSize, kMaxCoordinate);
+    requireRange("max_height", domain.maxHeight, kMinHeight, kMaxCoordinate);
+    requireRange("noise.amplitude", map.noise.amplitude, 0.0, kMaxCoordinate);
+    requireRange("noise.scale", map.noise.scale, -kMaxScale, kMaxScale);
+    requireRange("diffusion.multiplier", map.diffusion.multiplier, 0.0, kMaxScale);
     if (map.splines.size() > limits.maxSplines) throw LimitError("the number of splines", map.splines.size(), limits.maxSplines);
+    uint64_t samples = 0;
     for (const Spline& spline : map.splines) {
-        const size_t points = spline.controlPoints.size();
-        if (points < 4 || (points - 1) % 3 != 0)
-            throw ParameterError("control points", double(points), "a spline needs 3 * pieces + 1 control points (4, 7, 10, ...)");
-        if (spline.pieces() > limits.maxCurvesPerSpline) throw LimitError("the Bezier pieces of a spline", spline.pieces(), limits.maxCurvesPerSpline);
-        if (spline.metaPoints.size() > limits.maxMetaPointsPerSpline)
-            throw LimitError("the meta points of a spline", spline.metaPoints.size(), limits.maxMetaPointsPerSpline);
-        if (spline.samplings == 0 || spline.samplings > limits.maxSamplings)
-            throw LimitError("samplings", spline.samplings, limits.maxSamplings);
-        if (spline.minLevel > spline.maxLevel)
-            throw ParameterError("spline levels", spline.minLevel, fmt::format("min level must be <= max level ({})", spline.maxLevel));
-        for (const glm::dvec3& point : spline.controlPoints) {
-            requireFinite("control point x", point.x);
-            requireFinite("control point y", point.y);
-            requireFinite("control point z", point.z);
-        }
-        double previousU = 0.0;
-        for (const MetaPoint& meta : spline.metaPoints) {
-            validateMetaPoint(meta, spline.pieces());
-            if (meta.u < previousU) throw ParameterError("u", meta.u, "meta points must be sorted by u");
-            previousU = meta.u;
-        }
+        validateSpline(spline, limits);
+        const int32_t levels = std::min(spline.maxLevel, domain.maxLevel) - std::max(spline.minLevel, domain.minLevel) + 1;
+        samples += uint64_t(std::max(levels, 0)) * spline.pieces() * spline.samplings;
     }
+    if (samples > limits.maxSplineSamples) throw LimitError("spline samples over all levels", samples, limits.maxSplineSamples);
     // Diffusion work: every level's terrain sweeps plus the 8 half-rate channels (2 normal + 6 parameter).
     uint64_t work = 0;
     for (int32_t level = domain.minLevel; level <= domain.maxLevel; ++level) {

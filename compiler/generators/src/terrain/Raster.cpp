@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <glm/geometric.hpp>
 
@@ -56,23 +57,15 @@ public:
         : map_(map), level_(level), n_(int32_t(1) << level), cell_(map.domain.cellSize(level)), limits_(limits),
           rasterCells_(rasterCells), acc_(n_) {}
 
+    // Samples are made one at a time; each consecutive pair is rasterised as a segment.
     void spline(size_t index, const Spline& spline) {
-        std::vector<Sample> samples;
+        std::optional<Sample> previous;
         for (uint32_t piece = 0; piece < spline.pieces(); ++piece) {
             const glm::dvec3* points = &spline.controlPoints[3 * size_t(piece)];
             for (uint32_t k = (piece == 0 ? 0 : 1); k <= spline.samplings; ++k) {
-                const double t = double(k) / double(spline.samplings);
-                samples.push_back(sampleAt(spline, points, piece, t));
-            }
-        }
-        for (size_t k = 0; k + 1 < samples.size(); ++k) {
-            const Sample& a = samples[k];
-            const Sample& b = samples[k + 1];
-            line(a, b);
-            if (a.hasSide && b.hasSide) {
-                if (a.meta.radius > 0.0 || b.meta.radius > 0.0) radiusQuad(a, b);
-                band(index * 2, a, b, +1.0, a.meta.left, b.meta.left);
-                band(index * 2 + 1, a, b, -1.0, a.meta.right, b.meta.right);
+                Sample next = sampleAt(spline, points, piece, double(k) / double(spline.samplings));
+                if (previous) segment(index, *previous, next);
+                previous = std::move(next);
             }
         }
     }
@@ -124,6 +117,22 @@ private:
         return sample;
     }
 
+    // A segment writes nothing unless its bounding box, grown by everything it may reach (one cell of
+    // normal seeds, the radius and the gradient bands), meets the grid; such segments cost nothing.
+    void segment(size_t index, const Sample& a, const Sample& b) {
+        const double reach = 1.0 + (std::max(a.meta.radius, b.meta.radius) +
+                                    std::max({a.meta.left.x, a.meta.right.x, b.meta.left.x, b.meta.right.x})) / cell_;
+        const double lowX = std::min(a.cell.x, b.cell.x) - reach, highX = std::max(a.cell.x, b.cell.x) + reach;
+        const double lowY = std::min(a.cell.y, b.cell.y) - reach, highY = std::max(a.cell.y, b.cell.y) + reach;
+        if (highX < -0.5 || highY < -0.5 || lowX > n_ - 0.5 || lowY > n_ - 0.5) return;
+        line(a, b);
+        if (a.hasSide && b.hasSide) {
+            if (a.meta.radius > 0.0 || b.meta.radius > 0.0) radiusQuad(a, b);
+            band(index * 2, a, b, +1.0, a.meta.left, b.meta.left);
+            band(index * 2 + 1, a, b, -1.0, a.meta.right, b.meta.right);
+        }
+    }
+
     bool inside(int64_t x, int64_t y) const { return x >= 0 && y >= 0 && x < n_ && y < n_; }
     size_t at(int64_t x, int64_t y) const { return size_t(x) + size_t(n_) * size_t(y); }
 
@@ -134,8 +143,8 @@ private:
 
     // Bresenham from a to b; elevation and parameters interpolated linearly; normal seeds one cell to each side.
     void line(const Sample& a, const Sample& b) {
+        // Validated coordinates (|x| <= 1e9 voxels, cells >= 1e-3 / 4096 voxels) keep cell indices far inside int64.
         const glm::dvec2 fa{std::round(a.cell.x), std::round(a.cell.y)}, fb{std::round(b.cell.x), std::round(b.cell.y)};
-        if (std::abs(fa.x) > 1e9 || std::abs(fa.y) > 1e9 || std::abs(fb.x) > 1e9 || std::abs(fb.y) > 1e9) return; // far outside
         int64_t x0 = int64_t(fa.x), y0 = int64_t(fa.y);
         const int64_t x1 = int64_t(fb.x), y1 = int64_t(fb.y);
         const int64_t dx = std::abs(x1 - x0), dy = -std::abs(y1 - y0);
@@ -178,11 +187,13 @@ private:
     template <class Visit>
     void triangle(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, Visit&& visit) {
         const double det = (p1.x - p0.x) * (p2.y - p0.y) - (p2.x - p0.x) * (p1.y - p0.y);
-        if (std::abs(det) < 1e-12) return;
-        const int64_t xMin = std::max<int64_t>(0, int64_t(std::ceil(std::min({p0.x, p1.x, p2.x}) - 1e-9)));
-        const int64_t xMax = std::min<int64_t>(n_ - 1, int64_t(std::floor(std::max({p0.x, p1.x, p2.x}) + 1e-9)));
-        const int64_t yMin = std::max<int64_t>(0, int64_t(std::ceil(std::min({p0.y, p1.y, p2.y}) - 1e-9)));
-        const int64_t yMax = std::min<int64_t>(n_ - 1, int64_t(std::floor(std::max({p0.y, p1.y, p2.y}) + 1e-9)));
+        if (!(std::abs(det) >= 1e-12)) return;
+        // The box is clamped into the grid in double before the casts.
+        const double last = double(n_ - 1);
+        const auto xMin = int64_t(std::clamp(std::ceil(std::min({p0.x, p1.x, p2.x}) - 1e-9), 0.0, last + 1.0));
+        const auto xMax = int64_t(std::clamp(std::floor(std::max({p0.x, p1.x, p2.x}) + 1e-9), -1.0, last));
+        const auto yMin = int64_t(std::clamp(std::ceil(std::min({p0.y, p1.y, p2.y}) - 1e-9), 0.0, last + 1.0));
+        const auto yMax = int64_t(std::clamp(std::floor(std::max({p0.y, p1.y, p2.y}) + 1e-9), -1.0, last));
         if (xMin > xMax || yMin > yMax) return;
         charge(uint64_t(xMax - xMin + 1) * uint64_t(yMax - yMin + 1));
         for (int64_t y = yMin; y <= yMax; ++y)
@@ -211,14 +222,15 @@ private:
     }
 
     // A gradient band on one side (sign +1: left/a, -1: right/b): beta falls from h at the radius edge
-    // to 0 at the outer edge (B2.9); G = (rise / width) * cellSize / maxHeight per cell (B2.10).
+    // to 0 at the outer edge (B2.9); G = (rise / width) * cellSize / maxHeight per cell (B2.10). A band
+    // narrower than a cell rises over one cell (width >= cellSize in G), so |G| <= |rise| / maxHeight.
     void band(size_t owner, const Sample& a, const Sample& b, double sign, glm::dvec2 sideA, glm::dvec2 sideB) {
         if (sideA.x <= 0.0 && sideB.x <= 0.0) return;
         const double ra = a.meta.radius / cell_, rb = b.meta.radius / cell_;
         const glm::dvec2 inA = a.cell + sign * ra * a.side, outA = a.cell + sign * (ra + sideA.x / cell_) * a.side;
         const glm::dvec2 inB = b.cell + sign * rb * b.side, outB = b.cell + sign * (rb + sideB.x / cell_) * b.side;
-        const double slopeA = sideA.x > 0.0 ? sideA.y / sideA.x * cell_ / map_.domain.maxHeight : 0.0;
-        const double slopeB = sideB.x > 0.0 ? sideB.y / sideB.x * cell_ / map_.domain.maxHeight : 0.0;
+        const double slopeA = sideA.x > 0.0 ? sideA.y / std::max(sideA.x, cell_) * cell_ / map_.domain.maxHeight : 0.0;
+        const double slopeB = sideB.x > 0.0 ? sideB.y / std::max(sideB.x, cell_) * cell_ / map_.domain.maxHeight : 0.0;
         auto write = [&](glm::dvec3 beta, glm::dvec3 slope) {
             return [&, beta, slope](size_t i, glm::dvec3 w) {
                 int64_t& current = acc_.bandOwner[i];

@@ -16,6 +16,7 @@ struct Limits {
     uint32_t maxCurvesPerSpline = 1024;         // cubic Bezier pieces of one spline
     uint32_t maxMetaPointsPerSpline = 4096;
     uint32_t maxSamplings = 4096;               // samples per Bezier piece when rasterising
+    uint64_t maxSplineSamples = 50'000'000;     // sum over splines and their levels of pieces * samplings
     uint64_t maxRasterCells = 400'000'000;      // cell-centre tests over all quads of all levels
     uint32_t maxIterationsPerLevel = 1'000'000; // diffusion sweeps or erosion steps on one level
     uint64_t maxDiffusionCellUpdates = 20'000'000'000; // terrain sweeps plus the five half-rate fields
