@@ -13,8 +13,8 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/common.hpp>
-#include <glm/vec2.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 #include <limits>
 
 namespace voxc::marching_cubes {
@@ -49,8 +49,8 @@ glm::vec3 edgeMidpoint(int edge) {
 
 bool solidCorner(unsigned mask, int corner) { return (mask >> corner) & 1u; }
 
-// Directed segments of one case: segment a -> b runs so that, seen from outside the cell through
-// the face, the solid lies to the left (this makes the loops counter-clockwise seen from air).
+// Directed segments of one case: segment a -> b runs so that, seen from outside the cell, the
+// solid lies to its right (this makes the loops counter-clockwise seen from the air side).
 std::array<int, 12> faceSegments(unsigned mask) {
     std::array<int, 12> next;
     next.fill(-1);
