@@ -26,4 +26,6 @@ if [ ${#missing[@]} -ne 0 ]; then
   "${sudo_cmd[@]}" apt-get update -qq
   "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
-"$(dirname "$0")/install-node-tools.sh"
+# Without the npm registry the build still works; the mesh_glb_validator test then fails.
+"$(dirname "$0")/install-node-tools.sh" ||
+  echo "install-deps: warning: the Node tools could not be installed; the mesh_glb_validator test will fail" >&2
