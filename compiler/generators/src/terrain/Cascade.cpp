@@ -142,7 +142,6 @@ LevelFields runCascade(const TerrainMap& map, const Limits& limits, const std::f
         iterate(next.height, terrainSweeps(map.diffusion, level), [&](const Field2& a, Field2& b) {
             terrainSweep(seeds, next.normalX, next.normalZ, map.diffusion.isotropicGradient, a, b);
         });
-        next.noise = levelNoise(map, level, next.params);
         current = std::move(next);
         if (onLevel) onLevel(current);
     }

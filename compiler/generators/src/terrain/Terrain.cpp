@@ -58,7 +58,8 @@ double total(const Field2& field) {
 // Runs the erosion schedule level by level as the cascade delivers each level's terrain.
 class ErosionRun {
 public:
-    ErosionRun(const ErosionSettings& settings, TerrainResult& result) : settings_(settings), result_(result) {}
+    ErosionRun(const TerrainMap& map, const ErosionSettings& settings, TerrainResult& result)
+        : map_(map), settings_(settings), result_(result) {}
 
     void level(const LevelFields& fields) {
         const auto it = settings_.levelSteps.find(fields.level);
@@ -76,7 +77,8 @@ public:
             next.fluxT = smoothFourTimes(prolong(grid_->fluxT, thesis));
             next.fluxB = smoothFourTimes(prolong(grid_->fluxB, thesis));
         }
-        for (size_t i = 0; i < next.base.values.size(); ++i) next.base.values[i] = fields.height.values[i] + fields.noise.values[i];
+        const Field2 noise = levelNoise(map_, fields.level, fields.params);
+        for (size_t i = 0; i < next.base.values.size(); ++i) next.base.values[i] = fields.height.values[i] + noise.values[i];
         next.rain = fields.params[size_t(Param::Rain)];
         next.capacity = fields.params[size_t(Param::Capacity)];
         grid_.emplace(std::move(next));
@@ -102,6 +104,7 @@ public:
     const std::optional<ErosionGrid>& grid() const { return grid_; }
 
 private:
+    const TerrainMap& map_;
     const ErosionSettings& settings_;
     TerrainResult& result_;
     std::optional<ErosionGrid> grid_;
@@ -114,13 +117,18 @@ TerrainResult generateTerrain(const TerrainMap& map, const std::optional<Erosion
     if (erosion) checkErosion(map, *erosion, limits);
     TerrainResult result;
     std::optional<ErosionRun> run;
-    if (erosion) run.emplace(*erosion, result);
+    if (erosion) run.emplace(map, *erosion, result);
     const LevelFields last = runCascade(map, limits, [&](const LevelFields& fields) {
         if (run) run->level(fields);
     });
     const int32_t n = last.height.width;
-    result.height = Field2(n, n);
-    for (size_t i = 0; i < result.height.values.size(); ++i) result.height.values[i] = last.height.values[i] + last.noise.values[i];
+    if (run && run->grid()) { // eroded state is carried up to Lmax, where base = v + N already
+        result.height = run->grid()->base;
+    } else {
+        result.height = levelNoise(map, map.domain.maxLevel, last.params);
+        for (size_t i = 0; i < result.height.values.size(); ++i)
+            result.height.values[i] = last.height.values[i] + result.height.values[i];
+    }
     result.difference = result.water = result.sediment = Field2(n, n);
     if (run) {
         run->finish();

@@ -9,13 +9,13 @@
 
 namespace voxc::terrain {
 
-// What one level leaves: the diffused terrain v_L, normals, parameters and the noise N_L.
+// What one level leaves: the diffused terrain v_L, normals and parameters. The noise N_L is
+// computed from them by levelNoise, only on the levels that use it (eroded levels and Lmax).
 struct LevelFields {
     int32_t level = 0;
     Field2 height;            // v_L, normalised by maxHeight
     Field2 normalX, normalZ;  // diffused, not normalised
     std::array<Field2, kParamCount> params;
-    Field2 noise;             // N_L, normalised by maxHeight
 };
 
 // One sweep of Eq 4.1: to = alpha * A v + beta * (B v + G) + ((1 - alpha) - beta) * S, A the
@@ -30,7 +30,7 @@ void averageSweep(const std::vector<uint8_t>& seed, const Field2& seedValues, co
 // with `thesis` Alg. 4 (which shifts the field half a fine cell towards the origin).
 Field2 prolong(const Field2& coarse, bool thesis);
 
-// The noise of level `level` at every cell from its diffused parameters (B3.3).
+// The noise N_L (normalised by maxHeight) of level `level` at every cell from its diffused parameters (B3.3).
 Field2 levelNoise(const TerrainMap& map, int32_t level, const std::array<Field2, kParamCount>& params);
 
 // Runs the cascade Lmin..Lmax, calling onLevel with each level's fields in turn; returns the last.
