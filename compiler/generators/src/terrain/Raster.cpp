@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <unordered_map>
 
 #include <glm/geometric.hpp>
 
@@ -33,20 +34,26 @@ struct Sample {
     MetaPoint meta;
 };
 
-// Sums and counts per cell; averaged at the end so overlaps are the mean in spline order.
+// Sums and counts per cell; averaged at the end so overlaps are the mean in spline order. Normals
+// and parameters are written only near the line (O(samples) cells), so they are kept sparse.
 struct Accumulator {
     explicit Accumulator(int32_t n)
-        : cells(size_t(n) * size_t(n)), elevationSum(cells, 0.0), elevationCount(cells, 0), normalSum(cells, glm::dvec2(0.0)),
-          normalCount(cells, 0), paramSum(cells, std::array<double, kParamCount>{}), paramCount(cells, 0), bandOwner(cells, kNoBand), bandBeta(cells, 0.0),
-          bandGradient(cells, 0.0) {}
+        : cells(size_t(n) * size_t(n)), elevationSum(cells, 0.0), elevationCount(cells, 0), bandOwner(cells, kNoBand),
+          bandBeta(cells, 0.0), bandGradient(cells, 0.0) {}
     static constexpr int64_t kNoBand = -1, kRemovedBand = -2;
+    struct NormalSum {
+        glm::dvec2 sum{0.0};
+        uint32_t count = 0;
+    };
+    struct ParamSum {
+        std::array<double, kParamCount> sum{};
+        uint32_t count = 0;
+    };
     size_t cells;
     std::vector<double> elevationSum;
     std::vector<uint32_t> elevationCount;
-    std::vector<glm::dvec2> normalSum;
-    std::vector<uint32_t> normalCount;
-    std::vector<std::array<double, kParamCount>> paramSum;
-    std::vector<uint32_t> paramCount;
+    std::unordered_map<size_t, NormalSum> normals;
+    std::unordered_map<size_t, ParamSum> params;
     std::vector<int64_t> bandOwner; // spline * 2 + side of the band that wrote the cell
     std::vector<double> bandBeta, bandGradient;
 };
@@ -88,15 +95,15 @@ public:
                 seeds.alpha.values[i] = 1.0f - beta;
                 seeds.gradient.values[i] = float(acc_.bandGradient[i]);
             }
-            if (acc_.normalCount[i] > 0) {
-                seeds.normalSeed[i] = 1;
-                seeds.normalX.values[i] = float(acc_.normalSum[i].x / acc_.normalCount[i]);
-                seeds.normalZ.values[i] = float(acc_.normalSum[i].y / acc_.normalCount[i]);
-            }
-            if (acc_.paramCount[i] > 0) {
-                seeds.paramSeed[i] = 1;
-                for (size_t p = 0; p < kParamCount; ++p) seeds.params[p].values[i] = float(acc_.paramSum[i][p] / acc_.paramCount[i]);
-            }
+        }
+        for (const auto& [i, normal] : acc_.normals) { // each cell on its own: the map's order does not matter
+            seeds.normalSeed[i] = 1;
+            seeds.normalX.values[i] = float(normal.sum.x / normal.count);
+            seeds.normalZ.values[i] = float(normal.sum.y / normal.count);
+        }
+        for (const auto& [i, param] : acc_.params) {
+            seeds.paramSeed[i] = 1;
+            for (size_t p = 0; p < kParamCount; ++p) seeds.params[p].values[i] = float(param.sum[p] / param.count);
         }
         return seeds;
     }
@@ -159,8 +166,9 @@ private:
                 const size_t i = at(x0, y0);
                 acc_.elevationSum[i] += a.elevation + t * (b.elevation - a.elevation);
                 ++acc_.elevationCount[i];
-                for (size_t p = 0; p < kParamCount; ++p) acc_.paramSum[i][p] += pa[p] + t * (pb[p] - pa[p]);
-                ++acc_.paramCount[i];
+                Accumulator::ParamSum& param = acc_.params[i];
+                for (size_t p = 0; p < kParamCount; ++p) param.sum[p] += pa[p] + t * (pb[p] - pa[p]);
+                ++param.count;
             }
             const glm::dvec2 side = a.side + t * (b.side - a.side);
             const double sideLength = std::hypot(side.x, side.y);
@@ -179,8 +187,9 @@ private:
         const int64_t nx = x + int64_t(std::lround(direction.x)), ny = y + int64_t(std::lround(direction.y));
         if (!inside(nx, ny)) return;
         const size_t i = at(nx, ny);
-        acc_.normalSum[i] += direction;
-        ++acc_.normalCount[i];
+        Accumulator::NormalSum& normal = acc_.normals[i];
+        normal.sum += direction;
+        ++normal.count;
     }
 
     // Calls visit(cell index, barycentric weights) for every cell centre in the triangle (p0, p1, p2).
