@@ -1,5 +1,5 @@
 // The .vox surface syntax. Deliberately generic: a file is constants and named blocks, and a
-// block holds assignments, nested blocks, bare names and rows. Which block may hold what is
+// block holds assignments, nested blocks, bare names, rows and weighted strings. Which block may hold what is
 // the checker's business (compiler/check), so that a misspelt key gets a "did you mean"
 // instead of a parse error, and new blocks (material, lsystem, ...) need no grammar change. Expressions
 // (fields, functions) and `feature NAME = generator { ... }` have rules of their own.
@@ -50,6 +50,12 @@ member
     | block
     | row
     | nameStatement
+    | weightedString
+    ;
+
+// An L-system production or macro substitute: `"FLFLFZ" tunnel 1;` (type and weight optional).
+weightedString
+    : text=STRING (type=IDENT)? weight=expr? ';'
     ;
 
 assignment
@@ -65,6 +71,7 @@ nameStatement
 
 value
     : expr                                  # ScalarValue
+    | STRING                                # StringValue
     | '[' (value (',' value)*)? ']'         # ListValue
     ;
 
@@ -116,6 +123,8 @@ FEATURE : 'feature' ;
 LET    : 'let' ;
 IN     : 'in' ;
 IDENT  : [a-zA-Z_] [a-zA-Z_0-9]* ;
+// Text between double quotes on one line, without escapes: L-system strings hold `[ ] 0 \`.
+STRING : '"' ~["\r\n]* '"' ;
 NUMBER : DIGITS ('.' DIGITS?)? EXPONENT? | '.' DIGITS EXPONENT? ;
 
 fragment DIGITS   : [0-9]+ ;
@@ -125,4 +134,6 @@ LINE_COMMENT  : '//' ~[\r\n]* -> skip ;
 BLOCK_COMMENT : '/*' .*? '*/' -> skip ;
 // Matched only when no `*/` follows; the parser driver reports it, the parser never sees it.
 UNTERMINATED_COMMENT : '/*' ( ~'*' | '*'+ ~[*/] )* '*'* EOF -> channel(HIDDEN) ;
+// A '"' with no closing quote on its line; the parser driver reports it.
+UNTERMINATED_STRING : '"' ~["\r\n]* -> channel(HIDDEN) ;
 WS : [ \t\r\n\f]+ -> skip ;

@@ -180,7 +180,7 @@ TEST(check_Errors, EveryCode) {
     EXPECT_EQ(codes(check("world { size = [8, 8]; }")), Codes{"E0010"});
     EXPECT_EQ(codes(check(oneRule("[1, 1, 1]", "[MAYBE]", "[NOP]"))), Codes{"E0011"});
     EXPECT_EQ(codes(check("world { size = [1024, 1024, 1024]; }")), Codes{"E0012"});
-    EXPECT_EQ(codes(check(world + "lsystem caves { }")), Codes{"E0013"});
+    EXPECT_EQ(codes(check(world + "lsystem caves { }\npipeline { start; subtract caves; }")), Codes{"E0013"});
     EXPECT_EQ(codes(check("")), Codes{"E0009"});
 }
 

@@ -22,9 +22,7 @@ std::string CheckResult::rendered() const { return renderAll(diagnostics, source
 namespace check {
 namespace {
 
-constexpr std::string_view kTopLevelBlocks[] = {"world", "start", "grammar", "pipeline", "material"};
-// Later parts of the language; using one is E0013 rather than "unknown block".
-constexpr std::string_view kReservedBlocks[] = {"lsystem"};
+constexpr std::string_view kTopLevelBlocks[] = {"world", "start", "grammar", "pipeline", "material", "lsystem"};
 
 // The first block of a kind that may appear once; later ones are E0003.
 const ast::Block* uniqueBlock(Context& context, const ast::File& file, std::string_view kind) {
@@ -44,13 +42,8 @@ void reportUnknownBlocks(Context& context, const ast::File& file) {
     for (const ast::Block& block : file.blocks) {
         if (std::find(std::begin(kTopLevelBlocks), std::end(kTopLevelBlocks), block.kind) != std::end(kTopLevelBlocks))
             continue;
-        if (std::find(std::begin(kReservedBlocks), std::end(kReservedBlocks), block.kind) != std::end(kReservedBlocks))
-            context.diagnostics.error("E0013", block.loc,
-                                      fmt::format("'{}' blocks are not supported yet", block.kind));
-        else
-            context.diagnostics.error("E0008", block.loc,
-                                      fmt::format("unknown block '{}'{}", block.kind,
-                                                  didYouMean(block.kind, kTopLevelBlocks)));
+        context.diagnostics.error("E0008", block.loc,
+                                  fmt::format("unknown block '{}'{}", block.kind, didYouMean(block.kind, kTopLevelBlocks)));
     }
 }
 
@@ -76,7 +69,8 @@ std::vector<CheckedGrammar> checkGrammars(Context& context, const ast::File& fil
     return grammars;
 }
 
-Program checkProgram(Context& context, const ast::File& file, const std::string& path) {
+Program checkProgram(Context& context, const ast::File& file, const std::string& path,
+                     std::vector<CheckedLsystem>& lsystems) {
     for (const ast::ConstDecl& decl : file.constants) context.constants.declare(decl);
     context.constants.reportUnknownOverrides();
     reportUnknownBlocks(context, file);
@@ -99,6 +93,10 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
     std::vector<std::string> grammarNames;
     for (const ast::Block& grammarBlock : file.blocks)
         if (grammarBlock.kind == "grammar" && grammarBlock.label) grammarNames.push_back(*grammarBlock.label);
+    lsystems = checkLsystems(context, file, path);
+    std::vector<std::string> lsystemNames;
+    for (const ast::Block& block : file.blocks)
+        if (block.kind == "lsystem" && block.label) lsystemNames.push_back(*block.label);
     program.fields = checkFields(context, file, grammarNames);
     CheckedFeatures features = checkFeatures(context, file, grammarNames, program.world.seed);
     for (Field& feature : features.fields) program.fields.push_back(std::move(feature));
@@ -111,7 +109,7 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
         for (const ast::FeatureDecl& feature : file.features) fieldNames.push_back(feature.name);
         std::vector<std::optional<uint8_t>> fieldMaterials(file.fields.size()); // plain fields name none
         fieldMaterials.insert(fieldMaterials.end(), features.materials.begin(), features.materials.end());
-        for (const Stage& stage : checkPipeline(context, *block, grammarNames, fieldNames, fieldMaterials))
+        for (const Stage& stage : checkPipeline(context, *block, grammarNames, fieldNames, fieldMaterials, lsystemNames))
             program.pipeline.push_back(stage);
     } else {
         for (uint32_t i = 0; i < program.grammars.size(); ++i) program.pipeline.push_back({Stage::Kind::Grammar, i, FieldMode::Set, {}, std::nullopt});
@@ -140,8 +138,12 @@ CheckResult checkSource(const SourceFile& source, const CheckOptions& options) {
         ast::File file = parse(source, diagnostics, uint32_t(options.limits.maxNesting));
         if (!diagnostics.hasErrors()) {
             check::Context context{diagnostics, options.limits, check::Constants(diagnostics, options.constOverrides), {}};
-            Program program = check::checkProgram(context, file, source.path());
-            if (!diagnostics.hasErrors()) result.program = std::move(program);
+            std::vector<CheckedLsystem> lsystems;
+            Program program = check::checkProgram(context, file, source.path(), lsystems);
+            if (!diagnostics.hasErrors()) {
+                result.program = std::move(program);
+                result.lsystems = std::move(lsystems);
+            }
         }
     }
     result.diagnostics = diagnostics.take();

@@ -58,7 +58,8 @@ std::optional<uint8_t> stageMaterial(Context& context, const ast::NameStatement&
 std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
                                  const std::vector<std::string>& grammarNames,
                                  const std::vector<std::string>& fieldNames,
-                                 const std::vector<std::optional<uint8_t>>& fieldMaterials) {
+                                 const std::vector<std::optional<uint8_t>>& fieldMaterials,
+                                 const std::vector<std::string>& lsystemNames) {
     const std::string where = "'pipeline' block";
     checkLabel(context, block, false);
     rejectUnexpectedMembers(context, block, where, {.names = true});
@@ -126,6 +127,11 @@ std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
                     stages.push_back(stage);
                 }
             }
+        } else if (std::find(lsystemNames.begin(), lsystemNames.end(), entry.name) != lsystemNames.end()) {
+            context.diagnostics.error("E0013", entry.loc,
+                                      fmt::format("'{}' is an lsystem; carving an L-system into the grid is not "
+                                                  "supported yet (run 'voxc lsystem FILE {}' to see its skeleton)",
+                                                  entry.name, entry.name));
         } else {
             context.diagnostics.error("E0002", entry.loc,
                                       fmt::format("unknown grammar or field '{}' in the pipeline{}", entry.name,

@@ -70,6 +70,10 @@ std::optional<double> Constants::fold(const ast::Expr& expr, bool& failed) const
         failed = true;
         return std::nullopt;
     }
+    case Kind::String:
+        diagnostics_.error("E0010", expr.loc, "expected a number, found a string");
+        failed = true;
+        return std::nullopt;
     case Kind::Negate: {
         auto operand = fold(*expr.lhs, failed);
         return operand ? std::optional<double>(-*operand) : std::nullopt;

@@ -3,6 +3,7 @@
 // could check; the caller assembles the Program only when no error was reported.
 #include "Context.h"
 
+#include "voxc/check/Check.h"
 #include "voxc/program/Program.h"
 #include "voxc/syntax/Ast.h"
 
@@ -33,15 +34,21 @@ std::vector<StartShape> checkStart(Context& context, const ast::Block& block);
 // against the grid.
 std::optional<CheckedGrammar> checkGrammar(Context& context, const ast::Block& block, const World* world);
 
+// Every `lsystem NAME { ... }` block that checks, in declaration order; `sourcePath` locates
+// rule files (`rules = "caves.rules";`), which are read relative to it.
+std::vector<CheckedLsystem> checkLsystems(Context& context, const ast::File& file, const std::string& sourcePath);
+
 // The stages after Start, as indices into `grammarNames` / `fieldNames`: every grammar and
 // field declared, in order, including those with errors, so that their names are not
 // reported as unknown as well. Field stages need a mode word: `subtract cave;`, and may name
 // a material: `subtract cave material sand;`; without one a stage writes the material in
-// `fieldMaterials` (parallel to fieldNames: a feature's `material` key), if any.
+// `fieldMaterials` (parallel to fieldNames: a feature's `material` key), if any. A stage
+// naming one of `lsystemNames` is E0013: L-systems cannot be carved yet.
 std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
                                  const std::vector<std::string>& grammarNames,
                                  const std::vector<std::string>& fieldNames,
-                                 const std::vector<std::optional<uint8_t>>& fieldMaterials);
+                                 const std::vector<std::optional<uint8_t>>& fieldMaterials,
+                                 const std::vector<std::string>& lsystemNames);
 
 // User functions and fields: every field's DAG in declaration order. Field names must differ
 // from each other, from `start` and from `grammarNames` (one namespace for pipeline stages).

@@ -56,6 +56,12 @@ void rejectUnexpectedMembers(Context& context, const ast::Block& block, const st
         for (const ast::NameStatement& name : block.names)
             context.diagnostics.error("E0008", name.loc,
                                       fmt::format("unexpected '{};' in {}; expected 'key = value;'", name.name, where));
+    if (!allowed.strings)
+        for (const ast::WeightedString& entry : block.strings)
+            context.diagnostics.error("E0008", entry.loc,
+                                      fmt::format("unexpected string in {}; strings list L-system alternatives in "
+                                                  "'production' and 'macro' blocks",
+                                                  where));
 }
 
 bool checkLabel(Context& context, const ast::Block& block, bool needsLabel) {

@@ -43,6 +43,7 @@ struct Allowed {
     bool blocks = false;
     bool rows = false;
     bool names = false;
+    bool strings = false; // `"FZ" tunnel 1;` (L-system productions and macros)
 };
 void rejectUnexpectedMembers(Context& context, const ast::Block& block, const std::string& where, Allowed allowed);
 

@@ -9,5 +9,6 @@ void addCompileCommand(CLI::App& app);
 void addRunCommand(CLI::App& app);
 void addInterpCommand(CLI::App& app);
 void addExploreCommand(CLI::App& app);
+void addLsystemCommand(CLI::App& app);
 
 } // namespace voxc::driver

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
     voxc::driver::addRunCommand(app);
     voxc::driver::addInterpCommand(app);
     voxc::driver::addExploreCommand(app);
+    voxc::driver::addLsystemCommand(app);
     try {
         app.parse(argc, argv);
         return 0;

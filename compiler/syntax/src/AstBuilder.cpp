@@ -153,6 +153,11 @@ std::unique_ptr<const ast::Expr> buildFieldExpr(P::FieldExprContext* ctx) {
     return expr;
 }
 
+// The STRING token's text without its quotes (the lexer guarantees both).
+std::string unquoted(const std::string& token) {
+    return token.size() >= 2 ? token.substr(1, token.size() - 2) : std::string();
+}
+
 ast::Value buildValue(P::ValueContext* ctx) {
     ast::Value value;
     if (ctx == nullptr) {
@@ -162,6 +167,12 @@ ast::Value buildValue(P::ValueContext* ctx) {
     value.loc = contextLoc(*ctx);
     if (auto* scalar = dynamic_cast<P::ScalarValueContext*>(ctx)) {
         value.scalar = buildExpr(scalar->expr());
+    } else if (auto* string = dynamic_cast<P::StringValueContext*>(ctx)) {
+        auto expr = std::make_unique<ast::Expr>();
+        expr->kind = ast::Expr::Kind::String;
+        expr->loc = value.loc;
+        expr->name = unquoted(nodeText(string->STRING()));
+        value.scalar = std::move(expr);
     } else if (auto* list = dynamic_cast<P::ListValueContext*>(ctx)) {
         for (P::ValueContext* element : list->value()) value.elements.push_back(buildValue(element));
     } else {
@@ -224,6 +235,18 @@ ast::Block buildBlock(P::BlockContext& ctx) {
                 statement.clause = ast::StageClause{name->clause->getText(), tokenLoc(*name->clause),
                                                     name->operand->getText(), tokenLoc(*name->operand)};
             block.names.push_back(std::move(statement));
+        } else if (auto* weighted = member->weightedString()) {
+            ast::WeightedString entry;
+            if (weighted->text) {
+                entry.loc = tokenLoc(*weighted->text);
+                entry.text = unquoted(weighted->text->getText());
+            }
+            if (weighted->type) {
+                entry.type = weighted->type->getText();
+                entry.typeLoc = tokenLoc(*weighted->type);
+            }
+            if (weighted->weight) entry.weight = buildExpr(weighted->weight);
+            block.strings.push_back(std::move(entry));
         }
     }
     return block;

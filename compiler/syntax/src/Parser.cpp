@@ -18,6 +18,16 @@ namespace voxc {
 
 namespace {
 
+// Unterminated strings, like comments, reach the token stream on the hidden channel only.
+void reportUnterminatedStrings(antlr4::CommonTokenStream& tokens, Diagnostics& diagnostics) {
+    for (antlr4::Token* token : tokens.getTokens()) {
+        if (token->getType() != grammar::VoxcLexer::UNTERMINATED_STRING) continue;
+        SourceLoc loc = tokenLoc(*token);
+        loc.length = 1;
+        diagnostics.error("E0001", loc, "unterminated string: '\"' has no closing '\"' on its line");
+    }
+}
+
 // Thrown to abandon a parse once more errors than Diagnostics shows have been found: the rest
 // would be dropped anyway, and a file of garbage would otherwise cost an exception per byte.
 struct TooManyErrors {};
@@ -174,6 +184,7 @@ ast::File parseReporting(const SourceFile& source, Diagnostics& diagnostics, uin
     }
     tokens.fill();
     reportUnterminatedComments(tokens, diagnostics);
+    reportUnterminatedStrings(tokens, diagnostics);
     if (reportIfTreeTooDeep(tree, maxNesting, diagnostics)) return {};
     return buildAst(*tree);
 }

@@ -65,7 +65,8 @@ void renderOne(std::string& out, Severity severity, std::string_view code, Sourc
 
 } // namespace
 
-std::string render(const Diagnostic& diagnostic, const SourceFile& source) {
+std::string render(const Diagnostic& diagnostic, const SourceFile& checked) {
+    const SourceFile& source = diagnostic.file ? *diagnostic.file : checked;
     std::string out;
     renderOne(out, diagnostic.severity, diagnostic.code, diagnostic.loc, diagnostic.message, source);
     for (const DiagnosticNote& note : diagnostic.notes)

@@ -263,11 +263,10 @@ std::vector<uint64_t> predictLengths(const Definition& definition, uint32_t expa
     return lengths;
 }
 
-Expansion expand(const Definition& definition, const ExpandOptions& options) {
+void checkExpansionLimits(const Definition& definition) {
     const Limits& limits = definition.limits;
     if (definition.expansions > limits.maxExpansions)
         throw LimitError("maxExpansions", definition.expansions, limits.maxExpansions, "too many expansions");
-    requireValid(definition);
     const std::vector<uint64_t> predicted = predictLengths(definition, definition.expansions);
     for (size_t k = 0; k < predicted.size(); ++k)
         if (predicted[k] > limits.maxSymbols)
@@ -276,6 +275,15 @@ Expansion expand(const Definition& definition, const ExpandOptions& options) {
                                          k == 1 ? "" : "s"));
     if (const uint64_t depth = predictDepth(definition, definition.expansions); depth > limits.maxDepth)
         throw LimitError("maxDepth", depth, limits.maxDepth, "brackets could nest this deep");
+}
+
+Expansion expand(const Definition& definition, const ExpandOptions& options) {
+    if (definition.expansions > definition.limits.maxExpansions)
+        throw LimitError("maxExpansions", definition.expansions, definition.limits.maxExpansions,
+                         "too many expansions");
+    requireValid(definition);
+    checkExpansionLimits(definition);
+    const std::vector<uint64_t> predicted = predictLengths(definition, definition.expansions);
     Expansion result = Expander(definition, options).run(predicted);
     for (size_t k = 0; k < predicted.size(); ++k) VOXC_ASSERT(result.lengths[k] <= predicted[k]);
     return result;

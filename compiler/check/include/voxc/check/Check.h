@@ -3,8 +3,10 @@
 // It reads the file (at most Limits::maxSourceBytes), parses it (syntax errors and nesting
 // beyond Limits::maxNesting stop here), folds constants, validates every block and key,
 // converts printed symbol/transform layouts into Program's cell order, builds the pipeline,
-// checks its work estimate against Limits::maxWork and finally runs the warning analyses
+// checks the lsystem blocks, checks its work estimate against Limits::maxWork and finally runs the warning analyses
 // (W0201-W0208).
+#include "voxc/generators/lsystem/Connect.h"
+#include "voxc/generators/lsystem/Definition.h"
 #include "voxc/program/Program.h"
 #include "voxc/syntax/Diagnostics.h"
 #include "voxc/syntax/SourceFile.h"
@@ -16,8 +18,26 @@
 
 namespace voxc {
 
+// An `lsystem NAME { ... }` block, checked: its definition can be expanded within its limits
+// (docs/language.md, "L-systems"). Carving it into the grid comes later; `voxc lsystem` reads it.
+struct CheckedLsystem {
+    std::string name;
+    SourceLoc loc; // the block's name
+    lsystem::Definition definition;
+    lsystem::ConnectParams connect;
+    std::string rulesPath; // the imported rule file as opened (relative to the working directory), or empty
+};
+
+// The text of an `lsystem NAME { ... }` block that checks back to `definition` and `connect`
+// (every key written, productions and macros in symbol order), for `voxc lsystem cross`.
+// Throws UserError when a symbol or string cannot be written in .vox syntax (a rule file may
+// name a macro `$`; a block label must be a letter).
+std::string formatLsystemBlock(const std::string& name, const lsystem::Definition& definition,
+                               const lsystem::ConnectParams& connect);
+
 struct CheckResult {
     std::optional<Program> program;       // present exactly when no error was reported
+    std::vector<CheckedLsystem> lsystems; // with `program`: every lsystem block, declaration order
     std::vector<Diagnostic> diagnostics;  // errors and warnings in report order
     SourceFile source;                    // what was checked (empty text when it could not be read)
 

@@ -23,12 +23,13 @@ struct Expr {
         Call,        // name(operands...)
         Member,      // lhs.name: a swizzle such as `.x` or `.xz`
         Conditional, // operands[0] ? operands[1] : operands[2]
-        Let          // let name = lhs in rhs
+        Let,         // let name = lhs in rhs
+        String       // "text" as a key's value (name holds the text, quotes removed)
     };
     Kind kind = Kind::Number;
     SourceLoc loc;                // the whole expression
     double number = 0.0;          // Number
-    std::string name;             // Name, Call (callee), Member (swizzle), Let (bound name)
+    std::string name;             // Name, Call (callee), Member (swizzle), Let (bound name), String (the text)
     SourceLoc nameLoc;            // Call, Member, Let: the name alone
     std::unique_ptr<const Expr> lhs; // Negate, Not: the operand; binary kinds: left operand; Member: the vector; Let: the value
     std::unique_ptr<const Expr> rhs; // binary kinds: right operand; Let: the body
@@ -86,6 +87,15 @@ struct NameStatement {
     std::optional<StageClause> clause;
 };
 
+// `"FLFLFZ" tunnel 1;` in an L-system production or macro block; type and weight are optional.
+struct WeightedString {
+    SourceLoc loc;     // the quoted text, quotes included
+    std::string text;  // without the quotes; its first character is at loc.column + 1
+    std::optional<std::string> type;
+    SourceLoc typeLoc;
+    std::unique_ptr<const Expr> weight; // null when none is written
+};
+
 // `kind label { ... }`. Members of each sort keep their written order.
 struct Block {
     SourceLoc loc; // the kind word
@@ -96,6 +106,7 @@ struct Block {
     std::vector<Block> blocks;
     std::vector<Row> rows;
     std::vector<NameStatement> names;
+    std::vector<WeightedString> strings;
 };
 
 struct ConstDecl {

@@ -3,6 +3,7 @@
 // can assert on codes and locations and the CLI can choose how to print them.
 #include "voxc/core/SourceLoc.h"
 
+#include <memory>
 #include <string>
 #include <string_view>
 #include <unordered_set>
@@ -23,17 +24,21 @@ struct DiagnosticNote {
 
 // code is a stable identifier such as "E0004" or "W0201" (empty only for the final
 // "too many errors" line). loc.line == 0 means the diagnostic is about the whole file.
+// `file` is set when loc lies in another file than the one being checked (an L-system rule
+// file it imports); such diagnostics and their notes are rendered against that file.
 struct Diagnostic {
     Severity severity = Severity::Error;
     std::string code;
     SourceLoc loc;
     std::string message;
     std::vector<DiagnosticNote> notes;
+    std::shared_ptr<const SourceFile> file;
 };
 
 // Collects diagnostics, drops exact duplicates, and stops recording errors after kMaxErrors,
 // appending one final "too many errors" diagnostic instead. take() hands them over in source
-// order (file-level ones first, the "too many errors" line last), whatever order the checker's
+// order (file-level ones first, those located in other files after the checked file's, the
+// "too many errors" line last), whatever order the checker's
 // passes found them in.
 class Diagnostics {
 public:
@@ -55,7 +60,7 @@ private:
     bool truncated_ = false;
 };
 
-// One diagnostic in the form
+// One diagnostic (against diagnostic.file when set, else `source`) in the form
 //   path:line:col: error E0004: message
 //      12 |     symbol {
 //         |     ^~~~~~

@@ -37,6 +37,11 @@ std::vector<uint64_t> predictLengths(const Definition& definition, uint32_t expa
 // at their deepest substitute) plus, per pass, the deepest nesting one rewrite can add.
 uint64_t predictDepth(const Definition& definition, uint32_t expansions);
 
+// Throws LimitError ("maxExpansions", "maxSymbols", "maxDepth") when a predicted length or
+// nesting of a valid definition exceeds its limit: the checks expand runs first, without
+// expanding (the checker reports them at check time).
+void checkExpansionLimits(const Definition& definition);
+
 // Throws UserError for an invalid definition and LimitError ("maxExpansions", "maxSymbols",
 // "maxDepth") before allocating when a predicted length or nesting exceeds its limit.
 Expansion expand(const Definition& definition, const ExpandOptions& options = {});
