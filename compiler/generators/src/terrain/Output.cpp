@@ -13,6 +13,8 @@ namespace voxc::terrain {
 
 namespace {
 
+constexpr png_uint_32 kMaxPngSide = 4096; // the largest terrain level
+
 // libpng reports errors by longjmp; these callbacks only record the message, and the functions
 // using setjmp keep every object with a destructor outside the jumped-over frame.
 void recordError(png_structp png, png_const_charp message) {
@@ -68,7 +70,7 @@ bool decode(Reader& reader, std::string& error, Gray16Image& image, std::vector<
         return false;
     }
     png_set_read_fn(png, &reader, readBytes);
-    png_set_user_limits(png, 1u << 16, 1u << 16);
+    png_set_user_limits(png, kMaxPngSide, kMaxPngSide); // libpng refuses larger headers before allocating
     png_read_info(png, info);
     if (png_get_bit_depth(png, info) != 16 || png_get_color_type(png, info) != PNG_COLOR_TYPE_GRAY) {
         error = "not a 16-bit greyscale PNG";
@@ -78,7 +80,9 @@ bool decode(Reader& reader, std::string& error, Gray16Image& image, std::vector<
     image.width = int32_t(png_get_image_width(png, info));
     image.height = int32_t(png_get_image_height(png, info));
     data.resize(size_t(image.width) * size_t(image.height) * 2);
-    for (int32_t y = 0; y < image.height; ++y) png_read_row(png, data.data() + size_t(y) * size_t(image.width) * 2, nullptr);
+    const int passes = png_set_interlace_handling(png); // 7 for Adam7, each pass refines every row
+    for (int pass = 0; pass < passes; ++pass)
+        for (int32_t y = 0; y < image.height; ++y) png_read_row(png, data.data() + size_t(y) * size_t(image.width) * 2, nullptr);
     png_read_end(png, nullptr);
     png_destroy_read_struct(&png, &info, nullptr);
     return true;

@@ -15,7 +15,8 @@ namespace voxc::terrain {
 std::string encodeHeightPng(const Field2& height);
 void writeHeightPng(OutputFiles& outputs, const std::string& path, const Field2& height);
 
-// A decoded 16-bit greyscale PNG (for checks and round trips). Throws UserError if the bytes are not one.
+// A decoded 16-bit greyscale PNG (for checks and round trips). Throws UserError if the bytes are not
+// one, or if it is wider or taller than 4096 (checked from the header, before any allocation).
 struct Gray16Image {
     int32_t width = 0, height = 0;
     std::vector<uint16_t> pixels; // row-major
