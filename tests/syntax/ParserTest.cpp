@@ -122,7 +122,7 @@ TEST(syntax_Parser, RecoversAndReportsSeveralErrors) {
 TEST(syntax_Parser, ReadableMessages) {
     EXPECT_EQ(parseText("world { size = [1, 2 }").diagnostics.at(0).message, "expected ',' or ']', found '}'");
     EXPECT_EQ(parseText("world { size = 1; ").diagnostics.at(0).message,
-              "expected '}', '[' or a name, found end of file");
+              "expected '}', '[', a name or a string, found end of file");
     EXPECT_EQ(parseText("world { size ~ 1; }").diagnostics.at(0).message, "unexpected character '~'");
     Parsed comment = parseText("world { }\n/* open");
     ASSERT_EQ(comment.diagnostics.size(), 1u);
@@ -152,6 +152,43 @@ TEST(syntax_Parser, PipelineStagesTakeAClause) {
     ASSERT_TRUE(names[3].clause);
     EXPECT_EQ(names[3].clause->wordLoc.column, 63u);
     EXPECT_FALSE(parseText("pipeline { a b c d e; }").diagnostics.empty());
+}
+
+TEST(syntax_Parser, StringsAndWeightedStrings) {
+    Parsed parsed = parseText("lsystem net {\n"
+                              "  axiom = \"F[0Z]\";\n"
+                              "  production Z { \"FZ[RFZ]\" tunnel -1; \"F\\\\Z\"; \"RZ\" 0.5; \"LZ\" room; }\n"
+                              "}\n");
+    ASSERT_TRUE(parsed.diagnostics.empty());
+    const ast::Block& block = parsed.file.blocks.at(0);
+    const ast::Value& axiom = block.assignments.at(0).value;
+    ASSERT_FALSE(axiom.isList());
+    EXPECT_EQ(axiom.scalar->kind, ast::Expr::Kind::String);
+    EXPECT_EQ(axiom.scalar->name, "F[0Z]");
+    EXPECT_EQ(axiom.loc.column, 11u);
+    const std::vector<ast::WeightedString>& strings = block.blocks.at(0).strings;
+    ASSERT_EQ(strings.size(), 4u);
+    EXPECT_EQ(strings[0].text, "FZ[RFZ]");
+    EXPECT_EQ(strings[0].loc.line, 3u);
+    EXPECT_EQ(strings[0].loc.column, 18u);
+    EXPECT_EQ(strings[0].type, "tunnel");
+    ASSERT_TRUE(strings[0].weight);
+    EXPECT_EQ(strings[0].weight->kind, ast::Expr::Kind::Negate);
+    EXPECT_EQ(strings[1].text, "F\\\\Z"); // no escapes: both backslashes are ABOP symbols
+    EXPECT_FALSE(strings[1].type);
+    EXPECT_FALSE(strings[1].weight);
+    EXPECT_FALSE(strings[2].type);
+    ASSERT_TRUE(strings[2].weight);
+    EXPECT_EQ(strings[2].weight->number, 0.5);
+    EXPECT_EQ(strings[3].type, "room");
+}
+
+TEST(syntax_Parser, UnterminatedStringIsLocated) {
+    Parsed parsed = parseText("lsystem net {\n  axiom = \"Z;\n}\n");
+    ASSERT_FALSE(parsed.diagnostics.empty());
+    EXPECT_EQ(parsed.diagnostics[0].code, "E0001");
+    EXPECT_EQ(parsed.diagnostics[0].loc.line, 2u);
+    EXPECT_EQ(parsed.diagnostics[0].loc.column, 11u);
 }
 
 TEST(syntax_Parser, EmptyFileIsValidSyntax) {

@@ -267,7 +267,7 @@ private:
         try {
             checkConnectParams(connect_);
         } catch (const UserError& e) {
-            context_.diagnostics.error("E0007", nested.loc, fmt::format("'connect' block: {}", e.what()));
+            context_.diagnostics.error("E0007", nested.loc, e.what());
         }
     }
 

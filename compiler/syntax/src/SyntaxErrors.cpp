@@ -35,6 +35,7 @@ std::string describeExpected(const antlr4::dfa::Vocabulary& vocabulary, size_t t
     case Token::EOF: return "end of file";
     case grammar::VoxcLexer::IDENT: return "a name";
     case grammar::VoxcLexer::NUMBER: return "a number";
+    case grammar::VoxcLexer::STRING: return "a string";
     default: return vocabulary.getDisplayName(type); // literal tokens display as 'x'
     }
 }
