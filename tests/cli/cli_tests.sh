@@ -226,5 +226,38 @@ mkdir "$work/notes" && printf 'mine\n' > "$work/notes/todo.txt"
 expect compile_foreign_dir 1 "not a voxc package.*todo\.txt" -- "$voxc" compile "$work/air.vox" -o "$work/notes"
 expect compile_foreign_dir_kept 0 "^mine$" -- cat "$work/notes/todo.txt"
 
+# lsystem: the expanded string, stats and skeleton of a block; json/obj skeletons written
+# atomically and never over an input; limits found at run time are located E0012; crossover
+# of grammar (7) A and B at brackets 3,2 prints grammar (8) C and D as blocks that check
+expect help_lsystem 0 "--expansions.*--seed|--format" -- "$voxc" lsystem --help
+expect help_lsystem_cross 0 "--brackets" -- "$voxc" lsystem cross --help
+expect lsystem_text 0 "string \(5798 symbols\)" -- "$voxc" lsystem "$src/examples/lsystem_branches.vox" branches
+expect lsystem_endpoints 0 "597 endpoints" -- "$voxc" lsystem "$src/examples/lsystem_branches.vox" branches
+expect lsystem_grammar4 0 "string \(13 symbols\): FLFLF\[FUFFDF\]" -- "$voxc" lsystem "$src/examples/lsystem_macros.vox" macros
+expect lsystem_octagon 0 "final position \(0\.000000, 0\.000000, 0\.000000\)" -- "$voxc" lsystem "$src/examples/lsystem_line.vox" line
+expect lsystem_expansions 0 "string \(7 symbols\): RFRFRFZ" -- "$voxc" lsystem "$src/examples/lsystem_line.vox" line --expansions 3
+expect lsystem_truncated 0 "symbols left out" -- "$voxc" lsystem "$src/examples/lsystem_branches.vox" branches --expansions 6
+expect lsystem_json 0 "wrote .*skeleton\.json" -- "$voxc" lsystem "$src/examples/lsystem_macros.vox" macros --format json -o "$work/skeleton.json"
+expect lsystem_json_valid 0 "" -- python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert len(d['segments']) == 7 and len(d['endpoints']) == 1" "$work/skeleton.json"
+expect lsystem_obj 0 "^l 1 2 3" -- "$voxc" lsystem "$src/examples/lsystem_abop_hilbert.vox" hilbert --format obj
+expect lsystem_obj_extension 1 "must end in \.obj" -- "$voxc" lsystem "$src/examples/lsystem_macros.vox" macros --format obj -o "$work/skeleton.txt"
+expect lsystem_bad_name 1 "no lsystem named 'nope' \(it declares: macros\)" -- "$voxc" lsystem "$src/examples/lsystem_macros.vox" nope
+expect lsystem_no_name 1 "needs a FILE and the NAME" -- "$voxc" lsystem "$src/examples/lsystem_macros.vox"
+cp "$src/examples/lsystem_macros.vox" "$work/macros.vox"
+expect lsystem_out_is_input 1 "is the input" -- "$voxc" lsystem "$work/macros.vox" macros -o "$work/macros.vox"
+expect_same lsystem_out_is_input_untouched "$src/examples/lsystem_macros.vox" "$work/macros.vox"
+expect lsystem_limit 1 "lsystem_branches\.vox:[0-9]+:[0-9]+: error E0012: lsystem 'branches'.*maxSymbols" -- "$voxc" lsystem "$src/examples/lsystem_branches.vox" branches --expansions 12
+printf 'world { size = [8, 8, 8]; }\nlsystem a {\n  production Z { "FF[RFLFRF[LFFFFZ]FZ]F[LFZ]"; }\n}\n' > "$work/gram7a.vox"
+printf 'world { size = [8, 8, 8]; }\nlsystem b {\n  production Z { "FF[RFZ]F[LFLFRFFLFRFZ]"; }\n}\n' > "$work/gram7b.vox"
+expect lsystem_cross_c 0 '"FF\[RFLFRF\[LFFFFZ\]FZ\]F\[LFLFRFFLFRFZ\]"' -- "$voxc" lsystem cross "$work/gram7a.vox:a" "$work/gram7b.vox:b" --brackets 3,2
+expect lsystem_cross_d 0 '"FF\[RFZ\]F\[LFZ\]"' -- "$voxc" lsystem cross "$work/gram7a.vox:a" "$work/gram7b.vox:b" --brackets 3,2
+{ echo 'world { size = [8, 8, 8]; }'; "$voxc" lsystem cross "$work/gram7a.vox:a" "$work/gram7b.vox:b" --brackets 3,2; } > "$work/crossed.vox"
+expect lsystem_cross_checks 0 "ok" -- "$voxc" check "$work/crossed.vox"
+expect lsystem_cross_range 1 "bracket 4" -- "$voxc" lsystem cross "$work/gram7a.vox:a" "$work/gram7b.vox:b" --brackets 4,2
+expect lsystem_cross_reference 1 "FILE:NAME" -- "$voxc" lsystem cross "$work/gram7a.vox" "$work/gram7b.vox:b" --brackets 1,1
+printf 'world { size = [8, 8, 8]; }\nlsystem a { production Z { "FZ"; } }\npipeline { start; subtract a; }\n' > "$work/carve.vox"
+expect lsystem_not_carvable 1 "E0013: 'a' is an lsystem; carving" -- "$voxc" run "$work/carve.vox" -o "$work/carve.ply"
+expect_no_file lsystem_not_carvable_no_mesh "$work/carve.ply"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -12,6 +12,7 @@
 #include "voxc/generators/lsystem/Expand.h"
 #include "voxc/generators/lsystem/Export.h"
 
+#include <cmath>
 #include <fmt/format.h>
 #include <iostream>
 
@@ -73,10 +74,10 @@ const CheckedLsystem& findLsystem(const CheckResult& result, const std::string& 
     throw UserError(fmt::format("{}: 1 error", result.source.path()));
 }
 
-// Adding 0 turns -0 into 0, so a point back at the origin prints as (0, 0, 0).
+// Six decimals; a rounding residue such as -1e-16 prints as 0, not -0.000000.
 std::string point(glm::dvec3 p) {
-    p += glm::dvec3(0.0);
-    return fmt::format("({:.6f}, {:.6f}, {:.6f})", p.x, p.y, p.z);
+    auto clean = [](double v) { return std::fabs(v) < 5e-7 ? 0.0 : v; };
+    return fmt::format("({:.6f}, {:.6f}, {:.6f})", clean(p.x), clean(p.y), clean(p.z));
 }
 
 std::string shownString(const std::string& symbols) {
