@@ -247,6 +247,9 @@ cp "$src/examples/lsystem_macros.vox" "$work/macros.vox"
 expect lsystem_out_is_input 1 "is the input" -- "$voxc" lsystem "$work/macros.vox" macros -o "$work/macros.vox"
 expect_same lsystem_out_is_input_untouched "$src/examples/lsystem_macros.vox" "$work/macros.vox"
 expect lsystem_limit 1 "lsystem_branches\.vox:[0-9]+:[0-9]+: error E0012: lsystem 'branches'.*maxSymbols" -- "$voxc" lsystem "$src/examples/lsystem_branches.vox" branches --expansions 12
+# 65 F and two tips per rewrite: 4.3 million symbols (under maxSymbols) but more moves than maxSegments
+printf 'world { size = [8, 8, 8]; }\nlsystem many {\n  expansions = 16;\n  production Z { "%sZZ"; }\n}\n' "$(printf 'F%.0s' $(seq 65))" > "$work/segments.vox"
+expect lsystem_segments 1 "segments\.vox:2:9: error E0012: lsystem 'many'.*maxSegments" -- "$voxc" lsystem "$work/segments.vox" many
 printf 'world { size = [8, 8, 8]; }\nlsystem a {\n  production Z { "FF[RFLFRF[LFFFFZ]FZ]F[LFZ]"; }\n}\n' > "$work/gram7a.vox"
 printf 'world { size = [8, 8, 8]; }\nlsystem b {\n  production Z { "FF[RFZ]F[LFLFRFFLFRFZ]"; }\n}\n' > "$work/gram7b.vox"
 expect lsystem_cross_c 0 '"FF\[RFLFRF\[LFFFFZ\]FZ\]F\[LFLFRFFLFRFZ\]"' -- "$voxc" lsystem cross "$work/gram7a.vox:a" "$work/gram7b.vox:b" --brackets 3,2

@@ -24,7 +24,24 @@ TEST(syntax_Diagnostics, RendersNotesWarningsAndFileLevelDiagnostics) {
                                  "    1 | rule a\n"
                                  "      |      ^\n"
                                  "a.vox: note: unlocated\n");
-    EXPECT_EQ(render({Severity::Error, "E0100", {}, "cannot read", {}}, source), "a.vox: error E0100: cannot read\n");
+    EXPECT_EQ(render({Severity::Error, "E0100", {}, "cannot read", {}, nullptr}, source), "a.vox: error E0100: cannot read\n");
+}
+
+TEST(syntax_Diagnostics, ImportedFileDiagnosticsRenderAgainstTheirFileAndComeLast) {
+    SourceFile checked("a.vox", "lsystem net {\n  rules = \"r.rules\";\n}\n");
+    auto rules = std::make_shared<const SourceFile>("r.rules", "C;FXZ;tunnel;1\n");
+    Diagnostics diagnostics;
+    diagnostics.report({Severity::Error, "E0002", {1, 4, 1}, "unknown symbol 'X'", {}, rules});
+    diagnostics.error("E0007", {2, 11, 9}, "in the checked file");
+    // The same message and place in another file is not a duplicate.
+    diagnostics.error("E0002", {1, 4, 1}, "unknown symbol 'X'");
+    std::vector<Diagnostic> taken = diagnostics.take();
+    ASSERT_EQ(taken.size(), 3u);
+    EXPECT_FALSE(taken[0].file);
+    EXPECT_FALSE(taken[1].file);
+    EXPECT_EQ(renderAll({taken[2]}, checked), "r.rules:1:4: error E0002: unknown symbol 'X'\n"
+                                              "    1 | C;FXZ;tunnel;1\n"
+                                              "      |    ^\n");
 }
 
 TEST(syntax_Diagnostics, CaretClipsToTheLineAndKeepsTabsAndUtf8Aligned) {
