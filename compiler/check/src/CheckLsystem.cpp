@@ -199,6 +199,12 @@ private:
             if (entry.type) {
                 if (auto type = parseSymbolType(*entry.type))
                     alternative.type = *type;
+                else if (context_.constants.isDeclared(*entry.type))
+                    // `"FZ" W;` reads W as the type: the grammar puts an optional type first.
+                    context_.diagnostics.error("E0002", entry.typeLoc,
+                                               fmt::format("'{0}' is a constant, not a type; a weight given by a "
+                                                           "constant follows a type, as in '\"{1}\" none {0};'",
+                                                           *entry.type, entry.text));
                 else
                     context_.diagnostics.error("E0002", entry.typeLoc,
                                                fmt::format("unknown type '{}': expected none, tunnel or room{}",
