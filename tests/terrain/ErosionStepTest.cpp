@@ -2,6 +2,7 @@
 // Expected values are the spec's closed forms in double; float32 results within 1e-6.
 #include "voxc/generators/terrain/Erosion.h"
 
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 #include <limits>
@@ -95,6 +96,45 @@ TEST(ErosionStepTest, WholeStepWithConservativeTransport) {
     const double solid = grid.base.values[0] + grid.difference.values[0] + grid.base.values[1] + grid.difference.values[1] +
                          grid.sediment.values[0] + grid.sediment.values[1];
     EXPECT_NEAR(solid, 1.0, kTolerance);
+}
+
+// The gather of B3.4 step 5 as a GPU kernel will run it: cell (x, y) sums s1 * (w_x * w_y) over its
+// 3x3 sources in row-major order, w = 1 - frac at floor(arrival), frac one further, zero weights skipped.
+float gatheredSediment(const ErosionGrid& g, const ErosionParams& p, int32_t x, int32_t y) {
+    const int32_t w = g.width(), h = g.height();
+    auto weight = [](float arrival, int32_t cell) {
+        const float base = std::floor(arrival), frac = arrival - base;
+        return float(cell) == base ? 1.0f - frac : (float(cell) == base + 1.0f ? frac : 0.0f);
+    };
+    float sum = 0.0f;
+    for (int32_t sy = y - 1; sy <= y + 1; ++sy)
+        for (int32_t sx = x - 1; sx <= x + 1; ++sx) {
+            if (sx < 0 || sy < 0 || sx >= w || sy >= h) continue;
+            const size_t j = g.water.index(sx, sy);
+            const float tx = std::clamp(float(sx) + (g.velocityU.values[j] * p.dt) / p.cellSize, 0.0f, float(w - 1));
+            const float ty = std::clamp(float(sy) + (g.velocityV.values[j] * p.dt) / p.cellSize, 0.0f, float(h - 1));
+            const float wx = weight(tx, x), wy = weight(ty, y);
+            if (wx != 0.0f && wy != 0.0f) sum = sum + g.suspended.values[j] * (wx * wy);
+        }
+    return sum;
+}
+
+TEST(ErosionStepTest, ConservativeTransportIsTheDocumentedGatherBitForBit) {
+    ErosionParams params;
+    params.dt = 0.25f;
+    params.cellSize = 1.0f;
+    ErosionGrid grid(23, 17);
+    const float limit = 0.5f * params.cellSize / params.dt;
+    for (size_t i = 0; i < grid.suspended.values.size(); ++i) { // deterministic pseudo-random fields, with zeros and clamped speeds
+        const float a = std::sin(float(i) * 12.9898f) * 43758.5453f, b = std::sin(float(i) * 78.233f) * 12345.678f;
+        const float ua = a - std::floor(a), ub = b - std::floor(b);
+        grid.suspended.values[i] = i % 7 == 0 ? 0.0f : ua * 0.01f;
+        grid.velocityU.values[i] = i % 5 == 0 ? limit : (ua * 2.0f - 1.0f) * limit;
+        grid.velocityV.values[i] = i % 11 == 0 ? -limit : (ub * 2.0f - 1.0f) * limit;
+    }
+    transportSediment(grid, params);
+    for (int32_t y = 0; y < grid.height(); ++y)
+        for (int32_t x = 0; x < grid.width(); ++x) ASSERT_EQ(grid.sediment.at(x, y), gatheredSediment(grid, params, x, y)) << x << "," << y;
 }
 
 TEST(ErosionStepTest, DropsAreDeterministicAndWithinTheirRanges) {

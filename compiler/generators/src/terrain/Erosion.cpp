@@ -106,8 +106,7 @@ ErosionGrid::ErosionGrid(int32_t width, int32_t height)
     : base(width, height), rain(width, height, 1.0f), capacity(width, height, 1.0f), difference(width, height), water(width, height),
       sediment(width, height), fluxL(width, height), fluxR(width, height), fluxT(width, height), fluxB(width, height),
       velocityU(width, height), velocityV(width, height), suspended(width, height), differenceNext(width, height),
-      surface(width, height), arrivalX(width, height), arrivalY(width, height), arrivalFracX(width, height),
-      arrivalFracY(width, height) {}
+      surface(width, height) {}
 
 Drop dropAt(const ErosionParams& p, int32_t width, int32_t height, int32_t level, uint32_t step) {
     Drop drop;
@@ -248,39 +247,33 @@ void transportMei(ErosionGrid& g, const ErosionParams& p) {
         }
 }
 
-// Weight a splat arriving at floor + frac (clamped into the grid) gives to cell `cell` along one axis.
-float splatWeight(float floor, float frac, int32_t cell) {
-    if (float(cell) == floor) return 1.0f - frac;
-    if (float(cell) == floor + 1.0f) return frac;
-    return 0.0f;
-}
-
-// Forward splat as a gather: each source within one cell sends s1 bilinearly to its clamped arrival
-// point; |u dt| <= 0.5 cell keeps every arrival within the 3x3 neighbourhood. The arrivals are
-// computed once per cell first; then each cell sums its sources in row-major order.
+// Forward splat (B3.4 step 5): each source sends s1 bilinearly to its arrival point clamped into the
+// grid; |u dt| <= 0.5 cell keeps every arrival within its 3x3 neighbourhood. Defined as a gather: cell
+// (x, y) sums its sources' contributions s1 * (w_x * w_y), w = 1 - frac at floor(arrival) and frac
+// one cell further, sources in row-major order, zero weights skipped. Scattering the sources in
+// row-major order adds to every cell in exactly that order, so this loop is that gather bit for bit
+// (a GPU kernel gathers). A source without sediment adds +0 to a sum that is never -0: skipped.
 void transportConservative(ErosionGrid& g, const ErosionParams& p) {
     const int32_t w = g.width(), h = g.height();
+    std::fill(g.sediment.values.begin(), g.sediment.values.end(), 0.0f);
     for (int32_t y = 0; y < h; ++y)
         for (int32_t x = 0; x < w; ++x) {
             const size_t i = g.water.index(x, y);
+            const float sediment = g.suspended.values[i];
+            if (sediment == 0.0f) continue;
             const float tx = std::clamp(float(x) + (g.velocityU.values[i] * p.dt) / p.cellSize, 0.0f, float(w - 1));
             const float ty = std::clamp(float(y) + (g.velocityV.values[i] * p.dt) / p.cellSize, 0.0f, float(h - 1));
-            g.arrivalX.values[i] = std::floor(tx);
-            g.arrivalY.values[i] = std::floor(ty);
-            g.arrivalFracX.values[i] = tx - g.arrivalX.values[i];
-            g.arrivalFracY.values[i] = ty - g.arrivalY.values[i];
-        }
-    for (int32_t y = 0; y < h; ++y)
-        for (int32_t x = 0; x < w; ++x) {
-            float sum = 0.0f;
-            for (int32_t sy = std::max(0, y - 1); sy <= std::min(h - 1, y + 1); ++sy)
-                for (int32_t sx = std::max(0, x - 1); sx <= std::min(w - 1, x + 1); ++sx) {
-                    const size_t j = g.water.index(sx, sy);
-                    const float wx = splatWeight(g.arrivalX.values[j], g.arrivalFracX.values[j], x);
-                    const float wy = splatWeight(g.arrivalY.values[j], g.arrivalFracY.values[j], y);
-                    if (wx != 0.0f && wy != 0.0f) sum = sum + g.suspended.values[j] * (wx * wy);
-                }
-            g.sediment.at(x, y) = sum;
+            const float floorX = std::floor(tx), floorY = std::floor(ty);
+            const float fx = tx - floorX, fy = ty - floorY;
+            const float wx0 = 1.0f - fx, wy0 = 1.0f - fy;
+            const size_t at = g.water.index(int32_t(floorX), int32_t(floorY));
+            float* target = g.sediment.values.data();
+            target[at] = target[at] + sediment * (wx0 * wy0);
+            if (fx != 0.0f) target[at + 1] = target[at + 1] + sediment * (fx * wy0);
+            if (fy != 0.0f) {
+                target[at + size_t(w)] = target[at + size_t(w)] + sediment * (wx0 * fy);
+                if (fx != 0.0f) target[at + size_t(w) + 1] = target[at + size_t(w) + 1] + sediment * (fx * fy);
+            }
         }
 }
 

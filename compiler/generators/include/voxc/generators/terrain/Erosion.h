@@ -63,9 +63,7 @@ struct ErosionGrid {
     Field2 base, rain, capacity;
     Field2 difference, water, sediment, fluxL, fluxR, fluxT, fluxB;
     Field2 velocityU, velocityV, suspended, differenceNext;
-    Field2 surface;                  // per pass: b + d (flux) or b (erosion), so neighbours read one value
-    Field2 arrivalX, arrivalY;       // conservative transport: floor of each cell's arrival point
-    Field2 arrivalFracX, arrivalFracY; // ... and its fraction
+    Field2 surface; // per pass: b + d (flux) or b (erosion), so neighbours read one value
 };
 
 // The passes of one step, in the order erosionStep runs them. `level` and `step` key the drop's hash.
