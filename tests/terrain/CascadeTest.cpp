@@ -164,6 +164,32 @@ TEST(CascadeTest, GuidedGradientRisesAwayFromTheSpline) {
     }
 }
 
+// Rise of the converged band per world voxel of distance from a diagonal spline (B2.8's anisotropy).
+double diagonalBandSlope(bool isotropic) {
+    TerrainMap map = baseMap(6, 6);
+    Spline spline;
+    spline.controlPoints = {{-16, 0, -16}, {16, 0, 16}, {48, 0, 48}, {80, 0, 80}};
+    MetaPoint meta;
+    meta.radius = 1.0;
+    meta.left = meta.right = {24.0, 6.0}; // 0.25 voxels per voxel
+    meta.hardness = 1.0;
+    spline.metaPoints = {meta};
+    spline.minLevel = spline.maxLevel = 6;
+    map.splines.push_back(spline);
+    map.diffusion.multiplier = 20000.0 / 6.0;
+    map.diffusion.isotropicGradient = isotropic;
+    const LevelFields fields = runCascade(map, {});
+    // Cells (32 + k, 31 - k) step sqrt(2) voxels away from the line per k; compare k = 3 and k = 7.
+    const double rise = (fields.height.at(39, 24) - fields.height.at(35, 28)) * map.domain.maxHeight;
+    return rise / (4.0 * std::sqrt(2.0));
+}
+
+TEST(CascadeTest, IsotropicGradientRemovesTheDiagonalSteepening) {
+    const double plain = diagonalBandSlope(false), isotropic = diagonalBandSlope(true);
+    EXPECT_NEAR(isotropic, 0.25, 0.25 * 0.05);
+    EXPECT_NEAR(plain, 0.25 * std::sqrt(2.0), 0.25 * std::sqrt(2.0) * 0.05); // G / (|N_x|^3 + |N_y|^3)
+}
+
 TEST(CascadeTest, SweepCountsFollowTheIterationRule) {
     DiffusionSettings settings;
     settings.multiplier = 0.89; // Mountain river
