@@ -1,10 +1,12 @@
-// `feature name = generator { key = value; ... }`: each feature becomes a field whose DAG the
-// generator's record builds (compiler/check/src/generators).
+// `feature name = generator { key = value; ... }`: the keys are read and range-checked against the
+// generator's record (voxc_generators, compiler/generators/src/dey) with located diagnostics here;
+// the record builds the feature's field from the checked values.
 #include "Materials.h"
 #include "Sections.h"
 #include "Suggest.h"
 #include "Values.h"
-#include "generators/Generators.h"
+
+#include "voxc/generators/dey/Generators.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,23 +17,23 @@ namespace voxc::check {
 
 namespace {
 
-std::optional<std::array<double, 3>> readKey(Context& context, const ast::Assignment& a, const GeneratorKey& key) {
+std::optional<std::array<double, 3>> readKey(Context& context, const ast::Assignment& a, const dey::GeneratorKey& key) {
     switch (key.type) {
-    case GeneratorKeyType::Number:
+    case dey::GeneratorKeyType::Number:
         if (auto v = readNumber(context, a, key.min, key.max)) return std::array<double, 3>{*v, 0, 0};
         return std::nullopt;
-    case GeneratorKeyType::Integer:
+    case dey::GeneratorKeyType::Integer:
         if (auto v = readInteger(context, a, int64_t(key.min), int64_t(key.max)))
             return std::array<double, 3>{double(*v), 0, 0};
         return std::nullopt;
-    case GeneratorKeyType::Vec3: return readNumberVec3(context, a, key.min, key.max);
+    case dey::GeneratorKeyType::Vec3: return readNumberVec3(context, a, key.min, key.max);
     }
     return std::nullopt;
 }
 
 // The thesis samples each parameter on a grid from its minimum; other values work but are
 // outside the ranges it evaluated, so they warn rather than fail.
-void warnOffGrid(Context& context, const ast::Assignment& a, const GeneratorKey& key, double value) {
+void warnOffGrid(Context& context, const ast::Assignment& a, const dey::GeneratorKey& key, double value) {
     if (key.step <= 0) return;
     const double steps = (value - key.min) / key.step;
     if (std::fabs(steps - std::round(steps)) <= 1e-6 * std::max(1.0, std::fabs(steps))) return;
@@ -51,10 +53,10 @@ struct CheckedFeature {
 
 std::optional<CheckedFeature> checkFeature(Context& context, const ast::FeatureDecl& decl, uint32_t seed) {
     const ast::Block& body = decl.body;
-    const GeneratorInfo* info = findGenerator(body.kind);
+    const dey::GeneratorInfo* info = dey::findGenerator(body.kind);
     if (info == nullptr) {
         std::vector<std::string_view> names;
-        for (const GeneratorInfo& generator : generators()) names.push_back(generator.name);
+        for (const dey::GeneratorInfo& generator : dey::generators()) names.push_back(generator.name);
         context.diagnostics.error("E0002", body.loc,
                                   fmt::format("unknown generator '{}'{}", body.kind, suggestOrList(body.kind, names)));
         return std::nullopt;
@@ -63,18 +65,18 @@ std::optional<CheckedFeature> checkFeature(Context& context, const ast::FeatureD
     checkLabel(context, body, false);
     rejectUnexpectedMembers(context, body, where, {});
     std::vector<std::string_view> keyNames;
-    for (const GeneratorKey& key : info->keys) keyNames.push_back(key.name);
+    for (const dey::GeneratorKey& key : info->keys) keyNames.push_back(key.name);
     keyNames.push_back(kMaterialKey);
     BlockKeys keys(context, body, where, keyNames);
 
     CheckedFeature out;
-    GeneratorParams params;
+    dey::GeneratorParams params;
     bool ok = true;
     if (const ast::Assignment* a = keys.find(kMaterialKey)) {
         out.material = readMaterialKey(context, *a);
         ok = out.material.has_value();
     }
-    for (const GeneratorKey& key : info->keys) {
+    for (const dey::GeneratorKey& key : info->keys) {
         const ast::Assignment* a = key.required ? keys.require(key.name) : keys.find(key.name);
         if (a == nullptr) {
             ok = ok && !key.required;
@@ -86,7 +88,7 @@ std::optional<CheckedFeature> checkFeature(Context& context, const ast::FeatureD
             ok = false;
             continue;
         }
-        if (key.type != GeneratorKeyType::Vec3) warnOffGrid(context, *a, key, (*value)[0]);
+        if (key.type != dey::GeneratorKeyType::Vec3) warnOffGrid(context, *a, key, (*value)[0]);
         params.set(key.name, *value);
     }
     if (!ok) return std::nullopt;
@@ -95,12 +97,10 @@ std::optional<CheckedFeature> checkFeature(Context& context, const ast::FeatureD
         context.diagnostics.error("E0007", a ? a->value.loc : body.loc, problem->message);
         return std::nullopt;
     }
-    FieldDag dag;
-    const uint32_t root = info->build(params, seed, dag);
+    out.field = info->build(params, seed);
     Field& field = out.field;
     field.name = decl.name;
     field.loc = decl.loc;
-    field.nodes = dag.reachableFrom(root, field.root);
     for (FieldNode& node : field.nodes) node.loc = body.loc;
     return out;
 }

@@ -12,8 +12,8 @@
 // precision like `const` expressions and stay untyped until used: an argument position whose
 // type rule wants an int takes an integral number as an int, anywhere else it is a float.
 #include "Context.h"
-#include "FieldDag.h"
 
+#include "voxc/program/FieldDag.h"
 #include "voxc/syntax/Ast.h"
 
 #include <map>

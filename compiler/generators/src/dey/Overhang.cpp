@@ -6,7 +6,7 @@
 
 #include <array>
 
-namespace voxc::check {
+namespace voxc::dey {
 
 namespace {
 
@@ -61,10 +61,10 @@ std::array<uint32_t, 4> bernstein(DagBuilder& b, uint32_t t) {
             b.call("mul", {b.call("mul", {t, t}), t})};
 }
 
-uint32_t build(const GeneratorParams& params, uint32_t /*seed*/, FieldDag& dag) {
+Field build(const GeneratorParams& params, uint32_t /*seed*/) {
     const glm::dvec3 lo = params.vec("min"), hi = params.vec("max");
     const glm::dvec3 extent = hi - lo;
-    DagBuilder b(dag);
+    DagBuilder b;
     const uint32_t q = Placement::of(params, 0.5 * (lo + hi)).inverseOfPosition(b);
     uint32_t normalised[3];
     for (uint32_t axis = 0; axis < 3; ++axis)
@@ -94,7 +94,7 @@ uint32_t build(const GeneratorParams& params, uint32_t /*seed*/, FieldDag& dag) 
     const uint32_t depth = b.call("mul", {b.call("sub", {normalised[0], b.call("min", {surface, parabola})}),
                                           b.number(extent.x)});
     const uint32_t box = b.call("sdf_box", {q, b.vec3(0.5 * (lo + hi) - 0.5), b.vec3(0.5 * extent)});
-    return b.call("density", {b.call("max", {depth, box}), b.number(1.0)});
+    return b.field(b.call("density", {b.call("max", {depth, box}), b.number(1.0)}));
 }
 
 } // namespace
@@ -104,4 +104,4 @@ const GeneratorInfo& overhangGenerator() {
     return info;
 }
 
-} // namespace voxc::check
+} // namespace voxc::dey

@@ -1,4 +1,4 @@
-#include "Generators.h"
+#include "voxc/generators/dey/Generators.h"
 
 #include "Records.h"
 
@@ -7,7 +7,7 @@
 #include <array>
 #include <functional>
 
-namespace voxc::check {
+namespace voxc::dey {
 
 double GeneratorParams::number(std::string_view key) const {
     auto it = values_.find(key);
@@ -32,4 +32,4 @@ const GeneratorInfo* findGenerator(std::string_view name) {
     return nullptr;
 }
 
-} // namespace voxc::check
+} // namespace voxc::dey

@@ -1,7 +1,8 @@
 #pragma once
 // Builds a Field's node list with hash-consing: adding a node equal to one already present
 // (same kind, type, payload and operands) returns the existing index, so repeated
-// subexpressions, let bindings and materialised literals share one node.
+// subexpressions, let bindings and materialised literals share one node. The checker lowers
+// field expressions with it and the feature generators (voxc_generators) build their fields.
 #include "voxc/program/Field.h"
 
 #include <cstdint>
@@ -9,7 +10,7 @@
 #include <tuple>
 #include <vector>
 
-namespace voxc::check {
+namespace voxc {
 
 class FieldDag {
 public:
@@ -26,4 +27,4 @@ private:
     std::map<Key, uint32_t> index_;
 };
 
-} // namespace voxc::check
+} // namespace voxc

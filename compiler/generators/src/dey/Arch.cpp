@@ -7,7 +7,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
-namespace voxc::check {
+namespace voxc::dey {
 
 namespace {
 
@@ -65,7 +65,7 @@ double taper(double radius, const End& end, double s) {
     return radius * end.multiplier * (1.0 - std::pow(interpolant, end.exponent));
 }
 
-uint32_t build(const GeneratorParams& params, uint32_t /*seed*/, FieldDag& dag) {
+Field build(const GeneratorParams& params, uint32_t /*seed*/) {
     const glm::dvec3 start = params.vec("start"), end = params.vec("end");
     const End first = endParams(params, "start"), last = endParams(params, "end");
     const glm::dvec3 span = end - start;
@@ -83,8 +83,8 @@ uint32_t build(const GeneratorParams& params, uint32_t /*seed*/, FieldDag& dag) 
         points.push_back(placement.apply(point));
         radii.push_back(radius + taper(radius, first, t) + taper(radius, last, s));
     }
-    DagBuilder builder(dag);
-    return builder.call("density", {sweptSpheres(builder, points, radii), builder.number(1.0)});
+    DagBuilder builder;
+    return builder.field(builder.call("density", {sweptSpheres(builder, points, radii), builder.number(1.0)}));
 }
 
 } // namespace
@@ -94,4 +94,4 @@ const GeneratorInfo& archGenerator() {
     return info;
 }
 
-} // namespace voxc::check
+} // namespace voxc::dey

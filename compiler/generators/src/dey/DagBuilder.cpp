@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace voxc::check {
+namespace voxc::dey {
 
 uint32_t DagBuilder::number(double value) {
     FieldNode node;
@@ -57,6 +57,12 @@ uint32_t DagBuilder::call(std::string_view name, std::initializer_list<uint32_t>
     node.function = uint32_t(info - functions().data());
     node.operands = operands;
     return dag_.add(node);
+}
+
+Field DagBuilder::field(uint32_t root) const {
+    Field out;
+    out.nodes = dag_.reachableFrom(root, out.root);
+    return out;
 }
 
 Placement Placement::of(const GeneratorParams& params, glm::dvec3 pivot) {
@@ -111,4 +117,4 @@ uint32_t sweptSpheres(DagBuilder& builder, const std::vector<glm::dvec3>& points
     return distance;
 }
 
-} // namespace voxc::check
+} // namespace voxc::dey

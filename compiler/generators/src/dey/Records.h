@@ -1,8 +1,8 @@
 #pragma once
 // The generator records, one file each; Generators.cpp lists them.
-#include "Generators.h"
+#include "voxc/generators/dey/Generators.h"
 
-namespace voxc::check {
+namespace voxc::dey {
 
 // Placement keys every generator accepts (grid-local voxels and degrees).
 inline constexpr GeneratorKey kTranslateKey{"translate", GeneratorKeyType::Vec3, -1e6, 1e6, 0, {0, 0, 0}};
@@ -12,4 +12,4 @@ const GeneratorInfo& archGenerator();
 const GeneratorInfo& caveGenerator();
 const GeneratorInfo& overhangGenerator();
 
-} // namespace voxc::check
+} // namespace voxc::dey

@@ -1,26 +1,28 @@
 #pragma once
 // Small helpers the generators use to write field DAGs: typed constants, the position input,
 // registry calls, the feature placement (translate/rotate) and swept spheres.
-#include "Generators.h"
+#include "voxc/generators/dey/Generators.h"
+#include "voxc/program/FieldDag.h"
 
 #include <glm/mat3x3.hpp>
 #include <initializer_list>
 #include <vector>
 
-namespace voxc::check {
+namespace voxc::dey {
 
 class DagBuilder {
 public:
-    explicit DagBuilder(FieldDag& dag) : dag_(dag) {}
     uint32_t number(double value);
     uint32_t vec3(glm::dvec3 value);
     uint32_t position(); // grid-local p = vec3(x, y, z)
     uint32_t component(uint32_t vector, uint32_t index);
     // A call of registry function `name`; the operand types must fit its type rule.
     uint32_t call(std::string_view name, std::initializer_list<uint32_t> operands);
+    // The nodes `root` depends on, renumbered, as a field whose root is `root`.
+    Field field(uint32_t root) const;
 
 private:
-    FieldDag& dag_;
+    FieldDag dag_;
 };
 
 // `rotate` (degrees about x, then y, then z, around `pivot`) followed by `translate`.
@@ -40,4 +42,4 @@ struct Placement {
 // of radii[i] and radii[i + 1]. Needs at least two points.
 uint32_t sweptSpheres(DagBuilder& builder, const std::vector<glm::dvec3>& points, const std::vector<double>& radii);
 
-} // namespace voxc::check
+} // namespace voxc::dey

@@ -9,7 +9,7 @@
 #include <array>
 #include <cmath>
 
-namespace voxc::check {
+namespace voxc::dey {
 
 namespace {
 
@@ -44,7 +44,7 @@ glm::dvec3 curl(glm::dvec3 position, uint32_t seed) {
     return glm::dvec3(curl3->eval(args).v);
 }
 
-uint32_t build(const GeneratorParams& params, uint32_t seed, FieldDag& dag) {
+Field build(const GeneratorParams& params, uint32_t seed) {
     const glm::dvec3 start = params.vec("start");
     const glm::dvec3 direction = glm::normalize(params.vec("direction"));
     const int steps = int(params.number("iterations"));
@@ -65,8 +65,8 @@ uint32_t build(const GeneratorParams& params, uint32_t seed, FieldDag& dag) {
     }
     const Placement placement = Placement::of(params, start);
     for (glm::dvec3& point : points) point = placement.apply(point);
-    DagBuilder builder(dag);
-    return builder.call("density", {sweptSpheres(builder, points, radii), builder.number(1.0)});
+    DagBuilder builder;
+    return builder.field(builder.call("density", {sweptSpheres(builder, points, radii), builder.number(1.0)}));
 }
 
 } // namespace
@@ -76,4 +76,4 @@ const GeneratorInfo& caveGenerator() {
     return info;
 }
 
-} // namespace voxc::check
+} // namespace voxc::dey

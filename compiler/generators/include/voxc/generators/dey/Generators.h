@@ -1,11 +1,12 @@
 #pragma once
 // Dey's parametric terrain features (thesis ch. 4), written `feature name = generator { ... }`,
 // one registry record per generator: its keys (type, range, the thesis's sampling step, default)
-// and a build function that expands the checked parameters into an ordinary field DAG of
-// registry builtins. Curves and particle paths are computed here, on the CPU, at check time, so
-// the interpreter and every GPU backend run a feature like any other field. docs/language.md
-// ("Features") defines each generator.
-#include "../FieldDag.h"
+// and a build function that expands the checked parameters into an ordinary field of registry
+// builtins. Curves and particle paths are computed here, on the CPU, at check time, so the
+// interpreter and every GPU backend run a feature like any other field. The checker
+// (compiler/check/src/CheckFeatures.cpp) reads the keys against these records and reports every
+// problem at its place in the source; docs/language.md ("Features") defines each generator.
+#include "voxc/program/Field.h"
 
 #include <array>
 #include <cstdint>
@@ -16,7 +17,7 @@
 #include <string>
 #include <string_view>
 
-namespace voxc::check {
+namespace voxc::dey {
 
 enum class GeneratorKeyType : uint8_t { Number, Integer, Vec3 };
 
@@ -53,11 +54,12 @@ struct GeneratorInfo {
     std::string_view name;
     std::span<const GeneratorKey> keys;
     std::optional<GeneratorProblem> (*validate)(const GeneratorParams& params);
-    // Adds the feature's density (1 rock, 0 air) to `dag`; returns its Float root.
-    uint32_t (*build)(const GeneratorParams& params, uint32_t seed, FieldDag& dag);
+    // The feature's density (1 rock, 0 air) from checked parameters: nodes and Float root; the
+    // caller names the field and gives its nodes their source location.
+    Field (*build)(const GeneratorParams& params, uint32_t seed);
 };
 
 std::span<const GeneratorInfo> generators();
 const GeneratorInfo* findGenerator(std::string_view name);
 
-} // namespace voxc::check
+} // namespace voxc::dey

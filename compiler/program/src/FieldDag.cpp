@@ -1,8 +1,8 @@
-#include "FieldDag.h"
+#include "voxc/program/FieldDag.h"
 
 #include <bit>
 
-namespace voxc::check {
+namespace voxc {
 
 uint32_t FieldDag::add(FieldNode node) {
     // Float constants compare by bit pattern, so 0 and -0 stay distinct.
@@ -42,4 +42,4 @@ std::vector<FieldNode> FieldDag::reachableFrom(uint32_t root, uint32_t& newRoot)
     return out;
 }
 
-} // namespace voxc::check
+} // namespace voxc
