@@ -1,0 +1,37 @@
+#pragma once
+// The feature-curve generator's CPU core (Becher et al., spec Part A, docs/curves.md): voxelise
+// the curves into the solve box, diffuse normals, noise parameters and materials, propagate the
+// signed surface and smooth it. The result is what a solve stage will hand to field kernels.
+#include "voxc/generators/curves/Diffuse.h"
+#include "voxc/generators/curves/Multigrid.h"
+#include "voxc/generators/curves/Propagate.h"
+
+namespace voxc::curves {
+
+enum class NormalMode { Laplace, PeronaMalik };
+
+struct Options {
+    NormalMode normals = NormalMode::Laplace;
+    float k = 0.01f;              // Perona-Malik edge threshold, as the paper prints
+    uint32_t sweeps = 0;          // Perona-Malik sweeps; 0 = the largest box axis
+    PropagateRule propagate = PropagateRule::SmallestMagnitude;
+    SeedValue seedValue = SeedValue::PlaneDistance;
+    int32_t smoothPasses = 1;
+};
+
+struct Result {
+    Field3 normalX, normalY, normalZ;   // normalised; 0 where no normal
+    Field3 amplitude, roughness;
+    MaterialField material;
+    SurfaceField surface;               // raw S
+    Field3 smoothed;                    // S after smoothPasses
+    std::vector<SolveReport> solves;    // normals (laplace mode), parameters
+};
+
+// Validates options (ParameterError, LimitError) and runs the stages on given constraints.
+Result solveCurves(const Constraints& constraints, const Options& options, const Limits& limits);
+
+// voxelize then solveCurves.
+Result runCurves(const std::vector<FeatureCurve>& curves, const Box& box, const Options& options, const Limits& limits);
+
+} // namespace voxc::curves

@@ -1,0 +1,27 @@
+#pragma once
+// Signed surface propagation (spec A3.6, Becher section 4.5 with A2.4's |value| choice) and the
+// separable binomial smoothing of A3.7. float32, fixed orders (docs/curves.md).
+#include "voxc/generators/curves/Voxelize.h"
+
+namespace voxc::curves {
+
+enum class PropagateRule { SmallestMagnitude, SignedMin }; // SignedMin: the paper's printed min
+
+struct SurfaceField {
+    Field3 distance;              // S; +infinity where no 6-path reaches Omega_S (air)
+    std::vector<int32_t> layer;   // BFS layer that set the cell: 0 on Omega_S, -1 never
+    int32_t layers = 0;           // the largest layer
+};
+
+// The candidate a cell p gets from its set neighbour x along axis `axis` (p = x + sign * e_axis):
+// S_x + sign * ((n_p[axis] + n_x[axis]) * 0.5).
+float propagationCandidate(float fromValue, float normalP, float normalX, int32_t sign);
+
+// n is the normalised normal field (normalizeField).
+SurfaceField propagateSurface(const Constraints& constraints, const Field3& nx, const Field3& ny, const Field3& nz,
+                              PropagateRule rule);
+
+// `passes` times [1,2,1]/4 along x, then y, then z, clamp to edge: ((a + 2b) + c) * 0.25.
+Field3 smoothBinomial(const Field3& field, int32_t passes);
+
+} // namespace voxc::curves

@@ -1,0 +1,138 @@
+#include "voxc/generators/curves/Diffuse.h"
+
+#include "Bfs.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace voxc::curves {
+namespace {
+
+float lengthOf(float x, float y, float z) { return std::sqrt((x * x + y * y) + z * z); }
+
+} // namespace
+
+float peronaMalikG(float x, float k) {
+    const float q = x / k;
+    return 1.0f / (1.0f + q * q);
+}
+
+void normalizeField(const Field3& x, const Field3& y, const Field3& z, Field3& outX, Field3& outY, Field3& outZ) {
+    outX = Field3(x.box), outY = Field3(x.box), outZ = Field3(x.box);
+    for (size_t i = 0; i < x.values.size(); ++i) {
+        const float length = lengthOf(x.values[i], y.values[i], z.values[i]);
+        if (!(length >= 1e-6f)) continue;
+        outX.values[i] = x.values[i] / length;
+        outY.values[i] = y.values[i] / length;
+        outZ.values[i] = z.values[i] / length;
+    }
+}
+
+NormalField peronaMalikNormals(const Constraints& cs, float k, uint32_t sweeps, const Limits&) {
+    const Box& b = cs.box;
+    NormalField n{cs.normalX, cs.normalY, cs.normalZ, std::vector<uint8_t>(b.cellCount(), 0)};
+    std::vector<size_t> front;
+    for (size_t i = 0; i < n.set.size(); ++i)
+        if (cs.flags[i] & kInNormals) n.set[i] = 1, front.push_back(i);
+
+    // (a) Fill: a layer reads only cells set in earlier layers; every set normal is unit, so
+    // the neighbour sum is of unit vectors.
+    std::vector<int32_t> stamp(b.cellCount(), -1);
+    for (int32_t layer = 1; !front.empty(); ++layer) {
+        std::vector<size_t> reached;
+        for (size_t i : nextLayer(b, front, n.set, stamp, layer)) {
+            const glm::ivec3 p = coordinates(b, i);
+            float sx = 0.0f, sy = 0.0f, sz = 0.0f;
+            for (const auto& d : kNeighbourOffsets) {
+                if (!b.contains(p.x + d[0], p.y + d[1], p.z + d[2])) continue;
+                const size_t j = b.index(p.x + d[0], p.y + d[1], p.z + d[2]);
+                if (!n.set[j]) continue;
+                sx += n.x.values[j], sy += n.y.values[j], sz += n.z.values[j];
+            }
+            const float length = lengthOf(sx, sy, sz);
+            if (!(length >= 1e-6f)) continue;
+            n.x.values[i] = sx / length, n.y.values[i] = sy / length, n.z.values[i] = sz / length;
+            reached.push_back(i);
+        }
+        for (size_t i : reached) n.set[i] = 1;
+        front = std::move(reached);
+    }
+
+    // (b) Jacobi sweeps, ping-pong: N_i + (sum_j c_ij (N_j - N_i)) / 6 over set in-box neighbours.
+    Field3 ux(b), uy(b), uz(b);
+    for (uint32_t s = 0; s < sweeps; ++s) {
+        normalizeField(n.x, n.y, n.z, ux, uy, uz);
+        NormalField next = n;
+        for (int32_t z = 0; z < b.size.z; ++z)
+            for (int32_t y = 0; y < b.size.y; ++y)
+                for (int32_t x = 0; x < b.size.x; ++x) {
+                    const size_t i = b.index(x, y, z);
+                    if (!n.set[i] || (cs.flags[i] & kInNormals)) continue;
+                    float ax = 0.0f, ay = 0.0f, az = 0.0f;
+                    for (const auto& d : kNeighbourOffsets) {
+                        if (!b.contains(x + d[0], y + d[1], z + d[2])) continue;
+                        const size_t j = b.index(x + d[0], y + d[1], z + d[2]);
+                        if (!n.set[j]) continue;
+                        const float dot = (ux.values[i] * ux.values[j] + uy.values[i] * uy.values[j]) + uz.values[i] * uz.values[j];
+                        const float c = peronaMalikG(std::clamp((1.0f - dot) * 0.5f, 0.0f, 1.0f), k);
+                        ax += c * (n.x.values[j] - n.x.values[i]);
+                        ay += c * (n.y.values[j] - n.y.values[i]);
+                        az += c * (n.z.values[j] - n.z.values[i]);
+                    }
+                    next.x.values[i] = n.x.values[i] + ax / 6.0f;
+                    next.y.values[i] = n.y.values[i] + ay / 6.0f;
+                    next.z.values[i] = n.z.values[i] + az / 6.0f;
+                }
+        n = std::move(next);
+    }
+    return n;
+}
+
+MaterialField propagateMaterial(const Constraints& cs) {
+    const Box& b = cs.box;
+    MaterialField out{std::vector<uint16_t>(b.cellCount(), 0), Field3(b), std::vector<uint8_t>(b.cellCount(), 0), 0};
+    std::vector<size_t> front;
+    for (size_t i = 0; i < out.assigned.size(); ++i)
+        if (cs.flags[i] & kInParams) {
+            out.assigned[i] = 1, out.material[i] = cs.material[i], out.confidence.values[i] = 1.0f;
+            front.push_back(i);
+        }
+    std::vector<int32_t> stamp(b.cellCount(), -1);
+    for (int32_t layer = 1;; ++layer) {
+        const std::vector<size_t> cells = nextLayer(b, front, out.assigned, stamp, layer);
+        if (cells.empty()) break;
+        out.layers = layer;
+        std::vector<std::pair<uint16_t, float>> votes(cells.size());
+        for (size_t c = 0; c < cells.size(); ++c) {
+            const glm::ivec3 p = coordinates(b, cells[c]);
+            uint16_t ids[6];
+            float weights[6];
+            int32_t distinct = 0;
+            float total = 0.0f;
+            for (const auto& d : kNeighbourOffsets) {
+                if (!b.contains(p.x + d[0], p.y + d[1], p.z + d[2])) continue;
+                const size_t j = b.index(p.x + d[0], p.y + d[1], p.z + d[2]);
+                if (!out.assigned[j]) continue;
+                const float conf = out.confidence.values[j];
+                total += conf;
+                int32_t slot = 0;
+                while (slot < distinct && ids[slot] != out.material[j]) ++slot;
+                if (slot == distinct) ids[distinct] = out.material[j], weights[distinct++] = 0.0f;
+                weights[slot] += conf;
+            }
+            int32_t best = 0;
+            for (int32_t s = 1; s < distinct; ++s)
+                if (weights[s] > weights[best] || (weights[s] == weights[best] && ids[s] < ids[best])) best = s;
+            votes[c] = {ids[best], weights[best] / total};
+        }
+        for (size_t c = 0; c < cells.size(); ++c) {
+            out.assigned[cells[c]] = 1;
+            out.material[cells[c]] = votes[c].first;
+            out.confidence.values[cells[c]] = votes[c].second;
+        }
+        front = cells;
+    }
+    return out;
+}
+
+} // namespace voxc::curves
