@@ -27,7 +27,7 @@ TEST(CurvesSolve, MultigridConvergesHalvingTheResidualEachCycle) {
     const Result r = solveCurves(cs, Options{}, Limits{});
     ASSERT_EQ(r.solves.size(), 2u);
     for (const SolveReport& s : r.solves) {
-        EXPECT_EQ(s.levels, 4); // 64x32x64 down to 8x4x8
+        EXPECT_EQ(s.levels, 5); // 64x32x64, 32x16x32, 16x8x16, 8x4x8, 4x4x4
         EXPECT_LE(s.cycles(), Limits{}.maxCycles);
         const float tolerance = s.name == "parameters" ? 6e-5f : 1e-5f; // 1e-5 * max amplitude 6
         EXPECT_LE(s.residuals.back(), tolerance) << s.name;
@@ -166,6 +166,27 @@ TEST(CurvesModes, PeronaMalikKeepsACreaseInEveryRow) {
             maxRowStep(r, cs.box, y, z, &rowMax);
             ASSERT_GE(rowMax * 180.0 / M_PI, 40.0) << y << "," << z;
         }
+}
+
+// A flat box: axes below 8 cells stop halving while the others go on (semi-coarsening), so the
+// coarsest level stays small and the solve converges within the cap.
+TEST(CurvesSolve, FlatBoxCoarsensItsLongAxes) {
+    Constraints cs(Box{glm::ivec3(0), glm::ivec3(128, 6, 96)});
+    const Box& b = cs.box;
+    for (int32_t z = 0; z < b.size.z; ++z)
+        for (int32_t x = 0; x < b.size.x; ++x) {
+            const size_t i = b.index(x, 1, z);
+            if (x > 3 && x < 124) continue;
+            cs.flags[i] = kInNormals | kInParams;
+            cs.amplitude.values[i] = x <= 3 ? 0.0f : 8.0f;
+        }
+    std::vector<uint8_t> fixed(cs.flags.size());
+    for (size_t i = 0; i < fixed.size(); ++i) fixed[i] = cs.flags[i] ? 1 : 0;
+    Field3 amplitude = cs.amplitude;
+    const SolveReport report = solveLaplace("parameters", fixed, {&amplitude}, 8e-5f, Limits{});
+    EXPECT_EQ(report.levels, 6); // 128x6x96, 64x3x48, 32x2x24, 16x1x12, 8x1x6, 4x1x3
+    EXPECT_LE(report.residuals.back(), 8e-5f);
+    EXPECT_NEAR(amplitude.at(64, 3, 48), 4.0f, 0.2f); // half-way along the linear ramp
 }
 
 TEST(CurvesSolve, CycleCapIsATypedErrorWithTheNumbers) {

@@ -11,19 +11,31 @@ namespace {
 // V(3,3) cuts it 2.2-2.9x (docs/curves.md).
 constexpr int32_t kPreSmooth = 3, kPostSmooth = 3, kCoarsestSweeps = 50;
 
+// A level's cells are `1 << scale[a]` finest cells wide along axis a; its stencil weights axis a
+// by 1 / width^2 (exact powers of 1/4), so every level discretises the same Laplacian in finest
+// units and the coarse right-hand side is the plain mean of the fine residual.
 struct Level {
     Box box;
+    glm::ivec3 scale{0};
+    glm::vec3 weight{1.0f};
     std::vector<uint8_t> fixed;
     std::vector<std::vector<float>> u, f; // per component: unknowns (or corrections) and right-hand side
 };
 
+// Visits the in-box face neighbours in the order -x, +x, -y, +y, -z, +z as (index, axis).
 template <typename Visit>
 void forNeighbours(const Box& b, int32_t x, int32_t y, int32_t z, Visit&& visit) {
-    for (const auto& d : kNeighbourOffsets)
-        if (b.contains(x + d[0], y + d[1], z + d[2])) visit(b.index(x + d[0], y + d[1], z + d[2]));
+    const size_t i = b.index(x, y, z), row = size_t(b.size.x), slice = row * size_t(b.size.y);
+    if (x > 0) visit(i - 1, 0);
+    if (x + 1 < b.size.x) visit(i + 1, 0);
+    if (y > 0) visit(i - row, 1);
+    if (y + 1 < b.size.y) visit(i + row, 1);
+    if (z > 0) visit(i - slice, 2);
+    if (z + 1 < b.size.z) visit(i + slice, 2);
 }
 
-// Red-black Gauss-Seidel half sweep: u_i = (sum_j u_j - f_i) / count, neighbours summed in the fixed order.
+// Red-black Gauss-Seidel half sweep: u_i = (sum_j w_j u_j - f_i) / sum_j w_j, both sums from 0
+// in neighbour order (on the finest level w = 1: the plain neighbour sum over the count).
 void smoothColour(Level& level, int32_t colour) {
     const Box& b = level.box;
     for (size_t c = 0; c < level.u.size(); ++c) {
@@ -34,10 +46,12 @@ void smoothColour(Level& level, int32_t colour) {
                 for (int32_t x = (y + z + colour) & 1; x < b.size.x; x += 2) {
                     const size_t i = b.index(x, y, z);
                     if (level.fixed[i]) continue;
-                    float sum = 0.0f;
-                    int32_t count = 0;
-                    forNeighbours(b, x, y, z, [&](size_t j) { sum += u[j], ++count; });
-                    if (count > 0) u[i] = (sum - f[i]) / float(count);
+                    float sum = 0.0f, weights = 0.0f;
+                    forNeighbours(b, x, y, z, [&](size_t j, int32_t axis) {
+                        sum += level.weight[axis] * u[j];
+                        weights += level.weight[axis];
+                    });
+                    if (weights > 0.0f) u[i] = (sum - f[i]) / weights;
                 }
     }
 }
@@ -46,20 +60,31 @@ void smooth(Level& level, int32_t sweeps) {
     for (int32_t s = 0; s < sweeps; ++s) smoothColour(level, 0), smoothColour(level, 1);
 }
 
-// r = f - sum_j (u_j - u_i) on free cells, 0 on fixed ones.
-float residualAt(const Box& b, const std::vector<float>& u, float f, int32_t x, int32_t y, int32_t z) {
-    const size_t i = b.index(x, y, z);
+// r = f - sum_j w_j (u_j - u_i) on free cells (the caller skips fixed ones).
+float residualAt(const Level& level, const std::vector<float>& u, float f, int32_t x, int32_t y, int32_t z) {
+    const size_t i = level.box.index(x, y, z);
     float lap = 0.0f;
-    forNeighbours(b, x, y, z, [&](size_t j) { lap += u[j] - u[i]; });
+    forNeighbours(level.box, x, y, z, [&](size_t j, int32_t axis) { lap += level.weight[axis] * (u[j] - u[i]); });
     return f - lap;
 }
 
-// Coarse cells: ceil(n/2) per axis; each child (x, y, z) has parent (x/2, y/2, z/2).
-Box coarsen(const Box& fine) { return Box{glm::ivec3(0), (fine.size + 1) / 2}; }
+// Which axes the next level halves (ceil): every axis of >= 2 cells while the longest has >= 8;
+// none: this is the coarsest level. Short axes go down to one cell with the others, so cell
+// widths stay equal across axes where there are neighbours (a pointwise smoother fails on
+// stretched cells).
+glm::ivec3 halvedAxes(const Box& b) {
+    if (std::max({b.size.x, b.size.y, b.size.z}) < 8) return glm::ivec3(0);
+    return glm::ivec3(b.size.x >= 2, b.size.y >= 2, b.size.z >= 2);
+}
+
+glm::ivec3 parentOf(const glm::ivec3& halved, int32_t x, int32_t y, int32_t z) {
+    return {x >> halved.x, y >> halved.y, z >> halved.z};
+}
 
 // `mean` of each coarse cell's children of fine values; with `onlyFixed`, only of fixed children.
 template <typename Value>
 void restrictMean(const Level& fine, const Box& coarse, bool onlyFixed, Value&& value, std::vector<float>& out) {
+    const glm::ivec3 halved = halvedAxes(fine.box);
     std::vector<float> sum(coarse.cellCount(), 0.0f);
     std::vector<int32_t> count(coarse.cellCount(), 0);
     const Box& b = fine.box;
@@ -68,7 +93,8 @@ void restrictMean(const Level& fine, const Box& coarse, bool onlyFixed, Value&& 
             for (int32_t x = 0; x < b.size.x; ++x) {
                 const size_t i = b.index(x, y, z);
                 if (onlyFixed && !fine.fixed[i]) continue;
-                const size_t p = coarse.index(x / 2, y / 2, z / 2);
+                const glm::ivec3 parent = parentOf(halved, x, y, z);
+                const size_t p = coarse.index(parent.x, parent.y, parent.z);
                 sum[p] += value(x, y, z, i);
                 ++count[p];
             }
@@ -78,26 +104,32 @@ void restrictMean(const Level& fine, const Box& coarse, bool onlyFixed, Value&& 
 }
 
 // Trilinear cell-centred interpolation of coarse values at every free fine cell, along x, then
-// y, then z, weights 3/4 (own parent) and 1/4 (the next parent towards the child), clamped at
-// the box; added to or written into u.
+// y, then z: on a halved axis weights 3/4 (own parent) and 1/4 (the next parent towards the
+// child, clamped at the box), on a kept axis 1 and 0; added to or written into u.
 void prolong(const Box& coarse, const std::vector<float>& e, const Level& fine, std::vector<float>& u, bool add) {
     const Box& b = fine.box;
-    auto other = [](int32_t v, int32_t n) { return std::clamp((v & 1) ? v / 2 + 1 : v / 2 - 1, 0, n - 1); };
+    const glm::ivec3 halved = halvedAxes(b);
+    auto other = [](int32_t v, int32_t n, int32_t h) {
+        return h ? std::clamp((v & 1) ? v / 2 + 1 : v / 2 - 1, 0, n - 1) : v;
+    };
+    const float near[3] = {halved.x ? 0.75f : 1.0f, halved.y ? 0.75f : 1.0f, halved.z ? 0.75f : 1.0f};
+    const float far[3] = {1.0f - near[0], 1.0f - near[1], 1.0f - near[2]};
     for (int32_t z = 0; z < b.size.z; ++z)
         for (int32_t y = 0; y < b.size.y; ++y)
             for (int32_t x = 0; x < b.size.x; ++x) {
                 const size_t i = b.index(x, y, z);
                 if (fine.fixed[i]) continue;
-                const int32_t xs[2] = {x / 2, other(x, coarse.size.x)}, ys[2] = {y / 2, other(y, coarse.size.y)},
-                              zs[2] = {z / 2, other(z, coarse.size.z)};
+                const glm::ivec3 p = parentOf(halved, x, y, z);
+                const int32_t xs[2] = {p.x, other(x, coarse.size.x, halved.x)}, ys[2] = {p.y, other(y, coarse.size.y, halved.y)},
+                              zs[2] = {p.z, other(z, coarse.size.z, halved.z)};
                 float alongY[2];
                 for (int32_t k = 0; k < 2; ++k) {
                     float alongX[2];
                     for (int32_t j = 0; j < 2; ++j)
-                        alongX[j] = 0.75f * e[coarse.index(xs[0], ys[j], zs[k])] + 0.25f * e[coarse.index(xs[1], ys[j], zs[k])];
-                    alongY[k] = 0.75f * alongX[0] + 0.25f * alongX[1];
+                        alongX[j] = near[0] * e[coarse.index(xs[0], ys[j], zs[k])] + far[0] * e[coarse.index(xs[1], ys[j], zs[k])];
+                    alongY[k] = near[1] * alongX[0] + far[1] * alongX[1];
                 }
-                const float v = 0.75f * alongY[0] + 0.25f * alongY[1];
+                const float v = near[2] * alongY[0] + far[2] * alongY[1];
                 u[i] = add ? u[i] + v : v;
             }
 }
@@ -108,13 +140,11 @@ void vCycle(std::vector<Level>& levels, size_t l) {
     smooth(level, kPreSmooth);
     Level& coarse = levels[l + 1];
     for (size_t c = 0; c < level.u.size(); ++c) {
-        // The unscaled stencil on cells twice as wide: the coarse equation's right-hand side is 4x the mean residual.
         restrictMean(level, coarse.box, false,
                      [&](int32_t x, int32_t y, int32_t z, size_t i) {
-                         return level.fixed[i] ? 0.0f : residualAt(level.box, level.u[c], level.f[c][i], x, y, z);
+                         return level.fixed[i] ? 0.0f : residualAt(level, level.u[c], level.f[c][i], x, y, z);
                      },
                      coarse.f[c]);
-        for (float& v : coarse.f[c]) v = 4.0f * v;
         std::fill(coarse.u[c].begin(), coarse.u[c].end(), 0.0f);
     }
     vCycle(levels, l + 1);
@@ -129,14 +159,14 @@ float maxResidualOf(const Level& level) {
         for (int32_t z = 0; z < b.size.z; ++z)
             for (int32_t y = 0; y < b.size.y; ++y)
                 for (int32_t x = 0; x < b.size.x; ++x)
-                    if (!level.fixed[b.index(x, y, z)]) worst = std::max(worst, std::abs(residualAt(b, u, 0.0f, x, y, z)));
+                    if (!level.fixed[b.index(x, y, z)]) worst = std::max(worst, std::abs(residualAt(level, u, 0.0f, x, y, z)));
     return worst;
 }
 
 } // namespace
 
 float maxResidual(const std::vector<uint8_t>& fixed, const Field3& u) {
-    Level level{u.box, fixed, {u.values}, {}};
+    Level level{u.box, glm::ivec3(0), glm::vec3(1.0f), fixed, {u.values}, {}};
     return maxResidualOf(level);
 }
 
@@ -144,16 +174,22 @@ SolveReport solveLaplace(const std::string& name, const std::vector<uint8_t>& fi
                          float tolerance, const Limits& limits) {
     const Box box{glm::ivec3(0), components.front()->box.size};
     std::vector<Level> levels;
-    levels.push_back(Level{box, fixed, {}, {}});
+    levels.push_back(Level{box, glm::ivec3(0), glm::vec3(1.0f), fixed, {}, {}});
     for (;;) {
-        const Box coarse = coarsen(levels.back().box);
-        if (coarse.size.x < 4 || coarse.size.y < 4 || coarse.size.z < 4) break;
-        Level next{coarse, std::vector<uint8_t>(coarse.cellCount(), 0), {}, {}};
         const Level& fine = levels.back();
+        const glm::ivec3 halved = halvedAxes(fine.box);
+        if (halved == glm::ivec3(0)) break;
+        const glm::ivec3 scale = fine.scale + halved;
+        const Box coarse{glm::ivec3(0), (fine.box.size + halved) >> halved};
+        const glm::vec3 weight(std::ldexp(1.0f, -2 * scale.x), std::ldexp(1.0f, -2 * scale.y), std::ldexp(1.0f, -2 * scale.z));
+        Level next{coarse, scale, weight, std::vector<uint8_t>(coarse.cellCount(), 0), {}, {}};
         for (int32_t z = 0; z < fine.box.size.z; ++z)
             for (int32_t y = 0; y < fine.box.size.y; ++y)
                 for (int32_t x = 0; x < fine.box.size.x; ++x)
-                    if (fine.fixed[fine.box.index(x, y, z)]) next.fixed[coarse.index(x / 2, y / 2, z / 2)] = 1;
+                    if (fine.fixed[fine.box.index(x, y, z)]) {
+                        const glm::ivec3 p = parentOf(halved, x, y, z);
+                        next.fixed[coarse.index(p.x, p.y, p.z)] = 1;
+                    }
         levels.push_back(std::move(next));
     }
 
