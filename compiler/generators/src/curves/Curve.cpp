@@ -111,7 +111,7 @@ glm::dvec3 splineDerivative(const std::vector<glm::dvec3>& points, double t) {
     return deBoor(q, inner, kDegree - 1, std::clamp(t, 0.0, 1.0));
 }
 
-std::vector<SpineSample> sampleCurve(const FeatureCurve& curve, const Limits& limits, const std::string& name) {
+void validateCurve(const FeatureCurve& curve, const Limits& limits, const std::string& name) {
     if (curve.points.size() < 4 || curve.points.size() > limits.maxControlPoints)
         throw ParameterError(name + " control vertex count", double(curve.points.size()),
                              fmt::format("must lie in [4, {}]", limits.maxControlPoints));
@@ -135,6 +135,11 @@ std::vector<SpineSample> sampleCurve(const FeatureCurve& curve, const Limits& li
         if (cps[i].right) checkVector(*cps[i].right, cp + " right", limits);
     }
 
+}
+
+std::vector<SpineSample> sampleCurve(const FeatureCurve& curve, const Limits& limits, const std::string& name) {
+    validateCurve(curve, limits, name);
+    const auto& cps = curve.constraints;
     // Chord refinement: positions are recomputed per doubling; the limit bounds the last one.
     uint64_t segments = 8 * uint64_t(curve.points.size());
     for (;;) {

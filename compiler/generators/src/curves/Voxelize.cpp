@@ -85,10 +85,10 @@ struct Gather {
     std::map<uint16_t, uint32_t> materials;
 };
 
-// Range of cells whose cube can meet [lo, hi] on one axis, clamped to the box (empty: first > last).
-std::pair<int64_t, int64_t> cellRange(double lo, double hi, int32_t min, int32_t size) {
-    const int64_t first = std::max<int64_t>(0, int64_t(std::ceil(lo - 0.5 - min)));
-    const int64_t last = std::min<int64_t>(size - 1, int64_t(std::floor(hi + 0.5 - min)));
+// Range of cells whose cube can meet [lo, hi] (box-local) on one axis, clamped to the box (empty: first > last).
+std::pair<int64_t, int64_t> cellRange(double lo, double hi, int32_t size) {
+    const int64_t first = std::max<int64_t>(0, int64_t(std::ceil(lo - 0.5)));
+    const int64_t last = std::min<int64_t>(size - 1, int64_t(std::floor(hi + 0.5)));
     return {first, last};
 }
 
@@ -98,16 +98,26 @@ Constraints voxelize(const std::vector<FeatureCurve>& curves, const Box& box, Se
     checkBox(box, limits);
     if (curves.size() > limits.maxCurves) throw LimitError("curves", curves.size(), limits.maxCurves);
     std::map<size_t, Gather> cells; // ordered by cell index; each cell gathers in triangle order
-    uint64_t tests = 0;
+    uint64_t tests = 0, segments = 0;
     for (size_t c = 0; c < curves.size(); ++c) {
-        const auto samples = sampleCurve(curves[c], limits, fmt::format("curve {}", c));
+        // Sampled in box-local coordinates: the result depends only on positions relative to the
+        // box (an integer shift of curves and box changes nothing), with full precision near it.
+        const std::string name = fmt::format("curve {}", c);
+        validateCurve(curves[c], limits, name);
+        FeatureCurve local = curves[c];
+        for (glm::dvec3& p : local.points) p -= glm::dvec3(box.min);
+        Limits localLimits = limits;
+        localLimits.maxCoordinate = 2.0 * limits.maxCoordinate; // |point| and |box min| each within the limit
+        const auto samples = sampleCurve(local, localLimits, name);
+        segments += samples.size() - 1;
+        if (segments > limits.maxSegments) throw LimitError("segments over all curves", segments, limits.maxSegments);
         for (const RibbonTriangle& tri : ribbonTriangles(samples, curves[c].seed)) {
             const std::array<glm::dvec3, 3> p = {tri.v[0].position, tri.v[1].position, tri.v[2].position};
             const glm::dvec3 lo = glm::min(p[0], glm::min(p[1], p[2])), hi = glm::max(p[0], glm::max(p[1], p[2]));
             std::pair<int64_t, int64_t> range[3];
             uint64_t count = 1;
             for (int a = 0; a < 3; ++a) {
-                range[a] = cellRange(lo[a], hi[a], box.min[a], box.size[a]);
+                range[a] = cellRange(lo[a], hi[a], box.size[a]);
                 count *= uint64_t(std::max<int64_t>(0, range[a].second - range[a].first + 1));
             }
             tests += count;
@@ -120,9 +130,11 @@ Constraints voxelize(const std::vector<FeatureCurve>& curves, const Box& box, Se
             for (int64_t z = range[2].first; z <= range[2].second; ++z)
                 for (int64_t y = range[1].first; y <= range[1].second; ++y)
                     for (int64_t x = range[0].first; x <= range[0].second; ++x) {
-                        const glm::dvec3 centre = glm::dvec3(box.min) + glm::dvec3(double(x), double(y), double(z));
+                        const glm::dvec3 centre{double(x), double(y), double(z)};
                         if (!triangleOverlapsCube(p, centre, 1.0)) continue;
                         Gather& g = cells[box.index(int32_t(x), int32_t(y), int32_t(z))];
+                        if (cells.size() > limits.maxConstrainedCells)
+                            throw LimitError("cells hit by curve triangles", cells.size(), limits.maxConstrainedCells);
                         const glm::dvec3 w = closestBarycentric(p, centre);
                         g.normal += w[0] * tri.v[0].normal + w[1] * tri.v[1].normal + w[2] * tri.v[2].normal;
                         g.amplitude += w[0] * tri.v[0].amplitude + w[1] * tri.v[1].amplitude + w[2] * tri.v[2].amplitude;

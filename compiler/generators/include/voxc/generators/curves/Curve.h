@@ -52,6 +52,9 @@ struct RibbonTriangle {
 glm::dvec3 splinePoint(const std::vector<glm::dvec3>& points, double t);
 glm::dvec3 splineDerivative(const std::vector<glm::dvec3>& points, double t);
 
+// The checks of sampleCurve: counts, finite values within Limits::maxCoordinate, t order, ranges.
+void validateCurve(const FeatureCurve& curve, const Limits& limits, const std::string& name);
+
 // Validates `curve` (ParameterError, LimitError; `name` prefixes parameter names) and samples it:
 // 8 * (n + 1) uniform segments doubled until every chord <= 0.5 voxel, plus every constraint t.
 std::vector<SpineSample> sampleCurve(const FeatureCurve& curve, const Limits& limits, const std::string& name);

@@ -17,10 +17,12 @@ struct Limits {
     uint32_t maxControlPoints = 4096;           // per curve
     uint32_t maxConstraintPoints = 4096;        // per curve
     uint32_t maxSegmentsPerCurve = 1u << 20;    // the chord-halving refinement stops here
+    uint64_t maxSegments = 1u << 22;            // over all curves
     uint64_t maxCellTests = 400'000'000;        // triangle/cell overlap tests over all triangles
+    uint64_t maxConstrainedCells = 4'000'000;   // cells hit by a triangle (each gathers sparsely)
     int32_t maxCycles = 30;                     // V-cycles per linear solve after FMG (spec A5)
     uint32_t maxSweeps = 100'000;               // Perona-Malik Jacobi sweeps
-    uint64_t maxSweepCellUpdates = 20'000'000'000; // sweeps * cells
+    uint64_t maxSweepCellUpdates = 4'300'000'000; // sweeps * cells: the default sweeps on 256x128x256
     int32_t maxSmoothPasses = 64;
 };
 
