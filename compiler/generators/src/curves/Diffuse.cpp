@@ -18,10 +18,16 @@ float peronaMalikG(float x, float k) {
 }
 
 void normalizeField(const Field3& x, const Field3& y, const Field3& z, Field3& outX, Field3& outY, Field3& outZ) {
-    outX = Field3(x.box), outY = Field3(x.box), outZ = Field3(x.box);
+    for (Field3* out : {&outX, &outY, &outZ}) {
+        out->box = x.box;
+        out->values.resize(x.values.size()); // every value is written below
+    }
     for (size_t i = 0; i < x.values.size(); ++i) {
         const float length = lengthOf(x.values[i], y.values[i], z.values[i]);
-        if (!(length >= 1e-6f)) continue;
+        if (!(length >= 1e-6f)) {
+            outX.values[i] = outY.values[i] = outZ.values[i] = 0.0f;
+            continue;
+        }
         outX.values[i] = x.values[i] / length;
         outY.values[i] = y.values[i] / length;
         outZ.values[i] = z.values[i] / length;
@@ -59,10 +65,11 @@ NormalField peronaMalikNormals(const Constraints& cs, float k, uint32_t sweeps, 
     }
 
     // (b) Jacobi sweeps, ping-pong: N_i + (sum_j c_ij (N_j - N_i)) / 6 over set in-box neighbours.
+    // Cells a sweep skips never change, so both buffers hold them from the start.
     Field3 ux(b), uy(b), uz(b);
+    NormalField next = n;
     for (uint32_t s = 0; s < sweeps; ++s) {
         normalizeField(n.x, n.y, n.z, ux, uy, uz);
-        NormalField next = n;
         for (int32_t z = 0; z < b.size.z; ++z)
             for (int32_t y = 0; y < b.size.y; ++y)
                 for (int32_t x = 0; x < b.size.x; ++x) {
@@ -83,7 +90,7 @@ NormalField peronaMalikNormals(const Constraints& cs, float k, uint32_t sweeps, 
                     next.y.values[i] = n.y.values[i] + ay / 6.0f;
                     next.z.values[i] = n.z.values[i] + az / 6.0f;
                 }
-        n = std::move(next);
+        std::swap(n, next);
     }
     return n;
 }
