@@ -166,12 +166,17 @@ float maxResidualOf(const Level& level) {
 } // namespace
 
 float maxResidual(const std::vector<uint8_t>& fixed, const Field3& u) {
+    if (u.values.size() != fixed.size()) throw InternalError("curves: a residual with a mask of another size");
     Level level{u.box, glm::ivec3(0), glm::vec3(1.0f), fixed, {u.values}, {}};
     return maxResidualOf(level);
 }
 
 SolveReport solveLaplace(const std::string& name, const std::vector<uint8_t>& fixed, std::vector<Field3*> components,
                          float tolerance, const Limits& limits) {
+    if (components.empty()) throw InternalError("curves: a linear solve without components");
+    for (const Field3* c : components)
+        if (c->box.size != components.front()->box.size || c->values.size() != fixed.size())
+            throw InternalError("curves: the components and mask of a linear solve differ in size");
     const Box box{glm::ivec3(0), components.front()->box.size};
     std::vector<Level> levels;
     levels.push_back(Level{box, glm::ivec3(0), glm::vec3(1.0f), fixed, {}, {}});
