@@ -169,7 +169,7 @@ TEST(program_Ops, MaterialTests) {
 }
 
 bool contains(const ValueSet& set, float d) {
-    for (const Interval& i : set.intervals()) {
+    for (const ValueInterval& i : set.intervals()) {
         const bool aboveLo = d > i.lo || (d == i.lo && i.loClosed);
         const bool belowHi = d < i.hi || (d == i.hi && i.hiClosed);
         if (aboveLo && belowHi) return true;

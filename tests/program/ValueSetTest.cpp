@@ -14,7 +14,7 @@ struct Expected {
 void expectIntervals(const ValueSet& set, std::vector<Expected> expected) {
     ASSERT_EQ(set.intervals().size(), expected.size());
     for (size_t i = 0; i < expected.size(); ++i) {
-        const Interval& got = set.intervals()[i];
+        const ValueInterval& got = set.intervals()[i];
         EXPECT_EQ(got.lo, expected[i].lo) << i;
         EXPECT_EQ(got.hi, expected[i].hi) << i;
         EXPECT_EQ(got.loClosed, expected[i].loClosed) << i;

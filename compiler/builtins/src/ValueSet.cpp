@@ -6,19 +6,19 @@ namespace voxc {
 
 ValueSet ValueSet::all() {
     ValueSet s;
-    s.intervals_.push_back(Interval{});
+    s.intervals_.push_back(ValueInterval{});
     return s;
 }
 
 ValueSet ValueSet::point(float v) {
     ValueSet s;
-    s.intervals_.push_back(Interval{v, v, true, true});
+    s.intervals_.push_back(ValueInterval{v, v, true, true});
     return s;
 }
 
 ValueSet ValueSet::below(float v, bool inclusive) {
     ValueSet s;
-    Interval i;
+    ValueInterval i;
     i.hi = v;
     i.hiClosed = inclusive;
     s.intervals_.push_back(i);
@@ -27,7 +27,7 @@ ValueSet ValueSet::below(float v, bool inclusive) {
 
 ValueSet ValueSet::above(float v, bool inclusive) {
     ValueSet s;
-    Interval i;
+    ValueInterval i;
     i.lo = v;
     i.loClosed = inclusive;
     s.intervals_.push_back(i);
@@ -43,8 +43,8 @@ ValueSet ValueSet::allBut(float v) {
 namespace {
 
 // The intersection of two intervals; `ok` is false when it is empty.
-Interval intersectOne(const Interval& a, const Interval& b, bool& ok) {
-    Interval r;
+ValueInterval intersectOne(const ValueInterval& a, const ValueInterval& b, bool& ok) {
+    ValueInterval r;
     if (a.lo > b.lo || (a.lo == b.lo && !a.loClosed)) {
         r.lo = a.lo;
         r.loClosed = a.loClosed;
@@ -67,15 +67,15 @@ Interval intersectOne(const Interval& a, const Interval& b, bool& ok) {
 
 ValueSet ValueSet::intersect(const ValueSet& other) const {
     ValueSet result;
-    for (const Interval& a : intervals_) {
-        for (const Interval& b : other.intervals_) {
+    for (const ValueInterval& a : intervals_) {
+        for (const ValueInterval& b : other.intervals_) {
             bool ok = false;
-            Interval r = intersectOne(a, b, ok);
+            ValueInterval r = intersectOne(a, b, ok);
             if (ok) result.intervals_.push_back(r);
         }
     }
     std::sort(result.intervals_.begin(), result.intervals_.end(),
-              [](const Interval& a, const Interval& b) { return a.lo < b.lo; });
+              [](const ValueInterval& a, const ValueInterval& b) { return a.lo < b.lo; });
     return result;
 }
 

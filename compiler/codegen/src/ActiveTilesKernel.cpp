@@ -33,7 +33,7 @@ uint32_t densityKey(float v) {
 struct KeyInterval {
     uint32_t lo, hi;
 };
-KeyInterval keyInterval(const Interval& interval) {
+KeyInterval keyInterval(const ValueInterval& interval) {
     constexpr float inf = std::numeric_limits<float>::infinity();
     KeyInterval k{0u, 0xffffffffu};
     if (interval.lo != -inf) {
@@ -92,7 +92,7 @@ std::string mayMatch(const IrSweep& sweep) {
             const ValueSet set = cellValues(rule.symbol[c]);
             VOXC_ASSERT(!set.empty()); // a live rule's cells can all pass
             std::vector<std::string> meets;
-            for (const Interval& interval : set.intervals()) {
+            for (const ValueInterval& interval : set.intervals()) {
                 const KeyInterval k = keyInterval(interval);
                 meets.push_back(fmt::format("meets(range{}, 0x{:08x}u, 0x{:08x}u)", c, k.lo, k.hi));
             }

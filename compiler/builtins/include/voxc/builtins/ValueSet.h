@@ -1,12 +1,13 @@
 #pragma once
-// A set of densities as a sorted union of disjoint intervals, used by the checker to prove
+// A set of densities as a sorted union of disjoint intervals (ValueInterval: open or closed ends; not
+// the interval arithmetic of Intervals.h), used by the checker to prove
 // that a symbol cell can never pass or that two rules' cells can pass together.
 #include <limits>
 #include <vector>
 
 namespace voxc {
 
-struct Interval {
+struct ValueInterval {
     float lo = -std::numeric_limits<float>::infinity();
     float hi = std::numeric_limits<float>::infinity();
     bool loClosed = false;
@@ -23,10 +24,10 @@ public:
 
     ValueSet intersect(const ValueSet& other) const;
     bool empty() const { return intervals_.empty(); }
-    const std::vector<Interval>& intervals() const { return intervals_; }
+    const std::vector<ValueInterval>& intervals() const { return intervals_; }
 
 private:
-    std::vector<Interval> intervals_;
+    std::vector<ValueInterval> intervals_;
 };
 
 } // namespace voxc
