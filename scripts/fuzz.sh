@@ -89,11 +89,14 @@ for t in "${targets[@]}"; do
              -max_total_time="$seconds" -runs="$runs" -artifact_prefix="$artifacts" -print_final_stats=1)
     [ $keep_going -eq 0 ] || options+=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
     status=0 started=$SECONDS
-    inputs=("$corpus" "$seeds" "$root/tests/fuzz/regressions/$t")
-    [ ! -d "$root/tests/fuzz/corpus/$t" ] || inputs+=("$root/tests/fuzz/corpus/$t")
+    # A clean clone has no empty folders, so a target without reproducers or corpus has neither.
+    inputs=("$corpus" "$seeds")
+    for committed in "$root/tests/fuzz/regressions/$t" "$root/tests/fuzz/corpus/$t"; do
+        [ ! -d "$committed" ] || inputs+=("$committed")
+    done
     "$fuzz_build/tests/fuzz/voxc_fuzz_$t" "${options[@]}" "${inputs[@]}" > "$log" 2>&1 || status=$?
     elapsed=$((SECONDS - started))
-    found=$(grep -aoE 'Test unit written to .*' "$log" | sort -u | wc -l)
+    found=$( (grep -aoE 'Test unit written to .*' "$log" || true) | sort -u | wc -l)
     # The last progress line ("#N ... cov: C ft: F corp: K/..") holds the totals; final stats
     # repeat the executions when libFuzzer printed them.
     progress=$(grep -aE '^#[0-9]+' "$log" | tail -n 1 || true)
