@@ -35,6 +35,15 @@ TEST(check_World, DefaultsAndValues) {
     EXPECT_EQ(defaults.program->sourcePath, "test.vox");
 }
 
+TEST(check_World, SeedOutsideTheUint32RangeNamesBothBounds) {
+    for (const char* seed : {"4294967296", "99999999999999999999", "-1"}) {
+        CheckResult result = check(std::string("world { size = [8, 8, 8]; seed = ") + seed + "; }");
+        ASSERT_EQ(codes(result), Codes{"E0007"}) << seed;
+        EXPECT_NE(result.diagnostics[0].message.find("between 0 and 4294967295"), std::string::npos)
+            << result.diagnostics[0].message;
+    }
+}
+
 TEST(check_World, ChunkMustBeAPowerOfTwoFrom8To64) {
     for (int chunk : {8, 16, 32, 64})
         EXPECT_FALSE(check("world { size = [8, 8, 8]; chunk = " + std::to_string(chunk) + "; }").hasErrors());

@@ -80,10 +80,11 @@ bool checkLabel(Context& context, const ast::Block& block, bool needsLabel) {
 
 namespace {
 
-// Bounds at the int32 limits are "no bound" to the user.
+// Bounds at or past the int32 limits are "no bound" to the user, except the uint32 range of seeds.
 std::string describeRange(double min, double max) {
     constexpr double unbounded = std::numeric_limits<int32_t>::max();
-    if (max >= unbounded) return fmt::format("at least {}", formatNumber(min));
+    const bool seedRange = max == double(std::numeric_limits<uint32_t>::max());
+    if (max >= unbounded && !seedRange) return fmt::format("at least {}", formatNumber(min));
     if (min <= -unbounded - 1) return fmt::format("at most {}", formatNumber(max));
     return fmt::format("between {} and {}", formatNumber(min), formatNumber(max));
 }
