@@ -1,13 +1,11 @@
 #include "voxc/mesh/SurfaceNets.h"
 
 #include "CellExtraction.h"
+#include "ChunkWorkers.h"
 #include "voxc/core/Errors.h"
 
 #include <algorithm>
-#include <atomic>
-#include <exception>
 #include <glm/geometric.hpp>
-#include <thread>
 
 namespace voxc {
 namespace {
@@ -16,52 +14,18 @@ using surface_nets::CellVertex;
 using surface_nets::ChunkSurface;
 using surface_nets::EdgeQuad;
 
-// World chunks holding at least one cell, z slowest. Cells start one voxel below the grid.
-std::vector<glm::ivec3> cellChunks(const ChunkLayout& layout) {
-    const glm::ivec3 first = (layout.gridOrigin - 1) >> layout.chunkShift;
-    const glm::ivec3 last = (layout.gridOrigin + layout.gridSize - 1) >> layout.chunkShift;
-    std::vector<glm::ivec3> chunks;
-    for (int z = first.z; z <= last.z; ++z)
-        for (int y = first.y; y <= last.y; ++y)
-            for (int x = first.x; x <= last.x; ++x) chunks.push_back({x, y, z});
-    return chunks;
-}
-
 // Chunks are independent, so workers take them in any order; each result has its own slot.
 std::vector<ChunkSurface> extractAll(const ChunkedGrid& grid, const MeshOptions& options, const std::vector<glm::ivec3>& chunks,
                                      MeshStats& stats) {
     std::vector<ChunkSurface> surfaces(chunks.size());
-    std::atomic<size_t> skipped{0};
-    auto extract = [&](glm::ivec3 chunk) {
-        if (options.skipUniformChunks) {
-            const surface_nets::CellRange cells = surface_nets::chunkCells(grid.layout(), chunk);
-            if (surface_nets::cellsAreUniform(grid, options.iso, cells)) {
-                ++skipped;
-                return ChunkSurface{};
-            }
-        }
-        return surface_nets::extractChunk(grid, options.iso, chunk);
-    };
-    std::atomic<size_t> next{0};
-    std::vector<std::exception_ptr> failures;
-    const size_t workerCount = std::max<size_t>(1, std::min<size_t>(std::thread::hardware_concurrency(), chunks.size()));
-    failures.resize(workerCount);
-    auto work = [&](size_t worker) {
-        try {
-            for (size_t i = next++; i < chunks.size(); i = next++) surfaces[i] = extract(chunks[i]);
-        } catch (...) {
-            failures[worker] = std::current_exception();
-            next = chunks.size();
-        }
-    };
-    std::vector<std::thread> workers;
-    for (size_t w = 1; w < workerCount; ++w) workers.emplace_back(work, w);
-    work(0);
-    for (std::thread& t : workers) t.join();
-    for (const std::exception_ptr& failure : failures)
-        if (failure) std::rethrow_exception(failure);
+    stats.skippedChunks = forEachChunk(chunks.size(), [&](size_t i) {
+        if (options.skipUniformChunks &&
+            surface_nets::cellsAreUniform(grid, options.iso, surface_nets::chunkCells(grid.layout(), chunks[i])))
+            return false;
+        surfaces[i] = surface_nets::extractChunk(grid, options.iso, chunks[i]);
+        return true;
+    });
     stats.chunks = chunks.size();
-    stats.skippedChunks = skipped;
     return surfaces;
 }
 
