@@ -8,14 +8,6 @@
 
 namespace voxc::curves {
 
-LimitError::LimitError(std::string quantity_, uint64_t value_, uint64_t limit_)
-    : UserError(fmt::format("curves: {} is {}, over the limit of {}", quantity_, value_, limit_)),
-      quantity(std::move(quantity_)), value(value_), limit(limit_) {}
-
-ParameterError::ParameterError(std::string parameter_, double value_, std::string requirement_)
-    : UserError(fmt::format("curves: {} = {} is invalid: {}", parameter_, value_, requirement_)),
-      parameter(std::move(parameter_)), value(value_), requirement(std::move(requirement_)) {}
-
 ConvergenceError::ConvergenceError(std::string solve_, int32_t cycles_, double residual_, double tolerance_)
     : UserError(fmt::format("curves: the {} solve left a residual of {} after {} V-cycles (tolerance {})", solve_,
                             residual_, cycles_, tolerance_)),

@@ -7,14 +7,6 @@
 
 namespace voxc::terrain {
 
-LimitError::LimitError(std::string quantity_, uint64_t value_, uint64_t limit_)
-    : UserError(fmt::format("terrain: {} is {}, over the limit of {}", quantity_, value_, limit_)),
-      quantity(std::move(quantity_)), value(value_), limit(limit_) {}
-
-ParameterError::ParameterError(std::string parameter_, double value_, std::string requirement_)
-    : UserError(fmt::format("terrain: {} = {} is invalid: {}", parameter_, value_, requirement_)),
-      parameter(std::move(parameter_)), value(value_), requirement(std::move(requirement_)) {}
-
 double Domain::cellSize(int32_t level) const { return size / std::ldexp(1.0, level); }
 
 namespace {

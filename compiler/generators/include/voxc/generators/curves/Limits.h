@@ -2,7 +2,9 @@
 // Every size and amount of work of the feature-curve generator (docs/curves.md), bounded in one
 // place, and the typed errors its checks throw. All are UserErrors: the numbers come from the
 // user's curves and box, and the checker will locate them once the generator has a syntax.
-#include "voxc/core/Errors.h"
+#include "voxc/generators/WorkErrors.h"
+
+#include <utility>
 
 #include <cstdint>
 #include <string>
@@ -26,21 +28,16 @@ struct Limits {
     int32_t maxSmoothPasses = 64;
 };
 
-// A size or an amount of work over its limit: `quantity` names it, `value` and `limit` are the numbers.
-struct LimitError : UserError {
-    LimitError(std::string quantity, uint64_t value, uint64_t limit);
-    std::string quantity;
-    uint64_t value;
-    uint64_t limit;
+// A size or an amount of work over its limit (generators::LimitError, naming "curves").
+struct LimitError : generators::LimitError {
+    LimitError(std::string quantity, uint64_t value, uint64_t limit)
+        : generators::LimitError("curves", std::move(quantity), value, limit) {}
 };
 
-// A value outside its valid range: `parameter` names it as the user would write it (e.g.
-// "curve 2 constraint 1 t"), `value` is its value, `requirement` the rule broken.
-struct ParameterError : UserError {
-    ParameterError(std::string parameter, double value, std::string requirement);
-    std::string parameter;
-    double value;
-    std::string requirement;
+// A value outside its valid range, named as the user would write it (e.g. "curve 2 constraint 1 t").
+struct ParameterError : generators::ParameterError {
+    ParameterError(std::string parameter, double value, std::string requirement)
+        : generators::ParameterError("curves", std::move(parameter), value, std::move(requirement)) {}
 };
 
 // A linear solve that did not reach its tolerance within Limits::maxCycles V-cycles.

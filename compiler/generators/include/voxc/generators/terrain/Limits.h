@@ -2,7 +2,9 @@
 // Every size and amount of work of the heightfield terrain generator (docs/terrain.md), bounded in
 // one place, and the two typed errors its checks throw. Both are UserErrors: the numbers come
 // from the user's map, and the checker will locate them next session.
-#include "voxc/core/Errors.h"
+#include "voxc/generators/WorkErrors.h"
+
+#include <utility>
 
 #include <cstdint>
 #include <string>
@@ -23,21 +25,16 @@ struct Limits {
     uint64_t maxErosionCellSteps = 20'000'000'000;     // sum over levels of 4^L * steps, drain included
 };
 
-// A size or an amount of work over its limit: `quantity` names it, `value` and `limit` are the numbers.
-struct LimitError : UserError {
-    LimitError(std::string quantity, uint64_t value, uint64_t limit);
-    std::string quantity;
-    uint64_t value;
-    uint64_t limit;
+// A size or an amount of work over its limit (generators::LimitError, naming "terrain").
+struct LimitError : generators::LimitError {
+    LimitError(std::string quantity, uint64_t value, uint64_t limit)
+        : generators::LimitError("terrain", std::move(quantity), value, limit) {}
 };
 
-// A parameter outside its valid range, or a combination that makes the scheme unstable: `parameter`
-// names it as the user writes it (e.g. "K_e*dt"), `value` is its value, `requirement` the rule broken.
-struct ParameterError : UserError {
-    ParameterError(std::string parameter, double value, std::string requirement);
-    std::string parameter;
-    double value;
-    std::string requirement;
+// A parameter outside its valid range, or a combination that makes the scheme unstable (e.g. "K_e*dt").
+struct ParameterError : generators::ParameterError {
+    ParameterError(std::string parameter, double value, std::string requirement)
+        : generators::ParameterError("terrain", std::move(parameter), value, std::move(requirement)) {}
 };
 
 } // namespace voxc::terrain
