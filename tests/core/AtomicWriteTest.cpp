@@ -1,3 +1,5 @@
+#include "FileHelpers.h"
+
 #include "voxc/core/AtomicWrite.h"
 #include "voxc/core/Errors.h"
 #include "voxc/core/TempFiles.h"
@@ -15,24 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// An empty directory of its own for each test.
-std::string freshDir(const std::string& name) {
-    const std::string dir = testing::TempDir() + "core_" + name + "/";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
-std::string readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-void putFile(const std::string& path, const std::string& contents) {
-    std::ofstream(path, std::ios::binary) << contents;
-}
+using test::freshDir;
+using test::putFile;
+using test::readFile;
 
 // The names in `dir`, sorted: after any write, only the outputs may be there, never a temp file.
 std::vector<std::string> namesIn(const std::string& dir) {

@@ -1,5 +1,7 @@
 // The signal handler, exercised in forked children (gtest death tests) that raise the signal
 // themselves at a chosen point, so no test depends on timing. Only the children install it.
+#include "FileHelpers.h"
+
 #include "voxc/core/AtomicWrite.h"
 #include "voxc/core/TempFiles.h"
 
@@ -14,23 +16,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string freshDir(const std::string& name) {
-    const std::string dir = testing::TempDir() + "tempfiles_" + name + "/";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
-std::string readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-void putFile(const std::string& path, const std::string& contents) {
-    std::ofstream(path, std::ios::binary) << contents;
-}
+using test::freshDir;
+using test::putFile;
+using test::readFile;
 
 size_t entriesIn(const std::string& dir) {
     return size_t(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
