@@ -2,6 +2,7 @@
 // write leaves the old package, concurrent writers leave one whole package, equal bytes touch
 // nothing, and a directory voxc did not write is refused.
 #include "SamplePrograms.h"
+#include "PackageTree.h"
 #include "voxc/codegen/Codegen.h"
 #include "voxc/codegen/PackageWriter.h"
 #include "voxc/core/Errors.h"
@@ -26,7 +27,7 @@ namespace voxc::codegen {
 namespace {
 
 namespace fs = std::filesystem;
-using Tree = std::map<std::string, std::string>;
+using Tree = test::PackageTree;
 
 class codegen_PackageDirectory : public ::testing::Test {
 protected:
@@ -65,17 +66,7 @@ const KernelPackage& smallerPackage() {
 }
 const PackageSource kSource{"sample.vox", "text"};
 
-Tree readTree(const fs::path& dir) {
-    Tree files;
-    for (const auto& entry : fs::recursive_directory_iterator(dir)) {
-        if (!entry.is_regular_file()) continue;
-        std::ifstream in(entry.path(), std::ios::binary);
-        std::ostringstream bytes;
-        bytes << in.rdbuf();
-        files[fs::relative(entry.path(), dir).string()] = bytes.str();
-    }
-    return files;
-}
+using test::readTree;
 
 // The package the directory held when it was opened, read through that handle; nullopt when it
 // was swapped out while being read (its writer then deletes it, so a reader starts again).

@@ -1,4 +1,5 @@
 #include "SamplePrograms.h"
+#include "PackageTree.h"
 #include "voxc/codegen/Codegen.h"
 #include "voxc/codegen/PackageWriter.h"
 #ifdef VOXC_HAVE_CHECK
@@ -30,17 +31,7 @@ protected:
     fs::path root_;
 };
 
-std::map<std::string, std::string> readTree(const fs::path& dir) {
-    std::map<std::string, std::string> files;
-    for (const auto& entry : fs::recursive_directory_iterator(dir)) {
-        if (!entry.is_regular_file()) continue;
-        std::ifstream in(entry.path(), std::ios::binary);
-        std::ostringstream bytes;
-        bytes << in.rdbuf();
-        files[fs::relative(entry.path(), dir).string()] = bytes.str();
-    }
-    return files;
-}
+using test::readTree;
 
 TEST_F(codegen_Package, CompilingAndWritingTwiceGivesIdenticalBytes) {
     const Program program = test::sampleProgram();
