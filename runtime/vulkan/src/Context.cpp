@@ -267,9 +267,15 @@ VulkanContext::VulkanContext(const ContextOptions& options) : impl_(std::make_un
     queueInfo.queueFamilyIndex = s.queueFamily;
     queueInfo.queueCount = 1;
     queueInfo.pQueuePriorities = &priority;
+    VkPhysicalDeviceFeatures supported{};
+    s.api.vkGetPhysicalDeviceFeatures(s.physicalDevice, &supported);
+    VkPhysicalDeviceFeatures enabled{};
+    enabled.shaderFloat64 = supported.shaderFloat64;
+    s.shaderFloat64 = supported.shaderFloat64 == VK_TRUE;
     VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
     deviceInfo.queueCreateInfoCount = 1;
     deviceInfo.pQueueCreateInfos = &queueInfo;
+    deviceInfo.pEnabledFeatures = &enabled;
     check(s.api.vkCreateDevice(s.physicalDevice, &deviceInfo, nullptr, &s.device), "vkCreateDevice");
     vulkan_detail::loadDeviceApi(s.api, s.device);
     s.api.vkGetDeviceQueue(s.device, s.queueFamily, 0, &s.queue);

@@ -20,6 +20,7 @@ struct VulkanContext::Impl {
     VkPhysicalDeviceMemoryProperties memory{};
     DeviceInfo info;
     bool validation = false;
+    bool shaderFloat64 = false; // enabled when the device has it (the GPU mesher's crossings need it)
 
     mutable std::mutex messageMutex; // the layer may call back from driver threads
     std::vector<ValidationMessage> messages;

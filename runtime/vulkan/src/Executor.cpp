@@ -2,6 +2,7 @@
 
 #include "ContextImpl.h"
 #include "DeviceBuffer.h"
+#include "ExecutorVoxels.h"
 #include "KernelPipelines.h"
 #include "NonFiniteCounters.h"
 #include "voxc/builtins/Shapes.h"
@@ -83,6 +84,7 @@ struct VulkanExecutor::Impl {
     // Tile skipping (kBindingTileRanges..kBindingSkipStats); small, so they exist either way.
     DeviceBuffer tileRanges, tileDirty, activeTiles, activeDispatch, skipStats;
     NonFiniteCounters nonFinite; // kBindingNonFinite and its per-stage copies
+    bool hasRun = false;         // the voxel buffer holds a run's result
     VkCommandPool commandPool = VK_NULL_HANDLE;
     Frame frames[2];
     double setupMs = 0;
@@ -307,6 +309,11 @@ const ChunkLayout& VulkanExecutor::layout() const { return impl_->layout; }
 
 double VulkanExecutor::setupMs() const { return impl_->setupMs; }
 
+vulkan_detail::ExecutorVoxels VulkanExecutor::deviceVoxels() const {
+    const Impl& s = *impl_;
+    return {&s.ctx, s.voxels.buffer, s.materials.buffer, s.package.usesMaterials, s.hasRun};
+}
+
 RunResult VulkanExecutor::run() {
     Impl& s = *impl_;
     const VulkanApi& api = s.ctx.api;
@@ -402,6 +409,7 @@ RunResult VulkanExecutor::run() {
         result.skip = TileSkipStats{true, 1 << s.tileShift, counts[1], counts[0]};
     }
     result.nonFinite = s.nonFinite.read(s.ctx);
+    s.hasRun = true;
     return result;
 }
 

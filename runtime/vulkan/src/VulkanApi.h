@@ -19,6 +19,7 @@ namespace voxc::vulkan_detail {
     X(vkGetPhysicalDeviceProperties)             \
     X(vkGetPhysicalDeviceQueueFamilyProperties)  \
     X(vkGetPhysicalDeviceMemoryProperties)       \
+    X(vkGetPhysicalDeviceFeatures)               \
     X(vkCreateDevice)                            \
     X(vkGetDeviceProcAddr)
 

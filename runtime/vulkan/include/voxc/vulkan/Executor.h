@@ -17,6 +17,10 @@
 
 namespace voxc {
 
+namespace vulkan_detail {
+struct ExecutorVoxels;
+}
+
 struct ExecutorOptions {
     // Dispatches per command buffer. Batches are recorded while the previous one executes,
     // so a plan with many iterations never holds all of its commands at once.
@@ -74,6 +78,9 @@ public:
 
     const ChunkLayout& layout() const;
     double setupMs() const;
+    // The device's voxel and material buffers as the last run() left them (src/ExecutorVoxels.h;
+    // opaque here so that this header stays free of Vulkan types), for the GPU mesher.
+    vulkan_detail::ExecutorVoxels deviceVoxels() const;
 
 private:
     struct Impl;
