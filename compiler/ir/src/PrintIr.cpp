@@ -96,6 +96,10 @@ void printField(std::string& out, const IrField& field) {
         case FieldNode::Kind::Constant: value = "const " + printConstant(node); break;
         case FieldNode::Kind::Input: value = fmt::format("input {}", inputName(node.input)); break;
         case FieldNode::Kind::Component: value = fmt::format("%{}.{}", node.operands[0], "xyz"[node.component]); break;
+        case FieldNode::Kind::PointSet:
+            value = fmt::format("point_set_distances(%{}) {} centres, {} segments", node.operands[0],
+                                node.pointSet->centres.size(), node.pointSet->segments.size());
+            break;
         case FieldNode::Kind::Call: {
             std::vector<std::string> operands;
             for (uint32_t o : node.operands) operands.push_back(fmt::format("%{}", o));

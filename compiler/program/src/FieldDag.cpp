@@ -16,7 +16,8 @@ uint32_t FieldDag::add(FieldNode node) {
             uint8_t(node.input),
             node.function,
             node.component,
-            node.operands};
+            node.operands,
+            node.pointSet.get()};
     auto [it, inserted] = index_.emplace(std::move(key), uint32_t(nodes_.size()));
     if (inserted) nodes_.push_back(std::move(node));
     return it->second;

@@ -41,6 +41,16 @@ Interval rootInterval(const World& world, const IrField& field, glm::ivec3 local
             values[i] = {Type::Float, {v.lo[c], 0, 0}, {v.hi[c], 0, 0}, v.exact};
             break;
         }
+        case FieldNode::Kind::PointSet: {
+            // Each distance is capped at its reach: exactly the reach where nothing reaches the box.
+            const Interval& p = values[node.operands[0]];
+            const PointSet& set = *node.pointSet;
+            const glm::bvec2 reaches = pointSetReaches(set, p.lo, p.hi);
+            const glm::dvec3 cap(set.centreReach, set.segmentReach, 0.0);
+            values[i] = {Type::Vec2, {reaches.x ? 0.0 : cap.x, reaches.y ? 0.0 : cap.y, 0.0}, cap,
+                         !reaches.x && !reaches.y};
+            break;
+        }
         case FieldNode::Kind::Call: {
             const RangeRule rule = rangeRule(functions()[node.function].name);
             if (!rule) {

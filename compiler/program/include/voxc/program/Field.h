@@ -5,9 +5,11 @@
 // `let` bindings and user functions are resolved by the checker: a let is a shared node, a user
 // function is inlined. Nodes are in topological order: every operand precedes its user.
 #include "voxc/core/SourceLoc.h"
+#include "voxc/program/PointSet.h"
 
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -20,7 +22,9 @@ enum class Type : uint8_t { Float, Int, Bool, Vec2, Vec3 };
 enum class FieldInput : uint8_t { LocalX, LocalY, LocalZ, WorldX, WorldY, WorldZ };
 
 struct FieldNode {
-    enum class Kind : uint8_t { Constant, Input, Call, Component };
+    // PointSet: vec2 of the capped distances from the operand (a vec3 world position) to the
+    // nearest centre and segment of `pointSet` (voxc/program/PointSet.h); features build it.
+    enum class Kind : uint8_t { Constant, Input, Call, Component, PointSet };
     Kind kind = Kind::Constant;
     Type type = Type::Float;
     SourceLoc loc;
@@ -30,7 +34,8 @@ struct FieldNode {
     FieldInput input = FieldInput::LocalX;
     uint32_t function = 0;          // Call: index into voxc::functions()
     uint32_t component = 0;         // Component: 0..2 of a vector operand (swizzles build vec2/vec3 via calls)
-    std::vector<uint32_t> operands; // Call arguments / Component's vector
+    std::vector<uint32_t> operands; // Call arguments / Component's vector / PointSet's position
+    std::shared_ptr<const PointSet> pointSet; // PointSet only; shared, never changed after checking
 };
 
 struct Field {

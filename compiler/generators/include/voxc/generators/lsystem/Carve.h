@@ -1,0 +1,74 @@
+#pragma once
+// The cave carve (spec §5.2, docs/lsystem.md "Carving"): a skeleton's structural points,
+// displaced on the CPU by curl noise, become a point set (voxc/program/PointSet.h); the carve is
+// an ordinary field whose value at world voxel v is f = (1 + F_tot) / 2 (1 = cave air, 0 = rock):
+//   M(v)  = clamp(1 + a_s m_s S + a_v m_v V, m_min, m_max)   (the 6 noise calls per voxel)
+//   F     = clamp(1 - M D / R, -1, 1),   D = distance to the nearest displaced centre
+//   F_clr = x for x >= 0, 8x below (x = 1 - D_s / r_clear, D_s = distance to the skeleton)
+//   F_tot = max(F, F_clr)
+// so every voxel closer than r_clear to the skeleton is air, and rock farther than 2R/m_min from
+// every centre and 1.125 r_clear from the skeleton is left as it was.
+#include "voxc/generators/lsystem/Turtle.h"
+#include "voxc/program/Field.h"
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace voxc::lsystem {
+
+struct CarveParams {
+    double radius = 6.0;               // R: a metaball's air radius (voxels)
+    double spacing = 0.0;              // d: between structural points; 0 = radius
+    double clearance = 2.0;            // r_clear: always air within it of the skeleton
+    double curlAmplitude = 3.0;        // A_c: the largest centre displacement
+    double curlFrequency = 1.0 / 64.0; // f_c
+    double yLimit = 0.25;              // k_y: the vertical share of the displacement
+    double simplexFrequency = 1.0 / 48.0, simplexAmplitude = 0.35; // f_s, a_s
+    double voronoiFrequency = 1.0 / 16.0, voronoiAmplitude = 0.25; // f_v, a_v
+    double modulationFrequency = 1.0 / 256.0; // f_mod: the slow modulators m_c, m_s, m_v
+    double minScale = 0.4, maxScale = 2.5;    // m_min, m_max: the clamp of M
+
+    double pointSpacing() const { return spacing > 0 ? spacing : radius; }
+};
+
+struct CarveLimits {
+    uint64_t maxCentres = uint64_t(1) << 18;
+    uint64_t maxClearanceSegments = uint64_t(1) << 20;
+    uint32_t maxPerChunk = kMaxPointSetPerCell;         // centres or segments one chunk lists (GPU loop length)
+    uint64_t maxListEntries = kMaxPointSetListEntries;  // list entries over all chunks (the runtime's bounds too)
+};
+
+// The distance beyond which a centre or a skeleton segment changes nothing (F = -1, F_clr <= -1),
+// with a margin so float roundings cannot matter: 2.2 R / m_min and 1.25 r_clear.
+double centreReach(const CarveParams& params);
+double segmentReach(const CarveParams& params);
+
+// Throws ParameterError-like UserErrors naming the key (docs/language.md keys) for unusable values.
+void checkCarveParams(const CarveParams& params);
+
+// Structural points (§5.2): for each skeleton segment and connection-line segment (a, b),
+// a + (k/n)(b - a) for k < n = max(1, ceil(|b - a| / spacing)), then every segment end that
+// starts no segment (a leaf). Throws LimitError("maxCentres") before storing too many.
+std::vector<glm::dvec3> structuralPoints(const Skeleton& skeleton, double spacing, const CarveLimits& limits);
+
+// sp + A_c m_c (u.x, k_y u.y, u.z): u = c / max(|c|, 1), c = curl3(sp f_c, substream(seed, 311)),
+// m_c = 0.5 + 0.5 simplex3(sp f_mod, substream(seed, 321)); in double, the caller rounds once.
+glm::dvec3 displacedCentre(glm::dvec3 point, const CarveParams& params, uint32_t seed);
+
+// The skeleton's displaced centres and clearance segments (skeleton and connection lines), with
+// the interpreter's lists binned over `world`'s chunk grid. Throws LimitError for more centres or
+// segments than the limits allow, and for chunk lists over maxPerChunk / maxListEntries.
+std::shared_ptr<const PointSet> carvePointSet(const Skeleton& skeleton, const CarveParams& params, uint32_t seed,
+                                              glm::ivec3 worldOrigin, glm::ivec3 worldSize, int32_t chunkSize,
+                                              const CarveLimits& limits);
+
+// Bins `set` over the chunks of a grid (the chunk table: firstChunk .. firstChunk + chunkCount - 1),
+// turning PointSetLimitError into LimitError.
+PointBins binCarveChunks(const PointSet& set, glm::ivec3 firstChunk, glm::ivec3 chunkCount, int32_t chunkSize,
+                         const CarveLimits& limits);
+
+// The carve's field (nodes and Float root; the caller names it and locates its nodes).
+Field carveField(std::shared_ptr<const PointSet> set, const CarveParams& params, uint32_t seed);
+
+} // namespace voxc::lsystem

@@ -1,0 +1,80 @@
+#pragma once
+// A table of points and segments that a field reads through a `FieldNode::Kind::PointSet` node:
+// the node's value at position p is vec2(min(D_c, centreReach), min(D_s, segmentReach)), D_c the
+// distance to the nearest centre and D_s to the nearest segment. Capping the distances at the
+// reaches makes the value independent of which points farther away are looked at, so every
+// backend may read per-cell lists of the points whose reach meets the cell (the interpreter on
+// the check-time chunk grid, Vulkan on its run's chunk table) and still compute the same floats.
+// The L-system cave carve (docs/lsystem.md, "Carving") builds one from a skeleton.
+#include <cstdint>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace voxc {
+
+struct PointSetSegment {
+    glm::vec3 from{0.0f};
+    glm::vec3 delta{0.0f};            // to - from
+    float inverseLengthSquared = 0.0f; // 1 / |delta|^2; 0 for a degenerate segment (its distance is to `from`)
+};
+
+// Per cell of a world-aligned grid of cubes (cellSize voxels, cell c holds world voxels
+// c * cellSize .. c * cellSize + cellSize - 1), the centres and segments whose reach meets the
+// cell: start[i] .. start[i + 1] index `items`, cells x fastest, then y, then z.
+struct PointBins {
+    glm::ivec3 firstCell{0}, cellCount{0};
+    int32_t cellSize = 1;
+    std::vector<uint32_t> centreStart, segmentStart; // cells + 1 entries
+    std::vector<uint32_t> centreItems, segmentItems;
+
+    uint64_t cells() const { return uint64_t(cellCount.x) * uint64_t(cellCount.y) * uint64_t(cellCount.z); }
+    uint32_t largestList() const; // the most centres or segments one cell lists
+};
+
+struct PointSet {
+    std::vector<glm::vec3> centres;
+    std::vector<PointSetSegment> segments;
+    float centreReach = 0.0f;  // > 0
+    float segmentReach = 0.0f; // > 0
+    PointBins bins;            // the interpreter's lists (binPointSet on the checked world's chunk grid)
+};
+
+// The float operations both backends perform, in this order (lsystem_carve.glsl mirrors them with
+// every result `precise`): squared distances, the nearest kept by `<`, one sqrt at the end.
+float centreDistanceSquared(glm::vec3 p, glm::vec3 centre);
+float segmentDistanceSquared(glm::vec3 p, const PointSetSegment& segment);
+
+// The bins of `set` over cells firstCell .. firstCell + cellCount - 1. Throws
+// PointSetLimitError before storing more than maxEntries list entries in all or more than
+// maxPerCell in one cell's list.
+PointBins binPointSet(const PointSet& set, glm::ivec3 firstCell, glm::ivec3 cellCount, int32_t cellSize,
+                      uint64_t maxEntries, uint32_t maxPerCell);
+
+struct PointSetLimitError {
+    const char* limit; // "entries" or "perCell"
+    uint64_t amount;   // how many were about to be stored (at least limit + 1)
+    uint64_t cap;
+};
+
+// The node's value at p from `bins` (a position outside the bins' cells: both reaches).
+glm::vec2 pointSetDistances(const PointSet& set, const PointBins& bins, glm::vec3 p);
+
+// Whether some centre (x) or segment (y) could lie within its reach of a point of the box
+// [lo, hi] (conservative: true may be wrong, false never is).
+glm::bvec2 pointSetReaches(const PointSet& set, glm::dvec3 lo, glm::dvec3 hi);
+
+// Bounds on the lists of one binning: list entries over all cells, and centres or segments one
+// cell lists (the length of a kernel's loop per voxel).
+constexpr uint64_t kMaxPointSetListEntries = uint64_t(1) << 26;
+constexpr uint32_t kMaxPointSetPerCell = uint32_t(1) << 13;
+
+// The storage buffer of kBindingPointSets (layout in compiler/shaders/lsystem_carve.glsl): every
+// set binned over the chunk table firstChunk .. firstChunk + chunkCount - 1. Throws
+// PointSetLimitError past the bounds above or a buffer of 2^31 words.
+std::vector<int32_t> pointSetWords(std::span<const std::shared_ptr<const PointSet>> sets, glm::ivec3 firstChunk,
+                                   glm::ivec3 chunkCount, int32_t chunkSize);
+
+} // namespace voxc

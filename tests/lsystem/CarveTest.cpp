@@ -1,0 +1,217 @@
+// The cave carve's CPU side (docs/lsystem.md "Carving"): structural points, displacement,
+// binning, and the field through the interpreter's evaluator: spec §10 tests 14 (clearance) and
+// 15 (bounded carving) on random grammars and noise settings.
+#include "TestDefinitions.h"
+
+#include "voxc/generators/lsystem/Carve.h"
+#include "voxc/generators/lsystem/Connect.h"
+#include "voxc/generators/lsystem/Expand.h"
+#include "voxc/generators/lsystem/RuleFile.h"
+#include "voxc/interp/FieldEval.h"
+#include "voxc/program/Random.h"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+namespace voxc::lsystem {
+namespace {
+
+double segmentDistance(glm::dvec3 p, glm::dvec3 a, glm::dvec3 b) {
+    const glm::dvec3 d = b - a;
+    const double len2 = glm::dot(d, d);
+    const double t = len2 > 0 ? std::clamp(glm::dot(p - a, d) / len2, 0.0, 1.0) : 0.0;
+    return glm::length(p - (a + t * d));
+}
+
+double skeletonDistance(const Skeleton& skeleton, glm::dvec3 p) {
+    double best = INFINITY;
+    for (const Segment& s : skeleton.segments) best = std::min(best, segmentDistance(p, s.from, s.to));
+    for (const Connection& line : skeleton.connections)
+        for (size_t k = 0; k + 1 < line.points.size(); ++k)
+            best = std::min(best, segmentDistance(p, line.points[k], line.points[k + 1]));
+    return best;
+}
+
+double uniformIn(uint32_t seed, uint32_t stream, double lo, double hi) {
+    return lo + (hi - lo) * double(mix32(seed * 7919u + stream) >> 8) / double(1u << 24);
+}
+
+// The default rule file grown from `seed` with a random angle deviation and step, connected.
+Skeleton randomSkeleton(uint32_t seed) {
+    Diagnostics diagnostics;
+    const auto rules = parseRuleFile(SourceFile("default.rules", std::string(defaultRuleFileText())), diagnostics);
+    EXPECT_TRUE(rules.has_value());
+    Definition d;
+    d.productions = rules->productions;
+    d.macros = rules->macros;
+    d.seed = seed;
+    d.expansions = 2;
+    d.params.step = uniformIn(seed, 1, 2, 6);
+    d.params.angleDeviation = uniformIn(seed, 2, 0, 30);
+    d.params.pitchLimit = 30;
+    d.params.start = {40, 24, 40};
+    const Expansion e = expand(d);
+    Skeleton skeleton = interpret(d, e.symbols, e.types);
+    ConnectParams connect;
+    connect.chance = 1;
+    connect.maxDistance = 30;
+    connectBranches(skeleton, connect, seed, d.limits);
+    return skeleton;
+}
+
+CarveParams randomParams(uint32_t seed) {
+    CarveParams p;
+    p.radius = uniformIn(seed, 10, 1, 8);
+    p.clearance = uniformIn(seed, 11, 0.5, 3);
+    p.curlAmplitude = uniformIn(seed, 12, 0, 8);
+    p.yLimit = uniformIn(seed, 13, 0, 1);
+    p.simplexAmplitude = uniformIn(seed, 14, 0, 4);
+    p.voronoiAmplitude = uniformIn(seed, 15, 0, 4);
+    p.minScale = uniformIn(seed, 16, 0.2, 2);
+    p.maxScale = p.minScale + uniformIn(seed, 17, 0, 8);
+    p.simplexFrequency = uniformIn(seed, 18, 0.01, 0.5);
+    p.voronoiFrequency = uniformIn(seed, 19, 0.01, 0.5);
+    return p;
+}
+
+constexpr glm::ivec3 kOrigin{0, 0, 0}, kSize{80, 48, 80};
+
+TEST(CarveTest, StructuralPointsFollowSpacingAndAddLeaves) {
+    Skeleton skeleton;
+    skeleton.segments.push_back({{0, 0, 0}, {10, 0, 0}, 0, SymbolType::None, 6});
+    skeleton.segments.push_back({{10, 0, 0}, {10, 4, 0}, 0, SymbolType::None, 6});
+    const std::vector<glm::dvec3> points = structuralPoints(skeleton, 4.0, {});
+    // Segment 1: n = 3 (0, 10/3, 20/3); segment 2: n = 1 (its start) and its end, a leaf.
+    ASSERT_EQ(points.size(), 5u);
+    test::expectNear(points[1], {10.0 / 3.0, 0, 0}, 1e-12);
+    test::expectNear(points[3], {10, 0, 0}, 1e-12);
+    test::expectNear(points[4], {10, 4, 0}, 1e-12);
+}
+
+TEST(CarveTest, DisplacementStaysWithinAmplitudeAndYLimit) {
+    CarveParams params;
+    params.curlAmplitude = 5;
+    params.yLimit = 0.25;
+    for (uint32_t i = 0; i < 200; ++i) {
+        const glm::dvec3 p(uniformIn(i, 1, -500, 500), uniformIn(i, 2, -500, 500), uniformIn(i, 3, -500, 500));
+        const glm::dvec3 moved = displacedCentre(p, params, 7);
+        EXPECT_LE(glm::length(moved - p), params.curlAmplitude + 1e-9);
+        EXPECT_LE(std::fabs(moved.y - p.y), params.yLimit * params.curlAmplitude + 1e-9);
+    }
+    // A zero amplitude leaves the points where they are.
+    params.curlAmplitude = 0;
+    test::expectNear(displacedCentre({3, 4, 5}, params, 7), {3, 4, 5}, 0);
+}
+
+// Spec test 14: every voxel within r_clear - 1e-4 of the skeleton (connections included) is air.
+TEST(CarveTest, ClearanceHoldsForRandomGrammarsAndNoise) {
+    for (uint32_t seed = 1; seed <= 12; ++seed) {
+        const Skeleton skeleton = randomSkeleton(seed);
+        ASSERT_FALSE(skeleton.segments.empty());
+        const CarveParams params = randomParams(seed);
+        const auto set = carvePointSet(skeleton, params, seed, kOrigin, kSize, 16, {});
+        const Field field = carveField(set, params, seed);
+        FieldEvaluator evaluator(field, kOrigin);
+        int checked = 0;
+        for (int z = 0; z < kSize.z; ++z)
+            for (int y = 0; y < kSize.y; ++y)
+                for (int x = 0; x < kSize.x; ++x) {
+                    if (skeletonDistance(skeleton, glm::dvec3(x, y, z)) >= params.clearance - 1e-4) continue;
+                    ++checked;
+                    const float f = evaluator.density({x, y, z});
+                    // subtract: d = min(d, 1 - f) < 0.5 for any d
+                    ASSERT_LT(1.0f - f, 0.5f) << "seed " << seed << " at " << x << "," << y << "," << z;
+                }
+        EXPECT_GT(checked, 0) << "seed " << seed;
+    }
+}
+
+// Spec test 15: farther than 2R/m_min + 1 from every displaced centre and 1.125 r_clear from the
+// skeleton (voxc's clearance falloff), the field is exactly 0, so a subtract keeps the density.
+TEST(CarveTest, CarvingIsBoundedBySupport) {
+    for (uint32_t seed = 1; seed <= 12; ++seed) {
+        const Skeleton skeleton = randomSkeleton(seed);
+        const CarveParams params = randomParams(seed);
+        const auto set = carvePointSet(skeleton, params, seed, kOrigin, kSize, 16, {});
+        const Field field = carveField(set, params, seed);
+        FieldEvaluator evaluator(field, kOrigin);
+        const double support = 2 * params.radius / params.minScale + 1;
+        int outside = 0;
+        for (int z = 0; z < kSize.z; z += 2)
+            for (int y = 0; y < kSize.y; y += 2)
+                for (int x = 0; x < kSize.x; x += 2) {
+                    const glm::dvec3 p(x, y, z);
+                    if (skeletonDistance(skeleton, p) <= 1.125 * params.clearance) continue;
+                    bool near = false;
+                    for (glm::vec3 c : set->centres) near = near || glm::length(p - glm::dvec3(c)) <= support;
+                    if (near) continue;
+                    ++outside;
+                    ASSERT_EQ(std::bit_cast<uint32_t>(evaluator.density({x, y, z})), 0u)
+                        << "seed " << seed << " at " << x << "," << y << "," << z;
+                }
+        EXPECT_GT(outside, 0) << "seed " << seed;
+    }
+}
+
+// The lists only decide which points are looked at: any chunk size, or one cell holding every
+// point, gives the same floats.
+TEST(CarveTest, DistancesDoNotDependOnTheBinning) {
+    const Skeleton skeleton = randomSkeleton(3);
+    const CarveParams params;
+    const auto set = carvePointSet(skeleton, params, 3, kOrigin, kSize, 32, {});
+    const glm::ivec3 origin{-13, 5, 7}; // an odd origin: chunks straddle the grid's edges
+    const PointBins single = binPointSet(*set, glm::ivec3(-1), glm::ivec3(2), 1 << 20, UINT64_MAX, UINT32_MAX);
+    for (int chunk : {8, 16, 64}) {
+        // Chunks from world -16 (or -64) to past 160 on every axis.
+        const PointBins bins = binCarveChunks(*set, glm::ivec3(-16 / std::min(chunk, 16)), glm::ivec3(192 / chunk + 2), chunk, {});
+        for (int z = 0; z < kSize.z; z += 3)
+            for (int y = 0; y < kSize.y; y += 3)
+                for (int x = 0; x < kSize.x; x += 3) {
+                    const glm::vec3 p(origin + glm::ivec3(x, y, z));
+                    const glm::vec2 a = pointSetDistances(*set, bins, p), b = pointSetDistances(*set, single, p);
+                    ASSERT_EQ(std::bit_cast<uint64_t>(a), std::bit_cast<uint64_t>(b)) << chunk;
+                }
+    }
+}
+
+TEST(CarveTest, LimitsAreCheckedBeforeStoring) {
+    Skeleton skeleton;
+    skeleton.segments.push_back({{0, 0, 0}, {1000, 0, 0}, 0, SymbolType::None, 6});
+    CarveLimits limits;
+    limits.maxCentres = 100;
+    try {
+        structuralPoints(skeleton, 1.0, limits);
+        FAIL() << "no LimitError";
+    } catch (const LimitError& e) {
+        EXPECT_EQ(e.limit, "maxCentres");
+        EXPECT_GT(e.amount, 100u);
+    }
+    limits = {};
+    limits.maxPerChunk = 10;
+    try {
+        carvePointSet(skeleton, CarveParams{}, 1, {0, -8, -8}, {64, 16, 16}, 16, limits);
+        FAIL() << "no LimitError";
+    } catch (const LimitError& e) {
+        EXPECT_EQ(e.limit, "maxPerChunk");
+        EXPECT_EQ(e.cap, 10u);
+    }
+}
+
+TEST(CarveTest, ParametersOutOfRangeAreRejected) {
+    CarveParams params;
+    params.maxScale = params.minScale / 2;
+    EXPECT_THROW(checkCarveParams(params), UserError);
+    params = {};
+    params.radius = 0;
+    EXPECT_THROW(checkCarveParams(params), UserError);
+    params = {};
+    params.yLimit = 1.5;
+    EXPECT_THROW(checkCarveParams(params), UserError);
+}
+
+} // namespace
+} // namespace voxc::lsystem
