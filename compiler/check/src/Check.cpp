@@ -98,7 +98,7 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
     for (const ast::Block& block : file.blocks)
         if (block.kind == "lsystem" && block.label) lsystemNames.push_back(*block.label);
     program.fields = checkFields(context, file, grammarNames);
-    CheckedFeatures features = checkFeatures(context, file, grammarNames, program.world.seed);
+    CheckedFeatures features = checkFeatures(context, file, grammarNames, program.world, lsystems);
     for (Field& feature : features.fields) program.fields.push_back(std::move(feature));
 
     program.pipeline.push_back({Stage::Kind::Start, 0, FieldMode::Set, {}, std::nullopt});

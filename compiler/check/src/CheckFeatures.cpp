@@ -1,6 +1,7 @@
 // `feature name = generator { key = value; ... }`: the keys are read and range-checked against the
 // generator's record (voxc_generators, compiler/generators/src/dey) with located diagnostics here;
 // the record builds the feature's field from the checked values.
+#include "CheckLsystemCave.h"
 #include "Materials.h"
 #include "Sections.h"
 #include "Suggest.h"
@@ -51,12 +52,23 @@ struct CheckedFeature {
     std::optional<uint8_t> material;
 };
 
-std::optional<CheckedFeature> checkFeature(Context& context, const ast::FeatureDecl& decl, uint32_t seed) {
+// The generator an L-system's carve uses; the others are dey:: records.
+constexpr std::string_view kLsystemCave = "lsystem_cave";
+
+std::optional<CheckedFeature> checkFeature(Context& context, const ast::FeatureDecl& decl, const World& world,
+                                           const ast::File& file, const std::vector<CheckedLsystem>& lsystems) {
     const ast::Block& body = decl.body;
+    const uint32_t seed = world.seed;
+    if (body.kind == kLsystemCave) {
+        std::optional<CheckedLsystemCave> cave = checkLsystemCave(context, decl, world, file, lsystems);
+        if (!cave) return std::nullopt;
+        return CheckedFeature{std::move(cave->field), cave->material};
+    }
     const dey::GeneratorInfo* info = dey::findGenerator(body.kind);
     if (info == nullptr) {
         std::vector<std::string_view> names;
         for (const dey::GeneratorInfo& generator : dey::generators()) names.push_back(generator.name);
+        names.push_back(kLsystemCave);
         context.diagnostics.error("E0002", body.loc,
                                   fmt::format("unknown generator '{}'{}", body.kind, suggestOrList(body.kind, names)));
         return std::nullopt;
@@ -108,7 +120,7 @@ std::optional<CheckedFeature> checkFeature(Context& context, const ast::FeatureD
 } // namespace
 
 CheckedFeatures checkFeatures(Context& context, const ast::File& file, const std::vector<std::string>& stageNames,
-                              uint32_t seed) {
+                              const World& world, const std::vector<CheckedLsystem>& lsystems) {
     CheckedFeatures out;
     std::map<std::string, SourceLoc> names;
     for (const ast::FieldDecl& field : file.fields) names.emplace(field.name, field.loc);
@@ -122,7 +134,7 @@ CheckedFeatures checkFeatures(Context& context, const ast::File& file, const std
             context.diagnostics.error("E0003", decl.loc,
                                       fmt::format("'{}' already names a pipeline stage (a grammar or 'start')",
                                                   decl.name));
-        std::optional<CheckedFeature> feature = checkFeature(context, decl, seed);
+        std::optional<CheckedFeature> feature = checkFeature(context, decl, world, file, lsystems);
         out.materials.push_back(feature ? feature->material : std::nullopt);
         if (feature) out.fields.push_back(std::move(feature->field));
     }

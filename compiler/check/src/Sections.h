@@ -60,10 +60,11 @@ struct CheckedFeatures {
 };
 
 // Features (`feature name = arch { ... }`), each expanded into a field, in declaration order.
-// Their names share the namespace of fields and of `stageNames` (grammars); `seed` is the
-// world's, for generators that draw noise at check time.
+// Their names share the namespace of fields and of `stageNames` (grammars); `world` gives the
+// seed for generators that draw noise at check time and the chunk grid an lsystem_cave bins
+// its points on; `lsystems` are the checked lsystem blocks an lsystem_cave names.
 CheckedFeatures checkFeatures(Context& context, const ast::File& file, const std::vector<std::string>& stageNames,
-                              uint32_t seed);
+                              const World& world, const std::vector<CheckedLsystem>& lsystems);
 
 // E0012 at the stage where the pipeline's estimated work (docs/language.md, "Work estimate")
 // passes Limits::maxWork, or its distinct kernels pass Limits::maxKernels. Call on a program

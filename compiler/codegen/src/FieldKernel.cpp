@@ -1,11 +1,13 @@
 // GLSL for a field stage: the field's DAG as straight-line SSA code (one variable per node,
 // constants written inline), the per-column nodes before the y loop, then the combine of
 // FieldMode written exactly as voxc::combineField computes it with std::min / std::max.
-#include "KernelSources.h"
+#include "voxc/codegen/KernelSources.h"
 #include "Template.h"
 
 #include "voxc/builtins/Functions.h"
 #include "voxc/builtins/Ops.h"
+#include "voxc/codegen/PointSets.h"
+#include "voxc/core/Errors.h"
 #include "voxc/ir/passes/ClassifyFieldChunks.h"
 #include "voxc/program/Semantics.h"
 
@@ -49,6 +51,9 @@ std::string inputGlsl(FieldInput input) {
     return fmt::format("float({}.{})", vector, "xyz"[axis]);
 }
 
+// Declares binding kBindingPointSets and pointSetDistances.
+constexpr std::string_view kPointSetLibrary = "lsystem_carve.glsl";
+
 // Each node's GLSL: a variable name, or the literal of a constant.
 struct FieldCode {
     std::vector<std::string> names;
@@ -56,7 +61,8 @@ struct FieldCode {
     std::vector<std::string_view> libraries;
 };
 
-FieldCode emitField(const ir::IrField& field, std::string_view sourceName) {
+FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::string_view sourceName) {
+    const std::vector<std::shared_ptr<const PointSet>> pointSets = pointSetsOf(module);
     FieldCode code;
     code.names.resize(field.nodes.size());
     std::set<std::string_view> seenLibraries;
@@ -77,6 +83,14 @@ FieldCode emitField(const ir::IrField& field, std::string_view sourceName) {
             value = code.names[node.operands[0]] + "." + "xyz"[node.component];
             what = "component";
             break;
+        case FieldNode::Kind::PointSet: {
+            const auto it = std::find(pointSets.begin(), pointSets.end(), node.pointSet);
+            VOXC_ASSERT(it != pointSets.end());
+            value = fmt::format("pointSetDistances({}, {})", it - pointSets.begin(), code.names[node.operands[0]]);
+            what = "point set distances";
+            if (seenLibraries.insert(kPointSetLibrary).second) code.libraries.push_back(kPointSetLibrary);
+            break;
+        }
         case FieldNode::Kind::Call: {
             const FunctionInfo& info = functions()[node.function];
             std::vector<std::string> args;
@@ -163,6 +177,16 @@ std::string combineGlsl(FieldMode mode, std::optional<uint8_t> material, const s
 }
 
 } // namespace
+
+std::vector<std::shared_ptr<const PointSet>> pointSetsOf(const ir::IrModule& module) {
+    std::vector<std::shared_ptr<const PointSet>> sets;
+    for (const ir::IrField& field : module.fields)
+        for (const FieldNode& node : field.nodes)
+            if (node.kind == FieldNode::Kind::PointSet &&
+                std::find(sets.begin(), sets.end(), node.pointSet) == sets.end())
+                sets.push_back(node.pointSet);
+    return sets;
+}
 
 DispatchShape fieldDispatchShape(const ir::IrModule& module) { return startDispatchShape(module); }
 
@@ -264,7 +288,7 @@ FieldStageBoxes fieldBoxes(const ir::IrModule& module, const ir::IrField& field,
 std::string fieldKernelSource(const ir::IrModule& module, const ir::IrField& field, FieldMode mode,
                               std::optional<uint8_t> material, const std::vector<Stage>& stages, std::string_view kernelName,
                               std::string_view sourceName) {
-    const FieldCode code = emitField(field, sourceName);
+    const FieldCode code = emitField(module, field, sourceName);
     std::string header = fmt::format("voxc generated kernel \"{}\": field {} ({}:{}:{}), mode {}.\nPipeline stage",
                                      kernelName, field.name, sourceName, field.loc.line, field.loc.column,
                                      ir::fieldModeName(mode));

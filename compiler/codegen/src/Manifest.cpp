@@ -74,6 +74,10 @@ BufferInfo bufferInfo(uint32_t binding) {
         return {"nonFinite", "uint", "3",
                 "the current stage's non-finite densities replaced by 0: count (low, high word), lowest grid index; "
                 "the engine resets it to {0, 0, 0xffffffff} before each stage"};
+    case kBindingPointSets:
+        return {"pointSets", "int", "engine",
+                "the package's point sets (an lsystem_cave's centres and skeleton segments) with, per chunk-table "
+                "entry, the lists of those whose reach meets the chunk; layout in lsystem_carve.glsl"};
     }
     throw InternalError(fmt::format("a kernel declares binding {}, which the manifest does not describe", binding));
 }

@@ -81,6 +81,7 @@ struct VulkanExecutor::Impl {
     // `materials` is one uint per voxel beside `voxels` when the package uses materials, else a
     // one-element buffer no kernel declares; `readback` holds the densities, then the materials.
     DeviceBuffer voxels, materials, chunkTable, noiseTables, readback;
+    DeviceBuffer pointSets; // kBindingPointSets: package.pointSets binned over this run's chunk table
     // Tile skipping (kBindingTileRanges..kBindingSkipStats); small, so they exist either way.
     DeviceBuffer tileRanges, tileDirty, activeTiles, activeDispatch, skipStats;
     NonFiniteCounters nonFinite; // kBindingNonFinite and its per-stage copies
@@ -98,6 +99,8 @@ struct VulkanExecutor::Impl {
     void createBuffers();
     // A read-only int buffer with `values`, ready for every kernel.
     DeviceBuffer createTable(const std::vector<int32_t>& values);
+    // The words of kBindingPointSets (a UserError naming the bound when the lists outgrow it).
+    std::vector<int32_t> pointSetTable() const;
     void createFrames();
     void submit(Frame& frame);
     void wait(Frame& frame);
@@ -118,6 +121,7 @@ VulkanExecutor::Impl::~Impl() {
     for (DeviceBuffer* b : {&skipStats, &activeDispatch, &activeTiles, &tileDirty, &tileRanges})
         destroyBuffer(ctx, *b);
     destroyBuffer(ctx, readback);
+    destroyBuffer(ctx, pointSets);
     destroyBuffer(ctx, noiseTables);
     destroyBuffer(ctx, chunkTable);
     destroyBuffer(ctx, materials);
@@ -153,6 +157,7 @@ void VulkanExecutor::Impl::createBuffers() {
     chunkTable = createTable(table);
     const std::span<const int, 256> permutation = perlinPermutation();
     noiseTables = createTable(std::vector<int32_t>(permutation.begin(), permutation.end()));
+    pointSets = createTable(pointSetTable());
 
     const VkDeviceSize tiles = tileShift >= 0 ? tileCount(package, tileShift) : 1;
     const MemoryUse local = staged ? MemoryUse::Device : MemoryUse::HostAccess;
@@ -162,6 +167,19 @@ void VulkanExecutor::Impl::createBuffers() {
     activeDispatch = createBuffer(ctx, 8 * sizeof(uint32_t), storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, local);
     skipStats = createBuffer(ctx, 2 * sizeof(uint32_t), storage, MemoryUse::HostAccess);
     nonFinite.create(ctx, package.stages.size(), local);
+}
+
+std::vector<int32_t> VulkanExecutor::Impl::pointSetTable() const {
+    try {
+        return pointSetWords(package.pointSets, layout.chunkBase, layout.chunkCount, layout.chunkSize);
+    } catch (const PointSetLimitError& e) {
+        throw UserError(fmt::format("the point sets' per-chunk lists ({}^3 chunks) would need more than {} {} (at least "
+                                    "{}); use a larger chunk size, a smaller radius or fewer points",
+                                    layout.chunkSize, e.cap,
+                                    std::string_view(e.limit) == "perCell" ? "entries in one chunk's list"
+                                                                           : "list entries or words",
+                                    e.amount));
+    }
 }
 
 void VulkanExecutor::Impl::recordStageEnd(VkCommandBuffer cmd, uint32_t stage, Access& last) {
@@ -299,6 +317,7 @@ VulkanExecutor::VulkanExecutor(VulkanContext& context, const KernelPackage& pack
     byBinding[kBindingSkipStats] = s.skipStats.buffer;
     byBinding[kBindingMaterials] = s.materials.buffer;
     byBinding[kBindingNonFinite] = s.nonFinite.counterBuffer();
+    byBinding[kBindingPointSets] = s.pointSets.buffer;
     bindBuffers(s.ctx, s.pipelines, byBinding);
     s.setupMs = millisecondsSince(start);
 }

@@ -14,7 +14,7 @@ namespace {
 constexpr uint32_t kBindings[] = {kBindingVoxels,       kBindingChunkTable,   kBindingNoiseTables,
                                   kBindingTileRanges,  kBindingTileDirty,   kBindingActiveTiles,
                                   kBindingActiveDispatch, kBindingSkipStats,  kBindingMaterials,
-                                  kBindingNonFinite};
+                                  kBindingNonFinite,     kBindingPointSets};
 static_assert(std::size(kBindings) == kKernelBindingCount);
 constexpr uint32_t kBindingCount = std::size(kBindings);
 

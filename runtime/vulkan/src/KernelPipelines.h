@@ -9,7 +9,7 @@
 
 namespace voxc::vulkan_detail {
 
-constexpr uint32_t kKernelBindingCount = 10; // bindings 0..9
+constexpr uint32_t kKernelBindingCount = 11; // bindings 0..10
 
 struct KernelPipelines {
     VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;

@@ -22,8 +22,8 @@ uint32_t substream(uint32_t seed, uint32_t stream) { return seed + stream * 0x9E
 constexpr uint32_t kCurlStream = 311, kCentreModulatorStream = 321, kSimplexModulatorStream = 322,
                    kVoronoiModulatorStream = 323, kSimplexStream = 331, kVoronoiStream = 341;
 
-// Beyond r_clear the clearance term falls this many times faster, so it reaches -1 at
-// 1.125 r_clear instead of 2 r_clear and leaves the rock around a tunnel to the brush.
+// Beyond r_clear the clearance term falls this many times faster than inside, so it reaches 0
+// (rock) at 1.125 r_clear instead of 2 r_clear and leaves the rock around a tunnel to the brush.
 constexpr double kClearanceFalloff = 8.0;
 
 Value evalBuiltin(std::string_view name, glm::vec3 p, uint32_t seed) {
@@ -247,16 +247,19 @@ Field carveField(std::shared_ptr<const PointSet> set, const CarveParams& params,
                                                     voronoi})});
     scale = dag.call("clamp", {scale, dag.number(params.minScale), dag.number(params.maxScale)});
 
-    // F = clamp(1 - M D / R, -1, 1); the clearance term; f = (1 + max(F, F_clr)) / 2.
+    // f = max(clamp(1 - M D / (2R), 0, 1), min(0.5 + 0.5x, 0.5 + 4x)), x = 1 - D_s / r_clear: the
+    // spec's (1 + max(F, F_clr)) / 2 written so that beyond the reaches both terms pass an exact 0
+    // through clamp and max, which interval analysis then proves constant.
     const uint32_t brush = dag.call(
         "clamp", {dag.call("sub", {dag.number(1.0), dag.call("mul", {dag.call("mul", {scale, centreDistance}),
-                                                                    dag.number(1.0 / params.radius)})}),
-                  dag.number(-1.0), dag.number(1.0)});
+                                                                    dag.number(0.5 / params.radius)})}),
+                  dag.number(0.0), dag.number(1.0)});
     const uint32_t x = dag.call(
         "sub", {dag.number(1.0), dag.call("mul", {skeletonDistance, dag.number(1.0 / params.clearance)})});
-    const uint32_t clearance = dag.call("min", {x, dag.call("mul", {x, dag.number(kClearanceFalloff)})});
-    const uint32_t total = dag.call("max", {brush, clearance});
-    return dag.field(dag.call("mul", {dag.call("add", {dag.number(1.0), total}), dag.number(0.5)}));
+    const uint32_t inside = dag.call("add", {dag.number(0.5), dag.call("mul", {x, dag.number(0.5)})});
+    const uint32_t outside = dag.call("add", {dag.number(0.5), dag.call("mul", {x, dag.number(0.5 * kClearanceFalloff)})});
+    const uint32_t clearance = dag.call("min", {inside, outside});
+    return dag.field(dag.call("max", {brush, clearance}));
 }
 
 } // namespace voxc::lsystem

@@ -5,8 +5,10 @@
 #include "voxc/program/Semantics.h"
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace voxc {
@@ -46,6 +48,10 @@ constexpr uint32_t kBindingMaterials = 8;
 // compiler/shaders/nonfinite.glsl), declared by the kernels that may compute a non-finite density
 // (field and sweep kernels). The runtime copies it out after each stage and resets it to {0, 0, ~0u}.
 constexpr uint32_t kBindingNonFinite = 9;
+// int words: KernelPackage::pointSets binned over the run's chunk table (voxc::pointSetWords,
+// layout in compiler/shaders/lsystem_carve.glsl), declared only by field kernels that read a
+// point set; otherwise a one-element buffer.
+constexpr uint32_t kBindingPointSets = 10;
 
 constexpr uint32_t kNoKernel = UINT32_MAX;
 
@@ -126,6 +132,9 @@ struct KernelPackage {
     // Recomputes the density range of every stale tile, before each sweep when tiles are
     // skipped. kNoKernel: the package cannot skip tiles (every sweep runs over every anchor).
     uint32_t tileRangesKernel = kNoKernel;
+    // The point sets field kernels read, `pointSetDistances(i, p)` naming entry i
+    // (codegen::pointSetsOf); the runtime bins them over its chunk table into kBindingPointSets.
+    std::vector<std::shared_ptr<const PointSet>> pointSets;
 };
 
 } // namespace voxc

@@ -1,13 +1,15 @@
 #pragma once
 // The cave carve (spec §5.2, docs/lsystem.md "Carving"): a skeleton's structural points,
 // displaced on the CPU by curl noise, become a point set (voxc/program/PointSet.h); the carve is
-// an ordinary field whose value at world voxel v is f = (1 + F_tot) / 2 (1 = cave air, 0 = rock):
-//   M(v)  = clamp(1 + a_s m_s S + a_v m_v V, m_min, m_max)   (the 6 noise calls per voxel)
-//   F     = clamp(1 - M D / R, -1, 1),   D = distance to the nearest displaced centre
-//   F_clr = x for x >= 0, 8x below (x = 1 - D_s / r_clear, D_s = distance to the skeleton)
-//   F_tot = max(F, F_clr)
-// so every voxel closer than r_clear to the skeleton is air, and rock farther than 2R/m_min from
-// every centre and 1.125 r_clear from the skeleton is left as it was.
+// an ordinary field whose value at world voxel v is, in the spec's terms, f = (1 + F_tot) / 2
+// (1 = cave air, 0 = rock), written as
+//   M(v)    = clamp(1 + a_s m_s S + a_v m_v V, m_min, m_max)   (the 6 noise calls per voxel)
+//   f_brush = clamp(1 - M D / (2R), 0, 1),   D = distance to the nearest displaced centre
+//   f_clr   = min(0.5 + 0.5x, 0.5 + 4x),     x = 1 - D_s / r_clear, D_s = distance to the skeleton
+//   f       = max(f_brush, f_clr)
+// so every voxel closer than r_clear to the skeleton is air (f > 0.5), and f is exactly 0 farther
+// than 2R/m_min from every centre and 1.125 r_clear from the skeleton (the clearance term falls
+// 8 times faster outside r_clear than inside, so it does not widen every tunnel by r_clear).
 #include "voxc/generators/lsystem/Turtle.h"
 #include "voxc/program/Field.h"
 
@@ -39,8 +41,9 @@ struct CarveLimits {
     uint64_t maxListEntries = kMaxPointSetListEntries;  // list entries over all chunks (the runtime's bounds too)
 };
 
-// The distance beyond which a centre or a skeleton segment changes nothing (F = -1, F_clr <= -1),
-// with a margin so float roundings cannot matter: 2.2 R / m_min and 1.25 r_clear.
+// The distance beyond which a centre or a skeleton segment changes nothing (its term of f is at
+// most -0.1 before the clamp, resp. -0.5), a margin float roundings cannot cross: 2.2 R / m_min
+// and 1.25 r_clear. Distances are capped there (PointSet), so farther points need no listing.
 double centreReach(const CarveParams& params);
 double segmentReach(const CarveParams& params);
 
