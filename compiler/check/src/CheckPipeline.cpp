@@ -129,8 +129,8 @@ std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
             }
         } else if (std::find(lsystemNames.begin(), lsystemNames.end(), entry.name) != lsystemNames.end()) {
             context.diagnostics.error("E0013", entry.loc,
-                                      fmt::format("'{}' is an lsystem; carving an L-system into the grid is not "
-                                                  "supported yet (run 'voxc lsystem FILE {}' to see its skeleton)",
+                                      fmt::format("'{}' is an lsystem; carving it takes a feature: 'feature NAME = "
+                                                  "lsystem_cave {{ lsystem = {}; }}', then 'subtract NAME;' here",
                                                   entry.name, entry.name));
         } else {
             context.diagnostics.error("E0002", entry.loc,
