@@ -8,6 +8,7 @@
 #include "Cases.h"
 #include "CompileCases.h"
 #include "JsonReporter.h"
+#include "CarveCases.h"
 #include "LsystemCases.h"
 #include "TerrainCases.h"
 
@@ -119,6 +120,7 @@ int main(int argc, char** argv) {
             if (uses("interp")) registerInterp(reporter, "fbm5", n, program);
             if (uses("libnoise")) registerLibnoise(reporter, n);
         }
+        if (uses("vulkan") || uses("interp")) bench::registerLsystemCarve(reporter, context.get(), uses("interp"));
         if (uses("host")) bench::registerLsystemExpand(reporter);
         if (uses("host")) bench::registerErosion(reporter);
         if (uses("host")) bench::registerCompileCases(reporter);
