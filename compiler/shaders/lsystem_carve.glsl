@@ -1,18 +1,20 @@
 // Point sets (voxc/program/PointSet.h): the capped distances from a world position to the nearest
-// centre and the nearest segment of a set, read from the per-chunk lists of the run's chunk table
-// (the points whose reach meets the chunk). Written operation for operation as
-// voxc::pointSetDistances, every float result `precise`: squared distances, the nearest kept
-// by `<`, one sqrt, the cap. Capping makes the lists' contents beyond the reach irrelevant, so
-// the interpreter's lists (another chunk size) give the same floats.
+// centre and the nearest segment of a set, read from the lists of the position's cell (a
+// world-aligned cube of 8 voxels: the points whose reach meets it, sorted by a lower bound of
+// their squared distance to the cell). Written operation for operation as
+// voxc::pointSetDistances, every float result `precise`: squared distances, the nearest kept by
+// `<`, the loop left at the first lower bound not below the nearest, one sqrt, the cap. Capping
+// makes the lists' contents beyond the reach irrelevant, so every backend computes the same floats.
 //
 // Buffer (voxc::pointSetWords), ints, floats stored as their bits:
-//   words[s]         header offset h of point set s
-//   words[h + 0..4]  centre data offset, segment data offset, chunk list table offset,
-//                    centre reach, segment reach
-//   centre data      x, y, z per centre
-//   segment data     from.xyz, delta.xyz, 1 / |delta|^2 per segment
-//   list table       per chunk-table entry: first centre item, centre count, first segment
-//                    item, segment count (items: point indices, absolute word offsets)
+//   words[s]          header offset h of point set s
+//   words[h + 0..11]  centre data offset, segment data offset, cell table offset, centre reach,
+//                     segment reach, log2 cell size, first cell xyz, cell counts xyz
+//   centre data       x, y, z per centre
+//   segment data      from.xyz, delta.xyz, 1 / |delta|^2 per segment
+//   items             (point index, lower bound of the squared distance) pairs
+//   cell table        per cell (x fastest): first centre item, centre count, first segment item,
+//                     segment count (first items as absolute word offsets)
 
 layout(std430, set = 0, binding = 10) readonly buffer PointSets {
     int words[];
@@ -24,18 +26,20 @@ vec2 pointSetDistances(int set, vec3 p) {
     int header = pointSets.words[set];
     float centreReach = pointSetFloat(header + 3);
     float segmentReach = pointSetFloat(header + 4);
-    int chunkShift = findMSB(push.gridOrigin.w);
-    ivec3 entry = (ivec3(floor(p)) >> chunkShift) - push.chunkBase.xyz;
-    if (any(lessThan(entry, ivec3(0))) || any(greaterThanEqual(entry, push.chunkCount.xyz)))
+    ivec3 firstCell = ivec3(pointSets.words[header + 6], pointSets.words[header + 7], pointSets.words[header + 8]);
+    ivec3 cellCount = ivec3(pointSets.words[header + 9], pointSets.words[header + 10], pointSets.words[header + 11]);
+    ivec3 cell = (ivec3(floor(p)) >> pointSets.words[header + 5]) - firstCell;
+    if (any(lessThan(cell, ivec3(0))) || any(greaterThanEqual(cell, cellCount)))
         return vec2(centreReach, segmentReach);
-    int list = pointSets.words[header + 2] + 4 * (entry.x + push.chunkCount.x * (entry.y + push.chunkCount.y * entry.z));
+    int list = pointSets.words[header + 2] + 4 * (cell.x + cellCount.x * (cell.y + cellCount.y * cell.z));
 
     int centres = pointSets.words[header];
-    int firstCentre = pointSets.words[list];
+    int centreItem = pointSets.words[list];
     int centreCount = pointSets.words[list + 1];
     precise float nearestCentre = 3.4028234663852886e38;
     for (int i = 0; i < centreCount; ++i) {
-        int at = centres + 3 * pointSets.words[firstCentre + i];
+        if (pointSetFloat(centreItem + 2 * i + 1) >= nearestCentre) break;
+        int at = centres + 3 * pointSets.words[centreItem + 2 * i];
         precise float dx = p.x - pointSetFloat(at);
         precise float dy = p.y - pointSetFloat(at + 1);
         precise float dz = p.z - pointSetFloat(at + 2);
@@ -44,11 +48,12 @@ vec2 pointSetDistances(int set, vec3 p) {
     }
 
     int segments = pointSets.words[header + 1];
-    int firstSegment = pointSets.words[list + 2];
+    int segmentItem = pointSets.words[list + 2];
     int segmentCount = pointSets.words[list + 3];
     precise float nearestSegment = 3.4028234663852886e38;
     for (int i = 0; i < segmentCount; ++i) {
-        int at = segments + 7 * pointSets.words[firstSegment + i];
+        if (pointSetFloat(segmentItem + 2 * i + 1) >= nearestSegment) break;
+        int at = segments + 7 * pointSets.words[segmentItem + 2 * i];
         precise float px = p.x - pointSetFloat(at);
         precise float py = p.y - pointSetFloat(at + 1);
         precise float pz = p.z - pointSetFloat(at + 2);

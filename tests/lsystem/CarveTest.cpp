@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cfloat>
 #include <cmath>
 
 namespace voxc::lsystem {
@@ -113,7 +114,7 @@ TEST(CarveTest, ClearanceHoldsForRandomGrammarsAndNoise) {
         const Skeleton skeleton = randomSkeleton(seed);
         ASSERT_FALSE(skeleton.segments.empty());
         const CarveParams params = randomParams(seed);
-        const auto set = carvePointSet(skeleton, params, seed, kOrigin, kSize, 16, {});
+        const auto set = carvePointSet(skeleton, params, seed, kOrigin, kSize, {});
         const Field field = carveField(set, params, seed);
         FieldEvaluator evaluator(field, kOrigin);
         int checked = 0;
@@ -136,7 +137,7 @@ TEST(CarveTest, CarvingIsBoundedBySupport) {
     for (uint32_t seed = 1; seed <= 12; ++seed) {
         const Skeleton skeleton = randomSkeleton(seed);
         const CarveParams params = randomParams(seed);
-        const auto set = carvePointSet(skeleton, params, seed, kOrigin, kSize, 16, {});
+        const auto set = carvePointSet(skeleton, params, seed, kOrigin, kSize, {});
         const Field field = carveField(set, params, seed);
         FieldEvaluator evaluator(field, kOrigin);
         const double support = 2 * params.radius / params.minScale + 1;
@@ -157,25 +158,34 @@ TEST(CarveTest, CarvingIsBoundedBySupport) {
     }
 }
 
-// The lists only decide which points are looked at: any chunk size, or one cell holding every
-// point, gives the same floats.
+// The lists and their early exit only decide which points are looked at: any cell size, or one
+// cell holding every point, gives the floats of a loop over every point.
 TEST(CarveTest, DistancesDoNotDependOnTheBinning) {
     const Skeleton skeleton = randomSkeleton(3);
     const CarveParams params;
-    const auto set = carvePointSet(skeleton, params, 3, kOrigin, kSize, 32, {});
-    const glm::ivec3 origin{-13, 5, 7}; // an odd origin: chunks straddle the grid's edges
-    const PointBins single = binPointSet(*set, glm::ivec3(-1), glm::ivec3(2), 1 << 20, UINT64_MAX, UINT32_MAX);
-    for (int chunk : {8, 16, 64}) {
-        // Chunks from world -16 (or -64) to past 160 on every axis.
-        const PointBins bins = binCarveChunks(*set, glm::ivec3(-16 / std::min(chunk, 16)), glm::ivec3(192 / chunk + 2), chunk, {});
-        for (int z = 0; z < kSize.z; z += 3)
-            for (int y = 0; y < kSize.y; y += 3)
-                for (int x = 0; x < kSize.x; x += 3) {
-                    const glm::vec3 p(origin + glm::ivec3(x, y, z));
-                    const glm::vec2 a = pointSetDistances(*set, bins, p), b = pointSetDistances(*set, single, p);
-                    ASSERT_EQ(std::bit_cast<uint64_t>(a), std::bit_cast<uint64_t>(b)) << chunk;
-                }
-    }
+    const glm::ivec3 origin{-13, 5, 7}; // an odd origin: cells straddle the grid's edges
+    const auto set = carvePointSet(skeleton, params, 3, origin, kSize, {});
+    const auto everyPoint = [&](glm::vec3 p) {
+        float centre = FLT_MAX, segment = FLT_MAX;
+        for (glm::vec3 c : set->centres) centre = std::min(centre, centreDistanceSquared(p, c));
+        for (const PointSetSegment& s : set->segments) segment = std::min(segment, segmentDistanceSquared(p, s));
+        return glm::vec2(std::min(std::sqrt(centre), set->centreReach), std::min(std::sqrt(segment), set->segmentReach));
+    };
+    std::vector<PointBins> binnings{set->bins, binPointSet(*set, glm::ivec3(-1), glm::ivec3(2), 1 << 20, UINT64_MAX, UINT32_MAX)};
+    for (int cell : {16, 64}) // cells from world -64 to past 160 on every axis
+        binnings.push_back(binPointSet(*set, glm::ivec3(-64 / cell), glm::ivec3(256 / cell), cell, UINT64_MAX, UINT32_MAX));
+    size_t near = 0;
+    for (int z = 0; z < kSize.z; z += 3)
+        for (int y = 0; y < kSize.y; y += 3)
+            for (int x = 0; x < kSize.x; x += 3) {
+                const glm::vec3 p(origin + glm::ivec3(x, y, z));
+                const glm::vec2 expected = everyPoint(p);
+                near += expected.x < set->centreReach;
+                for (const PointBins& bins : binnings)
+                    ASSERT_EQ(std::bit_cast<uint64_t>(pointSetDistances(*set, bins, p)), std::bit_cast<uint64_t>(expected))
+                        << "cell " << bins.cellSize << " at " << p.x << "," << p.y << "," << p.z;
+            }
+    EXPECT_GT(near, 100u);
 }
 
 TEST(CarveTest, LimitsAreCheckedBeforeStoring) {
@@ -191,12 +201,12 @@ TEST(CarveTest, LimitsAreCheckedBeforeStoring) {
         EXPECT_GT(e.amount, 100u);
     }
     limits = {};
-    limits.maxPerChunk = 10;
+    limits.maxPerCell = 10;
     try {
-        carvePointSet(skeleton, CarveParams{}, 1, {0, -8, -8}, {64, 16, 16}, 16, limits);
+        carvePointSet(skeleton, CarveParams{}, 1, {0, -8, -8}, {64, 16, 16}, limits);
         FAIL() << "no LimitError";
     } catch (const LimitError& e) {
-        EXPECT_EQ(e.limit, "maxPerChunk");
+        EXPECT_EQ(e.limit, "maxPerCell");
         EXPECT_EQ(e.cap, 10u);
     }
 }

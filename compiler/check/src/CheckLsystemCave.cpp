@@ -115,7 +115,7 @@ std::optional<CheckedLsystemCave> checkLsystemCave(Context& context, const ast::
         const lsystem::Expansion expansion = lsystem::expand(definition);
         lsystem::Skeleton skeleton = lsystem::interpret(definition, expansion.symbols, expansion.types);
         lsystem::connectBranches(skeleton, net->connect, definition.seed, definition.limits);
-        auto set = lsystem::carvePointSet(skeleton, params, world.seed, world.origin, world.size, world.chunkSize, {});
+        auto set = lsystem::carvePointSet(skeleton, params, world.seed, world.origin, world.size, {});
         out.field = lsystem::carveField(std::move(set), params, world.seed);
     } catch (const lsystem::LimitError& e) {
         context.diagnostics.error("E0012", lsystemKey->value.loc, fmt::format("lsystem '{}': {}", net->name, e.what()));

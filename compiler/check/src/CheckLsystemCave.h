@@ -16,7 +16,7 @@ struct CheckedLsystemCave {
 };
 
 // Reads the feature's keys (located errors), grows the named lsystem's skeleton and builds the
-// carve field for `world` (its seed draws the noise, its chunk grid bins the interpreter's lists).
+// carve field for `world` (its seed draws the noise; the lists are binned over its grid).
 std::optional<CheckedLsystemCave> checkLsystemCave(Context& context, const ast::FeatureDecl& decl, const World& world,
                                                    const ast::File& file, const std::vector<CheckedLsystem>& lsystems);
 

@@ -76,8 +76,8 @@ BufferInfo bufferInfo(uint32_t binding) {
                 "the engine resets it to {0, 0, 0xffffffff} before each stage"};
     case kBindingPointSets:
         return {"pointSets", "int", "engine",
-                "the package's point sets (an lsystem_cave's centres and skeleton segments) with, per chunk-table "
-                "entry, the lists of those whose reach meets the chunk; layout in lsystem_carve.glsl"};
+                "the package's point sets (an lsystem_cave's centres and skeleton segments) with, per 8^3 cell of "
+                "the grid, the sorted lists of those whose reach meets the cell; layout in lsystem_carve.glsl"};
     }
     throw InternalError(fmt::format("a kernel declares binding {}, which the manifest does not describe", binding));
 }

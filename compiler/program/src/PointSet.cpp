@@ -34,15 +34,24 @@ double segmentPointDistance(const PointSetSegment& s, glm::dvec3 p) {
     return glm::length(p - (a + t * d));
 }
 
-// Whether a segment may come within `reach` of the box [lo, hi]: its distance to the box's
-// centre against the reach plus the box's half diagonal.
-bool segmentNearBox(const PointSetSegment& s, glm::dvec3 lo, glm::dvec3 hi, double reach) {
+// A lower bound of a segment's distance to the box [lo, hi]: its distance to the box's centre
+// less the half diagonal.
+double segmentBoxLowerBound(const PointSetSegment& s, glm::dvec3 lo, glm::dvec3 hi) {
     const glm::dvec3 centre = (lo + hi) * 0.5;
-    return segmentPointDistance(s, centre) <= reach + kListSlack + glm::length(hi - centre);
+    return std::max(0.0, segmentPointDistance(s, centre) - glm::length(hi - centre));
 }
 
-bool centreNearBox(glm::vec3 c, glm::dvec3 lo, glm::dvec3 hi, double reach) {
-    return boxDistance(glm::dvec3(c), lo, hi) <= reach + kListSlack;
+// The lower bound as stored: shrunk below every float computation of a distance the backends
+// can make (relative error far below 1e-5 of the coordinates involved), squared, rounded down.
+float storedLowerBound(double distance, double magnitude) {
+    const double shrunk = std::max(0.0, distance * (1.0 - 1e-5) - 1e-4 * (1.0 + magnitude));
+    const float squared = float(shrunk * shrunk);
+    return double(squared) > shrunk * shrunk ? std::nextafter(squared, 0.0f) : squared;
+}
+
+double magnitudeOf(glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) {
+    const auto largest = [](glm::dvec3 v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); };
+    return largest(a) + largest(b) + largest(c);
 }
 
 // Cells lo .. hi (inclusive, clipped to the bins) of the world box [boxLo, boxHi].
@@ -62,10 +71,12 @@ size_t cellIndex(const PointBins& bins, glm::ivec3 cell) {
     return size_t(i.x) + size_t(bins.cellCount.x) * (size_t(i.y) + size_t(bins.cellCount.y) * size_t(i.z));
 }
 
-// Fills one kind's CSR lists: `near(item, lo, hi)` decides per cell of the item's bounding box.
-template <typename Bounds, typename Near>
-void fillLists(PointBins& bins, size_t count, Bounds bounds, Near near, std::vector<uint32_t>& start,
-               std::vector<uint32_t>& items, uint64_t& entries, uint64_t maxEntries, uint32_t maxPerCell) {
+// Fills one kind's CSR lists: `bounds` gives an item's bounding box (reach included), `lowerBound`
+// its distance bound to a cell box, listed when within reach (plus slack); lists sorted.
+template <typename Bounds, typename LowerBound>
+void fillLists(PointBins& bins, size_t count, double reach, Bounds bounds, LowerBound lowerBound,
+               std::vector<uint32_t>& start, std::vector<PointListItem>& items, uint64_t& entries,
+               uint64_t maxEntries, uint32_t maxPerCell) {
     const size_t cells = size_t(bins.cells());
     std::vector<uint32_t> perCell(cells, 0);
     const auto visit = [&](auto&& onCell) {
@@ -79,11 +90,13 @@ void fillLists(PointBins& bins, size_t count, Bounds bounds, Near near, std::vec
                     for (int x = lo.x; x <= hi.x; ++x) {
                         glm::dvec3 cLo, cHi;
                         cellBox({x, y, z}, bins.cellSize, cLo, cHi);
-                        if (near(item, cLo, cHi)) onCell(cellIndex(bins, {x, y, z}), uint32_t(item));
+                        const double bound = lowerBound(item, cLo, cHi);
+                        if (bound <= reach + kListSlack)
+                            onCell(cellIndex(bins, {x, y, z}), uint32_t(item), bound, magnitudeOf(boxLo, boxHi, cLo));
                     }
         }
     };
-    visit([&](size_t cell, uint32_t) {
+    visit([&](size_t cell, uint32_t, double, double) {
         if (++entries > maxEntries) throw PointSetLimitError{"entries", entries, maxEntries};
         if (++perCell[cell] > maxPerCell) throw PointSetLimitError{"perCell", perCell[cell], maxPerCell};
     });
@@ -91,17 +104,29 @@ void fillLists(PointBins& bins, size_t count, Bounds bounds, Near near, std::vec
     for (size_t i = 0; i < cells; ++i) start[i + 1] = start[i] + perCell[i];
     items.resize(start[cells]);
     std::vector<uint32_t> next(start.begin(), start.end() - 1);
-    visit([&](size_t cell, uint32_t item) { items[next[cell]++] = item; });
+    visit([&](size_t cell, uint32_t item, double bound, double magnitude) {
+        items[next[cell]++] = {item, storedLowerBound(bound, magnitude)};
+    });
+    for (size_t i = 0; i < cells; ++i)
+        std::sort(items.begin() + start[i], items.begin() + start[i + 1], [](const PointListItem& a, const PointListItem& b) {
+            return a.lowerBoundSquared != b.lowerBoundSquared ? a.lowerBoundSquared < b.lowerBoundSquared : a.index < b.index;
+        });
+}
+
+// The nearest squared distance over one sorted list: a point whose lower bound is not below the
+// nearest so far cannot be nearer (the bound is below its float distance), nor can any after it.
+template <typename Distance>
+float nearestSquared(const std::vector<PointListItem>& items, uint32_t begin, uint32_t end, Distance distance) {
+    float nearest = std::numeric_limits<float>::max();
+    for (uint32_t i = begin; i < end; ++i) {
+        if (items[i].lowerBoundSquared >= nearest) break;
+        const float d2 = distance(items[i].index);
+        nearest = d2 < nearest ? d2 : nearest;
+    }
+    return nearest;
 }
 
 } // namespace
-
-uint32_t PointBins::largestList() const {
-    uint32_t most = 0;
-    for (size_t i = 0; i + 1 < centreStart.size(); ++i) most = std::max(most, centreStart[i + 1] - centreStart[i]);
-    for (size_t i = 0; i + 1 < segmentStart.size(); ++i) most = std::max(most, segmentStart[i + 1] - segmentStart[i]);
-    return most;
-}
 
 float centreDistanceSquared(glm::vec3 p, glm::vec3 centre) {
     const float dx = p.x - centre.x, dy = p.y - centre.y, dz = p.z - centre.z;
@@ -125,23 +150,33 @@ PointBins binPointSet(const PointSet& set, glm::ivec3 firstCell, glm::ivec3 cell
     uint64_t entries = 0;
     const double centreReach = set.centreReach, segmentReach = set.segmentReach;
     fillLists(
-        bins, set.centres.size(),
+        bins, set.centres.size(), centreReach,
         [&](size_t i, glm::dvec3& lo, glm::dvec3& hi) {
             lo = glm::dvec3(set.centres[i]) - (centreReach + kListSlack);
             hi = glm::dvec3(set.centres[i]) + (centreReach + kListSlack);
         },
-        [&](size_t i, glm::dvec3 lo, glm::dvec3 hi) { return centreNearBox(set.centres[i], lo, hi, centreReach); },
+        [&](size_t i, glm::dvec3 lo, glm::dvec3 hi) { return boxDistance(glm::dvec3(set.centres[i]), lo, hi); },
         bins.centreStart, bins.centreItems, entries, maxEntries, maxPerCell);
     fillLists(
-        bins, set.segments.size(),
+        bins, set.segments.size(), segmentReach,
         [&](size_t i, glm::dvec3& lo, glm::dvec3& hi) {
             const glm::dvec3 a(set.segments[i].from), b = a + glm::dvec3(set.segments[i].delta);
             lo = glm::min(a, b) - (segmentReach + kListSlack);
             hi = glm::max(a, b) + (segmentReach + kListSlack);
         },
-        [&](size_t i, glm::dvec3 lo, glm::dvec3 hi) { return segmentNearBox(set.segments[i], lo, hi, segmentReach); },
+        [&](size_t i, glm::dvec3 lo, glm::dvec3 hi) { return segmentBoxLowerBound(set.segments[i], lo, hi); },
         bins.segmentStart, bins.segmentItems, entries, maxEntries, maxPerCell);
     return bins;
+}
+
+PointBins binPointSetOverGrid(const PointSet& set, glm::ivec3 gridOrigin, glm::ivec3 gridSize, uint64_t maxEntries,
+                              uint32_t maxPerCell) {
+    glm::ivec3 first, count;
+    for (int a = 0; a < 3; ++a) {
+        first[a] = int32_t(floorDiv(gridOrigin[a], kPointSetCellSize));
+        count[a] = int32_t(floorDiv(int64_t(gridOrigin[a]) + gridSize[a] - 1, kPointSetCellSize) - first[a] + 1);
+    }
+    return binPointSet(set, first, count, kPointSetCellSize, maxEntries, maxPerCell);
 }
 
 glm::vec2 pointSetDistances(const PointSet& set, const PointBins& bins, glm::vec3 p) {
@@ -152,15 +187,12 @@ glm::vec2 pointSetDistances(const PointSet& set, const PointBins& bins, glm::vec
             return {set.centreReach, set.segmentReach};
     }
     const size_t index = cellIndex(bins, cell);
-    float nearestCentre = std::numeric_limits<float>::max(), nearestSegment = std::numeric_limits<float>::max();
-    for (uint32_t i = bins.centreStart[index]; i < bins.centreStart[index + 1]; ++i) {
-        const float d2 = centreDistanceSquared(p, set.centres[bins.centreItems[i]]);
-        nearestCentre = d2 < nearestCentre ? d2 : nearestCentre;
-    }
-    for (uint32_t i = bins.segmentStart[index]; i < bins.segmentStart[index + 1]; ++i) {
-        const float d2 = segmentDistanceSquared(p, set.segments[bins.segmentItems[i]]);
-        nearestSegment = d2 < nearestSegment ? d2 : nearestSegment;
-    }
+    const float nearestCentre =
+        nearestSquared(bins.centreItems, bins.centreStart[index], bins.centreStart[index + 1],
+                       [&](uint32_t i) { return centreDistanceSquared(p, set.centres[i]); });
+    const float nearestSegment =
+        nearestSquared(bins.segmentItems, bins.segmentStart[index], bins.segmentStart[index + 1],
+                       [&](uint32_t i) { return segmentDistanceSquared(p, set.segments[i]); });
     const float centre = std::sqrt(nearestCentre), segment = std::sqrt(nearestSegment);
     return {centre < set.centreReach ? centre : set.centreReach, segment < set.segmentReach ? segment : set.segmentReach};
 }
@@ -172,8 +204,8 @@ glm::bvec2 pointSetReaches(const PointSet& set, glm::dvec3 lo, glm::dvec3 hi) {
     for (int a = 0; a < 3 && covered; ++a) // the box must lie inside the bins' cells for them to decide
         covered = lo[a] >= double(bins.firstCell[a]) * bins.cellSize &&
                   hi[a] <= (double(bins.firstCell[a]) + bins.cellCount[a]) * bins.cellSize - 1;
+    glm::bvec2 reaches(false);
     if (covered) {
-        glm::bvec2 reaches(false);
         for (int z = cellLo.z; z <= cellHi.z; ++z)
             for (int y = cellLo.y; y <= cellHi.y; ++y)
                 for (int x = cellLo.x; x <= cellHi.x; ++x) {
@@ -183,15 +215,17 @@ glm::bvec2 pointSetReaches(const PointSet& set, glm::dvec3 lo, glm::dvec3 hi) {
                 }
         return reaches;
     }
-    glm::bvec2 reaches(false);
-    for (glm::vec3 c : set.centres) reaches.x = reaches.x || centreNearBox(c, lo, hi, set.centreReach);
-    for (const PointSetSegment& s : set.segments) reaches.y = reaches.y || segmentNearBox(s, lo, hi, set.segmentReach);
+    for (glm::vec3 c : set.centres)
+        reaches.x = reaches.x || boxDistance(glm::dvec3(c), lo, hi) <= set.centreReach + kListSlack;
+    for (const PointSetSegment& s : set.segments)
+        reaches.y = reaches.y || segmentBoxLowerBound(s, lo, hi) <= set.segmentReach + kListSlack;
     return reaches;
 }
 
-std::vector<int32_t> pointSetWords(std::span<const std::shared_ptr<const PointSet>> sets, glm::ivec3 firstChunk,
-                                   glm::ivec3 chunkCount, int32_t chunkSize) {
+std::vector<int32_t> pointSetWords(std::span<const std::shared_ptr<const PointSet>> sets, glm::ivec3 gridOrigin,
+                                   glm::ivec3 gridSize) {
     constexpr uint64_t kMaxWords = uint64_t(1) << 31;
+    constexpr int kHeaderWords = 12;
     std::vector<int32_t> words(sets.size(), 0);
     const auto append = [&](int32_t value) {
         if (words.size() + 1 > kMaxWords) throw PointSetLimitError{"words", words.size() + 1, kMaxWords};
@@ -201,12 +235,12 @@ std::vector<int32_t> pointSetWords(std::span<const std::shared_ptr<const PointSe
     uint64_t entries = 0;
     for (size_t s = 0; s < sets.size(); ++s) {
         const PointSet& set = *sets[s];
-        const PointBins bins = binPointSet(set, firstChunk, chunkCount, chunkSize, kMaxPointSetListEntries - entries,
-                                           kMaxPointSetPerCell);
+        const PointBins bins =
+            binPointSetOverGrid(set, gridOrigin, gridSize, kMaxPointSetListEntries - entries, kMaxPointSetPerCell);
         entries += bins.centreItems.size() + bins.segmentItems.size();
         const size_t header = words.size();
         words[s] = int32_t(header);
-        for (int i = 0; i < 5; ++i) append(0);
+        for (int i = 0; i < kHeaderWords; ++i) append(0);
         words[header] = int32_t(words.size());
         for (glm::vec3 c : set.centres) appendFloat(c.x), appendFloat(c.y), appendFloat(c.z);
         words[header + 1] = int32_t(words.size());
@@ -216,18 +250,23 @@ std::vector<int32_t> pointSetWords(std::span<const std::shared_ptr<const PointSe
             appendFloat(g.inverseLengthSquared);
         }
         const size_t centreItems = words.size();
-        for (uint32_t item : bins.centreItems) append(int32_t(item));
+        for (const PointListItem& item : bins.centreItems) append(int32_t(item.index)), appendFloat(item.lowerBoundSquared);
         const size_t segmentItems = words.size();
-        for (uint32_t item : bins.segmentItems) append(int32_t(item));
+        for (const PointListItem& item : bins.segmentItems) append(int32_t(item.index)), appendFloat(item.lowerBoundSquared);
         words[header + 2] = int32_t(words.size());
         for (size_t cell = 0; cell < size_t(bins.cells()); ++cell) {
-            append(int32_t(centreItems + bins.centreStart[cell]));
+            append(int32_t(centreItems + 2 * bins.centreStart[cell]));
             append(int32_t(bins.centreStart[cell + 1] - bins.centreStart[cell]));
-            append(int32_t(segmentItems + bins.segmentStart[cell]));
+            append(int32_t(segmentItems + 2 * bins.segmentStart[cell]));
             append(int32_t(bins.segmentStart[cell + 1] - bins.segmentStart[cell]));
         }
         words[header + 3] = std::bit_cast<int32_t>(set.centreReach);
         words[header + 4] = std::bit_cast<int32_t>(set.segmentReach);
+        words[header + 5] = std::countr_zero(uint32_t(bins.cellSize));
+        for (int a = 0; a < 3; ++a) {
+            words[header + 6 + a] = bins.firstCell[a];
+            words[header + 9 + a] = bins.cellCount[a];
+        }
     }
     if (words.empty()) words.push_back(0); // a storage buffer may not be empty
     return words;

@@ -81,7 +81,7 @@ struct VulkanExecutor::Impl {
     // `materials` is one uint per voxel beside `voxels` when the package uses materials, else a
     // one-element buffer no kernel declares; `readback` holds the densities, then the materials.
     DeviceBuffer voxels, materials, chunkTable, noiseTables, readback;
-    DeviceBuffer pointSets; // kBindingPointSets: package.pointSets binned over this run's chunk table
+    DeviceBuffer pointSets; // kBindingPointSets: package.pointSets with their per-cell lists
     // Tile skipping (kBindingTileRanges..kBindingSkipStats); small, so they exist either way.
     DeviceBuffer tileRanges, tileDirty, activeTiles, activeDispatch, skipStats;
     NonFiniteCounters nonFinite; // kBindingNonFinite and its per-stage copies
@@ -171,12 +171,12 @@ void VulkanExecutor::Impl::createBuffers() {
 
 std::vector<int32_t> VulkanExecutor::Impl::pointSetTable() const {
     try {
-        return pointSetWords(package.pointSets, layout.chunkBase, layout.chunkCount, layout.chunkSize);
+        return pointSetWords(package.pointSets, layout.gridOrigin, layout.gridSize);
     } catch (const PointSetLimitError& e) {
-        throw UserError(fmt::format("the point sets' per-chunk lists ({}^3 chunks) would need more than {} {} (at least "
-                                    "{}); use a larger chunk size, a smaller radius or fewer points",
-                                    layout.chunkSize, e.cap,
-                                    std::string_view(e.limit) == "perCell" ? "entries in one chunk's list"
+        throw UserError(fmt::format("the point sets' per-cell lists would need more than {} {} (at least {}); "
+                                    "use a smaller radius or fewer points",
+                                    e.cap,
+                                    std::string_view(e.limit) == "perCell" ? "entries in one cell's list"
                                                                            : "list entries or words",
                                     e.amount));
     }

@@ -178,24 +178,21 @@ glm::dvec3 displacedCentre(glm::dvec3 point, const CarveParams& params, uint32_t
     return point + params.curlAmplitude * m * glm::dvec3(u.x, params.yLimit * u.y, u.z);
 }
 
-PointBins binCarveChunks(const PointSet& set, glm::ivec3 firstChunk, glm::ivec3 chunkCount, int32_t chunkSize,
-                         const CarveLimits& limits) {
+PointBins binCarveCells(const PointSet& set, glm::ivec3 worldOrigin, glm::ivec3 worldSize, const CarveLimits& limits) {
     try {
-        return binPointSet(set, firstChunk, chunkCount, chunkSize, limits.maxListEntries, limits.maxPerChunk);
+        return binPointSetOverGrid(set, worldOrigin, worldSize, limits.maxListEntries, limits.maxPerCell);
     } catch (const PointSetLimitError& e) {
         if (std::string_view(e.limit) == "perCell")
-            throw LimitError("maxPerChunk", e.amount, e.cap,
-                             fmt::format("one {}^3 chunk would list this many centres or skeleton segments of the "
-                                         "carve (the points whose reach meets it) at least",
-                                         chunkSize));
-        throw LimitError("maxListEntries", e.amount, e.cap,
-                         fmt::format("the carve's per-chunk lists ({}^3 chunks) would hold at least", chunkSize));
+            throw LimitError("maxPerCell", e.amount, e.cap,
+                             fmt::format("one {}^3 cell would list this many centres or skeleton segments of the carve "
+                                         "(the points whose reach meets it) at least",
+                                         kPointSetCellSize));
+        throw LimitError("maxListEntries", e.amount, e.cap, "the carve's per-cell lists would hold at least");
     }
 }
 
 std::shared_ptr<const PointSet> carvePointSet(const Skeleton& skeleton, const CarveParams& params, uint32_t seed,
-                                              glm::ivec3 worldOrigin, glm::ivec3 worldSize, int32_t chunkSize,
-                                              const CarveLimits& limits) {
+                                              glm::ivec3 worldOrigin, glm::ivec3 worldSize, const CarveLimits& limits) {
     checkCarveParams(params);
     auto set = std::make_shared<PointSet>();
     for (glm::dvec3 point : structuralPoints(skeleton, params.pointSpacing(), limits))
@@ -209,13 +206,7 @@ std::shared_ptr<const PointSet> carvePointSet(const Skeleton& skeleton, const Ca
     forEachSegment(skeleton, [&](glm::dvec3 a, glm::dvec3 b) { set->segments.push_back(floatSegment(a, b)); });
     set->centreReach = float(centreReach(params));
     set->segmentReach = float(segmentReach(params));
-    glm::ivec3 first, count;
-    for (int a = 0; a < 3; ++a) {
-        const auto floorDiv = [](int64_t v, int64_t d) { return v >= 0 ? v / d : -((-v + d - 1) / d); };
-        first[a] = int32_t(floorDiv(worldOrigin[a], chunkSize));
-        count[a] = int32_t(floorDiv(int64_t(worldOrigin[a]) + worldSize[a] - 1, chunkSize) - first[a] + 1);
-    }
-    set->bins = binCarveChunks(*set, first, count, chunkSize, limits);
+    set->bins = binCarveCells(*set, worldOrigin, worldSize, limits);
     return set;
 }
 

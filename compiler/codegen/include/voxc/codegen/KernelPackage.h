@@ -48,9 +48,9 @@ constexpr uint32_t kBindingMaterials = 8;
 // compiler/shaders/nonfinite.glsl), declared by the kernels that may compute a non-finite density
 // (field and sweep kernels). The runtime copies it out after each stage and resets it to {0, 0, ~0u}.
 constexpr uint32_t kBindingNonFinite = 9;
-// int words: KernelPackage::pointSets binned over the run's chunk table (voxc::pointSetWords,
-// layout in compiler/shaders/lsystem_carve.glsl), declared only by field kernels that read a
-// point set; otherwise a one-element buffer.
+// int words: KernelPackage::pointSets with their per-cell lists (voxc::pointSetWords, layout in
+// compiler/shaders/lsystem_carve.glsl), declared only by field kernels that read a point set;
+// otherwise a one-element buffer.
 constexpr uint32_t kBindingPointSets = 10;
 
 constexpr uint32_t kNoKernel = UINT32_MAX;
@@ -133,7 +133,7 @@ struct KernelPackage {
     // skipped. kNoKernel: the package cannot skip tiles (every sweep runs over every anchor).
     uint32_t tileRangesKernel = kNoKernel;
     // The point sets field kernels read, `pointSetDistances(i, p)` naming entry i
-    // (codegen::pointSetsOf); the runtime bins them over its chunk table into kBindingPointSets.
+    // (codegen::pointSetsOf); the runtime uploads them with their lists into kBindingPointSets.
     std::vector<std::shared_ptr<const PointSet>> pointSets;
 };
 

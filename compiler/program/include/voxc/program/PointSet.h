@@ -3,8 +3,10 @@
 // the node's value at position p is vec2(min(D_c, centreReach), min(D_s, segmentReach)), D_c the
 // distance to the nearest centre and D_s to the nearest segment. Capping the distances at the
 // reaches makes the value independent of which points farther away are looked at, so every
-// backend may read per-cell lists of the points whose reach meets the cell (the interpreter on
-// the check-time chunk grid, Vulkan on its run's chunk table) and still compute the same floats.
+// backend reads per-cell lists of the points whose reach meets the cell (world-aligned cubes of
+// kPointSetCellSize voxels over the grid, whatever the chunk size) and still computes the same
+// floats. Each list is sorted by a conservative lower bound of its points' distances to the cell,
+// so a loop stops at the first point that cannot be nearer than the nearest so far.
 // The L-system cave carve (docs/lsystem.md, "Carving") builds one from a skeleton.
 #include <cstdint>
 #include <glm/vec2.hpp>
@@ -21,17 +23,27 @@ struct PointSetSegment {
     float inverseLengthSquared = 0.0f; // 1 / |delta|^2; 0 for a degenerate segment (its distance is to `from`)
 };
 
+// The edge of a list cell in voxels: small cells keep the lists (the loop per voxel) short.
+constexpr int32_t kPointSetCellSize = 8;
+
+// One entry of a cell's list: a centre or segment index and a lower bound of the squared distance
+// (as the backends compute it in float) from any voxel of the cell to it.
+struct PointListItem {
+    uint32_t index = 0;
+    float lowerBoundSquared = 0.0f;
+};
+
 // Per cell of a world-aligned grid of cubes (cellSize voxels, cell c holds world voxels
 // c * cellSize .. c * cellSize + cellSize - 1), the centres and segments whose reach meets the
-// cell: start[i] .. start[i + 1] index `items`, cells x fastest, then y, then z.
+// cell, sorted by lower bound (then index): start[i] .. start[i + 1] index `items`, cells x
+// fastest, then y, then z.
 struct PointBins {
     glm::ivec3 firstCell{0}, cellCount{0};
     int32_t cellSize = 1;
     std::vector<uint32_t> centreStart, segmentStart; // cells + 1 entries
-    std::vector<uint32_t> centreItems, segmentItems;
+    std::vector<PointListItem> centreItems, segmentItems;
 
     uint64_t cells() const { return uint64_t(cellCount.x) * uint64_t(cellCount.y) * uint64_t(cellCount.z); }
-    uint32_t largestList() const; // the most centres or segments one cell lists
 };
 
 struct PointSet {
@@ -39,7 +51,7 @@ struct PointSet {
     std::vector<PointSetSegment> segments;
     float centreReach = 0.0f;  // > 0
     float segmentReach = 0.0f; // > 0
-    PointBins bins;            // the interpreter's lists (binPointSet on the checked world's chunk grid)
+    PointBins bins;            // the interpreter's lists (binPointSetOverGrid on the checked world)
 };
 
 // The float operations both backends perform, in this order (lsystem_carve.glsl mirrors them with
@@ -52,6 +64,10 @@ float segmentDistanceSquared(glm::vec3 p, const PointSetSegment& segment);
 // maxPerCell in one cell's list.
 PointBins binPointSet(const PointSet& set, glm::ivec3 firstCell, glm::ivec3 cellCount, int32_t cellSize,
                       uint64_t maxEntries, uint32_t maxPerCell);
+// The bins every backend uses: kPointSetCellSize cells covering the grid gridOrigin ..
+// gridOrigin + gridSize - 1.
+PointBins binPointSetOverGrid(const PointSet& set, glm::ivec3 gridOrigin, glm::ivec3 gridSize, uint64_t maxEntries,
+                              uint32_t maxPerCell);
 
 struct PointSetLimitError {
     const char* limit; // "entries" or "perCell"
@@ -67,14 +83,14 @@ glm::vec2 pointSetDistances(const PointSet& set, const PointBins& bins, glm::vec
 glm::bvec2 pointSetReaches(const PointSet& set, glm::dvec3 lo, glm::dvec3 hi);
 
 // Bounds on the lists of one binning: list entries over all cells, and centres or segments one
-// cell lists (the length of a kernel's loop per voxel).
-constexpr uint64_t kMaxPointSetListEntries = uint64_t(1) << 26;
+// cell lists (the length of a kernel's loop per voxel, before its early exit).
+constexpr uint64_t kMaxPointSetListEntries = uint64_t(1) << 25;
 constexpr uint32_t kMaxPointSetPerCell = uint32_t(1) << 13;
 
 // The storage buffer of kBindingPointSets (layout in compiler/shaders/lsystem_carve.glsl): every
-// set binned over the chunk table firstChunk .. firstChunk + chunkCount - 1. Throws
-// PointSetLimitError past the bounds above or a buffer of 2^31 words.
-std::vector<int32_t> pointSetWords(std::span<const std::shared_ptr<const PointSet>> sets, glm::ivec3 firstChunk,
-                                   glm::ivec3 chunkCount, int32_t chunkSize);
+// set binned over the grid (binPointSetOverGrid). Throws PointSetLimitError past the bounds above
+// or a buffer of 2^31 words.
+std::vector<int32_t> pointSetWords(std::span<const std::shared_ptr<const PointSet>> sets, glm::ivec3 gridOrigin,
+                                   glm::ivec3 gridSize);
 
 } // namespace voxc

@@ -37,8 +37,8 @@ struct CarveParams {
 struct CarveLimits {
     uint64_t maxCentres = uint64_t(1) << 18;
     uint64_t maxClearanceSegments = uint64_t(1) << 20;
-    uint32_t maxPerChunk = kMaxPointSetPerCell;         // centres or segments one chunk lists (GPU loop length)
-    uint64_t maxListEntries = kMaxPointSetListEntries;  // list entries over all chunks (the runtime's bounds too)
+    uint32_t maxPerCell = kMaxPointSetPerCell;          // centres or segments one 8^3 cell lists (GPU loop length)
+    uint64_t maxListEntries = kMaxPointSetListEntries;  // list entries over all cells (the runtime's bounds too)
 };
 
 // The distance beyond which a centre or a skeleton segment changes nothing (its term of f is at
@@ -60,16 +60,14 @@ std::vector<glm::dvec3> structuralPoints(const Skeleton& skeleton, double spacin
 glm::dvec3 displacedCentre(glm::dvec3 point, const CarveParams& params, uint32_t seed);
 
 // The skeleton's displaced centres and clearance segments (skeleton and connection lines), with
-// the interpreter's lists binned over `world`'s chunk grid. Throws LimitError for more centres or
-// segments than the limits allow, and for chunk lists over maxPerChunk / maxListEntries.
+// the lists binned over the grid worldOrigin .. worldOrigin + worldSize - 1 (the same lists every
+// backend reads). Throws LimitError for more centres or segments than the limits allow, and for
+// lists over maxPerCell / maxListEntries.
 std::shared_ptr<const PointSet> carvePointSet(const Skeleton& skeleton, const CarveParams& params, uint32_t seed,
-                                              glm::ivec3 worldOrigin, glm::ivec3 worldSize, int32_t chunkSize,
-                                              const CarveLimits& limits);
+                                              glm::ivec3 worldOrigin, glm::ivec3 worldSize, const CarveLimits& limits);
 
-// Bins `set` over the chunks of a grid (the chunk table: firstChunk .. firstChunk + chunkCount - 1),
-// turning PointSetLimitError into LimitError.
-PointBins binCarveChunks(const PointSet& set, glm::ivec3 firstChunk, glm::ivec3 chunkCount, int32_t chunkSize,
-                         const CarveLimits& limits);
+// binPointSetOverGrid, turning PointSetLimitError into LimitError.
+PointBins binCarveCells(const PointSet& set, glm::ivec3 worldOrigin, glm::ivec3 worldSize, const CarveLimits& limits);
 
 // The carve's field (nodes and Float root; the caller names it and locates its nodes).
 Field carveField(std::shared_ptr<const PointSet> set, const CarveParams& params, uint32_t seed);
