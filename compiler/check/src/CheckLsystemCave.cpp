@@ -12,6 +12,7 @@
 #include "voxc/generators/lsystem/Expand.h"
 
 #include <fmt/format.h>
+#include <glm/common.hpp>
 
 namespace voxc::check {
 
@@ -62,6 +63,27 @@ const CheckedLsystem* readLsystemKey(Context& context, const ast::Assignment& a,
     context.diagnostics.error("E0002", a.value.loc,
                               fmt::format("no lsystem block named '{}'{}", expr->name, suggestOrList(expr->name, names)));
     return nullptr;
+}
+
+// W0209: no centre or segment reaches the grid, so the feature leaves every voxel as it is.
+void warnCarvesNothing(Context& context, SourceLoc loc, const std::string& name, const lsystem::Skeleton& skeleton,
+                       const World& world) {
+    if (skeleton.segments.empty()) {
+        context.diagnostics.warning("W0209", loc,
+                                    fmt::format("lsystem '{}' draws no segment, so this carve changes nothing", name));
+        return;
+    }
+    glm::dvec3 lo = skeleton.segments.front().from, hi = lo;
+    for (const lsystem::Segment& s : skeleton.segments)
+        for (glm::dvec3 p : {s.from, s.to}) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    const glm::ivec3 last = world.origin + world.size - 1;
+    context.diagnostics.warning(
+        "W0209", loc,
+        fmt::format("the skeleton of lsystem '{}' ([{}, {}, {}] to [{}, {}, {}]) is too far from the grid "
+                    "([{}, {}, {}] to [{}, {}, {}]) for this carve to reach it; move its 'start'",
+                    name, formatNumber(lo.x), formatNumber(lo.y), formatNumber(lo.z), formatNumber(hi.x),
+                    formatNumber(hi.y), formatNumber(hi.z), world.origin.x, world.origin.y, world.origin.z, last.x,
+                    last.y, last.z));
 }
 
 } // namespace
@@ -116,6 +138,8 @@ std::optional<CheckedLsystemCave> checkLsystemCave(Context& context, const ast::
         lsystem::Skeleton skeleton = lsystem::interpret(definition, expansion.symbols, expansion.types);
         lsystem::connectBranches(skeleton, net->connect, definition.seed, definition.limits);
         auto set = lsystem::carvePointSet(skeleton, params, world.seed, world.origin, world.size, {});
+        if (set->bins.centreItems.empty() && set->bins.segmentItems.empty())
+            warnCarvesNothing(context, lsystemKey->value.loc, net->name, skeleton, world);
         out.field = lsystem::carveField(std::move(set), params, world.seed);
     } catch (const lsystem::LimitError& e) {
         context.diagnostics.error("E0012", lsystemKey->value.loc, fmt::format("lsystem '{}': {}", net->name, e.what()));

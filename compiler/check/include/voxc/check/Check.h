@@ -4,7 +4,7 @@
 // beyond Limits::maxNesting stop here), folds constants, validates every block and key,
 // converts printed symbol/transform layouts into Program's cell order, builds the pipeline,
 // checks the lsystem blocks, checks its work estimate against Limits::maxWork and finally runs the warning analyses
-// (W0201-W0208).
+// (W0201-W0209).
 #include "voxc/generators/lsystem/Connect.h"
 #include "voxc/generators/lsystem/Definition.h"
 #include "voxc/program/Program.h"
