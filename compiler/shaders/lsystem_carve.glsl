@@ -8,8 +8,9 @@
 //
 // Buffer (voxc::pointSetWords), ints, floats stored as their bits:
 //   words[s]          header offset h of point set s
-//   words[h + 0..11]  centre data offset, segment data offset, cell table offset, centre reach,
-//                     segment reach, log2 cell size, first cell xyz, cell counts xyz
+//   words[h + 0..12]  centre data offset, segment data offset, cell table offset, centre reach,
+//                     segment reach, log2 cell size, first cell xyz, cell counts xyz, clearance
+//                     (PointSet::clearance, for stages after the carve that keep it air)
 //   centre data       x, y, z per centre
 //   segment data      from.xyz, delta.xyz, 1 / |delta|^2 per segment
 //   items             (point index, lower bound of the squared distance) pairs

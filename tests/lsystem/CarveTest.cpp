@@ -123,6 +123,7 @@ TEST(CarveTest, ClearanceHoldsForRandomGrammarsAndNoise) {
                 for (int x = 0; x < kSize.x; ++x) {
                     if (skeletonDistance(skeleton, glm::dvec3(x, y, z)) >= params.clearance - 1e-4) continue;
                     ++checked;
+                    ASSERT_TRUE(pointSetClearance(*set, glm::vec3(x, y, z)));
                     const float f = evaluator.density({x, y, z});
                     // subtract: d = min(d, 1 - f) < 0.5 for any d
                     ASSERT_LT(1.0f - f, 0.5f) << "seed " << seed << " at " << x << "," << y << "," << z;

@@ -197,6 +197,10 @@ glm::vec2 pointSetDistances(const PointSet& set, const PointBins& bins, glm::vec
     return {centre < set.centreReach ? centre : set.centreReach, segment < set.segmentReach ? segment : set.segmentReach};
 }
 
+bool pointSetClearance(const PointSet& set, glm::vec3 p) {
+    return pointSetDistances(set, set.bins, p).y < set.clearance;
+}
+
 glm::bvec2 pointSetReaches(const PointSet& set, glm::dvec3 lo, glm::dvec3 hi) {
     const PointBins& bins = set.bins;
     glm::ivec3 cellLo, cellHi;
@@ -225,7 +229,7 @@ glm::bvec2 pointSetReaches(const PointSet& set, glm::dvec3 lo, glm::dvec3 hi) {
 std::vector<int32_t> pointSetWords(std::span<const std::shared_ptr<const PointSet>> sets, glm::ivec3 gridOrigin,
                                    glm::ivec3 gridSize) {
     constexpr uint64_t kMaxWords = uint64_t(1) << 31;
-    constexpr int kHeaderWords = 12;
+    constexpr int kHeaderWords = 13;
     std::vector<int32_t> words(sets.size(), 0);
     const auto append = [&](int32_t value) {
         if (words.size() + 1 > kMaxWords) throw PointSetLimitError{"words", words.size() + 1, kMaxWords};
@@ -262,6 +266,7 @@ std::vector<int32_t> pointSetWords(std::span<const std::shared_ptr<const PointSe
         }
         words[header + 3] = std::bit_cast<int32_t>(set.centreReach);
         words[header + 4] = std::bit_cast<int32_t>(set.segmentReach);
+        words[header + 12] = std::bit_cast<int32_t>(set.clearance);
         words[header + 5] = std::countr_zero(uint32_t(bins.cellSize));
         for (int a = 0; a < 3; ++a) {
             words[header + 6 + a] = bins.firstCell[a];

@@ -206,6 +206,7 @@ std::shared_ptr<const PointSet> carvePointSet(const Skeleton& skeleton, const Ca
     forEachSegment(skeleton, [&](glm::dvec3 a, glm::dvec3 b) { set->segments.push_back(floatSegment(a, b)); });
     set->centreReach = float(centreReach(params));
     set->segmentReach = float(segmentReach(params));
+    set->clearance = float(params.clearance);
     set->bins = binCarveCells(*set, worldOrigin, worldSize, limits);
     return set;
 }

@@ -51,6 +51,10 @@ struct PointSet {
     std::vector<PointSetSegment> segments;
     float centreReach = 0.0f;  // > 0
     float segmentReach = 0.0f; // > 0
+    // The field built from the set makes air within this of a segment (the carve's r_clear; every
+    // voxel closer than it by 1e-4 is air); later stages that must keep those voxels air ask
+    // pointSetClearance. 0: none.
+    float clearance = 0.0f;
     PointBins bins;            // the interpreter's lists (binPointSetOverGrid on the checked world)
 };
 
@@ -77,6 +81,10 @@ struct PointSetLimitError {
 
 // The node's value at p from `bins` (a position outside the bins' cells: both reaches).
 glm::vec2 pointSetDistances(const PointSet& set, const PointBins& bins, glm::vec3 p);
+
+// Whether p lies within set.clearance of a segment, from pointSetDistances's float distance (a
+// kernel compares pointSetDistances(set, p).y with the header's clearance word the same way).
+bool pointSetClearance(const PointSet& set, glm::vec3 p);
 
 // Whether some centre (x) or segment (y) could lie within its reach of a point of the box
 // [lo, hi] (conservative: true may be wrong, false never is).
