@@ -14,7 +14,8 @@
 # only. --keep-going runs libFuzzer in fork mode and carries on past crashes, hangs and OOMs (each
 # saved under the build tree's fuzz/artifacts/TARGET/). --no-build runs the targets as built (for
 # several runs at once on one tree). Prints executions, coverage and findings per target and
-# exits non-zero on any crash, hang (> 1 s per input), OOM or sanitizer report.
+# exits non-zero on any crash, hang (> 1 s per input; VOXC_FUZZ_TIMEOUT=SECONDS on a machine too busy
+# for that to mean a hang), OOM or sanitizer report.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 fuzz_build=${VOXC_FUZZ_BUILD_DIR:-$root/build-fuzz}
@@ -85,7 +86,7 @@ for t in "${targets[@]}"; do
     corpus=$corpus_root/$t artifacts=$work/artifacts/$t/ log=$work/$t.log
     [ $fresh -eq 0 ] || log=$work/$t-fresh.log
     mkdir -p "$corpus" "$artifacts"
-    options=(-dict="$fuzz_build/tests/fuzz/vox.dict" -timeout=1 -rss_limit_mb=2048 -max_len=4096
+    options=(-dict="$fuzz_build/tests/fuzz/vox.dict" -timeout="${VOXC_FUZZ_TIMEOUT:-1}" -rss_limit_mb=2048 -max_len=4096
              -max_total_time="$seconds" -runs="$runs" -artifact_prefix="$artifacts" -print_final_stats=1)
     [ $keep_going -eq 0 ] || options+=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
     status=0 started=$SECONDS

@@ -2,7 +2,7 @@
 #include "CompileCases.h"
 
 #include "voxc/check/Check.h"
-#include "voxc/codegen/Codegen.h"
+#include "voxc/stages/Pipeline.h"
 #include "voxc/core/Errors.h"
 
 #include <fmt/format.h>
@@ -60,7 +60,7 @@ void registerCase(JsonReporter& reporter, const std::string& caseName, int rules
     auto shared = std::make_shared<const Program>(std::move(program));
     const std::string name = fmt::format("{}/{}", caseName, rules);
     benchmark::RegisterBenchmark(name.c_str(), [shared](benchmark::State& state) {
-        for (auto _ : state) benchmark::DoNotOptimize(codegen::compileProgram(*shared).kernels.data());
+        for (auto _ : state) benchmark::DoNotOptimize(compileProgram(*shared).kernels.data());
     })->Unit(benchmark::kMillisecond)->UseRealTime();
     reporter.describe(name + "/real_time", {caseName, rules, "host", "cpu (1 thread)"});
 }
@@ -69,7 +69,7 @@ void registerCase(JsonReporter& reporter, const std::string& caseName, int rules
 
 void registerCompileCases(JsonReporter& reporter) {
     // Warm-up: glslang's process initialisation and the shader templates, outside the timings.
-    codegen::compileProgram(rulesProgram(1, 1, {2, 2, 2}));
+    compileProgram(rulesProgram(1, 1, {2, 2, 2}));
     registerCase(reporter, "compile_8cube_rules", 8, rulesProgram(1, 8, {8, 8, 8}));
     registerCase(reporter, "compile_8cube_rules", 32, rulesProgram(4, 8, {8, 8, 8}));
     registerCase(reporter, "compile_16cell_rules", 256, rulesProgram(1, 256, {4, 2, 2}));

@@ -12,7 +12,7 @@
 #include "LsystemCases.h"
 #include "TerrainCases.h"
 
-#include "voxc/codegen/Codegen.h"
+#include "voxc/stages/Pipeline.h"
 #include "voxc/core/Errors.h"
 #include "voxc/interp/Interpreter.h"
 #include "voxc/vulkan/Context.h"
@@ -42,7 +42,7 @@ void registerVulkan(bench::JsonReporter& reporter, VulkanContext& context, const
     auto executor = std::make_shared<std::unique_ptr<VulkanExecutor>>();
     benchmark::RegisterBenchmark(name.c_str(), [&context, program, executor](benchmark::State& state) {
         if (!*executor) {
-            *executor = std::make_unique<VulkanExecutor>(context, codegen::compileProgram(*program, {}));
+            *executor = std::make_unique<VulkanExecutor>(context, compileProgram(*program, {}));
             std::cerr << fmt::format("vulkan setup (codegen + pipelines): {:.1f} ms\n",
                                      (*executor)->setupMs());
         }

@@ -4,7 +4,8 @@
 // (glslang copies every call argument into a variable of its own, so they grow with the written
 // cells). Counts, never times.
 #include "ProgramText.h"
-#include "voxc/codegen/Codegen.h"
+#include "voxc/stages/Pipeline.h"
+#include "voxc/stages/StageKind.h"
 
 #include <algorithm>
 #include <gtest/gtest.h>
@@ -38,7 +39,9 @@ Program eightCubeProgram(int rules) {
     Grammar grammar = test::makeGrammar("g", {32, 32, 32}, list);
     grammar.clampMin = 0.0f; // every write is clamped: more code per cell
     grammar.clampMax = 1.0f;
-    return test::makeProgram({32, 32, 32}, {grammar});
+    Program program = test::makeProgram({32, 32, 32}, {grammar});
+    stages::describePipeline(program);
+    return program;
 }
 
 // Function-storage OpVariables of a module (SPIRV-Tools' parser).
@@ -62,8 +65,8 @@ TEST(codegen_CodeSize, TheLargestSweepTheLimitsAllowFitsSpirvsVariableLimit) {
     const auto sweepVariables = [](int rules) {
         const KernelPackage package = compileProgram(eightCubeProgram(rules));
         for (const StagePlan& stage : package.stages)
-            if (stage.kind == Stage::Kind::Grammar)
-                return double(functionVariables(package.kernels.at(stage.grammar.sweeps.at(0).kernel).spirv));
+            if (stage.grammar)
+                return double(functionVariables(package.kernels.at(stage.grammar->sweeps.at(0).kernel).spirv));
         ADD_FAILURE() << "no grammar stage";
         return 0.0;
     };

@@ -2,7 +2,7 @@
 // ir.txt (the IR after all passes) and one <kernel>.comp per kernel.
 // scripts/update-codegen-goldens.sh rewrites them (VOXC_UPDATE_GOLDENS=1).
 #include "SamplePrograms.h"
-#include "voxc/codegen/Codegen.h"
+#include "voxc/stages/Pipeline.h"
 
 #ifdef VOXC_HAVE_CHECK
 #include "voxc/check/Check.h"

@@ -1,7 +1,7 @@
 // The manifest is a contract: what it says each kernel declares is read back from the written
 // .spv files with SPIRV-Tools' parser (independently of voxc's own reading) and compared.
 #include "SamplePrograms.h"
-#include "voxc/codegen/Codegen.h"
+#include "voxc/stages/Pipeline.h"
 #include "voxc/codegen/PackageWriter.h"
 #ifdef VOXC_HAVE_CHECK
 #include "voxc/check/Check.h"

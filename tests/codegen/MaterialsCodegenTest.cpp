@@ -2,7 +2,8 @@
 // kernels carry their stage's material, paint boxes are skipped where nothing can change, and
 // the manifest records it all.
 #include "SamplePrograms.h"
-#include "voxc/codegen/Codegen.h"
+#include "voxc/codegen/PackageWriter.h"
+#include "voxc/stages/Pipeline.h"
 
 #include <gtest/gtest.h>
 
@@ -34,8 +35,7 @@ TEST(codegen_Materials, FieldKernelsAndStagesCarryTheMaterial) {
         {"half_union_moss", 3}, {"ramp_subtract_sand", 2}, {"slope_intersect_none", 0}, {"half_paint_rock", 1}};
     std::vector<std::pair<std::string, std::optional<uint8_t>>> actual;
     for (const StagePlan& stage : package.stages)
-        if (stage.kind == Stage::Kind::Field)
-            actual.push_back({package.kernels.at(stage.fieldKernel).name, stage.fieldMaterial});
+        if (stage.kind == "field") actual.push_back({package.kernels.at(stage.gridKernel).name, stage.material});
     EXPECT_EQ(actual, expected);
     EXPECT_NE(kernelNamed(package, "half_paint_rock").glsl.find("materials.material[address] = 1u;"), std::string::npos);
     EXPECT_NE(kernelNamed(package, "slope_intersect_none").glsl.find("if (wins && result >= 0.5) materials.material[address] = 0u;"),
@@ -58,9 +58,9 @@ TEST(codegen_Materials, PaintBoxesAreUnchangedWhereNothingIsPainted) {
     Program program = test::materialProgram();
     const KernelPackage package = compileProgram(program);
     const StagePlan& paint = package.stages.back();
-    ASSERT_EQ(paint.fieldMode, FieldMode::Paint);
+    ASSERT_FALSE(paint.writesDensities); // a paint stage
     size_t kept = 0, skipped = 0;
-    for (const FieldBox& box : paint.fieldBoxes) {
+    for (const FieldBox& box : paint.gridBoxes) {
         if (!box.constant) continue;
         // half is 0.8 (painted where solid; densities unknown after the grammar) or 0.2 (never painted).
         EXPECT_EQ(box.unchanged, box.value < 0.5f);
@@ -71,7 +71,7 @@ TEST(codegen_Materials, PaintBoxesAreUnchangedWhereNothingIsPainted) {
     // Straight after a start of air every density is 0: nothing is painted anywhere.
     program.start.resize(1);
     program.pipeline = {program.pipeline.front(), program.pipeline.back()};
-    for (const FieldBox& box : compileProgram(program).stages.back().fieldBoxes)
+    for (const FieldBox& box : compileProgram(program).stages.back().gridBoxes)
         EXPECT_EQ(box.unchanged, box.constant);
 }
 

@@ -3,7 +3,7 @@
 // nothing, and a directory voxc did not write is refused.
 #include "SamplePrograms.h"
 #include "PackageTree.h"
-#include "voxc/codegen/Codegen.h"
+#include "voxc/stages/Pipeline.h"
 #include "voxc/codegen/PackageWriter.h"
 #include "voxc/core/Errors.h"
 #include "voxc/core/TempFiles.h"

@@ -1,6 +1,6 @@
 #include "SamplePrograms.h"
 #include "PackageTree.h"
-#include "voxc/codegen/Codegen.h"
+#include "voxc/stages/Pipeline.h"
 #include "voxc/codegen/PackageWriter.h"
 #ifdef VOXC_HAVE_CHECK
 #include "voxc/check/Check.h"
@@ -173,7 +173,7 @@ TEST_F(codegen_Package, ArchUnionSkipsChunksItCannotChange) {
     ASSERT_EQ(package.stages.size(), 2u);
     // The start box writes 1 over 0, so union with the arch's exact 0 far from it changes nothing.
     size_t evaluated = 0, unchanged = 0;
-    for (const FieldBox& box : package.stages[1].fieldBoxes) {
+    for (const FieldBox& box : package.stages[1].gridBoxes) {
         evaluated += !box.constant;
         unchanged += box.unchanged;
         if (box.unchanged) EXPECT_EQ(box.value, 0.0f);
@@ -191,9 +191,13 @@ TEST_F(codegen_Package, FieldStagesAfterASetSkipChunksTheyCannotChange) {
     const KernelPackage package = compileProgram(*checked.program);
     for (const char* name : {"bridge", "grotto"}) {
         const auto stage = std::find_if(package.stages.begin(), package.stages.end(),
-                                        [&](const StagePlan& s) { return s.fieldName == name; });
+                                        [&](const StagePlan& s) {
+                                            const std::pair<std::string, std::string> field{"field", name};
+                                            return std::find(s.attributes.begin(), s.attributes.end(), field) !=
+                                                   s.attributes.end();
+                                        });
         ASSERT_NE(stage, package.stages.end()) << name;
-        const size_t unchanged = size_t(std::count_if(stage->fieldBoxes.begin(), stage->fieldBoxes.end(),
+        const size_t unchanged = size_t(std::count_if(stage->gridBoxes.begin(), stage->gridBoxes.end(),
                                                       [](const FieldBox& box) { return box.unchanged; }));
         EXPECT_GT(unchanged, 0u) << name;
     }

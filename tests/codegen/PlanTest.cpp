@@ -1,6 +1,7 @@
 #include "SamplePrograms.h"
-#include "voxc/codegen/Codegen.h"
+#include "voxc/stages/Pipeline.h"
 #include "voxc/program/Semantics.h"
+#include "voxc/stages/StageKind.h"
 
 #include <gtest/gtest.h>
 
@@ -23,18 +24,19 @@ TEST(codegen_Plan, OneKernelPerSweepAndPhasesFromSemantics) {
                                         "smooth_sweep0_active_tiles", "tile_ranges"}));
     EXPECT_EQ(package.tileRangesKernel, 8u);
     ASSERT_EQ(package.stages.size(), 3u);
-    EXPECT_EQ(package.stages[0].kind, Stage::Kind::Start);
-    EXPECT_EQ(package.kernels[package.stages[0].startKernel].name, "start");
+    EXPECT_EQ(package.stages[0].kind, "start");
+    EXPECT_EQ(package.kernels[package.stages[0].gridKernel].name, "start");
     for (size_t g = 0; g < 2; ++g) {
         const StagePlan& stage = package.stages[g + 1];
         const Grammar& grammar = program.grammars[g];
-        ASSERT_EQ(stage.kind, Stage::Kind::Grammar);
-        EXPECT_EQ(stage.grammar.name, grammar.name);
-        EXPECT_EQ(stage.grammar.iterations, uint32_t(grammar.iterations));
+        ASSERT_EQ(stage.kind, "grammar");
+        ASSERT_TRUE(stage.grammar);
+        EXPECT_EQ(stage.grammar->name, grammar.name);
+        EXPECT_EQ(stage.grammar->iterations, uint32_t(grammar.iterations));
         const std::vector<Sweep> sweeps = orderSweeps(grammar);
-        ASSERT_EQ(stage.grammar.sweeps.size(), sweeps.size());
+        ASSERT_EQ(stage.grammar->sweeps.size(), sweeps.size());
         for (size_t s = 0; s < sweeps.size(); ++s) {
-            const SweepPlan& plan = stage.grammar.sweeps[s];
+            const SweepPlan& plan = stage.grammar->sweeps[s];
             EXPECT_EQ(package.kernels.at(plan.kernel).name, grammar.name + "_sweep" + std::to_string(s));
             // smooth's second sweep has no live rule, so nothing to classify tiles for.
             if (g == 1 && s == 1) {
@@ -62,14 +64,14 @@ TEST(codegen_Plan, OneKernelPerSweepAndPhasesFromSemantics) {
 
 TEST(codegen_Plan, GrammarRunTwiceSharesItsKernels) {
     Program program = test::sampleProgram();
-    program.pipeline.push_back(Stage{Stage::Kind::Grammar, 0});
+    program.pipeline.push_back(stages::makeStage(program, Stage::Kind::Grammar, 0));
     const KernelPackage package = compileProgram(program);
     EXPECT_EQ(package.kernels.size(), 9u);
     ASSERT_EQ(package.stages.size(), 4u);
-    EXPECT_EQ(package.stages[3].grammar.name, "overhang");
-    EXPECT_EQ(package.stages[3].grammar.sweeps.at(0).kernel, package.stages[1].grammar.sweeps.at(0).kernel);
-    EXPECT_EQ(package.stages[3].grammar.sweeps.at(0).activeTilesKernel,
-              package.stages[1].grammar.sweeps.at(0).activeTilesKernel);
+    EXPECT_EQ(package.stages[3].grammar->name, "overhang");
+    EXPECT_EQ(package.stages[3].grammar->sweeps.at(0).kernel, package.stages[1].grammar->sweeps.at(0).kernel);
+    EXPECT_EQ(package.stages[3].grammar->sweeps.at(0).activeTilesKernel,
+              package.stages[1].grammar->sweeps.at(0).activeTilesKernel);
 }
 
 TEST(codegen_Plan, SweepKernelsCarryTheirRulesAndWindow) {

@@ -1,6 +1,7 @@
 #include "ProgramText.h"
 #include "SamplePrograms.h"
-#include "voxc/codegen/Codegen.h"
+#include "voxc/stages/Pipeline.h"
+#include "voxc/stages/StageKind.h"
 #include "voxc/codegen/Spirv.h"
 #include "voxc/core/Errors.h"
 
@@ -53,7 +54,8 @@ TEST(codegen_Spirv, CellsWithMoreThan32PredicatesUseSeveralMasks) {
     std::vector<Rule> rules;
     for (int k = 0; k < 40; ++k)
         rules.push_back(test::makeRule(fmt::format("r{}", k), {fmt::format("EQ {}", k)}, {"SET 1"}));
-    const Program program = test::makeProgram({8, 8, 8}, {test::makeGrammar("many", {8, 8, 8}, rules)});
+    Program program = test::makeProgram({8, 8, 8}, {test::makeGrammar("many", {8, 8, 8}, rules)});
+    stages::describePipeline(program);
     const KernelPackage package = compileProgram(program);
     const Kernel& kernel = package.kernels.at(1);
     EXPECT_NE(kernel.glsl.find("uint pass0_1 = ((cell0 == 32.0) ? 0x1u : 0u)"), std::string::npos) << kernel.glsl;

@@ -6,7 +6,7 @@
 #include "voxc/builtins/Functions.h"
 #include "GridCompare.h"
 #include "voxc/check/Check.h"
-#include "voxc/codegen/Codegen.h"
+#include "voxc/stages/Pipeline.h"
 #include "voxc/grid/Grid.h"
 #include "voxc/interp/Interpreter.h"
 #include "voxc/vulkan/Context.h"
@@ -53,7 +53,7 @@ TEST_P(InterpVsVulkan, BitIdenticalAtEveryChunkSize) {
     for (int chunk : {8, 16, 32}) {
         SCOPED_TRACE(fmt::format("chunk {}", chunk));
         program.world.chunkSize = chunk;
-        VulkanExecutor executor(lavapipe(), codegen::compileProgram(program, {}));
+        VulkanExecutor executor(lavapipe(), compileProgram(program, {}));
         const DenseGrid actual = executor.run().grid.toDense();
         EXPECT_EQ(test::countVoxelDifferences(expected, actual), 0u);
     }
@@ -72,7 +72,7 @@ TEST(InterpVsVulkanFields, FieldsWithinRecordTolerance) {
     for (int chunk : {8, 32}) {
         SCOPED_TRACE(fmt::format("chunk {}", chunk));
         program.world.chunkSize = chunk;
-        VulkanExecutor executor(lavapipe(), codegen::compileProgram(program, {}));
+        VulkanExecutor executor(lavapipe(), compileProgram(program, {}));
         const DenseGrid actual = executor.run().grid.toDense();
         float largest = 0.0f;
         const glm::ivec3 size = expected.size();

@@ -5,7 +5,7 @@
 #include "GridCompare.h"
 #include "SamplePrograms.h"
 #include "voxc/check/Check.h"
-#include "voxc/codegen/Codegen.h"
+#include "voxc/stages/Pipeline.h"
 #include "voxc/interp/Interpreter.h"
 #include "voxc/vulkan/Context.h"
 #include "voxc/vulkan/Executor.h"
@@ -28,7 +28,7 @@ std::set<int> materialsIn(const DenseGrid& grid) {
 }
 
 DenseGrid runOnVulkan(const Program& program, const ExecutorOptions& options = {}) {
-    VulkanExecutor executor(lavapipe(), codegen::compileProgram(program, {}), options);
+    VulkanExecutor executor(lavapipe(), compileProgram(program, {}), options);
     return executor.run().grid.toDense();
 }
 
@@ -70,7 +70,7 @@ TEST(e2e_Materials, ValidationLayerReportsNothing) {
     VulkanContext context(ContextOptions{.device = "lavapipe", .validation = true});
     const Program program = test::materialProgram(false);
     const DenseGrid expected = interpret(program);
-    const KernelPackage package = codegen::compileProgram(program, {});
+    const KernelPackage package = compileProgram(program, {});
     for (const bool staged : {false, true}) {
         ExecutorOptions options;
         options.alwaysStage = staged;
@@ -108,7 +108,7 @@ TEST(e2e_Materials, ProgramWithoutMaterialsReadsBackNone) {
 // Run twice on one executor: the second run starts from cleared materials again.
 TEST(e2e_Materials, RepeatedRunsClearMaterials) {
     const Program program = test::materialProgram(false);
-    VulkanExecutor executor(lavapipe(), codegen::compileProgram(program, {}));
+    VulkanExecutor executor(lavapipe(), compileProgram(program, {}));
     const DenseGrid first = executor.run().grid.toDense();
     const DenseGrid second = executor.run().grid.toDense();
     EXPECT_EQ(test::countVoxelDifferences(first, second), 0u);

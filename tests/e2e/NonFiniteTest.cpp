@@ -6,7 +6,7 @@
 #include "GridCompare.h"
 #include "NonFiniteReport.h"
 #include "voxc/check/Check.h"
-#include "voxc/codegen/Codegen.h"
+#include "voxc/stages/Pipeline.h"
 #include "voxc/interp/Interpreter.h"
 #include "voxc/vulkan/Context.h"
 #include "voxc/vulkan/Executor.h"
@@ -82,7 +82,7 @@ TEST(NonFinite, VulkanCountsWhatTheInterpreterCounts) {
     const Program program = nonFiniteCase();
     std::vector<NonFiniteCount> expected;
     const DenseGrid interpreted = interpret(program, InterpOptions{.nonFinite = &expected});
-    const KernelPackage package = codegen::compileProgram(program, {});
+    const KernelPackage package = compileProgram(program, {});
     for (const ExecutorOptions& options : {ExecutorOptions{}, ExecutorOptions{.alwaysStage = true},
                                            ExecutorOptions{.skipInactiveTiles = false}}) {
         SCOPED_TRACE(fmt::format("staged {}, skipping tiles {}", options.alwaysStage, options.skipInactiveTiles));
@@ -113,7 +113,7 @@ TEST(NonFinite, InterpAndRunReportTheSameWarnings) {
     for (const Stage& stage : program.pipeline) pipelineLocs.push_back(stage.loc);
     const std::string interpLines = driver::formatNonFiniteWarnings(program, "nonfinite.vox", pipelineLocs, counts);
 
-    const KernelPackage package = codegen::compileProgram(program, {});
+    const KernelPackage package = compileProgram(program, {});
     VulkanExecutor executor(lavapipe(), package);
     const RunResult result = executor.run();
     std::vector<SourceLoc> packageLocs;
@@ -135,7 +135,7 @@ TEST(NonFinite, InterpAndRunReportTheSameWarnings) {
 // The counters restart with every run of an executor.
 TEST(NonFinite, CountsDoNotAccumulateOverRuns) {
     const Program program = nonFiniteCase();
-    VulkanExecutor executor(lavapipe(), codegen::compileProgram(program, {}));
+    VulkanExecutor executor(lavapipe(), compileProgram(program, {}));
     const std::vector<NonFiniteCount> first = executor.run().nonFinite;
     const std::vector<NonFiniteCount> second = executor.run().nonFinite;
     ASSERT_EQ(first.size(), second.size());

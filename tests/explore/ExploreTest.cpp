@@ -4,6 +4,7 @@
 #include "voxc/explore/Explore.h"
 #include "voxc/explore/Report.h"
 #include "voxc/interp/Interpreter.h"
+#include "voxc/stages/Pipeline.h"
 
 #include <algorithm>
 #include <fmt/format.h>

@@ -207,8 +207,8 @@ KernelPackage packageFor(const std::string& source) {
     kernel.localSize[2] = 8;
     package.kernels.push_back(kernel);
     StagePlan start;
-    start.kind = Stage::Kind::Start;
-    start.startKernel = 0;
+    start.kind = "start";
+    start.gridKernel = 0;
     package.stages.push_back(start);
     return package;
 }

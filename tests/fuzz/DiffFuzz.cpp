@@ -13,7 +13,7 @@
 // testing nothing). Programs the checker rejects are counted, not compared.
 #include "ProgramGenerator.h"
 #include "voxc/check/Check.h"
-#include "voxc/codegen/Codegen.h"
+#include "voxc/stages/Pipeline.h"
 #include "voxc/core/Errors.h"
 #include "voxc/grid/Grid.h"
 #include "voxc/interp/Interpreter.h"
@@ -95,7 +95,7 @@ std::optional<std::string> compare(const std::string& name, const std::string& t
     }
     try {
         const voxc::DenseGrid expected = voxc::interpret(*checked.program);
-        voxc::VulkanExecutor executor(lavapipe(), voxc::codegen::compileProgram(*checked.program));
+        voxc::VulkanExecutor executor(lavapipe(), voxc::compileProgram(*checked.program));
         const voxc::DenseGrid actual = executor.run().grid.toDense();
         ++tally.compared;
         tally.voxels += expected.data().size();

@@ -2,15 +2,16 @@
 // printed after each) and every kernel's GLSL is generated, with each field stage's chunk boxes.
 // glslang and SPIR-V validation cost far more than the rest, so only a sample of the inputs
 // (chosen by a hash of the bytes, so a reproducer replays the same way) goes through the whole
-// codegen::compileProgram. A Program the checker accepted must lower and compile: any exception
+// compileProgram. A Program the checker accepted must lower and compile: any exception
 // is a finding.
 #include "FuzzInput.h"
-#include "KernelSources.h"
+#include "voxc/codegen/KernelSources.h"
 #include "voxc/check/Check.h"
-#include "voxc/codegen/Codegen.h"
+#include "voxc/stages/Pipeline.h"
 #include "voxc/ir/Lower.h"
 #include "voxc/ir/Ir.h"
 
+#include <algorithm>
 #include <string_view>
 
 namespace {
@@ -26,20 +27,14 @@ uint32_t hashBytes(const uint8_t* data, size_t size) {
 void generateGlsl(const voxc::ir::IrModule& module) {
     using namespace voxc::codegen;
     const std::string_view sourceName = "fuzz.vox";
+    if (std::any_of(module.pipeline.begin(), module.pipeline.end(),
+                    [](const voxc::Stage& stage) { return stage.kind == voxc::Stage::Kind::Start; }))
+        (void)startKernelSource(module, sourceName);
     for (const voxc::Stage& stage : module.pipeline) {
-        switch (stage.kind) {
-        case voxc::Stage::Kind::Start:
-            (void)startKernelSource(module, sourceName);
-            break;
-        case voxc::Stage::Kind::Field: {
-            const voxc::ir::IrField& field = module.fields.at(stage.index);
-            (void)fieldBoxes(module, field, stage.mode, stage.material, std::nullopt);
-            (void)fieldKernelSource(module, field, stage.mode, stage.material, {stage}, field.name, sourceName);
-            break;
-        }
-        case voxc::Stage::Kind::Grammar:
-            break;
-        }
+        if (stage.kind != voxc::Stage::Kind::Field) continue;
+        const voxc::ir::IrField& field = module.fields.at(stage.index);
+        (void)fieldBoxes(module, field, stage.mode, stage.material, std::nullopt);
+        (void)fieldKernelSource(module, field, stage.mode, stage.material, {stage}, field.name, sourceName);
     }
     for (const voxc::ir::IrGrammar& grammar : module.grammars)
         for (const voxc::ir::IrSweep& sweep : grammar.sweeps) {
@@ -54,7 +49,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const voxc::CheckResult result = voxc::checkSource(voxc::fuzz::sourceFromBytes(data, size));
     if (!result.program) return 0;
     if (hashBytes(data, size) % kCompileOneIn == 0) {
-        (void)voxc::codegen::compileProgram(*result.program);
+        (void)voxc::compileProgram(*result.program);
         return 0;
     }
     const voxc::ir::IrModule module = voxc::ir::lowerProgram(

@@ -3,6 +3,7 @@
 #include "voxc/check/Check.h"
 #include "voxc/interp/FieldEval.h"
 #include "voxc/interp/Interpreter.h"
+#include "voxc/stages/Pipeline.h"
 #include "voxc/program/Semantics.h"
 
 #include <gtest/gtest.h>

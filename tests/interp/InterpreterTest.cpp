@@ -3,6 +3,7 @@
 #include "ProgramText.h"
 #include "voxc/builtins/Shapes.h"
 #include "voxc/interp/Interpreter.h"
+#include "voxc/stages/Pipeline.h"
 
 #include <gtest/gtest.h>
 

@@ -2,6 +2,7 @@
 // inside, rules test it with MAT/NMAT and write it with `MAT m`, field stages follow combineField.
 #include "ProgramText.h"
 #include "voxc/interp/Interpreter.h"
+#include "voxc/stages/Pipeline.h"
 
 #include <gtest/gtest.h>
 

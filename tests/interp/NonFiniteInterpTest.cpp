@@ -4,6 +4,7 @@
 #include "voxc/builtins/Functions.h"
 #include "voxc/check/Check.h"
 #include "voxc/interp/Interpreter.h"
+#include "voxc/stages/Pipeline.h"
 
 #include <gtest/gtest.h>
 

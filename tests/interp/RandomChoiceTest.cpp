@@ -2,6 +2,7 @@
 // Statistical checks use a fixed seed (so they are deterministic) and a 5-sigma binomial bound.
 #include "ProgramText.h"
 #include "voxc/interp/Interpreter.h"
+#include "voxc/stages/Pipeline.h"
 
 #include <cmath>
 #include <gtest/gtest.h>

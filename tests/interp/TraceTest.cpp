@@ -1,6 +1,7 @@
 // Trace events, their filter and text form, and the firing counts.
 #include "ProgramText.h"
 #include "voxc/interp/Interpreter.h"
+#include "voxc/stages/Pipeline.h"
 
 #include <gtest/gtest.h>
 

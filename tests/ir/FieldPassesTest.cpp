@@ -44,11 +44,11 @@ TEST(ir_RemoveDeadStages, EverythingBeforeTheLastSetIsDead) {
     EXPECT_EQ(before.pipeline.size(), 7u);
     const IrModule after = removeDeadStages(before);
     ASSERT_EQ(after.pipeline.size(), 3u);
-    EXPECT_EQ(printStage(after, after.pipeline[0]), "set b");
-    EXPECT_EQ(printStage(after, after.pipeline[1]), "g");
-    EXPECT_EQ(printStage(after, after.pipeline[2]), "union c");
+    EXPECT_EQ(printStage(after.pipeline[0]), "set b");
+    EXPECT_EQ(printStage(after.pipeline[1]), "g");
+    EXPECT_EQ(printStage(after.pipeline[2]), "union c");
     ASSERT_EQ(after.deadStages.size(), 4u);
-    EXPECT_EQ(printStage(after, after.deadStages[0]), "start");
+    EXPECT_EQ(printStage(after.deadStages[0]), "start");
     EXPECT_NE(printIr(after).find("dead stages start g set a union c\n"), std::string::npos) << printIr(after);
 }
 

@@ -7,6 +7,7 @@
 #include "voxc/ir/passes/DeadCells.h"
 #include "voxc/ir/passes/PredicateBits.h"
 #include "voxc/ir/passes/RemoveDeadStages.h"
+#include "voxc/stages/StageKind.h"
 
 #include <gtest/gtest.h>
 
@@ -15,17 +16,19 @@ namespace {
 
 IrModule withCells(const Program& program) { return eliminateDeadCells(assignPredicateBits(buildSweeps(program))); }
 
-// buildSweeps plus the fields, as lowerProgram copies them (printStage names field stages by them).
-IrModule built(const Program& program) {
+// buildSweeps plus the fields, as lowerProgram copies them, from the program with its stages
+// described again (the tests edit them).
+IrModule built(Program program) {
+    stages::describePipeline(program);
     IrModule module = buildSweeps(program);
     for (const Field& field : program.fields)
         module.fields.push_back(IrField{field.name, field.loc, field.nodes, field.root, {}});
     return module;
 }
 
-std::vector<std::string> stageNames(const IrModule& module, const std::vector<Stage>& stages) {
+std::vector<std::string> stageNames(const std::vector<Stage>& stages) {
     std::vector<std::string> names;
-    for (const Stage& stage : stages) names.push_back(printStage(module, stage));
+    for (const Stage& stage : stages) names.push_back(printStage(stage));
     return names;
 }
 
@@ -80,8 +83,8 @@ TEST(ir_RemoveDeadStages, KeepsStagesThatWriteMaterials) {
     // start (materials), intersect slope, set low material moss, weather, paint half: only the
     // intersect is dead (it writes no material and the set overwrites its densities).
     const IrModule m = removeDeadStages(built(test::materialProgram(true)));
-    EXPECT_EQ(stageNames(m, m.deadStages), (std::vector<std::string>{"intersect slope"}));
-    EXPECT_EQ(stageNames(m, m.pipeline), (std::vector<std::string>{"start", "set low material 3", "weather",
+    EXPECT_EQ(stageNames(m.deadStages), (std::vector<std::string>{"intersect slope"}));
+    EXPECT_EQ(stageNames(m.pipeline), (std::vector<std::string>{"start", "set low material 3", "weather",
                                                                      "paint half material 1"}));
 }
 
@@ -89,7 +92,7 @@ TEST(ir_RemoveDeadStages, DropsStagesWhenNothingBeforeTheSetWritesMaterials) {
     Program program = test::materialProgram(true);
     for (StartShape& shape : program.start) shape.material.reset();
     const IrModule m = removeDeadStages(built(program));
-    EXPECT_EQ(stageNames(m, m.deadStages), (std::vector<std::string>{"start", "intersect slope"}));
+    EXPECT_EQ(stageNames(m.deadStages), (std::vector<std::string>{"start", "intersect slope"}));
 }
 
 TEST(ir_RemoveDeadStages, KeepsWhatAMaterialWriterReads) {
@@ -109,8 +112,8 @@ TEST(ir_RemoveDeadStages, KeepsWhatAMaterialWriterReads) {
     unionMoss.material = 3;
     program.pipeline = {start, unionMoss, intersect, setPlain};
     m = removeDeadStages(built(program));
-    EXPECT_EQ(stageNames(m, m.deadStages), (std::vector<std::string>{"intersect slope"}));
-    EXPECT_EQ(stageNames(m, m.pipeline), (std::vector<std::string>{"start", "union slope material 3", "set low"}));
+    EXPECT_EQ(stageNames(m.deadStages), (std::vector<std::string>{"intersect slope"}));
+    EXPECT_EQ(stageNames(m.pipeline), (std::vector<std::string>{"start", "union slope material 3", "set low"}));
 }
 
 TEST(ir_PrintIr, ShowsMaterials) {

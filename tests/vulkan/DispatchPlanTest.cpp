@@ -51,7 +51,7 @@ TEST(vulkan_DispatchPlan, StartThenIterationsSweepsPhasesInOrder) {
     // Start: the whole grid once; then per iteration both sweeps (equal volumes: declaration order), 2 phases each.
     ASSERT_EQ(dispatches.size(), 1u + 3u * (2u + 2u));
     const Dispatch& start = dispatches[0];
-    EXPECT_EQ(start.kernel, package.stages[0].startKernel);
+    EXPECT_EQ(start.kernel, package.stages[0].gridKernel);
     EXPECT_EQ(xyz(start.push.anchorStart), glm::ivec3(0));
     EXPECT_EQ(xyz(start.push.anchorStep), glm::ivec3(1));
     EXPECT_EQ(xyz(start.push.anchorCount), world.size);
@@ -60,7 +60,7 @@ TEST(vulkan_DispatchPlan, StartThenIterationsSweepsPhasesInOrder) {
     EXPECT_EQ(start.groups[2], 9u);
 
     const ChunkLayout layout = ChunkLayout::make(world.origin, world.size, world.chunkSize);
-    const GrammarPlan& plan = package.stages[1].grammar;
+    const GrammarPlan& plan = package.stages[1].grammar.value();
     size_t i = 1;
     for (int it = 0; it < 3; ++it)
         for (int s = 0; s < 2; ++s)
@@ -89,7 +89,7 @@ TEST(vulkan_DispatchPlan, PhasesWithoutAnchorsAreSkipped) {
     grammar.sweeps = {{TestKernel::AddOne, {3, 1, 1}}};
     grammar.boundsMax = {4, 5, 5};
     const KernelPackage package = makePackage(makeWorld({5, 5, 5}, {0, 0, 0}, 8), false, {grammar});
-    ASSERT_EQ(package.stages[0].grammar.sweeps[0].phaseStart.size(), 3u);
+    ASSERT_EQ(package.stages[0].grammar->sweeps[0].phaseStart.size(), 3u);
     const std::vector<Dispatch> dispatches = expand(package);
     ASSERT_EQ(dispatches.size(), 2u);
     for (const Dispatch& d : dispatches) EXPECT_EQ(d.push.anchorCount[0], 1);
@@ -119,7 +119,7 @@ TEST(vulkan_DispatchPlan, WorkgroupsCoverAnchorsPerInvocation) {
     // The start kernel walks columns: 4 anchors per invocation along y, local size 8 x 1 x 8.
     const World world = makeWorld({20, 12, 9}, {0, 0, 0}, 8);
     KernelPackage package = makePackage(world, true, {});
-    Kernel& start = package.kernels[package.stages[0].startKernel];
+    Kernel& start = package.kernels[package.stages[0].gridKernel];
     const uint32_t local[3] = {8, 1, 8}, perInvocation[3] = {1, 4, 1};
     std::copy(local, local + 3, start.localSize);
     std::copy(perInvocation, perInvocation + 3, start.anchorsPerInvocation);
@@ -148,11 +148,11 @@ TEST(vulkan_DispatchPlan, MalformedPackagesAreInternalErrors) {
     EXPECT_NO_THROW(validatePackage(good));
 
     KernelPackage badIndex = good;
-    badIndex.stages[1].grammar.sweeps[0].kernel = 7;
+    badIndex.stages[1].grammar->sweeps[0].kernel = 7;
     EXPECT_THROW(validatePackage(badIndex), InternalError);
 
     KernelPackage ragged = good;
-    ragged.stages[1].grammar.sweeps[0].phaseStep.clear();
+    ragged.stages[1].grammar->sweeps[0].phaseStep.clear();
     EXPECT_THROW(validatePackage(ragged), InternalError);
 
     KernelPackage noSpirv = good;
@@ -172,10 +172,9 @@ TEST(vulkan_DispatchPlan, FieldStagesCoverTheGridThenInvalidateTileRanges) {
     const World world = makeWorld({20, 12, 9}, {-37, -5, -100}, 8);
     KernelPackage package = makePackage(world, true, {});
     StagePlan field;
-    field.kind = Stage::Kind::Field;
-    field.fieldKernel = package.stages[0].startKernel;
-    field.fieldName = "f";
-    field.fieldMode = FieldMode::Union;
+    field.kind = "field";
+    field.label = "union f";
+    field.gridKernel = package.stages[0].gridKernel;
     package.stages.push_back(field);
     validatePackage(package);
     DispatchCursor cursor(package, kNoLimit, 3);
@@ -185,7 +184,7 @@ TEST(vulkan_DispatchPlan, FieldStagesCoverTheGridThenInvalidateTileRanges) {
     // start, invalidate, field, invalidate: a field rewrites densities, so every tile range is stale.
     ASSERT_EQ(all.size(), 4u);
     EXPECT_EQ(all[2].kind, DispatchKind::Direct);
-    EXPECT_EQ(all[2].kernel, field.fieldKernel);
+    EXPECT_EQ(all[2].kernel, field.gridKernel);
     EXPECT_EQ(xyz(all[2].push.anchorStart), glm::ivec3(0));
     EXPECT_EQ(xyz(all[2].push.anchorCount), world.size);
     EXPECT_EQ(all[3].kind, DispatchKind::InvalidateRanges);
@@ -195,11 +194,10 @@ TEST(vulkan_DispatchPlan, FieldBoxesDispatchOneByOneAndCarryTheirConstant) {
     const World world = makeWorld({20, 12, 9}, {-37, -5, -100}, 8);
     KernelPackage package = makePackage(world, true, {});
     StagePlan field;
-    field.kind = Stage::Kind::Field;
-    field.fieldKernel = package.stages[0].startKernel;
-    field.fieldName = "f";
-    field.fieldMode = FieldMode::Set;
-    field.fieldBoxes = {FieldBox{{0, 0, 0}, {20, 12, 4}, false, 0.0f}, FieldBox{{0, 0, 4}, {20, 12, 9}, true, -0.0f}};
+    field.kind = "field";
+    field.label = "set f";
+    field.gridKernel = package.stages[0].gridKernel;
+    field.gridBoxes = {FieldBox{{0, 0, 0}, {20, 12, 4}, false, 0.0f}, FieldBox{{0, 0, 4}, {20, 12, 9}, true, -0.0f}};
     package.stages.push_back(field);
     validatePackage(package);
     DispatchCursor cursor(package, kNoLimit);
@@ -216,14 +214,14 @@ TEST(vulkan_DispatchPlan, FieldBoxesDispatchOneByOneAndCarryTheirConstant) {
     EXPECT_EQ(uint32_t(all[2].push.anchorStart[3]), 0x80000000u); // -0.0's bits: the sign survives
 
     KernelPackage skipped = package;
-    skipped.stages.back().fieldBoxes.back().unchanged = true;
+    skipped.stages.back().gridBoxes.back().unchanged = true;
     DispatchCursor skippedCursor(skipped, kNoLimit);
     size_t dispatches = 0;
     while (skippedCursor.next(d)) ++dispatches;
     EXPECT_EQ(dispatches, 2u); // the unchanged box is not dispatched
 
     KernelPackage gap = package;
-    gap.stages.back().fieldBoxes.pop_back();
+    gap.stages.back().gridBoxes.pop_back();
     EXPECT_THROW(validatePackage(gap), InternalError);
 }
 
@@ -236,9 +234,8 @@ TEST(vulkan_DispatchPlan, EveryDispatchNamesItsStageInPlanOrder) {
     grammar.sweeps = {{TestKernel::AddOne, {1, 2, 1}}};
     KernelPackage package = makePackage(world, true, {grammar});
     StagePlan field;
-    field.kind = Stage::Kind::Field;
-    field.fieldKernel = package.stages[0].startKernel;
-    field.fieldMode = FieldMode::Union;
+    field.kind = "field";
+    field.gridKernel = package.stages[0].gridKernel;
     package.stages.push_back(field);
     validatePackage(package);
     for (int32_t tileShift : {-1, 3}) {

@@ -138,8 +138,8 @@ KernelPackage makePackage(const World& world, bool withStart, const std::vector<
     };
     if (withStart) {
         StagePlan stage;
-        stage.kind = Stage::Kind::Start;
-        stage.startKernel = kernelIndex(startKernel);
+        stage.kind = "start";
+        stage.gridKernel = kernelIndex(startKernel);
         package.stages.push_back(stage);
     }
     for (size_t g = 0; g < grammars.size(); ++g) {
@@ -156,16 +156,17 @@ KernelPackage makePackage(const World& world, bool withStart, const std::vector<
             grammar.rules.push_back(rule);
         }
         StagePlan stage;
-        stage.kind = Stage::Kind::Grammar;
-        stage.grammar.name = "g" + std::to_string(g);
-        stage.grammar.iterations = uint32_t(spec.iterations);
+        stage.kind = "grammar";
+        stage.grammar.emplace();
+        stage.grammar->name = "g" + std::to_string(g);
+        stage.grammar->iterations = uint32_t(spec.iterations);
         for (const Sweep& sweep : orderSweeps(grammar)) {
             SweepPlan plan;
             plan.kernel = kernelIndex(spec.sweeps[sweep.rules.front()].kernel);
             plan.window = sweep.window;
             plan.phaseCount = sweep.phaseCount;
             fillPhaseAnchors(plan, grammar, sweep);
-            stage.grammar.sweeps.push_back(plan);
+            stage.grammar->sweeps.push_back(plan);
         }
         package.stages.push_back(stage);
     }
@@ -195,13 +196,12 @@ DenseGrid referenceResult(const KernelPackage& package) {
                 for (int x = 0; x < count.x; ++x) apply(kind, start + glm::ivec3(x, y, z) * step, iteration, sweep);
     };
     for (const StagePlan& stage : package.stages) {
-        if (stage.kind == Stage::Kind::Start) {
-            applyPhase(kindOf(package.kernels[stage.startKernel]), glm::ivec3(0), glm::ivec3(1), world.size, 0, 0);
-            continue;
-        }
-        for (uint32_t it = 0; it < stage.grammar.iterations; ++it)
-            for (size_t s = 0; s < stage.grammar.sweeps.size(); ++s) {
-                const SweepPlan& sweep = stage.grammar.sweeps[s];
+        if (stage.gridKernel != kNoKernel)
+            applyPhase(kindOf(package.kernels[stage.gridKernel]), glm::ivec3(0), glm::ivec3(1), world.size, 0, 0);
+        if (!stage.grammar) continue;
+        for (uint32_t it = 0; it < stage.grammar->iterations; ++it)
+            for (size_t s = 0; s < stage.grammar->sweeps.size(); ++s) {
+                const SweepPlan& sweep = stage.grammar->sweeps[s];
                 for (size_t p = 0; p < sweep.phaseStart.size(); ++p)
                     applyPhase(kindOf(package.kernels[sweep.kernel]), sweep.phaseStart[p], sweep.phaseStep[p],
                                sweep.phaseCount3[p], int(it), int(s));

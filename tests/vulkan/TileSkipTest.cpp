@@ -3,7 +3,7 @@
 // run that dispatches every anchor.
 #include "GridCompare.h"
 #include "voxc/check/Check.h"
-#include "voxc/codegen/Codegen.h"
+#include "voxc/stages/Pipeline.h"
 #include "voxc/interp/Interpreter.h"
 #include "voxc/vulkan/Context.h"
 #include "voxc/vulkan/Executor.h"
@@ -30,7 +30,7 @@ Program checked(const std::string& text) {
 RunResult run(const Program& program, bool skip) {
     ExecutorOptions options;
     options.skipInactiveTiles = skip;
-    VulkanExecutor executor(lavapipe(), codegen::compileProgram(program, {}), options);
+    VulkanExecutor executor(lavapipe(), compileProgram(program, {}), options);
     return executor.run();
 }
 
@@ -88,7 +88,7 @@ TEST(vulkan_TileSkip, GrowthAcrossTileBordersMatchesTheInterpreter) {
 
 TEST(vulkan_TileSkip, ValidationLayerReportsNothing) {
     VulkanContext context(ContextOptions{.device = "lavapipe", .validation = true});
-    VulkanExecutor executor(context, codegen::compileProgram(checked(kGrowth), {}));
+    VulkanExecutor executor(context, compileProgram(checked(kGrowth), {}));
     EXPECT_TRUE(executor.run().skip.enabled);
     for (const ValidationMessage& message : context.validationMessages()) ADD_FAILURE() << message.text;
 }

@@ -2,6 +2,7 @@
 
 #include "Materials.h"
 #include "Sections.h"
+#include "voxc/stages/StageKind.h"
 #include "Suggest.h"
 
 #include "voxc/syntax/Parser.h"
@@ -115,7 +116,10 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
         for (uint32_t i = 0; i < program.grammars.size(); ++i) program.pipeline.push_back({Stage::Kind::Grammar, i, FieldMode::Set, {}, std::nullopt});
     }
     // The estimate and the warnings only make sense about a program that is otherwise correct.
-    if (!context.diagnostics.hasErrors()) checkWork(context, program);
+    if (!context.diagnostics.hasErrors()) {
+        stages::describePipeline(program);
+        checkWork(context, program);
+    }
     if (!context.diagnostics.hasErrors()) {
         for (const CheckedGrammar& grammar : grammars) analyseGrammar(context, grammar);
         warnUnused(context, file, program, pipelineBlock != nullptr);

@@ -1,4 +1,4 @@
-#include "KernelSources.h"
+#include "voxc/codegen/KernelSources.h"
 #include "Template.h"
 
 #include "voxc/builtins/Ops.h"

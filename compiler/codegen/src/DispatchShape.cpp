@@ -1,4 +1,4 @@
-#include "KernelSources.h"
+#include "voxc/codegen/KernelSources.h"
 
 #include <fmt/format.h>
 

@@ -294,7 +294,7 @@ std::string fieldKernelSource(const ir::IrModule& module, const ir::IrField& fie
                                      ir::fieldModeName(mode));
     header += stages.size() == 1 ? "" : "s";
     for (const Stage& stage : stages)
-        header += fmt::format(" `{}` ({}:{}:{})", ir::printStage(module, stage), sourceName, stage.loc.line,
+        header += fmt::format(" `{}` ({}:{}:{})", ir::printStage(stage), sourceName, stage.loc.line,
                               stage.loc.column);
     header += ".\n";
     std::string libraries;

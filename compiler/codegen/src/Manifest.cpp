@@ -179,39 +179,34 @@ Json sweepJson(const KernelPackage& package, const SweepPlan& sweep) {
                 {"phases", phases}};
 }
 
+// Whatever the kind: its attributes, the grid pass's kernel and boxes, the material, the sweeps.
 Json stageJson(const KernelPackage& package, const StagePlan& stage) {
-    switch (stage.kind) {
-    case Stage::Kind::Start: return Json{{"kind", "start"}, {"kernel", package.kernels.at(stage.startKernel).name}};
-    case Stage::Kind::Grammar: {
-        Json sweeps = Json::array();
-        for (const SweepPlan& sweep : stage.grammar.sweeps)
-            sweeps.push_back(sweepJson(package, sweep));
-        return Json{{"kind", "grammar"},
-                    {"grammar", stage.grammar.name},
-                    {"iterations", stage.grammar.iterations},
-                    {"sweeps", sweeps}};
-    }
-    case Stage::Kind::Field: {
-        // Each box: [min, max] where the DAG is evaluated, [min, max, value] where the field is
-        // that constant, [min, max, value, "unchanged"] where it is not dispatched at all.
+    Json json{{"kind", stage.kind}};
+    for (const auto& [key, value] : stage.attributes) json[key] = value;
+    if (stage.gridKernel != kNoKernel) {
+        // Each box: [min, max] where the kernel is dispatched, [min, max, value] where a field is
+        // that constant, [min, max, value, "unchanged"] where it is not dispatched at all; no
+        // boxes: the whole grid.
         Json boxes = Json::array();
-        for (const FieldBox& box : stage.fieldBoxes) {
+        for (const FieldBox& box : stage.gridBoxes) {
             Json entry = Json::array({{box.min.x, box.min.y, box.min.z}, {box.max.x, box.max.y, box.max.z}});
             if (box.constant) entry.push_back(floatJson(box.value));
             if (box.unchanged) entry.push_back("unchanged");
             boxes.push_back(entry);
         }
-        Json field{{"kind", "field"},
-                   {"field", stage.fieldName},
-                   {"mode", ir::fieldModeName(stage.fieldMode)},
-                   {"kernel", package.kernels.at(stage.fieldKernel).name},
-                   {"boxes", boxes}};
-        // The material id the stage writes where the field wins; absent: materials untouched.
-        if (stage.fieldMaterial) field["material"] = *stage.fieldMaterial;
-        return field;
+        json["kernel"] = package.kernels.at(stage.gridKernel).name;
+        json["boxes"] = boxes;
     }
+    // The material id the stage writes; absent: materials untouched.
+    if (stage.material) json["material"] = *stage.material;
+    if (stage.grammar) {
+        Json sweeps = Json::array();
+        for (const SweepPlan& sweep : stage.grammar->sweeps)
+            sweeps.push_back(sweepJson(package, sweep));
+        json["iterations"] = stage.grammar->iterations;
+        json["sweeps"] = sweeps;
     }
-    throw InternalError("unknown stage kind");
+    return json;
 }
 
 } // namespace

@@ -2,8 +2,9 @@
 #include "Common.h"
 #include "OutputPaths.h"
 
-#include "voxc/codegen/Codegen.h"
+#include "voxc/codegen/PackageWriter.h"
 #include "voxc/ir/Lower.h"
+#include "voxc/stages/Pipeline.h"
 
 #include <filesystem>
 #include <iostream>
@@ -12,7 +13,7 @@ namespace voxc::driver {
 
 namespace {
 
-struct CompileOptions {
+struct CompileCommandOptions {
     std::string file;
     std::string outputDir;
     bool dumpIr = false;
@@ -22,7 +23,7 @@ struct CompileOptions {
 } // namespace
 
 void addCompileCommand(CLI::App& app) {
-    auto options = std::make_shared<CompileOptions>();
+    auto options = std::make_shared<CompileCommandOptions>();
     CLI::App* command = app.add_subcommand(
         "compile", "Compile a .vox file into a package: GLSL kernels, SPIR-V and manifest.json");
     command->add_option("file", options->file, "The .vox file")->required();
@@ -34,13 +35,13 @@ void addCompileCommand(CLI::App& app) {
         refuseInputsInside({"-o", options->outputDir}, inputs);
         std::string sourceText;
         const Program program = loadProgram(options->file, options->overrides, false, &sourceText);
-        codegen::CompileOptions compileOptions;
+        voxc::CompileOptions compileOptions;
         if (options->dumpIr) {
             compileOptions.afterPass = [](std::string_view pass, const ir::IrModule& module) {
                 std::cout << "=== after " << pass << " ===\n" << ir::printIr(module) << "\n";
             };
         }
-        const KernelPackage package = codegen::compileProgram(program, compileOptions);
+        const KernelPackage package = compileProgram(program, compileOptions);
         const codegen::PackageSource source{std::filesystem::path(options->file).filename().string(), sourceText};
         const codegen::PackageWrite written = codegen::writePackage(package, options->outputDir, source);
         if (written == codegen::PackageWrite::Unchanged)

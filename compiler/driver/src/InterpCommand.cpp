@@ -6,6 +6,7 @@
 #include "voxc/core/Errors.h"
 #include "voxc/grid/Grid.h"
 #include "voxc/interp/Interpreter.h"
+#include "voxc/stages/Pipeline.h"
 
 #include <fmt/format.h>
 #include <iostream>

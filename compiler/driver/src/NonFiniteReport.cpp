@@ -13,12 +13,7 @@ namespace {
 std::string stageText(const Program& program, SourceLoc loc) {
     for (const Stage& stage : program.pipeline) {
         if (stage.loc.line != loc.line || stage.loc.column != loc.column) continue;
-        switch (stage.kind) {
-        case Stage::Kind::Start: return "start";
-        case Stage::Kind::Grammar: return program.grammars.at(stage.index).name;
-        case Stage::Kind::Field:
-            return fmt::format("{} {}", ir::fieldModeName(stage.mode), program.fields.at(stage.index).name);
-        }
+        return stage.label;
     }
     throw InternalError(fmt::format("no pipeline stage at {}:{}", loc.line, loc.column));
 }

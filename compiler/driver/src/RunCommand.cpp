@@ -3,7 +3,7 @@
 #include "NonFiniteReport.h"
 #include "OutputPaths.h"
 
-#include "voxc/codegen/Codegen.h"
+#include "voxc/stages/Pipeline.h"
 #include "voxc/core/Errors.h"
 #include "voxc/grid/Grid.h"
 #include "voxc/mesh/Export.h"
@@ -55,7 +55,7 @@ void run(const RunOptions& options) {
     refuseClashingPaths(inputs, outputs);
 
     const Program program = loadProgram(options.file, options.overrides);
-    const KernelPackage package = codegen::compileProgram(program, {});
+    const KernelPackage package = compileProgram(program, {});
     VulkanContext context(ContextOptions{.device = options.device, .validation = options.validate});
     VulkanExecutor executor(context, package);
     const RunResult result = executor.run();

@@ -3,6 +3,7 @@
 #include "voxc/check/Check.h"
 #include "voxc/core/Errors.h"
 #include "voxc/interp/Interpreter.h"
+#include "voxc/stages/Pipeline.h"
 
 #include <algorithm>
 #include <cmath>

@@ -146,25 +146,4 @@ void runGrammar(const Program& program, uint32_t grammarIndex, DenseGrid& grid, 
     }
 }
 
-DenseGrid interpret(const Program& program, const InterpOptions& options) {
-    DenseGrid grid(program.world.size);
-    if (options.nonFinite) options.nonFinite->assign(program.pipeline.size(), NonFiniteCount{});
-    for (size_t i = 0; i < program.pipeline.size(); ++i) {
-        const Stage& stage = program.pipeline[i];
-        NonFiniteCount* nonFinite = options.nonFinite ? &(*options.nonFinite)[i] : nullptr;
-        switch (stage.kind) {
-        case Stage::Kind::Start: // shape values are finite literals within +-1e6 (E0007)
-            grid = evaluateStart(program);
-            break;
-        case Stage::Kind::Grammar:
-            runGrammar(program, stage.index, grid, options, nonFinite);
-            break;
-        case Stage::Kind::Field:
-            runField(program, stage, grid, nonFinite);
-            break;
-        }
-    }
-    return grid;
-}
-
 } // namespace voxc

@@ -9,11 +9,16 @@
 #include "voxc/ir/passes/RemoveDeadStages.h"
 #include "voxc/ir/passes/RemoveNeverMatchingRules.h"
 
+#include "voxc/core/Errors.h"
+
 #include <utility>
 
 namespace voxc::ir {
 
 IrModule lowerProgram(const Program& program, const LowerOptions& options) {
+    // The passes read each stage's facts, which its kind's record fills (stages::describePipeline).
+    for (const Stage& stage : program.pipeline)
+        if (stage.label.empty()) throw InternalError("lowering a pipeline stage its record has not described");
     auto after = [&](std::string_view name, const IrModule& module) {
         if (options.afterPass) options.afterPass(name, module);
     };

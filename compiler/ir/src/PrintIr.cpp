@@ -125,15 +125,8 @@ std::string_view fieldModeName(FieldMode mode) {
     return "?";
 }
 
-std::string printStage(const IrModule& module, const Stage& stage) {
-    switch (stage.kind) {
-    case Stage::Kind::Start: return "start";
-    case Stage::Kind::Grammar: return module.grammars.at(stage.index).name;
-    case Stage::Kind::Field:
-        return fmt::format("{} {}{}", fieldModeName(stage.mode), module.fields.at(stage.index).name,
-                           stage.material ? fmt::format(" material {}", *stage.material) : "");
-    }
-    return "?";
+std::string printStage(const Stage& stage) {
+    return stage.material ? fmt::format("{} material {}", stage.label, *stage.material) : stage.label;
 }
 
 std::string printPredicate(const Predicate& p) {
@@ -173,12 +166,12 @@ std::string printIr(const IrModule& module) {
                            shape.material ? fmt::format(" material {}", *shape.material) : "", loc(shape.loc));
     out += "pipeline";
     for (const Stage& stage : module.pipeline)
-        out += " " + printStage(module, stage);
+        out += " " + printStage(stage);
     out += "\n";
     if (!module.deadStages.empty()) {
         out += "dead stages";
         for (const Stage& stage : module.deadStages)
-            out += " " + printStage(module, stage);
+            out += " " + printStage(stage);
         out += "\n";
     }
     for (const IrGrammar& g : module.grammars) {

@@ -47,34 +47,29 @@ void validatePackage(const KernelPackage& package) {
             packageError(fmt::format("kernel index {} out of range ({} kernels)", index, package.kernels.size()));
     };
     for (const StagePlan& stage : package.stages) {
-        if (stage.kind == Stage::Kind::Start) {
-            checkKernel(stage.startKernel);
-            continue;
-        }
-        if (stage.kind == Stage::Kind::Field) {
-            checkKernel(stage.fieldKernel);
-            if (stage.fieldMaterial && !package.usesMaterials)
-                packageError(fmt::format("field '{}' writes a material but the package has no material buffer",
-                                         stage.fieldName));
+        if (stage.material && !package.usesMaterials)
+            packageError(fmt::format("stage '{}' writes a material but the package has no material buffer", stage.label));
+        if (stage.gridKernel != kNoKernel) {
+            checkKernel(stage.gridKernel);
             // Boxes inside the grid whose volumes sum to the grid's (the codegen tiles it with chunks).
             uint64_t volume = 0;
-            for (const FieldBox& box : stage.fieldBoxes) {
+            for (const FieldBox& box : stage.gridBoxes) {
                 if (glm::any(glm::lessThan(box.min, glm::ivec3(0))) ||
                     glm::any(glm::greaterThan(box.max, package.world.size)) ||
                     glm::any(glm::greaterThanEqual(box.min, box.max)))
-                    packageError(fmt::format("field '{}': a box lies outside the grid or is empty", stage.fieldName));
+                    packageError(fmt::format("stage '{}': a box lies outside the grid or is empty", stage.label));
                 const glm::i64vec3 extent = glm::i64vec3(box.max - box.min);
                 volume += uint64_t(extent.x * extent.y * extent.z);
             }
             const glm::i64vec3 grid = glm::i64vec3(package.world.size);
-            if (!stage.fieldBoxes.empty() && volume != uint64_t(grid.x * grid.y * grid.z))
-                packageError(fmt::format("field '{}': its boxes do not cover the grid", stage.fieldName));
-            continue;
+            if (!stage.gridBoxes.empty() && volume != uint64_t(grid.x * grid.y * grid.z))
+                packageError(fmt::format("stage '{}': its boxes do not cover the grid", stage.label));
         }
-        for (const SweepPlan& sweep : stage.grammar.sweeps) {
+        if (!stage.grammar) continue;
+        for (const SweepPlan& sweep : stage.grammar->sweeps) {
             checkKernel(sweep.kernel);
             if (sweep.phaseStep.size() != sweep.phaseStart.size() || sweep.phaseCount3.size() != sweep.phaseStart.size())
-                packageError(fmt::format("grammar '{}': phase arrays differ in length", stage.grammar.name));
+                packageError(fmt::format("grammar '{}': phase arrays differ in length", stage.grammar->name));
         }
     }
 }
@@ -124,48 +119,29 @@ bool DispatchCursor::next(Dispatch& out) {
     return true;
 }
 
+// A stage is one step for its grid pass, then one step per iteration of its sweeps.
 bool DispatchCursor::expandNextStep() {
     step_.clear();
     position_ = 0;
     while (stage_ < package_.stages.size()) {
         const StagePlan& stage = package_.stages[stage_];
-        if (stage.kind == Stage::Kind::Start || stage.kind == Stage::Kind::Field) {
-            // Both rewrite every voxel: one dispatch over the grid (or per field box), then every
-            // tile range is stale.
-            ++stage_;
-            const uint32_t kernel = stage.kind == Stage::Kind::Start ? stage.startKernel : stage.fieldKernel;
-            if (stage.kind == Stage::Kind::Field && !stage.fieldBoxes.empty()) {
-                for (const FieldBox& box : stage.fieldBoxes) {
-                    if (box.unchanged) continue;
-                    const size_t first = step_.size();
-                    appendPhase(kernel, 0, 0, box.min, glm::ivec3(1), box.max - box.min);
-                    // The field kernel reads a constant box's value from the w lanes.
-                    for (size_t i = first; i < step_.size(); ++i) {
-                        step_[i].push.anchorStart[3] = box.constant ? std::bit_cast<int32_t>(box.value) : 0;
-                        step_[i].push.anchorCount[3] = box.constant ? 1 : 0;
-                    }
-                }
-            } else {
-                appendPhase(kernel, 0, 0, glm::ivec3(0), glm::ivec3(1), package_.world.size);
-            }
-            // Paint writes materials only, which tile ranges do not track.
-            if (skipping() && !(stage.kind == Stage::Kind::Field && stage.fieldMode == FieldMode::Paint)) {
-                Dispatch invalidate;
-                invalidate.kind = DispatchKind::InvalidateRanges;
-                step_.push_back(invalidate);
-            }
-            for (Dispatch& d : step_) d.stage = uint32_t(stage_ - 1);
+        if (stageStep_ == 0 && stage.gridKernel != kNoKernel) {
+            ++stageStep_;
+            appendGridPass(stage);
+            for (Dispatch& d : step_) d.stage = uint32_t(stage_);
             return true;
         }
-        const GrammarPlan& grammar = stage.grammar;
-        if (iteration_ >= grammar.iterations) {
+        const uint32_t iterations = stage.grammar ? stage.grammar->iterations : 0;
+        if (iteration_ >= iterations) {
             ++stage_;
             iteration_ = 0;
+            stageStep_ = 0;
             continue;
         }
+        ++stageStep_;
         const int32_t iteration = int32_t(iteration_++);
-        for (size_t s = 0; s < grammar.sweeps.size(); ++s) {
-            const SweepPlan& sweep = grammar.sweeps[s];
+        for (size_t s = 0; s < stage.grammar->sweeps.size(); ++s) {
+            const SweepPlan& sweep = stage.grammar->sweeps[s];
             if (skipping()) {
                 appendSkippingSweep(sweep, iteration, int32_t(s));
                 continue;
@@ -178,6 +154,29 @@ bool DispatchCursor::expandNextStep() {
         return true;
     }
     return false;
+}
+
+// One dispatch over the grid, or per box (a constant box's value travels in the w lanes); then
+// every tile range is stale unless the stage writes materials only, which ranges do not track.
+void DispatchCursor::appendGridPass(const StagePlan& stage) {
+    if (stage.gridBoxes.empty()) {
+        appendPhase(stage.gridKernel, 0, 0, glm::ivec3(0), glm::ivec3(1), package_.world.size);
+    } else {
+        for (const FieldBox& box : stage.gridBoxes) {
+            if (box.unchanged) continue;
+            const size_t first = step_.size();
+            appendPhase(stage.gridKernel, 0, 0, box.min, glm::ivec3(1), box.max - box.min);
+            for (size_t i = first; i < step_.size(); ++i) {
+                step_[i].push.anchorStart[3] = box.constant ? std::bit_cast<int32_t>(box.value) : 0;
+                step_[i].push.anchorCount[3] = box.constant ? 1 : 0;
+            }
+        }
+    }
+    if (skipping() && stage.writesDensities) {
+        Dispatch invalidate;
+        invalidate.kind = DispatchKind::InvalidateRanges;
+        step_.push_back(invalidate);
+    }
 }
 
 void DispatchCursor::appendPhase(uint32_t kernel, int32_t iteration, int32_t sweep, glm::ivec3 start,

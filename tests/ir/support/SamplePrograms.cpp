@@ -2,6 +2,7 @@
 
 #include "ProgramText.h"
 #include "voxc/builtins/Functions.h"
+#include "voxc/stages/StageKind.h"
 
 #include <stdexcept>
 
@@ -72,6 +73,7 @@ Program sampleProgram() {
     heightfield.heightfield.base = 6.0f;
     heightfield.heightfield.amplitude = 3.0f;
     program.start = {fill, box, heightfield};
+    stages::describePipeline(program);
     return program;
 }
 
@@ -212,6 +214,7 @@ Program materialProgram(bool withSet) {
                             fieldStage(2, FieldMode::Intersect, kMaterialNone, at(90, 70)),
                             fieldStage(0, FieldMode::Paint, 1, at(90, 100))};
     }
+    stages::describePipeline(program);
     return program;
 }
 

@@ -108,19 +108,22 @@ struct FieldBox {
     bool unchanged = false;
 };
 
+// How the runtime runs one pipeline stage, whatever its kind: a grid pass (one kernel over the
+// grid or over boxes of it), a repeated program of sweeps, or both (the grid pass first).
 struct StagePlan {
-    Stage::Kind kind = Stage::Kind::Start;
-    SourceLoc loc; // the pipeline entry (Stage::loc), for reports naming the stage
-    uint32_t startKernel = 0; // Start
-    GrammarPlan grammar;      // Grammar
-    // Field: one dispatch per box of fieldBoxes (disjoint, covering the grid), or over the whole
-    // grid like the start kernel when it is empty; it rewrites densities, so tile ranges go
-    // stale afterwards.
-    uint32_t fieldKernel = 0;
-    std::vector<FieldBox> fieldBoxes;
-    std::string fieldName;
-    FieldMode fieldMode = FieldMode::Set;
-    std::optional<uint8_t> fieldMaterial; // Stage::material
+    std::string kind;  // the stage kind's name (voxc/stages/StageKind.h): "start", "grammar", "field"
+    SourceLoc loc;     // the pipeline entry (Stage::loc), for reports naming the stage
+    std::string label; // Stage::label
+    // Members the manifest lists for this kind after "kind", e.g. ("field", "ground"), ("mode", "set").
+    std::vector<std::pair<std::string, std::string>> attributes;
+    // The grid pass: one dispatch per box of gridBoxes (disjoint, covering the grid), or over the
+    // whole grid when it is empty; it rewrites densities, so tile ranges go stale afterwards
+    // unless writesDensities is false (a paint stage writes materials only).
+    uint32_t gridKernel = kNoKernel;
+    std::vector<FieldBox> gridBoxes;
+    bool writesDensities = true;
+    std::optional<uint8_t> material; // Stage::material, when the stage writes one
+    std::optional<GrammarPlan> grammar; // the sweeps, repeated grammar->iterations times
 };
 
 struct KernelPackage {

@@ -1,5 +1,6 @@
 #pragma once
-// Generated GLSL for each kind of kernel, built from the templates in compiler/shaders.
+// Generated GLSL for each kind of kernel, built from the templates in compiler/shaders; the
+// stage kinds' records (compiler/stages) put them together into a package.
 #include "voxc/codegen/KernelPackage.h"
 #include "voxc/ir/Ir.h"
 
@@ -18,6 +19,11 @@ struct DispatchShape {
     uint32_t localSize[3];
     uint32_t anchorsPerInvocation[3];
 };
+
+// A kernel of the package: `glsl` compiled to validated SPIR-V (with VOXC_MATERIALS defined when
+// the package stores materials), its bindings read back from the SPIR-V.
+Kernel makeKernel(std::string name, std::string origin, const DispatchShape& shape, std::string glsl,
+                  bool usesMaterials);
 
 // The DISPATCH_SHAPE section of a template: the local size layout and ANCHORS_PER_INVOCATION.
 std::string dispatchShapeGlsl(const DispatchShape& shape);

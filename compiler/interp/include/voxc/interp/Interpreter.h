@@ -1,7 +1,7 @@
 #pragma once
-// The CPU interpreter: runs a checked Program on a DenseGrid, single-threaded, using only the
-// shared definitions of the semantics (voxc/program/Semantics.h, voxc/builtins/Ops.h,
-// voxc/builtins/Shapes.h). It is the oracle the Vulkan path is compared with bit for bit.
+// The CPU interpreter's stages, which voxc::interpret (voxc/stages/Pipeline.h) runs through the
+// stage kinds' records on a DenseGrid, single-threaded, using only the shared definitions of the
+// semantics (voxc/program/Semantics.h, voxc/builtins/Ops.h, voxc/builtins/Shapes.h). It is the oracle the Vulkan path is compared with bit for bit.
 #include "voxc/grid/Grid.h"
 #include "voxc/grid/NonFinite.h"
 #include "voxc/interp/Slice.h"
@@ -20,7 +20,7 @@ struct InterpOptions {
     std::function<void(const TraceEvent&)> onFire;
     // When set, firing counts are added to it.
     FireStats* stats = nullptr;
-    // When set, interpret() resizes it to one entry per pipeline stage and counts there the
+    // When set, voxc::interpret resizes it to one entry per pipeline stage and counts there the
     // non-finite densities each stage replaced by 0 (voxc/grid/NonFinite.h).
     std::vector<NonFiniteCount>* nonFinite = nullptr;
 };
@@ -33,8 +33,5 @@ DenseGrid evaluateStart(const Program& program);
 // is set, counted there.
 void runGrammar(const Program& program, uint32_t grammarIndex, DenseGrid& grid, const InterpOptions& options = {},
                 NonFiniteCount* nonFinite = nullptr);
-
-// Runs program.pipeline in order, starting from an all-air grid of the world's size.
-DenseGrid interpret(const Program& program, const InterpOptions& options = {});
 
 } // namespace voxc

@@ -124,6 +124,6 @@ std::string printTransform(const TransformCell& transform);
 std::string printCell(glm::ivec3 offset);
 std::string printVec(glm::ivec3 v);
 // "start", a grammar's name, "set ground" or "paint low material 2".
-std::string printStage(const IrModule& module, const Stage& stage);
+std::string printStage(const Stage& stage);
 
 } // namespace voxc::ir

@@ -128,7 +128,8 @@ enum class FieldMode : uint8_t {
     Paint      // d unchanged; only writes the stage's material (which it requires)
 };
 
-// One step of the pipeline. Later parts of the language add kinds here.
+// One step of the pipeline. Each kind is one record in compiler/stages (StageKind.h) holding
+// its checks, interpretation and lowering; passes read the facts below instead of the kind.
 struct Stage {
     enum class Kind : uint8_t { Start, Grammar, Field };
     Kind kind = Kind::Start;
@@ -138,6 +139,10 @@ struct Stage {
     // Field only: the material written where the field wins (combineField); from the stage's
     // `material NAME` clause, else the feature's `material` key; absent: materials untouched.
     std::optional<uint8_t> material;
+    // Filled from the kind's record (stages::makeStage, stages::describePipeline):
+    std::string label;           // the pipeline entry as written: "start", "erode", "subtract tunnel"
+    bool readsDensities = true;  // the result depends on the densities before the stage
+    bool writesMaterials = true; // the stage may write a material id
 };
 
 // A declared material: `material rock { id = 1; color = [0.45, 0.42, 0.4]; }`.

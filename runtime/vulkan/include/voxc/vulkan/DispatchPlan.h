@@ -59,8 +59,9 @@ public:
     bool next(Dispatch& out);
 
 private:
-    // Queues the dispatches of the next stage step (a start or field stage, or one grammar iteration).
+    // Queues the dispatches of the next stage step (a stage's grid pass, or one iteration of its sweeps).
     bool expandNextStep();
+    void appendGridPass(const StagePlan& stage);
     void appendPhase(uint32_t kernel, int32_t iteration, int32_t sweep, glm::ivec3 start, glm::ivec3 step,
                      glm::ivec3 count);
     void appendSkippingSweep(const SweepPlan& sweep, int32_t iteration, int32_t sweepIndex);
@@ -72,7 +73,8 @@ private:
     uint32_t record_ = 0;      // the next phase's active-dispatch record
     PushBlock base_{};         // the fields every dispatch shares
     size_t stage_ = 0;         // next stage to expand
-    uint32_t iteration_ = 0;   // next iteration of the current grammar stage
+    uint32_t iteration_ = 0;   // next iteration of the current stage's sweeps
+    uint32_t stageStep_ = 0;   // steps of the current stage expanded so far
     std::vector<Dispatch> step_;
     size_t position_ = 0;
 };

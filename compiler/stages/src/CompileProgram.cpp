@@ -1,0 +1,38 @@
+#include "voxc/codegen/PointSets.h"
+#include "voxc/ir/Lower.h"
+#include "voxc/stages/Pipeline.h"
+#include "voxc/stages/StageKind.h"
+
+#include <filesystem>
+
+namespace voxc {
+
+KernelPackage compileProgram(const Program& program, const CompileOptions& options) {
+    const ir::IrModule module = ir::lowerProgram(program, ir::LowerOptions{options.afterPass});
+    KernelPackage package;
+    package.world = program.world;
+    package.usesMaterials = program.usesMaterials();
+    package.materials = program.materials;
+    package.pointSets = codegen::pointSetsOf(module);
+    stages::PlanContext context{
+        program, module,
+        program.sourcePath.empty() ? "<program>" : std::filesystem::path(program.sourcePath).filename().string(),
+        package,
+        // Every density is 0 before the pipeline.
+        codegen::DensityBounds{},
+        {}};
+    for (const stages::StageKind* kind : stages::stageKinds()) kind->addKernels(context);
+    for (const Stage& stage : module.pipeline) {
+        const stages::StageKind& kind = stages::stageKind(stage.kind);
+        StagePlan plan;
+        plan.kind = kind.name;
+        plan.loc = stage.loc;
+        plan.label = stage.label;
+        plan.material = stage.material;
+        kind.plan(context, stage, plan);
+        package.stages.push_back(std::move(plan));
+    }
+    return package;
+}
+
+} // namespace voxc

@@ -1,0 +1,116 @@
+// A grammar stage: every iteration runs the grammar's sweeps, each a kernel dispatched once per
+// phase (with tile skipping, after an active-tiles kernel that lists where a rule may match).
+#include "Kinds.h"
+
+#include <fmt/format.h>
+
+namespace voxc::stages {
+
+namespace {
+
+std::string label(const Program& program, const Stage& stage) { return program.grammars.at(stage.index).name; }
+
+bool readsDensities(const Stage&) { return true; }
+
+bool writesMaterials(const Program& program, const Stage& stage) {
+    for (const Rule& rule : program.grammars.at(stage.index).rules)
+        for (const TransformCell& cell : rule.transform)
+            if (cell.material) return true;
+    return false;
+}
+
+// One iteration: every sweep tests each rule's cells at each anchor.
+double iterationWork(const Grammar& grammar) {
+    double work = 0.0;
+    for (const Sweep& sweep : orderSweeps(grammar)) {
+        const double anchors = double(sweep.anchorCount.x) * sweep.anchorCount.y * sweep.anchorCount.z;
+        const double cells = double(sweep.window.x) * sweep.window.y * sweep.window.z;
+        work += anchors * double(sweep.rules.size()) * cells;
+    }
+    return work;
+}
+
+StageWork estimateWork(const Program& program, const Stage& stage, double) {
+    const Grammar& grammar = program.grammars[stage.index];
+    const double perIteration = iterationWork(grammar);
+    return {perIteration * grammar.iterations, stage.loc.line ? stage.loc : grammar.loc,
+            fmt::format("grammar '{}' ({} iterations x {} window cells tested per iteration: anchors x rules x "
+                        "cells over its sweeps)",
+                        grammar.name, grammar.iterations, formatWork(perIteration))};
+}
+
+// One kernel per window size (sweep) of a grammar not run before.
+int64_t newKernels(const Program& program, const Stage& stage, std::set<std::string>& seen) {
+    if (!seen.insert(fmt::format("grammar {}", stage.index)).second) return 0;
+    return int64_t(orderSweeps(program.grammars[stage.index]).size());
+}
+
+void interpret(const Program& program, const Stage& stage, DenseGrid& grid, const InterpOptions& options,
+               NonFiniteCount* nonFinite) {
+    runGrammar(program, stage.index, grid, options, nonFinite);
+}
+
+std::string sweepKey(const ir::IrGrammar& grammar, const ir::IrSweep& sweep) {
+    return fmt::format("{}_sweep{}", grammar.name, sweep.index);
+}
+
+// Kernels of every grammar are built once, even if the pipeline runs it more than once; the
+// tile-skipping kernels follow the sweep kernels (a sweep without live rules needs none).
+void addKernels(PlanContext& context) {
+    for (const ir::IrGrammar& grammar : context.module.grammars)
+        for (const ir::IrSweep& sweep : grammar.sweeps) {
+            const std::string name = sweepKey(grammar, sweep);
+            const std::string origin =
+                fmt::format("{}:{}:{} grammar {}, window [{},{},{}]", context.sourceName, grammar.loc.line,
+                            grammar.loc.column, grammar.name, sweep.window.x, sweep.window.y, sweep.window.z);
+            context.kernels[name] =
+                context.addKernel(name, origin, codegen::sweepDispatchShape(sweep),
+                                  codegen::sweepKernelSource(grammar, sweep, name, context.sourceName));
+        }
+    for (const ir::IrGrammar& grammar : context.module.grammars)
+        for (const ir::IrSweep& sweep : grammar.sweeps) {
+            if (sweep.rules.empty()) continue;
+            const std::string name = sweepKey(grammar, sweep) + "_active_tiles";
+            const std::string origin = context.package.kernels[context.kernels.at(sweepKey(grammar, sweep))].origin;
+            context.kernels[name] =
+                context.addKernel(name, origin, codegen::activeTilesDispatchShape(),
+                                  codegen::activeTilesKernelSource(grammar, sweep, name, context.sourceName));
+        }
+    if (!context.module.grammars.empty())
+        context.package.tileRangesKernel = context.addKernel("tile_ranges", "voxc runtime: tile density ranges",
+                                                             codegen::tileRangesDispatchShape(),
+                                                             codegen::tileRangesKernelSource());
+}
+
+// After a grammar the density bounds are not tracked.
+void plan(PlanContext& context, const Stage& stage, StagePlan& plan) {
+    const ir::IrGrammar& grammar = context.module.grammars.at(stage.index);
+    const Grammar& checked = context.program.grammars.at(grammar.programIndex);
+    GrammarPlan sweeps;
+    sweeps.name = grammar.name;
+    sweeps.iterations = uint32_t(grammar.iterations);
+    for (const ir::IrSweep& irSweep : grammar.sweeps) {
+        Sweep sweep;
+        sweep.window = irSweep.window;
+        sweep.anchorCount = irSweep.anchorCount;
+        sweep.phaseCount = irSweep.phaseCount;
+        SweepPlan sweepPlan;
+        sweepPlan.kernel = context.kernels.at(sweepKey(grammar, irSweep));
+        const auto activeTiles = context.kernels.find(sweepKey(grammar, irSweep) + "_active_tiles");
+        if (activeTiles != context.kernels.end()) sweepPlan.activeTilesKernel = activeTiles->second;
+        sweepPlan.window = irSweep.window;
+        sweepPlan.phaseCount = irSweep.phaseCount;
+        fillPhaseAnchors(sweepPlan, checked, sweep);
+        sweeps.sweeps.push_back(std::move(sweepPlan));
+    }
+    plan.attributes.emplace_back("grammar", grammar.name);
+    plan.grammar = std::move(sweeps);
+    context.densities.reset();
+}
+
+} // namespace
+
+const StageKind kGrammarStage{Stage::Kind::Grammar, "grammar", label,     readsDensities, writesMaterials, estimateWork,
+                              newKernels,           interpret, addKernels, plan};
+
+} // namespace voxc::stages
