@@ -258,6 +258,11 @@ expect lsystem_cross_d 0 '"FF\[RFZ\]F\[LFZ\]"' -- "$voxc" lsystem cross "$work/g
 expect lsystem_cross_checks 0 "ok" -- "$voxc" check "$work/crossed.vox"
 expect lsystem_cross_range 1 "bracket 4" -- "$voxc" lsystem cross "$work/gram7a.vox:a" "$work/gram7b.vox:b" --brackets 4,2
 expect lsystem_cross_reference 1 "FILE:NAME" -- "$voxc" lsystem cross "$work/gram7a.vox" "$work/gram7b.vox:b" --brackets 1,1
+# lsystem_cave: the example carves a non-empty, watertight cave, the same at every chunk size
+expect lsystem_cave_mesh 0 "[1-9][0-9]* triangles, 0 boundary edges, 0 non-manifold edges.*watertight" -- \
+    "$voxc" run "$src/examples/lsystem_cave.vox" --device lavapipe --chunk 8 -o "$work/lsystem_cave8.ply" \
+    --voxels "$work/lsystem_cave8.npy"
+expect_same lsystem_cave_chunk_8_vs_32 "$work/lsystem_cave.npy" "$work/lsystem_cave8.npy"
 printf 'world { size = [8, 8, 8]; }\nlsystem a { production Z { "FZ"; } }\npipeline { start; subtract a; }\n' > "$work/carve.vox"
 expect lsystem_not_carvable 1 "E0013: 'a' is an lsystem; carving" -- "$voxc" run "$work/carve.vox" -o "$work/carve.ply"
 expect_no_file lsystem_not_carvable_no_mesh "$work/carve.ply"
