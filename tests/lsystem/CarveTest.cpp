@@ -172,7 +172,9 @@ TEST(CarveTest, DistancesDoNotDependOnTheBinning) {
         for (const PointSetSegment& s : set->segments) segment = std::min(segment, segmentDistanceSquared(p, s));
         return glm::vec2(std::min(std::sqrt(centre), set->centreReach), std::min(std::sqrt(segment), set->segmentReach));
     };
-    std::vector<PointBins> binnings{set->bins, binPointSet(*set, glm::ivec3(-1), glm::ivec3(2), 1 << 20, UINT64_MAX, UINT32_MAX)};
+    // The last binning covers no voxel: every position falls back to every point.
+    std::vector<PointBins> binnings{set->bins, binPointSet(*set, glm::ivec3(-1), glm::ivec3(2), 1 << 20, UINT64_MAX, UINT32_MAX),
+                                    PointBins{}};
     for (int cell : {16, 64}) // cells from world -64 to past 160 on every axis
         binnings.push_back(binPointSet(*set, glm::ivec3(-64 / cell), glm::ivec3(256 / cell), cell, UINT64_MAX, UINT32_MAX));
     size_t near = 0;
@@ -184,7 +186,7 @@ TEST(CarveTest, DistancesDoNotDependOnTheBinning) {
                 near += expected.x < set->centreReach;
                 for (const PointBins& bins : binnings)
                     ASSERT_EQ(std::bit_cast<uint64_t>(pointSetDistances(*set, bins, p)), std::bit_cast<uint64_t>(expected))
-                        << "cell " << bins.cellSize << " at " << p.x << "," << p.y << "," << p.z;
+                        << "cell " << bins.cellSize << " of " << bins.cells() << " at " << p.x << "," << p.y << "," << p.z;
             }
     EXPECT_GT(near, 100u);
 }

@@ -181,18 +181,28 @@ PointBins binPointSetOverGrid(const PointSet& set, glm::ivec3 gridOrigin, glm::i
 
 glm::vec2 pointSetDistances(const PointSet& set, const PointBins& bins, glm::vec3 p) {
     glm::ivec3 cell;
+    bool inside = true;
     for (int a = 0; a < 3; ++a) {
         cell[a] = int32_t(floorDiv(int64_t(std::floor(p[a])), bins.cellSize));
-        if (cell[a] < bins.firstCell[a] || cell[a] >= bins.firstCell[a] + bins.cellCount[a])
-            return {set.centreReach, set.segmentReach};
+        inside = inside && cell[a] >= bins.firstCell[a] && cell[a] < bins.firstCell[a] + bins.cellCount[a];
     }
-    const size_t index = cellIndex(bins, cell);
-    const float nearestCentre =
-        nearestSquared(bins.centreItems, bins.centreStart[index], bins.centreStart[index + 1],
-                       [&](uint32_t i) { return centreDistanceSquared(p, set.centres[i]); });
-    const float nearestSegment =
-        nearestSquared(bins.segmentItems, bins.segmentStart[index], bins.segmentStart[index + 1],
-                       [&](uint32_t i) { return segmentDistanceSquared(p, set.segments[i]); });
+    float nearestCentre = std::numeric_limits<float>::max(), nearestSegment = nearestCentre;
+    if (inside) {
+        const size_t index = cellIndex(bins, cell);
+        nearestCentre = nearestSquared(bins.centreItems, bins.centreStart[index], bins.centreStart[index + 1],
+                                       [&](uint32_t i) { return centreDistanceSquared(p, set.centres[i]); });
+        nearestSegment = nearestSquared(bins.segmentItems, bins.segmentStart[index], bins.segmentStart[index + 1],
+                                        [&](uint32_t i) { return segmentDistanceSquared(p, set.segments[i]); });
+    } else { // outside the binned grid (a grid changed after checking): every point, the same floats
+        for (glm::vec3 c : set.centres) {
+            const float d2 = centreDistanceSquared(p, c);
+            nearestCentre = d2 < nearestCentre ? d2 : nearestCentre;
+        }
+        for (const PointSetSegment& s : set.segments) {
+            const float d2 = segmentDistanceSquared(p, s);
+            nearestSegment = d2 < nearestSegment ? d2 : nearestSegment;
+        }
+    }
     const float centre = std::sqrt(nearestCentre), segment = std::sqrt(nearestSegment);
     return {centre < set.centreReach ? centre : set.centreReach, segment < set.segmentReach ? segment : set.segmentReach};
 }

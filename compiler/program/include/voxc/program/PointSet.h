@@ -79,7 +79,7 @@ struct PointSetLimitError {
     uint64_t cap;
 };
 
-// The node's value at p from `bins` (a position outside the bins' cells: both reaches).
+// The node's value at p from `bins` (a position outside the bins' cells: from every point).
 glm::vec2 pointSetDistances(const PointSet& set, const PointBins& bins, glm::vec3 p);
 
 // Whether p lies within set.clearance of a segment, from pointSetDistances's float distance (a
