@@ -1,0 +1,77 @@
+// Shared by the GPU marching-cubes passes (runtime/vulkan/src/GpuMesher.cpp inserts it after each
+// pass's #version line): the push block (McPush there, field for field), the executor's voxel and
+// material buffers, and reads of samples, cells and chunks exactly as the CPU mesher makes them
+// (runtime/mesh/src/MarchingCubes.cpp: outside the grid and non-finite read 0, solid is > iso).
+
+layout(push_constant, std430) uniform McPush {
+    ivec4 gridOrigin;     // xyz: world coordinate of grid voxel (0,0,0); w: log2 chunk size
+    ivec4 gridSize;       // xyz: voxels per axis; w: 1 when the material buffer has a uint per voxel
+    ivec4 chunkBase;      // xyz: world chunk of voxel-buffer slot 0; w: slots along x
+    ivec4 cellChunkFirst; // xyz: first world chunk holding cells; w: voxel-buffer slots along y
+    ivec4 cellChunkCount; // xyz: world chunks holding cells per axis; w: 1 = skip uniform chunks
+    vec4 surface;         // x: iso; y, z: the crossing's clamp, margin and 1 - margin
+    uvec4 levelOffset;    // element offsets of scan levels 1..3 in the scan buffer (x unused)
+    uvec4 pass;           // x: workgroups along x; y: scanned levels; z: items of this dispatch; w: scan level
+} push;
+
+// Densities and material ids (low byte of a uint), chunk-major at the same addresses.
+layout(std430, set = 0, binding = 0) readonly buffer Voxels {
+    float density[];
+} voxels;
+layout(std430, set = 0, binding = 1) readonly buffer Materials {
+    uint material[];
+} materials;
+
+// Dispatches are at most 65535 workgroups along x, so large ones use y as well. The local size
+// is a parameter: this file comes before the pass's local_size layout, where gl_WorkGroupSize
+// would still read (1, 1, 1).
+uint invocationIndex(uint localSize) {
+    return (gl_WorkGroupID.y * push.pass.x + gl_WorkGroupID.x) * localSize + gl_LocalInvocationID.x;
+}
+
+bool insideGrid(ivec3 p) {
+    return all(greaterThanEqual(p, ivec3(0))) && all(lessThan(p, push.gridSize.xyz));
+}
+
+// As voxc::ChunkLayout::address: the chunk table is the identity, so the slot is the table index.
+uint voxelAddress(ivec3 local) {
+    const int shift = push.gridOrigin.w;
+    const ivec3 world = push.gridOrigin.xyz + local;
+    const uvec3 entry = uvec3((world >> shift) - push.chunkBase.xyz);
+    const uvec3 inside = uvec3(world & ((1 << shift) - 1));
+    const uint slot = entry.x + uint(push.chunkBase.w) * (entry.y + uint(push.cellChunkFirst.w) * entry.z);
+    const uint size = 1u << uint(shift);
+    return slot * size * size * size + inside.x + size * (inside.y + size * inside.z);
+}
+
+float densityAt(ivec3 p) {
+    if (!insideGrid(p)) return 0.0;
+    const float d = voxels.density[voxelAddress(p)];
+    return isnan(d) || isinf(d) ? 0.0 : d;
+}
+
+bool solidAt(ivec3 p) { return densityAt(p) > push.surface.x; }
+
+uint materialAt(ivec3 p) {
+    if (push.gridSize.w == 0 || !insideGrid(p)) return 0u;
+    return materials.material[voxelAddress(p)] & 0xffu;
+}
+
+// Cells are named by their minimum corner, grid-local, from -1 to gridSize - 1 per axis; their
+// key (x fastest) is voxc::surface_nets::CellDomain::key, the global order of the mesh.
+uvec3 cellDomain() { return uvec3(push.gridSize.xyz) + 1u; }
+
+ivec3 cellOfKey(uint key) {
+    const uvec3 n = cellDomain();
+    return ivec3(key % n.x, (key / n.x) % n.y, key / (n.x * n.y)) - 1;
+}
+
+// Corner c of a cell is at offset (c&1, (c>>1)&1, (c>>2)&1); bit c of a case is corner c solid.
+ivec3 cornerOffset(uint corner) { return ivec3(corner & 1u, (corner >> 1) & 1u, (corner >> 2) & 1u); }
+
+uint cellCase(ivec3 cell) {
+    uint mask = 0u;
+    for (uint c = 0u; c < 8u; ++c)
+        if (solidAt(cell + cornerOffset(c))) mask |= 1u << c;
+    return mask;
+}

@@ -1,0 +1,39 @@
+#pragma once
+// Marching cubes on the Vulkan device, over the voxel and material buffers a VulkanExecutor's
+// run() left there (no densities cross to the host). Three kinds of dispatch, each behind a
+// pipeline barrier on the one before (a workgroup barrier orders nothing between workgroups):
+// a count pass (per cell: the crossed edges it owns and its triangle count from the case table),
+// an exclusive scan of those counts in global cell order, and an emit pass that writes every
+// vertex and triangle at the place the scan gave it. The mesh is the CPU mesher's
+// (voxc/mesh/MarchingCubes.h, the oracle): the same case table, vertices ordered by global edge,
+// triangles by global cell then table order, the same arithmetic; so the index buffer and the
+// materials are identical, and positions and normals bit-identical where the device rounds as
+// IEEE 754 requires (lavapipe; tests/vulkan/GpuMesherTest). Uniform chunks are skipped as the
+// CPU mesher skips them, after a pass that finds them on the device.
+#include "voxc/mesh/SurfaceNets.h"
+#include "voxc/vulkan/Executor.h"
+
+#include <memory>
+
+namespace voxc {
+
+class GpuMarchingCubes {
+public:
+    // Builds the passes' pipelines and the buffers sized by the executor's grid. UserError when
+    // the device lacks shaderFloat64 (the crossings are computed in double, as on the CPU) or
+    // the grid's cells need buffers larger than the device can bind. `executor` must outlive this.
+    explicit GpuMarchingCubes(VulkanExecutor& executor);
+    ~GpuMarchingCubes();
+    GpuMarchingCubes(const GpuMarchingCubes&) = delete;
+    GpuMarchingCubes& operator=(const GpuMarchingCubes&) = delete;
+
+    // Meshes the grid of the executor's last run() (InternalError before any run). UserError when
+    // the mesh needs more memory than the device can bind as one buffer.
+    Mesh mesh(const MeshOptions& options, MeshStats* stats = nullptr);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace voxc

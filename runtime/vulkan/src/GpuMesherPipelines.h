@@ -1,0 +1,56 @@
+#pragma once
+// The compute pipelines of the GPU marching-cubes passes (compiler/shaders/mc_*.glsl) and the
+// one descriptor set they share.
+#include "ContextImpl.h"
+
+#include <array>
+#include <cstdint>
+
+namespace voxc::vulkan_detail {
+
+// The push block of compiler/shaders/mc_common.glsl, field for field (std430).
+struct McPush {
+    int32_t gridOrigin[4];     // w: log2 chunk size
+    int32_t gridSize[4];       // w: 1 when the material buffer has a uint per voxel
+    int32_t chunkBase[4];      // w: voxel-buffer slots along x
+    int32_t cellChunkFirst[4]; // w: voxel-buffer slots along y
+    int32_t cellChunkCount[4]; // w: 1 = skip uniform chunks
+    float surface[4];          // iso, margin, 1 - margin
+    uint32_t levelOffset[4];   // scan levels 1..3 in the scan buffer, in elements ([0] unused)
+    uint32_t pass[4];          // workgroups along x, scanned levels, items, scan level
+};
+static_assert(sizeof(McPush) == 128, "must match mc_common.glsl; 128 bytes is every device's minimum");
+
+enum McPass : uint32_t { kMcChunks, kMcCount, kMcScan, kMcEmit, kMcPassCount };
+
+// Descriptor set 0 of the passes (the buffers' meaning is in the shaders).
+enum McBinding : uint32_t {
+    kMcVoxels,
+    kMcMaterials,
+    kMcCaseTable,
+    kMcChunkFlags,
+    kMcCellInfo,
+    kMcScanLevels,
+    kMcVertices,
+    kMcTriangles,
+    kMcCellPlaces,
+    kMcBindingCount
+};
+
+struct McPipelines {
+    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    std::array<VkPipeline, kMcPassCount> pipelines{};
+};
+
+// Compiles the passes (glslang) and builds their pipelines; fills `out` step by step, so
+// destroyMcPipelines cleans up after a failure part way.
+void createMcPipelines(VulkanContext::Impl& ctx, McPipelines& out);
+// Points binding b at buffers[b] for every b in [first, last).
+void bindMcBuffers(VulkanContext::Impl& ctx, const McPipelines& pipelines, const std::array<VkBuffer, kMcBindingCount>& buffers,
+                   uint32_t first = 0, uint32_t last = kMcBindingCount);
+void destroyMcPipelines(VulkanContext::Impl& ctx, McPipelines& pipelines);
+
+} // namespace voxc::vulkan_detail

@@ -1,0 +1,134 @@
+// Marching cubes on the device (voxc/vulkan/GpuMesher.h) against the CPU mesher, its oracle: on
+// lavapipe the index buffer, materials and skipped-chunk counts are identical and positions and
+// normals bit-identical, for several examples, chunk sizes and origins that are not multiples
+// of the chunk size, with and without uniform-chunk skipping, under the validation layer.
+#include "voxc/check/Check.h"
+#include "voxc/core/Errors.h"
+#include "voxc/mesh/MarchingCubes.h"
+#include "voxc/mesh/MeshQuality.h"
+#include "voxc/stages/Pipeline.h"
+#include "voxc/vulkan/Context.h"
+#include "voxc/vulkan/Executor.h"
+#include "voxc/vulkan/GpuMesher.h"
+
+#include <cstring>
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+namespace voxc {
+namespace {
+
+VulkanContext& validatedLavapipe() {
+    static VulkanContext context(ContextOptions{.device = "lavapipe", .validation = true});
+    return context;
+}
+
+Program example(const std::string& name, int32_t chunkSize, glm::ivec3 origin) {
+    CheckResult result = checkFile(fmt::format("{}/examples/{}", VOXC_SOURCE_DIR, name));
+    EXPECT_TRUE(result.program) << result.rendered();
+    Program program = std::move(*result.program);
+    program.world.chunkSize = chunkSize;
+    program.world.origin = origin;
+    return program;
+}
+
+template <typename T>
+size_t countBitDifferences(const std::vector<T>& expected, const std::vector<T>& actual, const std::string& what) {
+    EXPECT_EQ(expected.size(), actual.size()) << what;
+    size_t differences = 0;
+    for (size_t i = 0; i < std::min(expected.size(), actual.size()); ++i)
+        if (std::memcmp(&expected[i], &actual[i], sizeof(T)) != 0 && differences++ < 3)
+            ADD_FAILURE() << what << " " << i << " differs";
+    return differences;
+}
+
+void expectSameMesh(const Mesh& cpu, const Mesh& gpu, const std::string& what) {
+    EXPECT_EQ(countBitDifferences(cpu.positions, gpu.positions, what + ": position"), 0u);
+    EXPECT_EQ(countBitDifferences(cpu.normals, gpu.normals, what + ": normal"), 0u);
+    EXPECT_EQ(cpu.triangles, gpu.triangles) << what;
+    EXPECT_EQ(cpu.vertexMaterials, gpu.vertexMaterials) << what;
+    EXPECT_EQ(cpu.triangleMaterials, gpu.triangleMaterials) << what;
+}
+
+void expectNoValidationMessages(VulkanContext& context) {
+    for (const ValidationMessage& m : context.validationMessages())
+        ADD_FAILURE() << (m.error ? "validation error: " : "validation warning: ") << m.text;
+    context.clearValidationMessages();
+}
+
+struct Case {
+    const char* file;
+    int32_t chunkSize;
+    glm::ivec3 origin;
+};
+
+// Materials (scene), a grammar over noise (terrain), a grammar's saddles (overhang, cave_grammar),
+// field CSG (fields); chunk sizes 8 to 64; origins negative, odd and past 2^10 (a wider margin).
+const Case kCases[] = {
+    {"scene.vox", 32, {-37, -5, -70}}, {"terrain.vox", 16, {0, 0, 0}},       {"overhang.vox", 8, {3, -9, 5}},
+    {"cave_grammar.vox", 16, {1000, 17, -999}}, {"fields.vox", 64, {-64, 1, 13}},
+};
+
+TEST(mesh_GpuMarchingCubes, MatchesTheCpuMesherBitForBit) {
+    VulkanContext& context = validatedLavapipe();
+    for (const Case& c : kCases) {
+        const Program program = example(c.file, c.chunkSize, c.origin);
+        VulkanExecutor executor(context, compileProgram(program, {}));
+        const RunResult result = executor.run();
+        GpuMarchingCubes gpu(executor);
+        for (const float iso : {0.5f, 0.3f})
+            for (const bool skip : {true, false}) {
+                const std::string what = fmt::format("{} chunk {} iso {} skip {}", c.file, c.chunkSize, iso, skip);
+                const MeshOptions options{.iso = iso, .skipUniformChunks = skip};
+                MeshStats cpuStats, gpuStats;
+                const Mesh cpu = meshMarchingCubes(result.grid, options, &cpuStats);
+                const Mesh gpuMesh = gpu.mesh(options, &gpuStats);
+                ASSERT_GT(cpu.triangles.size(), 0u) << what;
+                expectSameMesh(cpu, gpuMesh, what);
+                EXPECT_EQ(gpuStats.chunks, cpuStats.chunks) << what;
+                EXPECT_EQ(gpuStats.skippedChunks, cpuStats.skippedChunks) << what;
+                if (skip && iso == 0.5f) {
+                    EXPECT_GT(gpuStats.skippedChunks, 0u) << what;
+                }
+                EXPECT_TRUE(measureMeshQuality(gpuMesh).manifold()) << what;
+            }
+        expectNoValidationMessages(context);
+    }
+}
+
+TEST(mesh_GpuMarchingCubes, IsTheSameForEveryChunkSizeAndRepeatedCall) {
+    VulkanContext& context = validatedLavapipe();
+    std::vector<Mesh> meshes;
+    for (const int32_t chunk : {8, 32}) {
+        VulkanExecutor executor(context, compileProgram(example("overhang.vox", chunk, {-5, 2, -11}), {}));
+        executor.run();
+        GpuMarchingCubes gpu(executor);
+        meshes.push_back(gpu.mesh({}));
+        meshes.push_back(gpu.mesh({})); // the buffers of the first call are reused
+    }
+    for (size_t i = 1; i < meshes.size(); ++i) expectSameMesh(meshes[0], meshes[i], fmt::format("mesh {}", i));
+    expectNoValidationMessages(context);
+}
+
+TEST(mesh_GpuMarchingCubes, AGridWithNoSurfaceGivesAnEmptyMesh) {
+    VulkanContext& context = validatedLavapipe();
+    VulkanExecutor executor(context, compileProgram(example("terrain.vox", 16, {0, 0, 0}), {}));
+    executor.run();
+    GpuMarchingCubes gpu(executor);
+    MeshStats stats;
+    const Mesh mesh = gpu.mesh({.iso = 2.0f}, &stats); // no density exceeds 2: all air
+    EXPECT_TRUE(mesh.positions.empty());
+    EXPECT_TRUE(mesh.triangles.empty());
+    EXPECT_EQ(stats.skippedChunks, stats.chunks);
+    EXPECT_GT(stats.chunks, 0u);
+    expectNoValidationMessages(context);
+}
+
+TEST(mesh_GpuMarchingCubes, MeshingBeforeAnyRunIsAnInternalError) {
+    VulkanExecutor executor(validatedLavapipe(), compileProgram(example("terrain.vox", 16, {0, 0, 0}), {}));
+    GpuMarchingCubes gpu(executor);
+    EXPECT_THROW(gpu.mesh({}), InternalError);
+}
+
+} // namespace
+} // namespace voxc
