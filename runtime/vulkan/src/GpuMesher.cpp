@@ -81,8 +81,10 @@ struct GpuMarchingCubes::Impl {
 
     void checkLimits() const;
     void createBuffers();
-    // A buffer of at least `bytes` (storage and transfer source/destination), replaced when smaller.
-    void ensureBuffer(DeviceBuffer& buffer, VkDeviceSize bytes, MemoryUse use);
+    // A buffer of at least `bytes` (storage and transfer source/destination), replaced when
+    // smaller; true when replaced (a new buffer may reuse the old handle's value, so callers
+    // cannot compare handles to know whether descriptors need an update).
+    bool ensureBuffer(DeviceBuffer& buffer, VkDeviceSize bytes, MemoryUse use);
     McPush push(const MeshOptions& options) const;
     // Records `groups` workgroups of `pass`, split over x and y where x alone is not enough.
     void dispatch(McPass pass, McPush& push, uint32_t groups, uint32_t items);
@@ -118,12 +120,13 @@ void GpuMarchingCubes::Impl::checkLimits() const {
                                     ctx.info.name, mib(maxRange)));
 }
 
-void GpuMarchingCubes::Impl::ensureBuffer(DeviceBuffer& buffer, VkDeviceSize bytes, MemoryUse use) {
-    if (buffer.buffer && buffer.size >= bytes) return;
+bool GpuMarchingCubes::Impl::ensureBuffer(DeviceBuffer& buffer, VkDeviceSize bytes, MemoryUse use) {
+    if (buffer.buffer && buffer.size >= bytes) return false;
     destroyBuffer(ctx, buffer);
     const VkBufferUsageFlags usage =
         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     buffer = createBuffer(ctx, bytes, usage, use);
+    return true;
 }
 
 void GpuMarchingCubes::Impl::createBuffers() {
@@ -285,11 +288,10 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
         throw UserError(fmt::format("the mesh has {} vertices and {} triangles, a {} and a {} buffer on the device, more than "
                                     "the Vulkan device '{}' can bind ({}); mesh on the host instead (voxc run --mesh-on host)",
                                     vertexCount, triangleCount, mib(vertexBytes), mib(triangleBytes), s.ctx.info.name, mib(maxRange)));
-    const VkBuffer before[2] = {s.vertices.buffer, s.triangles.buffer};
-    s.ensureBuffer(s.vertices, vertexBytes, MemoryUse::Device);
-    s.ensureBuffer(s.triangles, triangleBytes, MemoryUse::Device);
+    const bool newVertices = s.ensureBuffer(s.vertices, vertexBytes, MemoryUse::Device);
+    const bool newTriangles = s.ensureBuffer(s.triangles, triangleBytes, MemoryUse::Device);
     s.ensureBuffer(s.results, vertexBytes + triangleBytes, MemoryUse::HostAccess);
-    if (before[0] != s.vertices.buffer || before[1] != s.triangles.buffer) {
+    if (newVertices || newTriangles) {
         std::array<VkBuffer, kMcBindingCount> buffers{};
         buffers[kMcVertices] = s.vertices.buffer;
         buffers[kMcTriangles] = s.triangles.buffer;
