@@ -4,14 +4,17 @@
 // to the same definition.
 #include "CheckTestUtil.h"
 
+#include "voxc/generators/lsystem/Evolve.h"
 #include "voxc/generators/lsystem/Expand.h"
 #include "voxc/generators/lsystem/RuleFile.h"
 #include "voxc/generators/lsystem/Turtle.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include <filesystem>
@@ -209,6 +212,40 @@ TEST(check_Lsystem, StringsWhereTheyDoNotBelong) {
     EXPECT_EQ(codes(check("world { size = [16, 16, 16]; \"FZ\"; }")), Codes{"E0008"});
     EXPECT_EQ(codes(check(kWorld + "lsystem a { }\nlsystem a { }\n")), Codes{"E0003"});
     EXPECT_EQ(codes(check(kWorld + "lsystem a { }\npipeline { start; union a; }\n")), Codes{"E0013"});
+}
+
+// random_rules draws `count` alternatives of the production from the block's seed (§III-B.1):
+// each has the drawn number of macros from the weighted ones, never an excluded one, at least
+// one bracket pair; the same seed draws the same rules and another seed others.
+TEST(check_Lsystem, RandomRulesDrawProductionsFromTheSeed) {
+    const auto drawn = [](uint32_t seed) {
+        const CheckResult result = check(kWorld + fmt::format(R"(lsystem net {{
+  seed = {};
+  production Z {{ "I"; }}
+  macro I {{ "FFZ" tunnel 1; }}
+  macro C {{ "FLFZ" tunnel 1; }}
+  macro T {{ "FUFDZ" tunnel 1; }}
+  random_rules {{ count = 3; macros = [4, 5]; bracket_chance = 0.5; weights {{ C = 0.5; T = -1; }} }}
+}}
+)", seed));
+        return only(result).definition.productions.at('Z');
+    };
+    const std::vector<Alternative> first = drawn(5);
+    ASSERT_EQ(first.size(), 4u);
+    EXPECT_EQ(first[0].text, "I"); // the written alternative stays first
+    for (size_t k = 1; k < first.size(); ++k) {
+        const std::string& text = first[k].text;
+        const size_t macros = size_t(std::count_if(text.begin(), text.end(), [](char c) { return c != '[' && c != ']'; }));
+        EXPECT_TRUE(macros == 4 || macros == 5) << text;
+        EXPECT_EQ(text.find('T'), std::string::npos) << text;
+        EXPECT_FALSE(bracketPairs(text).empty()) << text;
+        EXPECT_NE(text.front(), '[') << text;
+    }
+    const std::vector<Alternative> again = drawn(5), other = drawn(6);
+    for (size_t k = 1; k < first.size(); ++k) EXPECT_EQ(first[k].text, again[k].text);
+    bool differs = false;
+    for (size_t k = 1; k < first.size(); ++k) differs = differs || first[k].text != other[k].text;
+    EXPECT_TRUE(differs);
 }
 
 } // namespace

@@ -267,5 +267,22 @@ printf 'world { size = [8, 8, 8]; }\nlsystem a { production Z { "FZ"; } }\npipel
 expect lsystem_not_carvable 1 "E0013: 'a' is an lsystem; carving" -- "$voxc" run "$work/carve.vox" -o "$work/carve.ply"
 expect_no_file lsystem_not_carvable_no_mesh "$work/carve.ply"
 
+# evolve: a generation of variants, each a .vox that checks, with previews; the same inputs give
+# the same files; picks continue into the next generation
+expect help_evolve 0 "--population.*--with|--with.*--population" -- "$voxc" evolve --help
+expect evolve_writes 0 "wrote 4 variants of lsystem 'macros' \(generation 1" -- "$voxc" evolve "$src/examples/lsystem_macros.vox" macros --population 4 -o "$work/gen1"
+for k in 1 2 3 4; do
+    expect "evolve_variant_${k}_checks" 0 "ok" -- "$voxc" check "$work/gen1/variant_$k.vox"
+done
+expect evolve_summary 0 "" -- python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['generation'] == 1 and [v['file'] for v in d['variants']] == ['variant_%d.vox' % k for k in range(1, 5)] and all(v['segments'] > 0 for v in d['variants'])" "$work/gen1/generation.json"
+expect evolve_pictures 0 "" -- python3 -c "import sys; assert all(open(p, 'rb').read(8) == b'\x89PNG\r\n\x1a\n' for p in sys.argv[1:])" "$work/gen1/contact_sheet.png" "$work/gen1/variant_1.png" "$work/gen1/variant_4.png"
+"$voxc" evolve "$src/examples/lsystem_macros.vox" macros --population 4 -o "$work/gen1_again" >/dev/null 2>&1
+expect evolve_deterministic 0 "" -- diff -r "$work/gen1" "$work/gen1_again"
+expect evolve_next_generation 0 "generation 2" -- "$voxc" evolve "$work/gen1/variant_2.vox" macros --with "$work/gen1/variant_3.vox:macros" --generation 2 --population 3 -o "$work/gen2"
+expect evolve_input_inside_output 1 "" -- "$voxc" evolve "$work/gen1/variant_1.vox" macros -o "$work/gen1"
+expect_same evolve_input_untouched "$work/gen1/variant_1.vox" "$work/gen1_again/variant_1.vox"
+expect evolve_population_range 1 "--population must be 1..64" -- "$voxc" evolve "$src/examples/lsystem_macros.vox" macros --population 0 -o "$work/gen0"
+expect_no_file evolve_population_nothing_written "$work/gen0"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

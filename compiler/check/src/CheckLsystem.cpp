@@ -7,10 +7,12 @@
 #include "Suggest.h"
 #include "Values.h"
 
+#include "voxc/generators/lsystem/Evolve.h"
 #include "voxc/generators/lsystem/Expand.h"
 #include "voxc/generators/lsystem/RuleFile.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fmt/format.h>
 #include <limits>
@@ -25,8 +27,11 @@ using namespace lsystem;
 constexpr std::string_view kKeys[] = {"turtle",    "selection",  "axiom",       "expansions", "seed",
                                       "angle",     "step",       "angle_delta", "step_delta", "angle_deviation",
                                       "pitch_limit", "start",    "yaw",         "pitch",      "rules"};
-constexpr std::string_view kNestedBlocks[] = {"production", "macro", "target", "balanced", "constrain", "connect"};
+constexpr std::string_view kNestedBlocks[] = {"production", "macro",   "target",      "balanced",
+                                               "constrain",  "connect", "random_rules"};
 constexpr std::string_view kTypes[] = {"none", "tunnel", "room"};
+// Alternatives one `random_rules` block may add.
+constexpr int64_t kMaxRandomAlternatives = 64;
 // Numbers are range-checked by lsystem::checkDefinition; here they only have to be finite.
 constexpr double kAnyNumber = std::numeric_limits<double>::max();
 
@@ -74,7 +79,7 @@ public:
             context_.diagnostics.error("E0012", block_.labelLoc, fmt::format("{}: {}", where_, e.what()));
             return std::nullopt;
         }
-        return CheckedLsystem{*block_.label, block_.labelLoc, definition_, connect_, rulesPath_};
+        return CheckedLsystem{*block_.label, block_.labelLoc, definition_, connect_, rulesPath_, block_.loc, block_.end};
     }
 
 private:
@@ -131,7 +136,8 @@ private:
 
     void readNestedBlocks() {
         rejectUnexpectedMembers(context_, block_, where_, {.blocks = true});
-        bool sawTarget = false, sawBalanced = false, sawConstrain = false, sawConnect = false;
+        bool sawTarget = false, sawBalanced = false, sawConstrain = false, sawConnect = false, sawRandom = false;
+        const ast::Block* randomRules = nullptr;
         for (const ast::Block& nested : block_.blocks) {
             if (nested.kind == "production" || nested.kind == "macro") {
                 readAlternatives(nested, nested.kind == "macro");
@@ -148,12 +154,88 @@ private:
                 readConstrain(nested);
             } else if (nested.kind == "connect" && once(nested, sawConnect)) {
                 readConnect(nested);
+            } else if (nested.kind == "random_rules" && once(nested, sawRandom)) {
+                randomRules = &nested;
             } else if (std::find(std::begin(kNestedBlocks), std::end(kNestedBlocks), nested.kind) ==
                        std::end(kNestedBlocks)) {
                 context_.diagnostics.error("E0008", nested.loc,
                                            fmt::format("unknown block '{}' in {}{}", nested.kind, where_,
                                                        didYouMean(nested.kind, kNestedBlocks)));
             }
+        }
+        // After every macro is known (the block's and the rule file's).
+        if (randomRules) readRandomRules(*randomRules);
+    }
+
+    // `random_rules { symbol = "Z"; count = 1; macros = [6, 6]; bracket_chance = 0.5;
+    // weights { Q = 0.5; T = -1; } }` (§III-B.1): `count` random alternatives of the production
+    // of `symbol`, drawn from the block's seed, appended after its written ones. Without
+    // `weights` every macro weighs 1.
+    void readRandomRules(const ast::Block& nested) {
+        checkLabel(context_, nested, false);
+        rejectUnexpectedMembers(context_, nested, "'random_rules' block", {.blocks = true});
+        constexpr std::string_view keys[] = {"symbol", "count", "macros", "bracket_chance"};
+        BlockKeys found(context_, nested, "'random_rules' block", keys);
+        const int errorsBefore = context_.diagnostics.errorCount();
+        char symbol = 'Z';
+        if (const auto* a = found.find("symbol"))
+            if (auto text = readString(context_, *a)) {
+                if (text->size() == 1 && *text != "[" && *text != "]")
+                    symbol = (*text)[0];
+                else
+                    context_.diagnostics.error("E0001", a->value.loc,
+                                               fmt::format("'symbol' names one symbol, as in \"Z\", not \"{}\"", *text));
+            }
+        int64_t count = 1;
+        if (const auto* a = found.find("count"))
+            if (auto v = readInteger(context_, *a, 1, kMaxRandomAlternatives)) count = *v;
+        RandomRuleParams params;
+        params.selection = definition_.selection;
+        if (const auto* a = found.find("macros"))
+            if (auto v = readRange(context_, *a)) {
+                // Whole counts; their range (2 <= min <= max <= 64) is randomProduction's check.
+                if ((*v)[0] != std::floor((*v)[0]) || (*v)[1] != std::floor((*v)[1]) || (*v)[0] < 0 || (*v)[1] > 1e6)
+                    context_.diagnostics.error("E0007", a->value.loc, "'macros' is a range of whole counts [min, max]");
+                else
+                    params.minMacros = uint32_t((*v)[0]), params.maxMacros = uint32_t((*v)[1]);
+            }
+        if (const auto* a = found.find("bracket_chance"))
+            if (auto v = readNumber(context_, *a, 0, 1)) params.bracketChance = *v;
+        for (const auto& [macro, substitutes] : definition_.macros) params.weights[macro] = 1.0;
+        for (const ast::Block& weights : nested.blocks) {
+            if (weights.kind != "weights") {
+                context_.diagnostics.error("E0008", weights.loc,
+                                           fmt::format("unknown block '{}' in 'random_rules'; it takes one "
+                                                       "'weights {{ Q = 0.5; T = -1; }}' block",
+                                                       weights.kind));
+                continue;
+            }
+            checkLabel(context_, weights, false);
+            rejectUnexpectedMembers(context_, weights, "'weights' block", {});
+            for (const ast::Assignment& a : weights.assignments) {
+                if (a.key.size() != 1 || !definition_.macros.contains(a.key[0])) {
+                    context_.diagnostics.error("E0002", a.loc,
+                                               fmt::format("'{}' is not a macro of {}; weights name macros", a.key,
+                                                           where_));
+                    continue;
+                }
+                if (auto v = readNumber(context_, a, -kAnyNumber, kAnyNumber)) params.weights[a.key[0]] = *v;
+            }
+        }
+        if (context_.diagnostics.errorCount() != errorsBefore) return;
+        if (params.weights.empty()) {
+            context_.diagnostics.error("E0009", nested.loc,
+                                       fmt::format("'random_rules' needs macros to choose from; {} declares none",
+                                                   where_));
+            return;
+        }
+        std::vector<Alternative>& alternatives = definition_.productions[symbol];
+        try {
+            for (int64_t k = 0; k < count; ++k)
+                alternatives.emplace_back(randomProduction(params, definition_.seed, uint32_t(k)), SymbolType::None, 1.0,
+                                          nested.loc);
+        } catch (const UserError& e) {
+            context_.diagnostics.error("E0007", nested.loc, e.what());
         }
     }
 

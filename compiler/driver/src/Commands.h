@@ -10,5 +10,6 @@ void addRunCommand(CLI::App& app);
 void addInterpCommand(CLI::App& app);
 void addExploreCommand(CLI::App& app);
 void addLsystemCommand(CLI::App& app);
+void addEvolveCommand(CLI::App& app);
 
 } // namespace voxc::driver

@@ -3,6 +3,7 @@
 // crossover of two production rules as lsystem blocks.
 #include "Commands.h"
 #include "Common.h"
+#include "LsystemInputs.h"
 #include "OutputPaths.h"
 
 #include "voxc/check/Check.h"
@@ -41,39 +42,6 @@ struct CrossOptions {
     std::vector<size_t> brackets;
 };
 
-// Checks `path` like `voxc check` (diagnostics to stderr, UserError on errors).
-CheckResult loadChecked(const std::string& path) {
-    CheckResult result = checkFile(path);
-    size_t errors = 0;
-    for (const Diagnostic& diagnostic : result.diagnostics) {
-        std::cerr << render(diagnostic, result.source);
-        errors += diagnostic.severity == Severity::Error;
-    }
-    if (result.hasErrors() || !result.program)
-        throw UserError(fmt::format("{}: {} error{}", path, errors, errors == 1 ? "" : "s"));
-    return result;
-}
-
-const CheckedLsystem& findLsystem(const CheckResult& result, const std::string& path, const std::string& name) {
-    std::string names;
-    for (const CheckedLsystem& lsystem : result.lsystems) {
-        if (lsystem.name == name) return lsystem;
-        if (!names.empty()) names += ", ";
-        names += lsystem.name;
-    }
-    throw UserError(fmt::format("{}: no lsystem named '{}' ({})", path, name,
-                                names.empty() ? "the file declares none" : "it declares: " + names));
-}
-
-// A limit the expansion or the turtle hits is a located E0012 at the block, as `voxc check`
-// reports the limits it can predict.
-[[noreturn]] void reportLimit(const CheckResult& result, const CheckedLsystem& lsystem, const LimitError& error) {
-    Diagnostic diagnostic{Severity::Error, "E0012", lsystem.loc,
-                          fmt::format("lsystem '{}': {}", lsystem.name, error.what()), {}, nullptr};
-    std::cerr << render(diagnostic, result.source);
-    throw UserError(fmt::format("{}: 1 error", result.source.path()));
-}
-
 // Six decimals; a rounding residue such as -1e-16 prints as 0, not -0.000000.
 std::string point(glm::dvec3 p) {
     auto clean = [](double v) { return std::fabs(v) < 5e-7 ? 0.0 : v; };
@@ -92,6 +60,12 @@ std::string textReport(const CheckedLsystem& lsystem, const Definition& definiti
                                   definition.expansions, definition.expansions == 1 ? "" : "s", definition.seed,
                                   definition.turtle == TurtleKind::Thesis ? "thesis" : "abop",
                                   definition.selection == Selection::Weighted ? "weighted" : "thesis");
+    // Productions as the expansion used them (a random_rules block's drawn alternatives included).
+    for (const auto& [symbol, alternatives] : definition.productions) {
+        std::vector<std::string> texts;
+        for (const Alternative& a : alternatives) texts.push_back(fmt::format("\"{}\" {}", a.text, a.weight));
+        out += fmt::format("production {}: {}\n", symbol, fmt::join(texts, " | "));
+    }
     out += fmt::format("length after each expansion: {}\n", fmt::join(expansion.lengths, ", "));
     out += fmt::format("string ({} symbols): {}\n", expansion.symbols.size(), shownString(expansion.symbols));
     std::map<char, size_t> counts;
@@ -153,14 +127,6 @@ void runLsystem(const LsystemOptions& options) {
     }
     writeFileAtomically(options.output, text);
     reportWritten({options.output});
-}
-
-// "a.vox:net" -> ("a.vox", "net"), split at the last ':'.
-std::pair<std::string, std::string> splitReference(const std::string& reference) {
-    const size_t colon = reference.rfind(':');
-    if (colon == std::string::npos || colon == 0 || colon + 1 == reference.size())
-        throw UserError(fmt::format("'{}': name an lsystem as FILE:NAME, e.g. caves.vox:net", reference));
-    return {reference.substr(0, colon), reference.substr(colon + 1)};
 }
 
 // The production the crossover works on: the first symbol's first alternative.

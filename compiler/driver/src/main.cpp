@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
     voxc::driver::addInterpCommand(app);
     voxc::driver::addExploreCommand(app);
     voxc::driver::addLsystemCommand(app);
+    voxc::driver::addEvolveCommand(app);
     try {
         app.parse(argc, argv);
         return 0;

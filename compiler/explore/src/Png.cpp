@@ -3,51 +3,26 @@
 #include "voxc/core/AtomicWrite.h"
 #include "voxc/core/Errors.h"
 
-#include <zlib.h>
+#include <fmt/format.h>
+#include <png.h>
 
 namespace voxc::explore {
 
-namespace {
-
-void appendBigEndian(std::string& out, uint32_t value) {
-    for (int shift = 24; shift >= 0; shift -= 8) out.push_back(char((value >> shift) & 0xFF));
-}
-
-// length, type, data, CRC-32 of type and data.
-void appendChunk(std::string& out, const char type[4], const std::string& data) {
-    appendBigEndian(out, uint32_t(data.size()));
-    const std::string typed = std::string(type, 4) + data;
-    out += typed;
-    appendBigEndian(out, uint32_t(crc32(0L, reinterpret_cast<const Bytef*>(typed.data()), uInt(typed.size()))));
-}
-
-} // namespace
-
+// libpng's simplified API: one call for the size, one for the bytes.
 std::string encodePng(const Image& image) {
-    std::string header;
-    appendBigEndian(header, uint32_t(image.width));
-    appendBigEndian(header, uint32_t(image.height));
-    header += std::string("\x08\x02\x00\x00\x00", 5); // bit depth 8, truecolour, deflate, filter 0, no interlace
-
-    const size_t rowBytes = size_t(image.width) * 3;
-    std::string raw;
-    raw.reserve((rowBytes + 1) * size_t(image.height));
-    for (int y = 0; y < image.height; ++y) {
-        raw.push_back('\0'); // filter type None
-        raw.append(reinterpret_cast<const char*>(image.rgb.data()) + size_t(y) * rowBytes, rowBytes);
-    }
-    uLongf compressedSize = compressBound(uLong(raw.size()));
-    std::string compressed(compressedSize, '\0');
-    if (compress2(reinterpret_cast<Bytef*>(compressed.data()), &compressedSize,
-                  reinterpret_cast<const Bytef*>(raw.data()), uLong(raw.size()), Z_BEST_COMPRESSION) != Z_OK)
-        throw InternalError("zlib could not compress the PNG image data");
-    compressed.resize(compressedSize);
-
-    std::string png("\x89PNG\r\n\x1a\n", 8);
-    appendChunk(png, "IHDR", header);
-    appendChunk(png, "IDAT", compressed);
-    appendChunk(png, "IEND", "");
-    return png;
+    png_image png{};
+    png.version = PNG_IMAGE_VERSION;
+    png.width = png_uint_32(image.width);
+    png.height = png_uint_32(image.height);
+    png.format = PNG_FORMAT_RGB;
+    png_alloc_size_t size = 0;
+    if (!png_image_write_to_memory(&png, nullptr, &size, 0, image.rgb.data(), 0, nullptr))
+        throw InternalError(fmt::format("libpng could not size a {}x{} image: {}", image.width, image.height, png.message));
+    std::string out(size, '\0');
+    if (!png_image_write_to_memory(&png, out.data(), &size, 0, image.rgb.data(), 0, nullptr))
+        throw InternalError(fmt::format("libpng could not encode a {}x{} image: {}", image.width, image.height, png.message));
+    out.resize(size);
+    return out;
 }
 
 void writePng(const std::string& path, const Image& image) { writeFileAtomically(path, encodePng(image)); }

@@ -206,6 +206,7 @@ ast::Block buildBlock(P::BlockContext& ctx) {
         block.loc = tokenLoc(*ctx.kind);
         block.kind = ctx.kind->getText();
     }
+    if (ctx.getStop() && ctx.getStop()->getText() == "}") block.end = tokenLoc(*ctx.getStop());
     if (ctx.label) {
         block.label = ctx.label->getText();
         block.labelLoc = tokenLoc(*ctx.label);

@@ -26,6 +26,8 @@ struct CheckedLsystem {
     lsystem::Definition definition;
     lsystem::ConnectParams connect;
     std::string rulesPath; // the imported rule file as opened (relative to the working directory), or empty
+    // The whole block, from its `lsystem` word to its closing brace, so tools can rewrite it.
+    SourceLoc blockStart, blockEnd;
 };
 
 // The text of an `lsystem NAME { ... }` block that checks back to `definition` and `connect`

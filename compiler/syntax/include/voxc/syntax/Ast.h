@@ -99,6 +99,7 @@ struct WeightedString {
 // `kind label { ... }`. Members of each sort keep their written order.
 struct Block {
     SourceLoc loc; // the kind word
+    SourceLoc end; // the closing brace (line 0 when the parser recovered without one)
     std::string kind;
     std::optional<std::string> label;
     SourceLoc labelLoc;
