@@ -2,6 +2,7 @@
 #include "Common.h"
 #include "NonFiniteReport.h"
 #include "OutputPaths.h"
+#include "SolveReport.h"
 
 #include "voxc/stages/Pipeline.h"
 #include "voxc/core/Errors.h"
@@ -12,6 +13,7 @@
 #include "voxc/mesh/SurfaceNets.h"
 #include "voxc/vulkan/Context.h"
 #include "voxc/vulkan/Executor.h"
+#include "voxc/vulkan/GpuMesher.h"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -29,6 +31,7 @@ struct RunOptions {
     std::string device = "auto";
     float iso = 0.5f;
     std::string mesher = "mc";
+    std::string meshOn; // "device" or "host"; empty: the device for mc, the host for surface nets
     bool validate = false;
     bool listDevices = false;
     WorldOverrides overrides;
@@ -44,6 +47,8 @@ void run(const RunOptions& options) {
         throw UserError("run: nothing to write; give -o MESH.ply|.obj|.glb, --voxels FILE.npy and/or --materials FILE.npy");
     if (!options.meshPath.empty()) requireExtension(options.meshPath, {".ply", ".obj", ".glb"}, "mesh file");
     if (!std::isfinite(options.iso)) throw UserError(fmt::format("--iso {}: the surface level must be a finite number", options.iso));
+    if (options.meshOn == "device" && options.mesher != "mc")
+        throw UserError("run: --mesh-on device: only marching cubes (--mesher mc) runs on the device; surface nets runs on the host");
     if (!options.voxelsPath.empty()) requireExtension(options.voxelsPath, {".npy"}, "voxel file");
     if (!options.materialsPath.empty()) requireExtension(options.materialsPath, {".npy"}, "material file");
     const std::string libraryPath = options.meshPath.ends_with(".obj") ? objMaterialLibraryPath(options.meshPath) : "";
@@ -56,6 +61,7 @@ void run(const RunOptions& options) {
 
     const Program program = loadProgram(options.file, options.overrides);
     const KernelPackage package = compileProgram(program, {});
+    std::cerr << formatSolveReport(program);
     VulkanContext context(ContextOptions{.device = options.device, .validation = options.validate});
     VulkanExecutor executor(context, package);
     const RunResult result = executor.run();
@@ -85,8 +91,11 @@ void run(const RunOptions& options) {
     if (!options.meshPath.empty()) {
         MeshStats stats;
         const bool marchingCubes = options.mesher == "mc";
+        const bool onDevice = marchingCubes && options.meshOn != "host";
         const MeshOptions meshOptions{.iso = options.iso};
-        const Mesh mesh = marchingCubes ? meshMarchingCubes(voxels, meshOptions, &stats) : meshSurfaceNets(voxels, meshOptions, &stats);
+        const Mesh mesh = onDevice        ? GpuMarchingCubes(executor).mesh(meshOptions, &stats)
+                          : marchingCubes ? meshMarchingCubes(voxels, meshOptions, &stats)
+                                          : meshSurfaceNets(voxels, meshOptions, &stats);
         // Both meshers promise a closed mesh of finite vertices, marching cubes a manifold one too;
         // naive surface nets may join four faces at a saddle of the field (reported, not an error).
         const MeshQuality quality = measureMeshQuality(mesh);
@@ -97,7 +106,8 @@ void run(const RunOptions& options) {
         if (mesh.triangles.empty())
             std::cerr << fmt::format("voxc: warning: the mesh is empty: every voxel is on the same side of --iso {}\n", options.iso);
         meshReport = fmt::format("wrote {} ({}): {}; {}; skipped {} of {} chunks with no surface\n", options.meshPath,
-                                 marchingCubes ? "marching cubes" : "surface nets", describeMeshQuality(quality),
+                                 onDevice ? "marching cubes on the device" : marchingCubes ? "marching cubes" : "surface nets",
+                                 describeMeshQuality(quality),
                                  quality.nonManifoldEdges == 0 ? "watertight" : "closed, not manifold",
                                  stats.skippedChunks, stats.chunks);
     }
@@ -128,6 +138,10 @@ void addRunCommand(CLI::App& app) {
     command->add_option("--iso", options->iso, "Surface level for meshing (default 0.5)");
     command->add_option("--mesher", options->mesher, "mc (marching cubes, manifold; the default) or surface-nets")
         ->check(CLI::IsMember({"mc", "surface-nets"}));
+    command->add_option("--mesh-on", options->meshOn,
+                        "device (marching cubes on the Vulkan device, over its voxel buffer; the default for mc) or "
+                        "host (the CPU mesher; always for surface-nets)")
+        ->check(CLI::IsMember({"device", "host"}));
     command->add_flag("--validate", options->validate, "Enable the Khronos validation layer; fail on any message");
     command->add_flag("--list-devices", options->listDevices, "List Vulkan devices and exit");
     addWorldOverrideFlags(*command, options->overrides);
