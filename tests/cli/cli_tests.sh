@@ -269,7 +269,7 @@ expect_no_file lsystem_not_carvable_no_mesh "$work/carve.ply"
 
 # evolve: a generation of variants, each a .vox that checks, with previews; the same inputs give
 # the same files; picks continue into the next generation
-expect help_evolve 0 "--population.*--with|--with.*--population" -- "$voxc" evolve --help
+expect help_evolve 0 "--population UINT" -- "$voxc" evolve --help
 expect evolve_writes 0 "wrote 4 variants of lsystem 'macros' \(generation 1" -- "$voxc" evolve "$src/examples/lsystem_macros.vox" macros --population 4 -o "$work/gen1"
 for k in 1 2 3 4; do
     expect "evolve_variant_${k}_checks" 0 "ok" -- "$voxc" check "$work/gen1/variant_$k.vox"
