@@ -7,6 +7,7 @@
 // invocation writes only its own column.
 
 #include "common.glsl"
+#include "speleothem_air.glsl"
 // <<PARAMETERS>>
 #include "random.glsl"
 #include "noise_common.glsl"

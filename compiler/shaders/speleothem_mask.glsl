@@ -3,14 +3,11 @@
 
 // The first pass of a speleothem stage: every column's air voxels (density < 0.5) as bits, the
 // grid before the stage that the second pass (speleothem_grow.glsl) finds its runs in, so no
-// invocation reads a column another one is writing. One invocation per (x, z) column.
+// invocation reads a column another one is writing. One invocation per (x, z) column; the
+// kernel is the same for every speleothem stage.
 
 #include "common.glsl"
-// <<PARAMETERS>>
-#include "random.glsl"
-#include "noise_common.glsl"
-#include "noise_simplex3.glsl"
-#include "speleothems.glsl"
+#include "speleothem_air.glsl"
 
 // <<DISPATCH_SHAPE>>
 

@@ -1,23 +1,10 @@
 // Speleothems: mirrors voxc::caves (compiler/generators/src/caves/Speleothems.cpp) operation for
 // operation, every float result `precise`, so both sides write the same bits on lavapipe.
-// Requires common.glsl, random.glsl, noise_common.glsl, noise_simplex3.glsl, and before this file
-// the stage's constants (speleothem_grow.glsl's PARAMETERS section): SPELEOTHEM_KIND (0
-// stalactite, 1 stalagmite, 2 column, 3 hoodoo), SPELEOTHEM_CLUSTER_FREQUENCY, _CLUSTER_LOW,
-// _CLUSTER_HIGH, _SPAWN_FREQUENCY, _SPAWN_THRESHOLD, _GROWTH, _TAPER, _MIN_GAP, _MAX_GAP,
-// SPELEOTHEM_MATERIAL (0: none written), the air mask's
-// binding SPELEOTHEM_AIR_MASK_BINDING and `bool speleothemProtected(ivec3 world)`.
-
-// The air voxels before the stage, one bit each, in voxc::caves::AirMask's layout: column
-// (x, z) owns words (x + gridSize.x * z) * wordsPerColumn onward, voxel y is bit y % 32.
-layout(std430, set = 0, binding = SPELEOTHEM_AIR_MASK_BINDING) buffer SpeleothemAirMask {
-    uint bits[];
-} airMask;
-
-int speleothemWordsPerColumn() { return (push.gridSize.y + 31) / 32; }
-
-int speleothemColumnWord(ivec2 column) {
-    return (column.x + push.gridSize.x * column.y) * speleothemWordsPerColumn();
-}
+// Requires common.glsl, random.glsl, noise_common.glsl, noise_simplex3.glsl, speleothem_air.glsl,
+// and before this file the stage's constants (speleothem_grow.glsl's PARAMETERS section):
+// SPELEOTHEM_KIND (0 stalactite, 1 stalagmite, 2 column, 3 hoodoo), SPELEOTHEM_CLUSTER_FREQUENCY,
+// _CLUSTER_LOW, _CLUSTER_HIGH, _SPAWN_FREQUENCY, _SPAWN_THRESHOLD, _GROWTH, _TAPER, _MIN_GAP,
+// _MAX_GAP, SPELEOTHEM_MATERIAL (0: none written) and `bool speleothemProtected(ivec3 world)`.
 
 // L (voxc::caves::speleothemLength): 0 when the run's midpoint fails the cluster range or the
 // spawn threshold, else ceil(phi * gap / 2).

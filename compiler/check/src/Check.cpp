@@ -101,16 +101,23 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
     program.fields = checkFields(context, file, grammarNames);
     CheckedFeatures features = checkFeatures(context, file, grammarNames, program.world, lsystems);
     for (Field& feature : features.fields) program.fields.push_back(std::move(feature));
+    program.speleothems = std::move(features.speleothems);
 
     program.pipeline.push_back({Stage::Kind::Start, 0, FieldMode::Set, {}, std::nullopt});
     const ast::Block* pipelineBlock = uniqueBlock(context, file, "pipeline");
     if (const ast::Block* block = pipelineBlock) {
         std::vector<std::string> fieldNames;
         for (const ast::FieldDecl& field : file.fields) fieldNames.push_back(field.name);
-        for (const ast::FeatureDecl& feature : file.features) fieldNames.push_back(feature.name);
+        std::vector<std::string> speleothemNames;
+        std::vector<std::optional<uint8_t>> speleothemMaterials;
+        for (const ast::FeatureDecl& feature : file.features)
+            (feature.body.kind == kSpeleothemsGenerator ? speleothemNames : fieldNames).push_back(feature.name);
+        for (const SpeleothemStage& speleothem : program.speleothems)
+            speleothemMaterials.push_back(speleothem.params.material);
         std::vector<std::optional<uint8_t>> fieldMaterials(file.fields.size()); // plain fields name none
         fieldMaterials.insert(fieldMaterials.end(), features.materials.begin(), features.materials.end());
-        for (const Stage& stage : checkPipeline(context, *block, grammarNames, fieldNames, fieldMaterials, lsystemNames))
+        for (const Stage& stage : checkPipeline(context, *block, grammarNames, fieldNames, fieldMaterials, lsystemNames,
+                                                speleothemNames, speleothemMaterials))
             program.pipeline.push_back(stage);
     } else {
         for (uint32_t i = 0; i < program.grammars.size(); ++i) program.pipeline.push_back({Stage::Kind::Grammar, i, FieldMode::Set, {}, std::nullopt});

@@ -69,6 +69,7 @@ std::optional<CheckedFeature> checkFeature(Context& context, const ast::FeatureD
         std::vector<std::string_view> names;
         for (const dey::GeneratorInfo& generator : dey::generators()) names.push_back(generator.name);
         names.push_back(kLsystemCave);
+        names.push_back(kSpeleothemsGenerator);
         context.diagnostics.error("E0002", body.loc,
                                   fmt::format("unknown generator '{}'{}", body.kind, suggestOrList(body.kind, names)));
         return std::nullopt;
@@ -134,6 +135,11 @@ CheckedFeatures checkFeatures(Context& context, const ast::File& file, const std
             context.diagnostics.error("E0003", decl.loc,
                                       fmt::format("'{}' already names a pipeline stage (a grammar or 'start')",
                                                   decl.name));
+        if (decl.body.kind == kSpeleothemsGenerator) {
+            if (std::optional<SpeleothemStage> stage = checkSpeleothems(context, decl, out.fields))
+                out.speleothems.push_back(std::move(*stage));
+            continue;
+        }
         std::optional<CheckedFeature> feature = checkFeature(context, decl, world, file, lsystems);
         out.materials.push_back(feature ? feature->material : std::nullopt);
         if (feature) out.fields.push_back(std::move(feature->field));

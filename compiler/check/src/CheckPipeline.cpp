@@ -59,7 +59,9 @@ std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
                                  const std::vector<std::string>& grammarNames,
                                  const std::vector<std::string>& fieldNames,
                                  const std::vector<std::optional<uint8_t>>& fieldMaterials,
-                                 const std::vector<std::string>& lsystemNames) {
+                                 const std::vector<std::string>& lsystemNames,
+                                 const std::vector<std::string>& speleothemNames,
+                                 const std::vector<std::optional<uint8_t>>& speleothemMaterials) {
     const std::string where = "'pipeline' block";
     checkLabel(context, block, false);
     rejectUnexpectedMembers(context, block, where, {.names = true});
@@ -73,6 +75,7 @@ std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
     std::vector<std::string_view> known{"start"};
     for (const std::string& name : grammarNames) known.push_back(name);
     for (const std::string& name : fieldNames) known.push_back(name);
+    for (const std::string& name : speleothemNames) known.push_back(name);
     // The first declaration of each name, found by lookup: a pipeline may name thousands of stages.
     std::unordered_map<std::string_view, uint32_t> grammarIndex, fieldIndex;
     for (size_t i = 0; i < grammarNames.size(); ++i) grammarIndex.emplace(grammarNames[i], uint32_t(i));
@@ -127,6 +130,19 @@ std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
                     stages.push_back(stage);
                 }
             }
+        } else if (auto speleothem = std::find(speleothemNames.begin(), speleothemNames.end(), entry.name);
+                   speleothem != speleothemNames.end()) {
+            const size_t index = size_t(speleothem - speleothemNames.begin());
+            bool ok = true;
+            std::optional<uint8_t> declared = index < speleothemMaterials.size() ? speleothemMaterials[index] : std::nullopt;
+            std::optional<uint8_t> material = stageMaterial(context, entry, declared, ok);
+            if (entry.mode)
+                context.diagnostics.error("E0010", entry.modeLoc,
+                                          fmt::format("'{}' is a speleothem stage; it grows into the grid as it is "
+                                                      "and takes no mode: write '{};'",
+                                                      entry.name, entry.name));
+            else if (ok)
+                stages.push_back({Stage::Kind::Speleothems, uint32_t(index), FieldMode::Set, entry.loc, material});
         } else if (std::find(lsystemNames.begin(), lsystemNames.end(), entry.name) != lsystemNames.end()) {
             context.diagnostics.error("E0013", entry.loc,
                                       fmt::format("'{}' is an lsystem; carving it takes a feature: 'feature NAME = "

@@ -43,21 +43,33 @@ std::vector<CheckedLsystem> checkLsystems(Context& context, const ast::File& fil
 // reported as unknown as well. Field stages need a mode word: `subtract cave;`, and may name
 // a material: `subtract cave material sand;`; without one a stage writes the material in
 // `fieldMaterials` (parallel to fieldNames: a feature's `material` key), if any. A stage
-// naming one of `lsystemNames` is E0013: L-systems cannot be carved yet.
+// naming one of `lsystemNames` is E0013: L-systems cannot be carved yet. A stage naming one of
+// `speleothemNames` (indices into Program::speleothems) takes no mode and may name a material.
 std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
                                  const std::vector<std::string>& grammarNames,
                                  const std::vector<std::string>& fieldNames,
                                  const std::vector<std::optional<uint8_t>>& fieldMaterials,
-                                 const std::vector<std::string>& lsystemNames);
+                                 const std::vector<std::string>& lsystemNames,
+                                 const std::vector<std::string>& speleothemNames,
+                                 const std::vector<std::optional<uint8_t>>& speleothemMaterials);
 
 // User functions and fields: every field's DAG in declaration order. Field names must differ
 // from each other, from `start` and from `grammarNames` (one namespace for pipeline stages).
 std::vector<Field> checkFields(Context& context, const ast::File& file, const std::vector<std::string>& grammarNames);
 
 struct CheckedFeatures {
-    std::vector<Field> fields;                    // the features that checked, declaration order
-    std::vector<std::optional<uint8_t>> materials; // each declared feature's `material` key
+    std::vector<Field> fields;                    // the field features that checked, declaration order
+    std::vector<std::optional<uint8_t>> materials; // each declared field feature's `material` key
+    std::vector<SpeleothemStage> speleothems;      // the speleothem features that checked, declaration order
 };
+
+// The generator name of speleothem features, which are pipeline stages of their own, not fields.
+constexpr std::string_view kSpeleothemsGenerator = "speleothems";
+
+// One `feature NAME = speleothems { ... }`; `fieldsAbove`: the features checked before it, where
+// `keep_clear` finds its lsystem_cave.
+std::optional<SpeleothemStage> checkSpeleothems(Context& context, const ast::FeatureDecl& decl,
+                                                const std::vector<Field>& fieldsAbove);
 
 // Features (`feature name = arch { ... }`), each expanded into a field, in declaration order.
 // Their names share the namespace of fields and of `stageNames` (grammars); `world` gives the

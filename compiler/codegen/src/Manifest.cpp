@@ -78,6 +78,10 @@ BufferInfo bufferInfo(uint32_t binding) {
         return {"pointSets", "int", "engine",
                 "the package's point sets (an lsystem_cave's centres and skeleton segments) with, per 8^3 cell of "
                 "the grid, the sorted lists of those whose reach meets the cell; layout in lsystem_carve.glsl"};
+    case kBindingScratch:
+        return {"scratch", "uint", "engine: the largest scratch_words of a stage, at least 1",
+                "words a stage's prepass_kernel hands to its grid pass: a speleothem stage's air mask, one bit per "
+                "voxel, column (x, z) from word (x + size.x * z) * ceil(size.y / 32); layout in speleothem_air.glsl"};
     }
     throw InternalError(fmt::format("a kernel declares binding {}, which the manifest does not describe", binding));
 }
@@ -197,6 +201,9 @@ Json stageJson(const KernelPackage& package, const StagePlan& stage) {
         json["kernel"] = package.kernels.at(stage.gridKernel).name;
         json["boxes"] = boxes;
     }
+    // A pass over the whole grid before the grid pass, and the scratch words the passes share.
+    if (stage.prepassKernel != kNoKernel) json["prepass_kernel"] = package.kernels.at(stage.prepassKernel).name;
+    if (stage.scratchWords != 0) json["scratch_words"] = stage.scratchWords;
     // The material id the stage writes; absent: materials untouched.
     if (stage.material) json["material"] = *stage.material;
     if (stage.grammar) {

@@ -7,5 +7,6 @@ namespace voxc::stages {
 extern const StageKind kStartStage;
 extern const StageKind kGrammarStage;
 extern const StageKind kFieldStage;
+extern const StageKind kSpeleothemStage;
 
 } // namespace voxc::stages

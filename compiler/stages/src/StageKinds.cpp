@@ -9,7 +9,7 @@ namespace voxc::stages {
 
 namespace {
 
-const std::array<const StageKind*, 3> kKinds = {&kStartStage, &kGrammarStage, &kFieldStage};
+const std::array<const StageKind*, 4> kKinds = {&kStartStage, &kGrammarStage, &kFieldStage, &kSpeleothemStage};
 
 } // namespace
 

@@ -49,6 +49,11 @@ void validatePackage(const KernelPackage& package) {
     for (const StagePlan& stage : package.stages) {
         if (stage.material && !package.usesMaterials)
             packageError(fmt::format("stage '{}' writes a material but the package has no material buffer", stage.label));
+        if (stage.prepassKernel != kNoKernel) {
+            checkKernel(stage.prepassKernel);
+            if (stage.gridKernel == kNoKernel)
+                packageError(fmt::format("stage '{}' has a prepass but no grid pass", stage.label));
+        }
         if (stage.gridKernel != kNoKernel) {
             checkKernel(stage.gridKernel);
             // Boxes inside the grid whose volumes sum to the grid's (the codegen tiles it with chunks).
@@ -159,6 +164,8 @@ bool DispatchCursor::expandNextStep() {
 // One dispatch over the grid, or per box (a constant box's value travels in the w lanes); then
 // every tile range is stale unless the stage writes materials only, which ranges do not track.
 void DispatchCursor::appendGridPass(const StagePlan& stage) {
+    if (stage.prepassKernel != kNoKernel)
+        appendPhase(stage.prepassKernel, 0, 0, glm::ivec3(0), glm::ivec3(1), package_.world.size);
     if (stage.gridBoxes.empty()) {
         appendPhase(stage.gridKernel, 0, 0, glm::ivec3(0), glm::ivec3(1), package_.world.size);
     } else {

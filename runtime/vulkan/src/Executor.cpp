@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <span>
@@ -82,6 +83,7 @@ struct VulkanExecutor::Impl {
     // one-element buffer no kernel declares; `readback` holds the densities, then the materials.
     DeviceBuffer voxels, materials, chunkTable, noiseTables, readback;
     DeviceBuffer pointSets; // kBindingPointSets: package.pointSets with their per-cell lists
+    DeviceBuffer scratch;   // kBindingScratch: the largest StagePlan::scratchWords (at least one word)
     // Tile skipping (kBindingTileRanges..kBindingSkipStats); small, so they exist either way.
     DeviceBuffer tileRanges, tileDirty, activeTiles, activeDispatch, skipStats;
     NonFiniteCounters nonFinite; // kBindingNonFinite and its per-stage copies
@@ -122,6 +124,7 @@ VulkanExecutor::Impl::~Impl() {
         destroyBuffer(ctx, *b);
     destroyBuffer(ctx, readback);
     destroyBuffer(ctx, pointSets);
+    destroyBuffer(ctx, scratch);
     destroyBuffer(ctx, noiseTables);
     destroyBuffer(ctx, chunkTable);
     destroyBuffer(ctx, materials);
@@ -158,6 +161,10 @@ void VulkanExecutor::Impl::createBuffers() {
     const std::span<const int, 256> permutation = perlinPermutation();
     noiseTables = createTable(std::vector<int32_t>(permutation.begin(), permutation.end()));
     pointSets = createTable(pointSetTable());
+    uint64_t scratchWords = 1;
+    for (const StagePlan& stage : package.stages) scratchWords = std::max(scratchWords, stage.scratchWords);
+    scratch = createBuffer(ctx, VkDeviceSize(scratchWords) * sizeof(uint32_t), storage,
+                           staged ? MemoryUse::Device : MemoryUse::HostAccess);
 
     const VkDeviceSize tiles = tileShift >= 0 ? tileCount(package, tileShift) : 1;
     const MemoryUse local = staged ? MemoryUse::Device : MemoryUse::HostAccess;
@@ -318,6 +325,7 @@ VulkanExecutor::VulkanExecutor(VulkanContext& context, const KernelPackage& pack
     byBinding[kBindingMaterials] = s.materials.buffer;
     byBinding[kBindingNonFinite] = s.nonFinite.counterBuffer();
     byBinding[kBindingPointSets] = s.pointSets.buffer;
+    byBinding[kBindingScratch] = s.scratch.buffer;
     bindBuffers(s.ctx, s.pipelines, byBinding);
     s.setupMs = millisecondsSince(start);
 }

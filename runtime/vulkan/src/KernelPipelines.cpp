@@ -14,7 +14,7 @@ namespace {
 constexpr uint32_t kBindings[] = {kBindingVoxels,       kBindingChunkTable,   kBindingNoiseTables,
                                   kBindingTileRanges,  kBindingTileDirty,   kBindingActiveTiles,
                                   kBindingActiveDispatch, kBindingSkipStats,  kBindingMaterials,
-                                  kBindingNonFinite,     kBindingPointSets};
+                                  kBindingNonFinite,     kBindingPointSets,   kBindingScratch};
 static_assert(std::size(kBindings) == kKernelBindingCount);
 constexpr uint32_t kBindingCount = std::size(kBindings);
 

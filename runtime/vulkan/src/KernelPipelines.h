@@ -9,7 +9,7 @@
 
 namespace voxc::vulkan_detail {
 
-constexpr uint32_t kKernelBindingCount = 11; // bindings 0..10
+constexpr uint32_t kKernelBindingCount = 12; // bindings 0..11
 
 struct KernelPipelines {
     VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;

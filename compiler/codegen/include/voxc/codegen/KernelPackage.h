@@ -52,6 +52,9 @@ constexpr uint32_t kBindingNonFinite = 9;
 // compiler/shaders/lsystem_carve.glsl), declared only by field kernels that read a point set;
 // otherwise a one-element buffer.
 constexpr uint32_t kBindingPointSets = 10;
+// uint words a stage's passes hand to each other (StagePlan::scratchWords, the largest over the
+// stages; one word when none needs any): a speleothem stage's air mask (speleothems.glsl).
+constexpr uint32_t kBindingScratch = 11;
 
 constexpr uint32_t kNoKernel = UINT32_MAX;
 
@@ -120,6 +123,10 @@ struct StagePlan {
     // whole grid when it is empty; it rewrites densities, so tile ranges go stale afterwards
     // unless writesDensities is false (a paint stage writes materials only).
     uint32_t gridKernel = kNoKernel;
+    // Run over the whole grid before the grid pass, behind a barrier: a pass that prepares what
+    // the grid pass reads from kBindingScratch (a speleothem stage's air mask). kNoKernel: none.
+    uint32_t prepassKernel = kNoKernel;
+    uint64_t scratchWords = 0; // kBindingScratch words the stage's passes use
     std::vector<FieldBox> gridBoxes;
     bool writesDensities = true;
     std::optional<uint8_t> material; // Stage::material, when the stage writes one

@@ -59,6 +59,15 @@ std::string fieldKernelSource(const ir::IrModule& module, const ir::IrField& fie
                               std::optional<uint8_t> material, const std::vector<Stage>& stages, std::string_view kernelName,
                               std::string_view sourceName);
 
+// A speleothem stage (voxc::caves, speleothems.glsl): the air-mask prepass every such stage shares,
+// then the stage's grow kernel, both column-walking (the start kernel's shape). `clearanceSet`:
+// the index in KernelPackage::pointSets of the keep_clear carve, whose clearance is never written.
+DispatchShape speleothemDispatchShape(const ir::IrModule& module);
+std::string speleothemMaskKernelSource(const ir::IrModule& module, std::string_view sourceName);
+std::string speleothemGrowKernelSource(const ir::IrModule& module, const SpeleothemStage& stage,
+                                       std::optional<uint8_t> material, std::optional<uint32_t> clearanceSet,
+                                       std::string_view kernelName, std::string_view sourceName);
+
 DispatchShape sweepDispatchShape(const ir::IrSweep& sweep);
 std::string sweepKernelSource(const ir::IrGrammar& grammar, const ir::IrSweep& sweep, std::string_view kernelName,
                               std::string_view sourceName);
