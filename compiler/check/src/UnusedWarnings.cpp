@@ -2,6 +2,7 @@
 // effect on the result, most often a stage left out of the pipeline or a misspelt material.
 #include "Sections.h"
 
+#include <algorithm>
 #include <fmt/format.h>
 
 namespace voxc::check {
@@ -49,6 +50,12 @@ void warnUnused(Context& context, const ast::File& file, const Program& program,
             context.diagnostics.warning("W0207", program.grammars[i].loc,
                                         fmt::format("grammar '{}' is never used: the pipeline does not name it",
                                                     program.grammars[i].name));
+    for (size_t i = 0; i < program.speleothems.size(); ++i)
+        if (std::none_of(program.pipeline.begin(), program.pipeline.end(), [&](const Stage& stage) {
+                return stage.kind == Stage::Kind::Speleothems && stage.index == i;
+            }))
+            context.diagnostics.warning("W0206", program.speleothems[i].loc,
+                                        fmt::format("feature '{}' is never used: {}", program.speleothems[i].name, why));
     const std::vector<bool> used = usedMaterials(program);
     for (const Material& material : program.materials)
         if (!used[material.id])
