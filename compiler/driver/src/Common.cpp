@@ -34,7 +34,7 @@ void addMaxWorkFlag(CLI::App& command, WorldOverrides& overrides) {
 }
 
 Program loadProgram(const std::string& path, const WorldOverrides& overrides, bool warningsAsErrors,
-                    std::string* sourceText) {
+                    std::string* sourceText, std::vector<CheckedLsystem>* lsystems) {
     CheckOptions options;
     if (overrides.maxWork)
         options.limits.maxWork = *overrides.maxWork >= 9.2e18 ? INT64_MAX : int64_t(*overrides.maxWork);
@@ -51,6 +51,7 @@ Program loadProgram(const std::string& path, const WorldOverrides& overrides, bo
         throw UserError(fmt::format("{}: {} warning{} (--werror)", path, warnings, warnings == 1 ? "" : "s"));
     Program program = std::move(*result.program);
     if (sourceText) *sourceText = result.source.text();
+    if (lsystems) *lsystems = std::move(result.lsystems);
     if (overrides.seed) program.world.seed = *overrides.seed;
     if (overrides.chunk) {
         const int32_t c = *overrides.chunk;

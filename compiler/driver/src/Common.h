@@ -1,12 +1,14 @@
 #pragma once
 // Helpers every verb shares: loading and checking a file, printing diagnostics, and the
 // flags that override the file's world settings.
+#include "voxc/check/Check.h"
 #include "voxc/grid/Grid.h"
 #include "voxc/program/Program.h"
 
 #include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace voxc::driver {
 
@@ -23,9 +25,9 @@ void addMaxWorkFlag(CLI::App& command, WorldOverrides& overrides);
 
 // Parses and checks `path`, prints every diagnostic to stderr and throws UserError when there
 // are errors (the message says how many). Applies the overrides to the checked program.
-// `sourceText`, when given, receives the text that was checked.
+// `sourceText`, when given, receives the text that was checked; `lsystems` the checked lsystem blocks.
 Program loadProgram(const std::string& path, const WorldOverrides& overrides, bool warningsAsErrors = false,
-                    std::string* sourceText = nullptr);
+                    std::string* sourceText = nullptr, std::vector<CheckedLsystem>* lsystems = nullptr);
 
 // One line counting the solid voxels (density > iso) of each material id, ascending id, e.g.
 // "solid voxels by material: none 12, rock 5120, sand 733"; materials with no solid voxel are left out.

@@ -121,10 +121,10 @@ void runEvolve(const EvolveOptions& options) {
     std::vector<Definition> picks;
     Json parents = Json::array();
     for (size_t i = 0; i < results.size(); ++i) {
-        picks.push_back(findLsystem(results[i], inputPaths[i], inputNames[i]).definition);
+        picks.push_back(findLsystem(results[i].lsystems, inputPaths[i], inputNames[i]).definition);
         parents.push_back(inputPaths[i] + ":" + inputNames[i]);
     }
-    const CheckedLsystem& first = findLsystem(results[0], inputPaths[0], inputNames[0]);
+    const CheckedLsystem& first = findLsystem(results[0].lsystems, inputPaths[0], inputNames[0]);
     const uint32_t seed = options.seed.value_or(first.definition.seed);
     const std::vector<Definition> children = nextGeneration(picks, options.population, seed, options.generation);
 

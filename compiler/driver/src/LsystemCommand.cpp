@@ -100,7 +100,7 @@ void runLsystem(const LsystemOptions& options) {
     if (!options.output.empty() && options.format == "obj")
         requireExtension(options.output, {".obj"}, "the skeleton (--format obj)");
     const CheckResult result = loadChecked(options.file);
-    const CheckedLsystem& lsystem = findLsystem(result, options.file, options.name);
+    const CheckedLsystem& lsystem = findLsystem(result.lsystems, options.file, options.name);
     const std::vector<RolePath> inputs{{"the input", options.file}, {"the rule file", lsystem.rulesPath}};
     const std::vector<RolePath> outputs{{"-o", options.output}};
     refuseClashingPaths(inputs, outputs);
@@ -143,8 +143,8 @@ void runCross(const CrossOptions& options) {
     const auto [pathB, nameB] = splitReference(options.second);
     const CheckResult resultA = loadChecked(pathA);
     const CheckResult resultB = loadChecked(pathB);
-    const CheckedLsystem& a = findLsystem(resultA, pathA, nameA);
-    const CheckedLsystem& b = findLsystem(resultB, pathB, nameB);
+    const CheckedLsystem& a = findLsystem(resultA.lsystems, pathA, nameA);
+    const CheckedLsystem& b = findLsystem(resultB.lsystems, pathB, nameB);
     const auto [childA, childB] =
         crossover(crossedProduction(a).text, options.brackets[0], crossedProduction(b).text, options.brackets[1]);
     // Each child keeps its parent's settings and gains the other parent's macros it lacks,
