@@ -9,6 +9,7 @@
 #include "CompileCases.h"
 #include "JsonReporter.h"
 #include "CarveCases.h"
+#include "CurvesCases.h"
 #include "LsystemCases.h"
 #include "TerrainCases.h"
 
@@ -121,6 +122,8 @@ int main(int argc, char** argv) {
             if (uses("libnoise")) registerLibnoise(reporter, n);
         }
         if (uses("vulkan") || uses("interp")) bench::registerLsystemCarve(reporter, context.get(), uses("interp"));
+        if (uses("vulkan") || uses("interp") || uses("host"))
+            bench::registerCurves(reporter, context.get(), uses("interp"), uses("host"));
         if (uses("host")) bench::registerLsystemExpand(reporter);
         if (uses("host")) bench::registerErosion(reporter);
         if (uses("host")) bench::registerCompileCases(reporter);

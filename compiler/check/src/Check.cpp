@@ -1,5 +1,6 @@
 #include "voxc/check/Check.h"
 
+#include "CheckCurves.h"
 #include "Materials.h"
 #include "Sections.h"
 #include "voxc/stages/StageKind.h"
@@ -23,7 +24,7 @@ std::string CheckResult::rendered() const { return renderAll(diagnostics, source
 namespace check {
 namespace {
 
-constexpr std::string_view kTopLevelBlocks[] = {"world", "start", "grammar", "pipeline", "material", "lsystem"};
+constexpr std::string_view kTopLevelBlocks[] = {"world", "start", "grammar", "pipeline", "material", "lsystem", "curves"};
 
 // The first block of a kind that may appear once; later ones are E0003.
 const ast::Block* uniqueBlock(Context& context, const ast::File& file, std::string_view kind) {
@@ -101,6 +102,11 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
     program.fields = checkFields(context, file, grammarNames);
     CheckedFeatures features = checkFeatures(context, file, grammarNames, program.world, lsystems);
     for (Field& feature : features.fields) program.fields.push_back(std::move(feature));
+    std::vector<std::string> stageNames = grammarNames;
+    for (const ast::FieldDecl& field : file.fields) stageNames.push_back(field.name);
+    for (const ast::FeatureDecl& feature : file.features) stageNames.push_back(feature.name);
+    program.curves = checkCurves(context, file, program.world, stageNames);
+    for (const CurvesBlock& block : program.curves) context.curvesNames.push_back(block.name);
     program.speleothems = std::move(features.speleothems);
 
     program.pipeline.push_back({Stage::Kind::Start, 0, FieldMode::Set, {}, std::nullopt});

@@ -53,6 +53,34 @@ std::optional<uint8_t> stageMaterial(Context& context, const ast::NameStatement&
     return material;
 }
 
+// `union cliffs;`: a curves stage takes a combining mode; its materials are its constraint points'.
+void checkCurvesEntry(Context& context, const ast::NameStatement& entry, uint32_t index, std::vector<Stage>& stages) {
+    if (!entry.mode) {
+        context.diagnostics.error("E0009", entry.loc,
+                                  fmt::format("curves stage '{0}' needs a mode: 'set {0}', 'union {0}', 'subtract "
+                                              "{0}' or 'intersect {0}'",
+                                              entry.name));
+        return;
+    }
+    const std::optional<FieldMode> mode = parseMode(context, entry);
+    if (!mode) return;
+    if (*mode == FieldMode::Paint) {
+        context.diagnostics.error("E0010", entry.modeLoc,
+                                  fmt::format("'{}' is a curves block; it takes 'set', 'union', 'subtract' or "
+                                              "'intersect' (its materials come from its constraint points)",
+                                              entry.name));
+        return;
+    }
+    if (entry.clause) {
+        context.diagnostics.error("E0010", entry.clause->wordLoc,
+                                  fmt::format("'{}' is a curves block: its materials come from its constraint "
+                                              "points' 'material' keys, not a '{}' clause",
+                                              entry.name, entry.clause->word));
+        return;
+    }
+    stages.push_back({Stage::Kind::Curves, index, *mode, entry.loc, std::nullopt});
+}
+
 } // namespace
 
 std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
@@ -75,6 +103,7 @@ std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
     std::vector<std::string_view> known{"start"};
     for (const std::string& name : grammarNames) known.push_back(name);
     for (const std::string& name : fieldNames) known.push_back(name);
+    for (const std::string& name : context.curvesNames) known.push_back(name);
     for (const std::string& name : speleothemNames) known.push_back(name);
     // The first declaration of each name, found by lookup: a pipeline may name thousands of stages.
     std::unordered_map<std::string_view, uint32_t> grammarIndex, fieldIndex;
@@ -143,6 +172,9 @@ std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
                                                       entry.name, entry.name));
             else if (ok)
                 stages.push_back({Stage::Kind::Speleothems, uint32_t(index), FieldMode::Set, entry.loc, material});
+        } else if (auto curves = std::find(context.curvesNames.begin(), context.curvesNames.end(), entry.name);
+                   curves != context.curvesNames.end()) {
+            checkCurvesEntry(context, entry, uint32_t(curves - context.curvesNames.begin()), stages);
         } else if (std::find(lsystemNames.begin(), lsystemNames.end(), entry.name) != lsystemNames.end()) {
             context.diagnostics.error("E0013", entry.loc,
                                       fmt::format("'{}' is an lsystem; carving it takes a feature: 'feature NAME = "

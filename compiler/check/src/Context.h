@@ -13,6 +13,7 @@ struct Context {
     const Limits& limits;
     Constants constants;
     MaterialNames materials; // filled by checkMaterials before any other block is checked
+    std::vector<std::string> curvesNames; // the curves blocks, declaration order (checkCurves), for the pipeline
 };
 
 } // namespace voxc::check

@@ -23,6 +23,10 @@ std::vector<bool> usedMaterials(const Program& program) {
             for (const TransformCell& cell : rule.transform) use(cell.material);
         }
     for (const Stage& stage : program.pipeline) use(stage.material);
+    // A curves stage writes the materials its table holds (those of its constraint points that win somewhere).
+    for (const Stage& stage : program.pipeline)
+        if (stage.kind == Stage::Kind::Curves)
+            for (uint8_t id : program.curves.at(stage.index).table->material) used[id] = true;
     return used;
 }
 
@@ -56,6 +60,12 @@ void warnUnused(Context& context, const ast::File& file, const Program& program,
             }))
             context.diagnostics.warning("W0206", program.speleothems[i].loc,
                                         fmt::format("feature '{}' is never used: {}", program.speleothems[i].name, why));
+    for (size_t i = 0; i < program.curves.size(); ++i)
+        if (std::none_of(program.pipeline.begin(), program.pipeline.end(), [&](const Stage& stage) {
+                return stage.kind == Stage::Kind::Curves && stage.index == i;
+            }))
+            context.diagnostics.warning("W0206", program.curves[i].loc,
+                                        fmt::format("curves '{}' is never used: {}", program.curves[i].name, why));
     const std::vector<bool> used = usedMaterials(program);
     for (const Material& material : program.materials)
         if (!used[material.id])

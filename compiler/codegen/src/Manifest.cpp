@@ -78,6 +78,10 @@ BufferInfo bufferInfo(uint32_t binding) {
         return {"pointSets", "int", "engine",
                 "the package's point sets (an lsystem_cave's centres and skeleton segments) with, per 8^3 cell of "
                 "the grid, the sorted lists of those whose reach meets the cell; layout in lsystem_carve.glsl"};
+    case kBindingSolveTables:
+        return {"solveTables", "int", "engine",
+                "the curves stages' host-solved tables (density and material per cell of each solve box, computed "
+                "when the file is checked); layout in solve_tables.glsl"};
     case kBindingScratch:
         return {"scratch", "uint", "engine: the largest scratch_words of a stage, at least 1",
                 "words a stage's prepass_kernel hands to its grid pass: a speleothem stage's air mask, one bit per "

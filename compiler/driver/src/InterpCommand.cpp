@@ -2,6 +2,7 @@
 #include "Common.h"
 #include "NonFiniteReport.h"
 #include "OutputPaths.h"
+#include "SolveReport.h"
 
 #include "voxc/core/Errors.h"
 #include "voxc/grid/Grid.h"
@@ -52,6 +53,7 @@ SliceSpec parseSlice(const std::string& text, glm::ivec3 size) {
 
 void interpretFile(const InterpOptions& options) {
     const Program program = loadProgram(options.file, options.overrides);
+    std::cerr << formatSolveReport(program);
     std::optional<SliceSpec> slice;
     if (!options.slice.empty()) slice = parseSlice(options.slice, program.world.size);
 

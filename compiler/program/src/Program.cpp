@@ -16,7 +16,11 @@ bool Program::usesMaterials() const {
             return tests || writes;
         });
     });
-    return startWrites || stageWrites || grammarUses;
+    // A curves stage writes the materials of its constraint points (SolveTable::material).
+    const auto curvesWrite = std::any_of(pipeline.begin(), pipeline.end(), [this](const Stage& s) {
+        return s.kind == Stage::Kind::Curves && !curves.at(s.index).table->material.empty();
+    });
+    return startWrites || stageWrites || grammarUses || curvesWrite;
 }
 
 const Material* Program::findMaterial(uint8_t id) const {

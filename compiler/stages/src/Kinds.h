@@ -7,6 +7,7 @@ namespace voxc::stages {
 extern const StageKind kStartStage;
 extern const StageKind kGrammarStage;
 extern const StageKind kFieldStage;
+extern const StageKind kCurvesStage;
 extern const StageKind kSpeleothemStage;
 
 } // namespace voxc::stages

@@ -9,7 +9,7 @@ namespace voxc::stages {
 
 namespace {
 
-const std::array<const StageKind*, 4> kKinds = {&kStartStage, &kGrammarStage, &kFieldStage, &kSpeleothemStage};
+const std::array<const StageKind*, 5> kKinds = {&kStartStage, &kGrammarStage, &kFieldStage, &kSpeleothemStage, &kCurvesStage};
 
 } // namespace
 

@@ -83,6 +83,7 @@ struct VulkanExecutor::Impl {
     // one-element buffer no kernel declares; `readback` holds the densities, then the materials.
     DeviceBuffer voxels, materials, chunkTable, noiseTables, readback;
     DeviceBuffer pointSets; // kBindingPointSets: package.pointSets with their per-cell lists
+    DeviceBuffer solveTables; // kBindingSolveTables: package.solveTables (solveTableWords)
     DeviceBuffer scratch;   // kBindingScratch: the largest StagePlan::scratchWords (at least one word)
     // Tile skipping (kBindingTileRanges..kBindingSkipStats); small, so they exist either way.
     DeviceBuffer tileRanges, tileDirty, activeTiles, activeDispatch, skipStats;
@@ -124,6 +125,7 @@ VulkanExecutor::Impl::~Impl() {
         destroyBuffer(ctx, *b);
     destroyBuffer(ctx, readback);
     destroyBuffer(ctx, pointSets);
+    destroyBuffer(ctx, solveTables);
     destroyBuffer(ctx, scratch);
     destroyBuffer(ctx, noiseTables);
     destroyBuffer(ctx, chunkTable);
@@ -137,6 +139,14 @@ void VulkanExecutor::Impl::checkLimits() const {
     static_assert(sizeof(uint32_t) == sizeof(float));
     const uint64_t bytes = uint64_t(layout.chunkTotal()) * layout.chunkVoxels() * sizeof(float);
     const uint64_t maxRange = ctx.properties.limits.maxStorageBufferRange;
+    uint64_t tableWords = 1 + package.solveTables.size();
+    for (const auto& table : package.solveTables)
+        tableWords += 6 + table->cellCount() * (table->material.empty() ? 1 : 2);
+    if (tableWords * sizeof(int32_t) > maxRange)
+        throw UserError(fmt::format("the curves' solve tables need {:.1f} MiB, more than the Vulkan device '{}' can "
+                                    "bind as one storage buffer ({:.1f} MiB); use smaller curves boxes",
+                                    double(tableWords * sizeof(int32_t)) / (1 << 20), ctx.info.name,
+                                    double(maxRange) / (1 << 20)));
     if (bytes > maxRange)
         throw UserError(fmt::format("the grid needs a {:.1f} MiB voxel buffer ({} chunks of {}^3 voxels), more than "
                                     "the Vulkan device '{}' can bind as one storage buffer ({:.1f} MiB); use a "
@@ -161,6 +171,7 @@ void VulkanExecutor::Impl::createBuffers() {
     const std::span<const int, 256> permutation = perlinPermutation();
     noiseTables = createTable(std::vector<int32_t>(permutation.begin(), permutation.end()));
     pointSets = createTable(pointSetTable());
+    solveTables = createTable(solveTableWords(package.solveTables));
     uint64_t scratchWords = 1;
     for (const StagePlan& stage : package.stages) scratchWords = std::max(scratchWords, stage.scratchWords);
     scratch = createBuffer(ctx, VkDeviceSize(scratchWords) * sizeof(uint32_t), storage,
@@ -325,6 +336,7 @@ VulkanExecutor::VulkanExecutor(VulkanContext& context, const KernelPackage& pack
     byBinding[kBindingMaterials] = s.materials.buffer;
     byBinding[kBindingNonFinite] = s.nonFinite.counterBuffer();
     byBinding[kBindingPointSets] = s.pointSets.buffer;
+    byBinding[kBindingSolveTables] = s.solveTables.buffer;
     byBinding[kBindingScratch] = s.scratch.buffer;
     bindBuffers(s.ctx, s.pipelines, byBinding);
     s.setupMs = millisecondsSince(start);

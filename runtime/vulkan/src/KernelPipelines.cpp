@@ -14,7 +14,8 @@ namespace {
 constexpr uint32_t kBindings[] = {kBindingVoxels,       kBindingChunkTable,   kBindingNoiseTables,
                                   kBindingTileRanges,  kBindingTileDirty,   kBindingActiveTiles,
                                   kBindingActiveDispatch, kBindingSkipStats,  kBindingMaterials,
-                                  kBindingNonFinite,     kBindingPointSets,   kBindingScratch};
+                                  kBindingNonFinite,     kBindingPointSets,   kBindingScratch,
+                                  kBindingSolveTables};
 static_assert(std::size(kBindings) == kKernelBindingCount);
 constexpr uint32_t kBindingCount = std::size(kBindings);
 

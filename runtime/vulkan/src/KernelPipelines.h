@@ -9,7 +9,7 @@
 
 namespace voxc::vulkan_detail {
 
-constexpr uint32_t kKernelBindingCount = 12; // bindings 0..11
+constexpr uint32_t kKernelBindingCount = 13; // bindings 0..12
 
 struct KernelPipelines {
     VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;

@@ -79,7 +79,7 @@ glm::dvec3 constraintBitangent(const std::optional<glm::dvec3>& given, const glm
         const double length = glm::length(side);
         if (length < 1e-9)
             throw ParameterError(name + " (default)", length,
-                                 "the curve is vertical here, so the flat default is undefined: give it");
+                                 "the curve is vertical here, so the flat default is undefined: give the bitangents explicitly");
         return (3.0 / length) * side;
     }
     const glm::dvec3 projected = *given - glm::dot(*given, tangent) * tangent;

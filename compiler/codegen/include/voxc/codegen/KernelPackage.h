@@ -3,6 +3,7 @@
 // dispatches. `voxc compile` writes it out as GLSL + SPIR-V files and manifest.json.
 #include "voxc/program/Program.h"
 #include "voxc/program/Semantics.h"
+#include "voxc/program/SolveTable.h"
 
 #include <cstdint>
 #include <memory>
@@ -52,6 +53,9 @@ constexpr uint32_t kBindingNonFinite = 9;
 // compiler/shaders/lsystem_carve.glsl), declared only by field kernels that read a point set;
 // otherwise a one-element buffer.
 constexpr uint32_t kBindingPointSets = 10;
+// int words: KernelPackage::solveTables (voxc::solveTableWords, layout in
+// compiler/shaders/solve_tables.glsl), declared only by curves kernels; otherwise a one-element buffer.
+constexpr uint32_t kBindingSolveTables = 12;
 // uint words a stage's passes hand to each other (StagePlan::scratchWords, the largest over the
 // stages; one word when none needs any): a speleothem stage's air mask (speleothems.glsl).
 constexpr uint32_t kBindingScratch = 11;
@@ -145,6 +149,9 @@ struct KernelPackage {
     // The point sets field kernels read, `pointSetDistances(i, p)` naming entry i
     // (codegen::pointSetsOf); the runtime uploads them with their lists into kBindingPointSets.
     std::vector<std::shared_ptr<const PointSet>> pointSets;
+    // The solve tables curves kernels read (their SOLVE_TABLE constant indexes this list); the
+    // runtime uploads them into kBindingSolveTables.
+    std::vector<std::shared_ptr<const SolveTable>> solveTables;
 };
 
 } // namespace voxc

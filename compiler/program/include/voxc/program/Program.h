@@ -4,6 +4,7 @@
 // and the IR lowering both start from here; neither ever sees the AST.
 #include "voxc/core/SourceLoc.h"
 #include "voxc/program/Field.h"
+#include "voxc/program/SolveTable.h"
 #include "voxc/program/Speleothems.h"
 
 #include <cstdint>
@@ -132,7 +133,7 @@ enum class FieldMode : uint8_t {
 // One step of the pipeline. Each kind is one record in compiler/stages (StageKind.h) holding
 // its checks, interpretation and lowering; passes read the facts below instead of the kind.
 struct Stage {
-    enum class Kind : uint8_t { Start, Grammar, Field, Speleothems };
+    enum class Kind : uint8_t { Start, Grammar, Field, Curves, Speleothems };
     Kind kind = Kind::Start;
     uint32_t index = 0;               // into Program::grammars, Program::fields or Program::speleothems
     FieldMode mode = FieldMode::Set;  // Field only
@@ -162,6 +163,7 @@ struct Program {
     std::vector<Field> fields;     // named density fields, declaration order
     std::vector<Stage> pipeline;   // Start first, then grammars and field stages in pipeline order
     std::vector<SpeleothemStage> speleothems; // declared speleothem features, declaration order
+    std::vector<CurvesBlock> curves; // declared curves blocks with their solved tables, declaration order
     std::vector<Material> materials; // declared materials, declaration order (`none` is implicit)
 
     // True when anything reads or writes a material: only then do backends store the channel

@@ -1,0 +1,341 @@
+// The `curves` block: keys and ranges with located errors here, then the host solve
+// (curves::solveScene), whose remaining errors (a degenerate bitangent, a bound on work, a solve
+// that does not converge) are located at the curve or block they come from.
+#include "CheckCurves.h"
+
+#include "Materials.h"
+#include "Suggest.h"
+#include "Values.h"
+
+#include "voxc/generators/curves/Scene.h"
+
+#include <fmt/format.h>
+#include <glm/vector_relational.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <regex>
+
+namespace voxc::check {
+
+namespace {
+
+// All curves blocks together: the host solve runs at check time (about 3 s per million cells on
+// one core), and its tables are uploaded whole (two words per cell).
+constexpr uint64_t kMaxTotalCells = 8'388'608; // 256 x 128 x 256
+
+constexpr std::string_view kBlockKeys[] = {"box", "normals", "k", "sweeps", "smoothing", "noise_frequency",
+                                           "noise_seed"};
+constexpr std::string_view kCurveKeys[] = {"points", "seed"};
+constexpr std::string_view kConstraintKeys[] = {"t", "left", "right", "amplitude", "roughness", "material"};
+constexpr std::string_view kNormalModes[] = {"laplace", "perona_malik"};
+constexpr std::string_view kBooleans[] = {"true", "false"};
+
+// A bare name among `choices` (its index), or E0010.
+std::optional<size_t> readChoice(Context& context, const ast::Assignment& a, std::span<const std::string_view> choices) {
+    const ast::Expr* expr = a.value.isList() ? nullptr : a.value.scalar.get();
+    if (expr && expr->kind == ast::Expr::Kind::Name)
+        for (size_t i = 0; i < choices.size(); ++i)
+            if (expr->name == choices[i]) return i;
+    std::string list;
+    for (std::string_view c : choices) list += fmt::format("{}'{}'", list.empty() ? "" : " or ", c);
+    context.diagnostics.error("E0010", a.value.loc, fmt::format("'{}' expects {}", a.key, list));
+    return std::nullopt;
+}
+
+std::optional<glm::dvec3> readPoint(Context& context, const ast::Assignment& a, const ast::Value& value,
+                                    double limit) {
+    if (!value.isList() || value.elements.size() != 3 ||
+        std::any_of(value.elements.begin(), value.elements.end(), [](const ast::Value& e) { return e.isList(); })) {
+        context.diagnostics.error("E0010", value.loc, fmt::format("'{}' expects points [x, y, z]", a.key));
+        return std::nullopt;
+    }
+    glm::dvec3 p;
+    for (int i = 0; i < 3; ++i) {
+        const std::optional<double> v = context.constants.evaluate(*value.elements[i].scalar);
+        if (!v) return std::nullopt;
+        if (!(std::fabs(*v) <= limit)) {
+            context.diagnostics.error("E0007", value.elements[i].loc,
+                                      fmt::format("'{}' coordinate {} is outside [-{}, {}]", a.key, formatNumber(*v),
+                                                  formatNumber(limit), formatNumber(limit)));
+            return std::nullopt;
+        }
+        p[i] = *v;
+    }
+    return p;
+}
+
+std::optional<curves::ConstraintPoint> readConstraint(Context& context, const ast::Block& block,
+                                                      const std::string& where, double limit, SourceLoc& tLoc) {
+    checkLabel(context, block, false);
+    rejectUnexpectedMembers(context, block, where, {});
+    BlockKeys keys(context, block, where, kConstraintKeys);
+    curves::ConstraintPoint point;
+    bool ok = true;
+    if (const ast::Assignment* a = keys.require("t")) {
+        tLoc = a->value.loc;
+        const std::optional<double> t = readNumber(context, *a, 0, 1);
+        ok = ok && t.has_value();
+        if (t) point.t = *t;
+    } else {
+        ok = false;
+    }
+    for (const char* side : {"left", "right"})
+        if (const ast::Assignment* a = keys.find(side)) {
+            const std::optional<glm::dvec3> v = readPoint(context, *a, a->value, limit);
+            ok = ok && v.has_value();
+            if (v) (std::string_view(side) == "left" ? point.left : point.right) = *v;
+        }
+    if (const ast::Assignment* a = keys.find("amplitude")) {
+        const std::optional<double> v = readNumber(context, *a, 0, 16);
+        ok = ok && v.has_value();
+        if (v) point.amplitude = *v;
+    }
+    if (const ast::Assignment* a = keys.find("roughness")) {
+        const std::optional<double> v = readNumber(context, *a, 0, 1);
+        ok = ok && v.has_value();
+        if (v) point.roughness = *v;
+    }
+    if (const ast::Assignment* a = keys.find("material")) {
+        const std::optional<uint8_t> m = readMaterialKey(context, *a);
+        ok = ok && m.has_value();
+        if (m) point.material = *m;
+    }
+    if (!ok) return std::nullopt;
+    return point;
+}
+
+// Where a sampling error about "<curve> constraint N left|right ..." points: that constraint's
+// key, else the constraint block, else the curve.
+SourceLoc parameterLoc(const std::string& parameter, const ast::Block& curve,
+                       const std::vector<const ast::Block*>& constraints) {
+    static const std::regex pattern(R"( constraint (\d+) (left|right))");
+    std::smatch match;
+    if (!std::regex_search(parameter, match, pattern)) return curve.loc;
+    const size_t index = std::stoul(match[1].str());
+    if (index >= constraints.size()) return curve.loc;
+    for (const ast::Assignment& a : constraints[index]->assignments)
+        if (a.key == match[2].str()) return a.value.loc;
+    return constraints[index]->loc;
+}
+
+// The curve's keys, constraint points and their t order, then its sampling (degenerate
+// bitangents and tangents, segment bounds) located at the curve.
+std::optional<curves::FeatureCurve> readCurve(Context& context, const ast::Block& block, const std::string& name,
+                                              const curves::Limits& limits) {
+    const std::string where = name;
+    rejectUnexpectedMembers(context, block, where, {.blocks = true});
+    BlockKeys keys(context, block, where, kCurveKeys);
+    curves::FeatureCurve curve;
+    bool ok = true;
+    if (const ast::Assignment* a = keys.require("points")) {
+        if (!a->value.isList() || a->value.elements.size() < 4 || a->value.elements.size() > limits.maxControlPoints) {
+            context.diagnostics.error("E0007", a->value.loc,
+                                      fmt::format("'points' expects a list of 4 to {} control points [x, y, z] (a "
+                                                  "cubic B-spline)",
+                                                  limits.maxControlPoints));
+            ok = false;
+        } else {
+            for (const ast::Value& element : a->value.elements) {
+                const std::optional<glm::dvec3> p = readPoint(context, *a, element, limits.maxCoordinate);
+                ok = ok && p.has_value();
+                if (p) curve.points.push_back(*p);
+            }
+        }
+    } else {
+        ok = false;
+    }
+    if (const ast::Assignment* a = keys.find("seed")) {
+        const std::optional<size_t> choice = readChoice(context, *a, kBooleans);
+        ok = ok && choice.has_value();
+        curve.seed = choice != size_t(1);
+    }
+    std::vector<SourceLoc> tLocs;
+    std::vector<const ast::Block*> constraintBlocks;
+    for (const ast::Block& member : block.blocks) {
+        if (member.kind != "constraint") {
+            context.diagnostics.error("E0008", member.loc,
+                                      fmt::format("unknown block '{}' in {}; a curve holds 'constraint' blocks",
+                                                  member.kind, where));
+            ok = false;
+            continue;
+        }
+        SourceLoc tLoc = member.loc;
+        const std::optional<curves::ConstraintPoint> point =
+            readConstraint(context, member, fmt::format("a constraint of {}", where), limits.maxCoordinate, tLoc);
+        ok = ok && point.has_value();
+        if (point) curve.constraints.push_back(*point);
+        tLocs.push_back(tLoc);
+        constraintBlocks.push_back(&member);
+    }
+    if (!ok) return std::nullopt;
+    if (curve.constraints.size() < 2 || curve.constraints.size() > limits.maxConstraintPoints) {
+        context.diagnostics.error("E0009", block.loc,
+                                  fmt::format("{} needs 2 to {} 'constraint' blocks (the first at t = 0, the last at "
+                                              "t = 1); it has {}",
+                                              where, limits.maxConstraintPoints, curve.constraints.size()));
+        return std::nullopt;
+    }
+    const auto& cps = curve.constraints;
+    for (size_t i = 0; i < cps.size(); ++i) {
+        std::string problem;
+        if (i == 0 && cps[i].t != 0.0) problem = "the first constraint must be at t = 0";
+        else if (i + 1 == cps.size() && cps[i].t != 1.0) problem = "the last constraint must be at t = 1";
+        else if (i > 0 && !(cps[i].t > cps[i - 1].t))
+            problem = fmt::format("constraints must be in increasing t; the previous one is at t = {}",
+                                  formatNumber(cps[i - 1].t));
+        if (problem.empty()) continue;
+        context.diagnostics.error("E0007", tLocs[i], fmt::format("t = {}: {}", formatNumber(cps[i].t), problem));
+        return std::nullopt;
+    }
+    try {
+        curves::sampleCurve(curve, limits, name);
+    } catch (const curves::LimitError& e) {
+        context.diagnostics.error("E0012", block.loc, e.what());
+        return std::nullopt;
+    } catch (const curves::ParameterError& e) {
+        context.diagnostics.error("E0007", parameterLoc(e.parameter, block, constraintBlocks), e.what());
+        return std::nullopt;
+    }
+    return curve;
+}
+
+// The options, the curves and the box; the solve itself once everything checked.
+std::optional<curves::Scene> readScene(Context& context, const ast::Block& block, const World& world,
+                                       uint64_t& cellBudget, const curves::Limits& limits) {
+    const std::string where = fmt::format("curves '{}'", *block.label);
+    rejectUnexpectedMembers(context, block, where, {.blocks = true});
+    BlockKeys keys(context, block, where, kBlockKeys);
+    curves::Scene scene;
+    bool ok = true;
+    if (const ast::Assignment* a = keys.require("box")) {
+        const std::optional<std::array<glm::ivec3, 2>> box = readBox(context, *a);
+        ok = ok && box.has_value();
+        if (box) {
+            const glm::ivec3 lo = (*box)[0], hi = (*box)[1];
+            if (glm::any(glm::greaterThan(lo, hi)) || glm::any(glm::lessThan(lo, glm::ivec3(0))) ||
+                glm::any(glm::greaterThanEqual(hi, world.size))) {
+                context.diagnostics.error("E0007", a->value.loc,
+                                          fmt::format("the box {} to {} (inclusive, grid-local voxels) must be "
+                                                      "non-empty and inside the grid, [0, 0, 0] to {}",
+                                                      formatVec(lo), formatVec(hi), formatVec(world.size - 1)));
+                ok = false;
+            } else {
+                scene.box = {lo, hi - lo + 1};
+                if (scene.box.cellCount() > cellBudget) {
+                    context.diagnostics.error(
+                        "E0012", a->value.loc,
+                        fmt::format("the box has {} cells; the curves blocks of a file may solve {} cells in all "
+                                    "({} left for this one)",
+                                    scene.box.cellCount(), kMaxTotalCells, cellBudget));
+                    ok = false;
+                } else {
+                    cellBudget -= scene.box.cellCount();
+                }
+            }
+        }
+    } else {
+        ok = false;
+    }
+    if (const ast::Assignment* a = keys.find("normals")) {
+        const std::optional<size_t> mode = readChoice(context, *a, kNormalModes);
+        ok = ok && mode.has_value();
+        if (mode == size_t(1)) scene.options.normals = curves::NormalMode::PeronaMalik;
+    }
+    if (const ast::Assignment* a = keys.find("k")) {
+        const std::optional<double> k = readNumber(context, *a, 1e-6, 1);
+        ok = ok && k.has_value();
+        if (k) scene.options.k = float(*k);
+    }
+    if (const ast::Assignment* a = keys.find("sweeps")) {
+        const std::optional<int64_t> sweeps = readInteger(context, *a, 1, limits.maxSweeps);
+        ok = ok && sweeps.has_value();
+        if (sweeps) scene.options.sweeps = uint32_t(*sweeps);
+    }
+    if (const ast::Assignment* a = keys.find("smoothing")) {
+        const std::optional<int64_t> passes = readInteger(context, *a, 0, limits.maxSmoothPasses);
+        ok = ok && passes.has_value();
+        if (passes) scene.options.smoothPasses = int32_t(*passes);
+    }
+    if (const ast::Assignment* a = keys.find("noise_frequency")) {
+        const std::optional<double> f = readNumber(context, *a, 0, 16);
+        ok = ok && f.has_value();
+        if (f) scene.noiseFrequency = float(*f);
+    }
+    if (const ast::Assignment* a = keys.find("noise_seed")) {
+        const std::optional<int64_t> seed = readInteger(context, *a, 0, std::numeric_limits<uint32_t>::max());
+        ok = ok && seed.has_value();
+        if (seed) scene.noiseSeed = uint32_t(*seed);
+    }
+    size_t index = 0;
+    for (const ast::Block& member : block.blocks) {
+        if (member.kind != "curve") {
+            context.diagnostics.error("E0008", member.loc,
+                                      fmt::format("unknown block '{}' in {}; it holds 'curve' blocks", member.kind,
+                                                  where));
+            ok = false;
+            continue;
+        }
+        ++index;
+        const std::string name =
+            member.label ? fmt::format("curve '{}'", *member.label) : fmt::format("curve {} of {}", index, where);
+        const std::optional<curves::FeatureCurve> curve = readCurve(context, member, name, limits);
+        ok = ok && curve.has_value();
+        if (curve) scene.curves.push_back(*curve);
+    }
+    if (!ok) return std::nullopt;
+    if (scene.curves.empty()) {
+        context.diagnostics.error("E0009", block.loc,
+                                  fmt::format("{} has no curve; add one, as in 'curve edge {{ points = [[0, 8, 0], "
+                                              "[8, 8, 0], [16, 8, 0], [24, 8, 0]]; constraint {{ t = 0; }} "
+                                              "constraint {{ t = 1; }} }}'",
+                                              where));
+        return std::nullopt;
+    }
+    if (std::none_of(scene.curves.begin(), scene.curves.end(), [](const curves::FeatureCurve& c) { return c.seed; })) {
+        context.diagnostics.error("E0009", block.loc,
+                                  fmt::format("{} needs at least one seed curve ('curve NAME {{ points = ...; }}' "
+                                              "with 'seed' left true): guidance curves alone pin no surface",
+                                              where));
+        return std::nullopt;
+    }
+    return scene;
+}
+
+} // namespace
+
+std::vector<CurvesBlock> checkCurves(Context& context, const ast::File& file, const World& world,
+                                     const std::vector<std::string>& stageNames) {
+    const curves::Limits limits;
+    std::vector<CurvesBlock> blocks;
+    std::map<std::string, SourceLoc> names;
+    uint64_t cellBudget = kMaxTotalCells;
+    for (const ast::Block& block : file.blocks) {
+        if (block.kind != "curves") continue;
+        if (!checkLabel(context, block, true) || !block.label) continue;
+        CurvesBlock out{*block.label, block.loc, nullptr};
+        const auto [previous, inserted] = names.emplace(*block.label, block.labelLoc);
+        if (!inserted || std::find(stageNames.begin(), stageNames.end(), *block.label) != stageNames.end() ||
+            *block.label == "start") {
+            context.diagnostics.error("E0003", block.labelLoc,
+                                      fmt::format("the name '{}' is already used by another stage", *block.label));
+            blocks.push_back(std::move(out));
+            continue;
+        }
+        if (std::optional<curves::Scene> scene = readScene(context, block, world, cellBudget, limits)) {
+            try {
+                out.table = std::make_shared<const SolveTable>(curves::solveScene(*scene, limits));
+            } catch (const curves::ParameterError& e) {
+                context.diagnostics.error("E0007", block.loc, e.what());
+            } catch (const UserError& e) { // LimitError, ConvergenceError: bounds on the solve's work
+                context.diagnostics.error("E0012", block.loc, e.what());
+            }
+        }
+        blocks.push_back(std::move(out));
+    }
+    return blocks;
+}
+
+} // namespace voxc::check

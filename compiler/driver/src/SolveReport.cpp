@@ -1,0 +1,24 @@
+#include "SolveReport.h"
+
+#include <fmt/format.h>
+
+namespace voxc::driver {
+
+std::string formatSolveReport(const Program& program) {
+    std::string out;
+    for (const Stage& stage : program.pipeline) {
+        if (stage.kind != Stage::Kind::Curves) continue;
+        const CurvesBlock& block = program.curves.at(stage.index);
+        const SolveTable& table = *block.table;
+        out += fmt::format("curves '{}' ({}x{}x{} cells, solved on the host when checked):", block.name, table.size.x,
+                           table.size.y, table.size.z);
+        for (const SolveSummary& solve : table.solves)
+            out += fmt::format("{} {} {} levels, {} V-cycles, max residual {:.2e} -> {:.2e}",
+                               out.back() == ':' ? "" : ";", solve.name, solve.levels, solve.cycles,
+                               solve.firstResidual, solve.finalResidual);
+        out += "\n";
+    }
+    return out;
+}
+
+} // namespace voxc::driver

@@ -1,0 +1,47 @@
+#pragma once
+// The result of a global solve (a `curves` block, docs/curves.md): a density, and optionally a
+// material id, per voxel of a box of the grid, computed once on the host when the file is
+// checked. The interpreter combines it with the grid directly; generated kernels read the same
+// values through kBindingSolveTables (solveTableWords), so both backends combine the same floats.
+#include "voxc/core/SourceLoc.h"
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace voxc {
+
+// One iterative solve as `voxc run` reports it.
+struct SolveSummary {
+    std::string name;              // e.g. "normals", "parameters"
+    int32_t levels = 0;            // multigrid levels
+    int32_t cycles = 0;            // V-cycles after the full-multigrid start
+    float firstResidual = 0.0f;    // max residual after the full-multigrid start
+    float finalResidual = 0.0f;    // max residual at the end
+};
+
+struct SolveTable {
+    glm::ivec3 min{0};  // grid-local voxel of cell (0,0,0)
+    glm::ivec3 size{0}; // cells per axis, each >= 1
+    std::vector<float> density;     // x fastest, then y, then z; every value in [0, 1]
+    std::vector<uint8_t> material;  // same order; empty when the solve writes no material
+    std::vector<SolveSummary> solves;
+
+    uint64_t cellCount() const { return uint64_t(size.x) * uint64_t(size.y) * uint64_t(size.z); }
+};
+
+// A declared `curves NAME { ... }` block with its solved table.
+struct CurvesBlock {
+    std::string name;
+    SourceLoc loc;
+    std::shared_ptr<const SolveTable> table;
+};
+
+// The words of kBindingSolveTables: word 0 the table count n, words 1..n each table's first
+// word; a table is min (3 ints), size (3 ints), then its densities (float bits), then its
+// materials (one word each, only when it has materials).
+std::vector<int32_t> solveTableWords(const std::vector<std::shared_ptr<const SolveTable>>& tables);
+
+} // namespace voxc

@@ -1,0 +1,129 @@
+// The curves stage on the CPU (docs/curves.md, "The stage"): the spec's planes test (A4.5)
+// through the whole pipeline and the mesher, the stage acting on its box only by its mode, and
+// the example's cliff meshing watertight with the materials of its curves.
+#include "Programs.h"
+
+#include "voxc/check/Check.h"
+#include "voxc/mesh/MarchingCubes.h"
+#include "voxc/mesh/Mesh.h"
+#include "voxc/program/Semantics.h"
+#include "voxc/stages/Pipeline.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace voxc {
+namespace {
+
+Program checked(const std::string& text) {
+    CheckResult result = checkSource(SourceFile("curves.vox", text));
+    EXPECT_TRUE(result.diagnostics.empty()) << result.rendered();
+    if (!result.program) throw std::runtime_error("the program did not check");
+    return *result.program;
+}
+
+Mesh meshOf(const Program& program, const DenseGrid& grid) {
+    const World& w = program.world;
+    return meshMarchingCubes(ChunkedGrid::fromDense(grid, ChunkLayout::make(w.origin, w.size, w.chunkSize)), {});
+}
+
+// A4.5: one straight seed curve, the surface grown from it is its plane: every marching-cubes
+// vertex lies within 1e-3 voxel of it, away from the box faces (where clamp-to-edge smoothing
+// bends a linear field).
+TEST(curvestage_Planes, MeshVerticesLieOnThePlane) {
+    const glm::ivec3 size{32, 24, 32};
+    for (const glm::dvec3 n : {glm::dvec3(0, 1, 0), glm::normalize(glm::dvec3(1, 2, 0.5))}) {
+        SCOPED_TRACE(fmt::format("normal ({}, {}, {})", n.x, n.y, n.z));
+        const glm::dvec3 q(15.5, 11.3, 16.25);
+        const Program program = checked(test::planeProgram(n, q, size));
+        const Mesh mesh = meshOf(program, interpret(program));
+        size_t inner = 0;
+        double worst = 0.0;
+        for (const glm::vec3& v : mesh.positions) {
+            const glm::dvec3 p(v);
+            if (glm::any(glm::lessThan(p, glm::dvec3(1.5))) || glm::any(glm::greaterThan(p, glm::dvec3(size) - 2.5)))
+                continue;
+            ++inner;
+            worst = std::max(worst, std::fabs(glm::dot(n, p - q)));
+        }
+        EXPECT_GT(inner, 500u);
+        EXPECT_LE(worst, 1e-3);
+    }
+}
+
+// Outside its box a stage leaves every voxel as it was; inside, each mode is combineField of
+// the solved table, whose values were checked once (the table is the solve's).
+TEST(curvestage_Modes, CombineInsideTheBoxOnly) {
+    const Program base = checked(test::ridgeProgram("set", ""));
+    const SolveTable& table = *base.curves.at(0).table;
+    ASSERT_FALSE(table.material.empty());
+    Program startOnly = base;
+    startOnly.pipeline.resize(1);
+    const DenseGrid before = interpret(startOnly);
+    for (const char* modeName : {"set", "union", "subtract", "intersect"}) {
+        SCOPED_TRACE(modeName);
+        const Program program = checked(test::ridgeProgram(modeName, ""));
+        const FieldMode mode = program.pipeline.back().mode;
+        const DenseGrid after = interpret(program);
+        size_t changed = 0;
+        for (int z = 0; z < 29; ++z)
+            for (int y = 0; y < 21; ++y)
+                for (int x = 0; x < 37; ++x) {
+                    const glm::ivec3 p{x, y, z}, cell = p - table.min;
+                    const VoxelState was{before.at(p), before.materialAt(p)};
+                    VoxelState expected = was;
+                    if (glm::all(glm::greaterThanEqual(cell, glm::ivec3(0))) && glm::all(glm::lessThan(cell, table.size))) {
+                        const size_t i = size_t(cell.x) + size_t(table.size.x) * (size_t(cell.y) + size_t(table.size.y) * size_t(cell.z));
+                        // The modes' meaning, written out: max, min with 1 - f, min; material where it wins.
+                        const float f = table.density[i];
+                        const float d = was.density;
+                        const float result = mode == FieldMode::Set        ? f
+                                             : mode == FieldMode::Union    ? std::max(d, f)
+                                             : mode == FieldMode::Subtract ? std::min(d, 1.0f - f)
+                                                                           : std::min(d, f);
+                        expected.density = result;
+                        const bool wins = mode == FieldMode::Set || result != d;
+                        if (wins && result >= 0.5f) expected.material = table.material[i];
+                    }
+                    changed += after.at(p) != was.density || after.materialAt(p) != was.material;
+                    ASSERT_EQ(after.at(p), expected.density) << x << "," << y << "," << z;
+                    ASSERT_EQ(after.materialAt(p), expected.material) << x << "," << y << "," << z;
+                }
+        EXPECT_GT(changed, 100u);
+    }
+}
+
+// The example: a non-empty watertight mesh, and the solid voxels carry the three materials of
+// its curves (sand, sandstone, grass) and nothing else.
+TEST(curvestage_Example, CliffMeshesWatertightWithTheCurvesMaterials) {
+    CheckResult result = checkFile(std::string(VOXC_SOURCE_DIR) + "/examples/curves_cliff.vox");
+    ASSERT_TRUE(result.program) << result.rendered();
+    const Program& program = *result.program;
+    const DenseGrid grid = interpret(program);
+    const Mesh mesh = meshOf(program, grid);
+    EXPECT_GT(mesh.triangles.size(), 3000u);
+    EXPECT_TRUE(analyzeTopology(mesh).watertight());
+    std::array<size_t, 256> solid{};
+    for (size_t i = 0; i < grid.data().size(); ++i)
+        if (grid.data()[i] >= 0.5f) ++solid[grid.materials()[i]];
+    EXPECT_EQ(solid[0], 0u);
+    for (const char* name : {"sand", "sandstone", "grass"}) {
+        const auto material = std::find_if(program.materials.begin(), program.materials.end(),
+                                           [&](const Material& m) { return m.name == name; });
+        ASSERT_NE(material, program.materials.end());
+        EXPECT_GT(solid[material->id], 1000u) << name;
+    }
+    // Tolerances (docs/curves.md): normals 1e-5, parameters 1e-5 * the largest amplitude (1.5 here).
+    const std::vector<SolveSummary>& solves = program.curves.at(0).table->solves;
+    ASSERT_EQ(solves.size(), 2u);
+    EXPECT_EQ(solves[0].name, "normals");
+    EXPECT_LE(solves[0].finalResidual, 1e-5f);
+    EXPECT_LE(solves[1].finalResidual, 1.5e-5f);
+    for (const SolveSummary& solve : solves) EXPECT_GT(solve.cycles, 0) << solve.name;
+}
+
+} // namespace
+} // namespace voxc
