@@ -8,6 +8,7 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
   libglm-dev libfmt-dev libcli11-dev nlohmann-json3-dev libmeshoptimizer-dev
   libgtest-dev libbenchmark-dev libnoise-dev zlib1g-dev libpng-dev
+  libopenvdb-dev libboost-dev # voxc-bench's meshing peer, OpenVDB's volumeToMesh
   ccache python3-numpy
   clang libclang-rt-14-dev
 )

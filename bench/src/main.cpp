@@ -1,6 +1,7 @@
 // voxc-bench: times the grammar cases and a 5-octave fBm field on the Vulkan path and in the
-// interpreter, the same fBm with libnoise as a peer, and on the host the L-system expansion and
-// codegen of the largest grammars the limits allow.
+// interpreter, the same fBm with libnoise as a peer, on the host the L-system expansion and
+// codegen of the largest grammars the limits allow, and meshing (marching cubes on the host and
+// the device, surface nets, OpenVDB's volumeToMesh as a peer).
 // `voxc-bench --json` prints a JSON list of records; without it Google Benchmark's table.
 // Vulkan times cover execution and readback of an already-built package (pipelines compiled
 // once up front: that cost is printed to stderr, not included); interpreter times cover the
@@ -11,6 +12,7 @@
 #include "CarveCases.h"
 #include "CurvesCases.h"
 #include "LsystemCases.h"
+#include "MeshCases.h"
 #include "TerrainCases.h"
 
 #include "voxc/stages/Pipeline.h"
@@ -33,7 +35,8 @@ struct BenchOptions {
     bool json = false;
     std::vector<int> sizes{64, 128, 256};
     std::vector<int> fieldSizes{256};
-    std::vector<std::string> backends{"vulkan", "interp", "libnoise", "host"};
+    std::vector<int> meshSizes{32, 256};
+    std::vector<std::string> backends{"vulkan", "interp", "libnoise", "host", "openvdb"};
     std::string device = "auto";
 };
 
@@ -81,7 +84,10 @@ int main(int argc, char** argv) {
     app.add_flag("--json", options.json, "Print a JSON list of records");
     app.add_option("--sizes", options.sizes, "Grid sizes n (n^3 voxels)")->delimiter(',');
     app.add_option("--field-sizes", options.fieldSizes, "Grid sizes n of the fbm5 and feature cases")->delimiter(',');
-    app.add_option("--backends", options.backends, "vulkan, interp, libnoise, host (L-system expansion)")->delimiter(',');
+    app.add_option("--mesh-sizes", options.meshSizes, "Grid sizes n of the meshing cases")->delimiter(',');
+    app.add_option("--backends", options.backends,
+                   "vulkan, interp, libnoise, host (L-system expansion, CPU meshers), openvdb (meshing peer)")
+        ->delimiter(',');
     app.add_option("--device", options.device, "Vulkan device: auto, lavapipe, gpu or an index");
     try {
         app.parse(argc, argv);
@@ -127,6 +133,8 @@ int main(int argc, char** argv) {
         if (uses("host")) bench::registerLsystemExpand(reporter);
         if (uses("host")) bench::registerErosion(reporter);
         if (uses("host")) bench::registerCompileCases(reporter);
+        // The meshing cases' grids come from the Vulkan pipeline, so they need the device.
+        if (context) bench::registerMeshCases(reporter, *context, options.meshSizes, uses("host"), uses("vulkan"), uses("openvdb"));
         if (options.json) {
             benchmark::RunSpecifiedBenchmarks(&reporter);
         } else {

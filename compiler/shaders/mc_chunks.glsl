@@ -27,13 +27,18 @@ void main() {
     const ivec3 end = min(chunkFirst + (1 << push.gridOrigin.w), push.gridSize.xyz);
     const uvec3 extent = uvec3(end - begin + 1);
     const uint voxelsRead = extent.x * extent.y * extent.z;
-    for (uint i = gl_LocalInvocationID.x; i < voxelsRead; i += gl_WorkGroupSize.x) {
+    // Each invocation collects its own voxels' sides, then one atomic each (atomics per voxel
+    // cost lavapipe more than the scan itself).
+    bool solid = false, air = false;
+    for (uint i = gl_LocalInvocationID.x; i < voxelsRead && !(solid && air); i += gl_WorkGroupSize.x) {
         const ivec3 p = begin + ivec3(i % extent.x, (i / extent.x) % extent.y, i / (extent.x * extent.y));
         if (solidAt(p))
-            atomicOr(sawSolid, 1u);
+            solid = true;
         else
-            atomicOr(sawAir, 1u);
+            air = true;
     }
+    if (solid) atomicOr(sawSolid, 1u);
+    if (air) atomicOr(sawAir, 1u);
     barrier();
     if (gl_LocalInvocationID.x == 0u) flags.uniformChunk[chunk] = sawSolid == 0u || sawAir == 0u ? 1u : 0u;
 }

@@ -1,0 +1,130 @@
+#include "MeshCases.h"
+
+#include "voxc/check/Check.h"
+#include "voxc/core/Errors.h"
+#include "voxc/mesh/MarchingCubes.h"
+#include "voxc/stages/Pipeline.h"
+#include "voxc/vulkan/Executor.h"
+#include "voxc/vulkan/GpuMesher.h"
+
+#include <fmt/format.h>
+#include <openvdb/openvdb.h>
+#include <openvdb/tools/VolumeToMesh.h>
+
+#include <iostream>
+#include <memory>
+#include <thread>
+
+namespace voxc::bench {
+
+namespace {
+
+constexpr int32_t kChunk = 32;
+
+// One example's grid, made on first use and kept on the device (for the device mesher) and on
+// the host (for the others).
+struct MeshInput {
+    std::string example;
+    int n = 0;
+    std::unique_ptr<VulkanExecutor> executor;
+    std::unique_ptr<ChunkedGrid> grid;
+    std::unique_ptr<GpuMarchingCubes> gpu;
+    openvdb::FloatGrid::Ptr vdb;
+
+    void make(VulkanContext& context) {
+        if (executor) return;
+        CheckResult checked = checkFile(fmt::format("{}/examples/{}.vox", VOXC_SOURCE_DIR, example));
+        if (!checked.program) throw UserError(checked.rendered());
+        Program program = std::move(*checked.program);
+        program.world.size = glm::ivec3(n);
+        program.world.chunkSize = kChunk;
+        executor = std::make_unique<VulkanExecutor>(context, compileProgram(program, {}));
+        grid = std::make_unique<ChunkedGrid>(executor->run().grid);
+    }
+
+    // Densities negated, so that OpenVDB's inside (below the isovalue) is voxc's solid (above
+    // iso); air (0) is the background, and constant regions are pruned into tiles, OpenVDB's own
+    // representation of a volume. Built once, outside the timing.
+    const openvdb::FloatGrid& vdbGrid(VulkanContext& context) {
+        make(context);
+        if (vdb) return *vdb;
+        vdb = openvdb::FloatGrid::create(0.0f);
+        openvdb::FloatGrid::Accessor access = vdb->getAccessor();
+        for (int z = 0; z < n; ++z)
+            for (int y = 0; y < n; ++y)
+                for (int x = 0; x < n; ++x) {
+                    const float d = grid->at({x, y, z});
+                    if (d != 0.0f) access.setValue(openvdb::Coord(x, y, z), -d);
+                }
+        vdb->pruneGrid();
+        return *vdb;
+    }
+};
+
+void setCounters(benchmark::State& state, int n, size_t triangles) {
+    const double voxels = double(n) * n * n;
+    const double chunks = voxels / (double(kChunk) * kChunk * kChunk);
+    state.counters["mvox_per_s"] = benchmark::Counter(voxels / 1e6, benchmark::Counter::kIsIterationInvariantRate);
+    // Seconds per (chunks / 1000) = milliseconds per chunk.
+    state.counters["ms_per_32_chunk"] =
+        benchmark::Counter(chunks / 1000.0, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+    state.counters["triangles"] = double(triangles);
+}
+
+std::string hostDescription() { return fmt::format("cpu ({} threads)", std::thread::hardware_concurrency()); }
+
+} // namespace
+
+void registerMeshCases(JsonReporter& reporter, VulkanContext& context, const std::vector<int>& sizes, bool host,
+                       bool vulkan, bool openvdb) {
+    openvdb::initialize();
+    for (const char* example : {"terrain", "scene"})
+        for (int n : sizes) {
+            auto input = std::make_shared<MeshInput>();
+            input->example = example;
+            input->n = n;
+            const std::string mc = fmt::format("mesh_mc_{}", example), sn = fmt::format("mesh_sn_{}", example);
+            auto add = [&](const std::string& caseName, const std::string& backend, const std::string& device, auto body) {
+                const std::string name = fmt::format("{}/{}/{}", caseName, n, backend);
+                benchmark::RegisterBenchmark(name.c_str(), body)->Unit(benchmark::kMillisecond)->UseRealTime();
+                reporter.describe(name + "/real_time", {caseName, n, backend, device});
+            };
+            if (host) {
+                add(mc, "host", hostDescription(), [input, &context](benchmark::State& state) {
+                    input->make(context);
+                    size_t triangles = 0;
+                    for (auto _ : state) triangles = meshMarchingCubes(*input->grid, {}).triangles.size() / 3;
+                    setCounters(state, input->n, triangles);
+                });
+                add(sn, "host", hostDescription(), [input, &context](benchmark::State& state) {
+                    input->make(context);
+                    size_t triangles = 0;
+                    for (auto _ : state) triangles = meshSurfaceNets(*input->grid, {}).triangles.size() / 3;
+                    setCounters(state, input->n, triangles);
+                });
+            }
+            if (vulkan)
+                add(mc, "vulkan", context.device().name, [input, &context](benchmark::State& state) {
+                    input->make(context);
+                    if (!input->gpu) input->gpu = std::make_unique<GpuMarchingCubes>(*input->executor);
+                    size_t triangles = 0;
+                    for (auto _ : state) triangles = input->gpu->mesh({}).triangles.size() / 3;
+                    setCounters(state, input->n, triangles);
+                });
+            if (openvdb)
+                add(mc, "openvdb", fmt::format("openvdb {} volumeToMesh, {}", OPENVDB_LIBRARY_VERSION_STRING, hostDescription()),
+                    [input, &context](benchmark::State& state) {
+                        const openvdb::FloatGrid& grid = input->vdbGrid(context);
+                        size_t triangles = 0;
+                        for (auto _ : state) {
+                            std::vector<openvdb::Vec3s> points;
+                            std::vector<openvdb::Vec4I> quads;
+                            openvdb::tools::volumeToMesh(grid, points, quads, -0.5);
+                            triangles = quads.size() * 2;
+                        }
+                        setCounters(state, input->n, triangles);
+                    });
+        }
+}
+
+} // namespace voxc::bench
