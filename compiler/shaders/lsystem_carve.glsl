@@ -1,7 +1,7 @@
 // Point sets (voxc/program/PointSet.h): the capped distances from a world position to the nearest
-// centre and the nearest segment of a set, read from the lists of the position's cell (a
-// world-aligned cube of 8 voxels: the points whose reach meets it, sorted by a lower bound of
-// their squared distance to the cell). Written operation for operation as
+// centre (each scaled by its own factor) and the nearest segment of a set, read from the lists of
+// the position's cell (a world-aligned cube of 8 voxels: the points whose reach meets it, sorted
+// by a lower bound of their squared distance to the cell). Written operation for operation as
 // voxc::pointSetDistances, every float result `precise`: squared distances, the nearest kept by
 // `<`, the loop left at the first lower bound not below the nearest, one sqrt, the cap. Capping
 // makes the lists' contents beyond the reach irrelevant, so every backend computes the same floats.
@@ -11,7 +11,7 @@
 //   words[h + 0..12]  centre data offset, segment data offset, cell table offset, centre reach,
 //                     segment reach, log2 cell size, first cell xyz, cell counts xyz, clearance
 //                     (PointSet::clearance, for stages after the carve that keep it air)
-//   centre data       x, y, z per centre
+//   centre data       x, y, z, scale per centre
 //   segment data      from.xyz, delta.xyz, 1 / |delta|^2 per segment
 //   items             (point index, lower bound of the squared distance) pairs
 //   cell table        per cell (x fastest): first centre item, centre count, first segment item,
@@ -40,11 +40,12 @@ vec2 pointSetDistances(int set, vec3 p) {
     precise float nearestCentre = 3.4028234663852886e38;
     for (int i = 0; i < centreCount; ++i) {
         if (pointSetFloat(centreItem + 2 * i + 1) >= nearestCentre) break;
-        int at = centres + 3 * pointSets.words[centreItem + 2 * i];
+        int at = centres + 4 * pointSets.words[centreItem + 2 * i];
         precise float dx = p.x - pointSetFloat(at);
         precise float dy = p.y - pointSetFloat(at + 1);
         precise float dz = p.z - pointSetFloat(at + 2);
-        precise float d2 = dx * dx + dy * dy + dz * dz;
+        precise float scale = pointSetFloat(at + 3);
+        precise float d2 = (dx * dx + dy * dy + dz * dz) * (scale * scale);
         nearestCentre = d2 < nearestCentre ? d2 : nearestCentre;
     }
 

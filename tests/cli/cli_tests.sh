@@ -269,6 +269,10 @@ expect_no_file lsystem_not_carvable_no_mesh "$work/carve.ply"
 
 # evolve: a generation of variants, each a .vox that checks, with previews; the same inputs give
 # the same files; picks continue into the next generation
+expect trace_lsystem_lengths 0 "lsystem net after 3 expansions: 358 symbols" -- "$voxc" interp "$src/examples/lsystem_cave.vox" --trace-lsystem net
+printf 'world { size = [8, 8, 8]; }\nlsystem net {\n  seed = 3;\n  expansions = 2;\n  production Z { "CZ"; "HZ"; }\n  macro C { "FLFZ" tunnel 1; "FRFZ" tunnel 1; }\n  macro H { "FUFZ" room 1; }\n}\n' > "$work/choices.vox"
+expect trace_lsystem_choices 0 "lsystem net expansion 2: symbol Z at [0-9]+ took production [12] of 2" -- "$voxc" interp "$work/choices.vox" --trace-lsystem net
+expect trace_lsystem_unknown 1 "no lsystem named 'nope' \(it declares: net\)" -- "$voxc" interp "$work/choices.vox" --trace-lsystem nope
 expect help_evolve 0 "--population UINT" -- "$voxc" evolve --help
 expect evolve_writes 0 "wrote 4 variants of lsystem 'macros' \(generation 1" -- "$voxc" evolve "$src/examples/lsystem_macros.vox" macros --population 4 -o "$work/gen1"
 for k in 1 2 3 4; do

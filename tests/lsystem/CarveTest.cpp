@@ -67,6 +67,7 @@ Skeleton randomSkeleton(uint32_t seed) {
 CarveParams randomParams(uint32_t seed) {
     CarveParams p;
     p.radius = uniformIn(seed, 10, 1, 8);
+    p.roomRadius = seed % 2 ? uniformIn(seed, 20, 1, 12) : 0;
     p.clearance = uniformIn(seed, 11, 0.5, 3);
     p.curlAmplitude = uniformIn(seed, 12, 0, 8);
     p.yLimit = uniformIn(seed, 13, 0, 1);
@@ -85,12 +86,41 @@ TEST(CarveTest, StructuralPointsFollowSpacingAndAddLeaves) {
     Skeleton skeleton;
     skeleton.segments.push_back({{0, 0, 0}, {10, 0, 0}, 0, SymbolType::None, 6});
     skeleton.segments.push_back({{10, 0, 0}, {10, 4, 0}, 0, SymbolType::None, 6});
-    const std::vector<glm::dvec3> points = structuralPoints(skeleton, 4.0, {});
+    skeleton.segments.back().type = SymbolType::Room;
+    CarveParams params;
+    params.spacing = 4;
+    params.roomRadius = 9;
+    const std::vector<StructuralPoint> points = structuralPoints(skeleton, params, {});
     // Segment 1: n = 3 (0, 10/3, 20/3); segment 2: n = 1 (its start) and its end, a leaf.
     ASSERT_EQ(points.size(), 5u);
-    test::expectNear(points[1], {10.0 / 3.0, 0, 0}, 1e-12);
-    test::expectNear(points[3], {10, 0, 0}, 1e-12);
-    test::expectNear(points[4], {10, 4, 0}, 1e-12);
+    test::expectNear(points[1].position, {10.0 / 3.0, 0, 0}, 1e-12);
+    test::expectNear(points[3].position, {10, 0, 0}, 1e-12);
+    test::expectNear(points[4].position, {10, 4, 0}, 1e-12);
+    EXPECT_EQ(points[0].radius, params.radius);
+    EXPECT_EQ(points[4].radius, 9.0); // the room's
+    // Without a spacing, each segment's points are its own radius apart.
+    params.spacing = 0;
+    params.radius = 5;
+    EXPECT_EQ(structuralPoints(skeleton, params, {}).size(), 2u + 1u + 1u);
+}
+
+// Without noise (M = 1) a room's centres make air out to room_radius, a tunnel's to radius.
+TEST(CarveTest, RoomsTakeTheirOwnRadius) {
+    Skeleton skeleton;
+    skeleton.segments.push_back({{20, 20, 20}, {21, 20, 20}, 0, SymbolType::Room, 6});
+    CarveParams params;
+    params.radius = 2;
+    params.curlAmplitude = params.simplexAmplitude = params.voronoiAmplitude = 0;
+    params.clearance = 0.5;
+    const auto carve = [&](double roomRadius, glm::ivec3 voxel) { // f: 1 air, 0 rock
+        params.roomRadius = roomRadius;
+        const auto set = carvePointSet(skeleton, params, 1, {0, 0, 0}, {48, 48, 48}, {});
+        const Field field = carveField(set, params, 1);
+        return FieldEvaluator(field, {0, 0, 0}).density(voxel);
+    };
+    EXPECT_GT(carve(6, {20, 25, 20}), 0.5f); // 5 voxels above the room's first centre
+    EXPECT_LT(carve(0, {20, 25, 20}), 0.5f);
+    EXPECT_GT(carve(0, {20, 21, 20}), 0.5f);
 }
 
 TEST(CarveTest, DisplacementStaysWithinAmplitudeAndYLimit) {
@@ -141,7 +171,7 @@ TEST(CarveTest, CarvingIsBoundedBySupport) {
         const auto set = carvePointSet(skeleton, params, seed, kOrigin, kSize, {});
         const Field field = carveField(set, params, seed);
         FieldEvaluator evaluator(field, kOrigin);
-        const double support = 2 * params.radius / params.minScale + 1;
+
         int outside = 0;
         for (int z = 0; z < kSize.z; z += 2)
             for (int y = 0; y < kSize.y; y += 2)
@@ -149,7 +179,9 @@ TEST(CarveTest, CarvingIsBoundedBySupport) {
                     const glm::dvec3 p(x, y, z);
                     if (skeletonDistance(skeleton, p) <= 1.125 * params.clearance) continue;
                     bool near = false;
-                    for (glm::vec3 c : set->centres) near = near || glm::length(p - glm::dvec3(c)) <= support;
+                    for (size_t i = 0; i < set->centres.size(); ++i) // within 2R_i/m_min + 1
+                        near = near || glm::length(p - glm::dvec3(set->centres[i])) <=
+                                           2 / (params.minScale * set->centreScales[i]) + 1;
                     if (near) continue;
                     ++outside;
                     ASSERT_EQ(std::bit_cast<uint32_t>(evaluator.density({x, y, z})), 0u)
@@ -168,7 +200,8 @@ TEST(CarveTest, DistancesDoNotDependOnTheBinning) {
     const auto set = carvePointSet(skeleton, params, 3, origin, kSize, {});
     const auto everyPoint = [&](glm::vec3 p) {
         float centre = FLT_MAX, segment = FLT_MAX;
-        for (glm::vec3 c : set->centres) centre = std::min(centre, centreDistanceSquared(p, c));
+        for (size_t i = 0; i < set->centres.size(); ++i)
+            centre = std::min(centre, centreDistanceSquared(p, set->centres[i], set->centreScales[i]));
         for (const PointSetSegment& s : set->segments) segment = std::min(segment, segmentDistanceSquared(p, s));
         return glm::vec2(std::min(std::sqrt(centre), set->centreReach), std::min(std::sqrt(segment), set->segmentReach));
     };
@@ -197,7 +230,9 @@ TEST(CarveTest, LimitsAreCheckedBeforeStoring) {
     CarveLimits limits;
     limits.maxCentres = 100;
     try {
-        structuralPoints(skeleton, 1.0, limits);
+        CarveParams params;
+        params.spacing = 1;
+        structuralPoints(skeleton, params, limits);
         FAIL() << "no LimitError";
     } catch (const LimitError& e) {
         EXPECT_EQ(e.limit, "maxCentres");

@@ -37,20 +37,22 @@ DenseGrid runVulkan(const Program& program) {
     return executor.run().grid.toDense();
 }
 
-// Grammar (3), three expansions, in rock; `keys` adds feature keys, `world` the world's.
-std::string caveProgram(const std::string& world, const std::string& keys, const std::string& start = "[4, 9, 20]") {
+// Grammar (3), three expansions, in rock, its production of `type`; `keys` adds feature keys,
+// `world` the world's.
+std::string caveProgram(const std::string& world, const std::string& keys, const std::string& start = "[4, 9, 20]",
+                        const std::string& type = "none") {
     return fmt::format(R"(
 world {{ {} }}
 start {{ fill {{ value = 1; }} }}
 lsystem net {{
   expansions = 3; angle = 45; step = 2; start = {};
-  production Z {{ "FZ[RFZ]FZ[LFZ[RF]]"; }}
+  production Z {{ "FZ[RFZ]FZ[LFZ[RF]]" {} 1; }}
   connect {{ chance = 1; max_distance = 12; }}
 }}
 feature tunnels = lsystem_cave {{ lsystem = net; {} }}
 pipeline {{ start; subtract tunnels; }}
 )",
-                       world, start, keys);
+                       world, start, type, keys);
 }
 
 lsystem::Skeleton skeletonOf(const CheckResult& result) {
@@ -79,8 +81,9 @@ double distanceToSkeleton(const lsystem::Skeleton& skeleton, glm::dvec3 p) {
 // Spec test 16 with an odd, negative origin: chunks straddle the grid's edges and the lists of
 // the device (its chunk size) differ from the interpreter's (the checked chunk size).
 TEST(vulkan_LsystemCarve, MatchesTheInterpreterAtEveryChunkSize) {
-    CheckResult result = checked(
-        caveProgram("size = [45, 23, 41]; origin = [-13, -6, 5]; seed = 3;", "radius = 3; clearance = 1;", "[-10, 4, 25]"));
+    // Room segments (radius 5) and connection lines (radius 3): centres of two sizes.
+    CheckResult result = checked(caveProgram("size = [45, 23, 41]; origin = [-13, -6, 5]; seed = 3;",
+                                             "radius = 3; room_radius = 5; clearance = 1;", "[-10, 4, 25]", "room"));
     ASSERT_TRUE(result.program);
     Program program = *result.program;
     const DenseGrid expected = interpret(program);
@@ -113,8 +116,8 @@ TEST(vulkan_LsystemCarve, ClearanceAndSupportHoldOnTheDevice) {
         for (const FieldNode& node : field.nodes)
             if (node.kind == FieldNode::Kind::PointSet) set = node.pointSet.get();
         ASSERT_NE(set, nullptr);
-        // The support radius 2R/m_min + 1 is bounded by the set's reach (2.2 R/m_min).
-        const double support = set->centreReach / 2.2 * 2.0 + 1.0;
+        // Centre i supports 2 R_i / m_min + 1 voxels: its scale is 1 / R_i, the reach 2.2 / m_min.
+        const auto support = [&](size_t i) { return set->centreReach / 2.2 * 2.0 / set->centreScales[i] + 1.0; };
         const DenseGrid grid = runVulkan(*result.program);
         int near = 0, far = 0;
         for (int z = 0; z < 48; ++z)
@@ -128,7 +131,8 @@ TEST(vulkan_LsystemCarve, ClearanceAndSupportHoldOnTheDevice) {
                         ASSERT_LT(density, 0.5f) << keys << " at " << x << "," << y << "," << z;
                     } else if (d > 1.125 * clearance) {
                         bool inside = false;
-                        for (glm::vec3 c : set->centres) inside = inside || glm::length(p - glm::dvec3(c)) <= support;
+                        for (size_t i = 0; i < set->centres.size(); ++i)
+                            inside = inside || glm::length(p - glm::dvec3(set->centres[i])) <= support(i);
                         if (inside) continue;
                         ++far;
                         ASSERT_EQ(density, 1.0f) << keys << " at " << x << "," << y << "," << z;

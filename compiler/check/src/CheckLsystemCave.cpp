@@ -26,9 +26,10 @@ struct NumberKey {
     double CarveParams::*member;
 };
 
-// Ranges as lsystem::checkCarveParams; spacing 0 means "the radius".
+// Ranges as lsystem::checkCarveParams; spacing 0 means "the segment's radius", room_radius 0 "radius".
 constexpr NumberKey kNumberKeys[] = {
     {"radius", 0.5, 256, &CarveParams::radius},
+    {"room_radius", 0, 256, &CarveParams::roomRadius},
     {"spacing", 0, 256, &CarveParams::spacing},
     {"clearance", 0.5, 256, &CarveParams::clearance},
     {"curl_amplitude", 0, 256, &CarveParams::curlAmplitude},
@@ -120,6 +121,12 @@ std::optional<CheckedLsystemCave> checkLsystemCave(Context& context, const ast::
         context.diagnostics.error("E0007", keys.find("spacing")->value.loc,
                                   fmt::format("'spacing' = {} is below 0.25 (0 means the radius)",
                                               formatNumber(params.spacing)));
+        return std::nullopt;
+    }
+    if (params.roomRadius != 0 && params.roomRadius < 0.5) {
+        context.diagnostics.error("E0007", keys.find("room_radius")->value.loc,
+                                  fmt::format("'room_radius' = {} is below 0.5 (0 means 'radius')",
+                                              formatNumber(params.roomRadius)));
         return std::nullopt;
     }
     if (params.maxScale < params.minScale) {

@@ -73,8 +73,8 @@ size_t cellIndex(const PointBins& bins, glm::ivec3 cell) {
 
 // Fills one kind's CSR lists: `bounds` gives an item's bounding box (reach included), `lowerBound`
 // its distance bound to a cell box, listed when within reach (plus slack); lists sorted.
-template <typename Bounds, typename LowerBound>
-void fillLists(PointBins& bins, size_t count, double reach, Bounds bounds, LowerBound lowerBound,
+template <typename Bounds, typename LowerBound, typename Scale>
+void fillLists(PointBins& bins, size_t count, double reach, Bounds bounds, LowerBound lowerBound, Scale scaleOf,
                std::vector<uint32_t>& start, std::vector<PointListItem>& items, uint64_t& entries,
                uint64_t maxEntries, uint32_t maxPerCell) {
     const size_t cells = size_t(bins.cells());
@@ -90,9 +90,11 @@ void fillLists(PointBins& bins, size_t count, double reach, Bounds bounds, Lower
                     for (int x = lo.x; x <= hi.x; ++x) {
                         glm::dvec3 cLo, cHi;
                         cellBox({x, y, z}, bins.cellSize, cLo, cHi);
+                        const double scale = scaleOf(item);
                         const double bound = lowerBound(item, cLo, cHi);
-                        if (bound <= reach + kListSlack)
-                            onCell(cellIndex(bins, {x, y, z}), uint32_t(item), bound, magnitudeOf(boxLo, boxHi, cLo));
+                        if (bound * scale <= reach + kListSlack * scale)
+                            onCell(cellIndex(bins, {x, y, z}), uint32_t(item), bound * scale,
+                                   magnitudeOf(boxLo, boxHi, cLo) * std::max(scale, 1.0));
                     }
         }
     };
@@ -128,9 +130,9 @@ float nearestSquared(const std::vector<PointListItem>& items, uint32_t begin, ui
 
 } // namespace
 
-float centreDistanceSquared(glm::vec3 p, glm::vec3 centre) {
+float centreDistanceSquared(glm::vec3 p, glm::vec3 centre, float scale) {
     const float dx = p.x - centre.x, dy = p.y - centre.y, dz = p.z - centre.z;
-    return dx * dx + dy * dy + dz * dz;
+    return (dx * dx + dy * dy + dz * dz) * (scale * scale);
 }
 
 float segmentDistanceSquared(glm::vec3 p, const PointSetSegment& s) {
@@ -152,11 +154,13 @@ PointBins binPointSet(const PointSet& set, glm::ivec3 firstCell, glm::ivec3 cell
     fillLists(
         bins, set.centres.size(), centreReach,
         [&](size_t i, glm::dvec3& lo, glm::dvec3& hi) {
-            lo = glm::dvec3(set.centres[i]) - (centreReach + kListSlack);
-            hi = glm::dvec3(set.centres[i]) + (centreReach + kListSlack);
+            const double worldReach = centreReach / set.centreScales[i] + kListSlack;
+            lo = glm::dvec3(set.centres[i]) - worldReach;
+            hi = glm::dvec3(set.centres[i]) + worldReach;
         },
         [&](size_t i, glm::dvec3 lo, glm::dvec3 hi) { return boxDistance(glm::dvec3(set.centres[i]), lo, hi); },
-        bins.centreStart, bins.centreItems, entries, maxEntries, maxPerCell);
+        [&](size_t i) { return double(set.centreScales[i]); }, bins.centreStart, bins.centreItems, entries,
+        maxEntries, maxPerCell);
     fillLists(
         bins, set.segments.size(), segmentReach,
         [&](size_t i, glm::dvec3& lo, glm::dvec3& hi) {
@@ -165,7 +169,7 @@ PointBins binPointSet(const PointSet& set, glm::ivec3 firstCell, glm::ivec3 cell
             hi = glm::max(a, b) + (segmentReach + kListSlack);
         },
         [&](size_t i, glm::dvec3 lo, glm::dvec3 hi) { return segmentBoxLowerBound(set.segments[i], lo, hi); },
-        bins.segmentStart, bins.segmentItems, entries, maxEntries, maxPerCell);
+        [](size_t) { return 1.0; }, bins.segmentStart, bins.segmentItems, entries, maxEntries, maxPerCell);
     return bins;
 }
 
@@ -190,12 +194,12 @@ glm::vec2 pointSetDistances(const PointSet& set, const PointBins& bins, glm::vec
     if (inside) {
         const size_t index = cellIndex(bins, cell);
         nearestCentre = nearestSquared(bins.centreItems, bins.centreStart[index], bins.centreStart[index + 1],
-                                       [&](uint32_t i) { return centreDistanceSquared(p, set.centres[i]); });
+                                       [&](uint32_t i) { return centreDistanceSquared(p, set.centres[i], set.centreScales[i]); });
         nearestSegment = nearestSquared(bins.segmentItems, bins.segmentStart[index], bins.segmentStart[index + 1],
                                         [&](uint32_t i) { return segmentDistanceSquared(p, set.segments[i]); });
     } else { // outside the binned grid (a grid changed after checking): every point, the same floats
-        for (glm::vec3 c : set.centres) {
-            const float d2 = centreDistanceSquared(p, c);
+        for (size_t i = 0; i < set.centres.size(); ++i) {
+            const float d2 = centreDistanceSquared(p, set.centres[i], set.centreScales[i]);
             nearestCentre = d2 < nearestCentre ? d2 : nearestCentre;
         }
         for (const PointSetSegment& s : set.segments) {
@@ -229,8 +233,9 @@ glm::bvec2 pointSetReaches(const PointSet& set, glm::dvec3 lo, glm::dvec3 hi) {
                 }
         return reaches;
     }
-    for (glm::vec3 c : set.centres)
-        reaches.x = reaches.x || boxDistance(glm::dvec3(c), lo, hi) <= set.centreReach + kListSlack;
+    for (size_t i = 0; i < set.centres.size(); ++i)
+        reaches.x = reaches.x || boxDistance(glm::dvec3(set.centres[i]), lo, hi) * set.centreScales[i] <=
+                                     set.centreReach + kListSlack * set.centreScales[i];
     for (const PointSetSegment& s : set.segments)
         reaches.y = reaches.y || segmentBoxLowerBound(s, lo, hi) <= set.segmentReach + kListSlack;
     return reaches;
@@ -256,7 +261,10 @@ std::vector<int32_t> pointSetWords(std::span<const std::shared_ptr<const PointSe
         words[s] = int32_t(header);
         for (int i = 0; i < kHeaderWords; ++i) append(0);
         words[header] = int32_t(words.size());
-        for (glm::vec3 c : set.centres) appendFloat(c.x), appendFloat(c.y), appendFloat(c.z);
+        for (size_t i = 0; i < set.centres.size(); ++i) {
+            for (int a = 0; a < 3; ++a) appendFloat(set.centres[i][a]);
+            appendFloat(set.centreScales[i]);
+        }
         words[header + 1] = int32_t(words.size());
         for (const PointSetSegment& g : set.segments) {
             for (int a = 0; a < 3; ++a) appendFloat(g.from[a]);

@@ -116,21 +116,28 @@ PointSetSegment floatSegment(glm::dvec3 a, glm::dvec3 b) {
     return s;
 }
 
-// Calls `visit(a, b)` for every skeleton segment, then every connection-line segment.
+// Calls `visit(a, b, type)` for every skeleton segment, then every connection-line segment (a
+// tunnel).
 template <typename Visit>
 void forEachSegment(const Skeleton& skeleton, Visit visit) {
-    for (const Segment& s : skeleton.segments) visit(s.from, s.to);
+    for (const Segment& s : skeleton.segments) visit(s.from, s.to, s.type);
     for (const Connection& line : skeleton.connections)
-        for (size_t k = 0; k + 1 < line.points.size(); ++k) visit(line.points[k], line.points[k + 1]);
+        for (size_t k = 0; k + 1 < line.points.size(); ++k) visit(line.points[k], line.points[k + 1], SymbolType::Tunnel);
 }
 
 } // namespace
 
-double centreReach(const CarveParams& params) { return 2.2 * params.radius / params.minScale; }
+double centreReach(const CarveParams& params) { return 2.2 / params.minScale; }
+
+double CarveParams::radiusOf(SymbolType type) const {
+    return type == SymbolType::Room && roomRadius > 0 ? roomRadius : radius;
+}
 double segmentReach(const CarveParams& params) { return 1.25 * params.clearance; }
 
 void checkCarveParams(const CarveParams& params) {
     requireRange("radius", params.radius, 0.5, 256);
+    requireRange("room_radius", params.roomRadius, 0, 256);
+    if (params.roomRadius != 0) requireRange("room_radius", params.roomRadius, 0.5, 256);
     requireRange("spacing", params.spacing, 0, 256);
     if (params.spacing != 0) requireRange("spacing", params.spacing, 0.25, 256);
     requireRange("clearance", params.clearance, 0.5, 256);
@@ -146,25 +153,30 @@ void checkCarveParams(const CarveParams& params) {
     requireRange("max_scale", params.maxScale, params.minScale, 16);
 }
 
-std::vector<glm::dvec3> structuralPoints(const Skeleton& skeleton, double spacing, const CarveLimits& limits) {
+std::vector<StructuralPoint> structuralPoints(const Skeleton& skeleton, const CarveParams& params,
+                                              const CarveLimits& limits) {
     using Key = std::tuple<double, double, double>;
+    const auto pointsOn = [&](glm::dvec3 a, glm::dvec3 b, SymbolType type) {
+        const double spacing = params.spacing > 0 ? params.spacing : params.radiusOf(type);
+        return std::max<uint64_t>(1, uint64_t(std::ceil(glm::length(b - a) / spacing)));
+    };
     std::set<Key> starts;
     uint64_t count = 0;
-    forEachSegment(skeleton, [&](glm::dvec3 a, glm::dvec3 b) {
+    forEachSegment(skeleton, [&](glm::dvec3 a, glm::dvec3 b, SymbolType type) {
         starts.insert({a.x, a.y, a.z});
-        count += std::max<uint64_t>(1, uint64_t(std::ceil(glm::length(b - a) / spacing)));
-        count += 1; // a possible leaf
+        count += pointsOn(a, b, type) + 1; // + a possible leaf
         if (count > limits.maxCentres)
             throw LimitError("maxCentres", count, limits.maxCentres,
                              "the carve's structural points (one per spacing along the skeleton and its connections, "
                              "plus the leaves) would number at least");
     });
-    std::vector<glm::dvec3> points;
+    std::vector<StructuralPoint> points;
     points.reserve(size_t(count));
-    forEachSegment(skeleton, [&](glm::dvec3 a, glm::dvec3 b) {
-        const uint64_t n = std::max<uint64_t>(1, uint64_t(std::ceil(glm::length(b - a) / spacing)));
-        for (uint64_t k = 0; k < n; ++k) points.push_back(a + (double(k) / double(n)) * (b - a));
-        if (!starts.count({b.x, b.y, b.z})) points.push_back(b);
+    forEachSegment(skeleton, [&](glm::dvec3 a, glm::dvec3 b, SymbolType type) {
+        const uint64_t n = pointsOn(a, b, type);
+        const double radius = params.radiusOf(type);
+        for (uint64_t k = 0; k < n; ++k) points.push_back({a + (double(k) / double(n)) * (b - a), radius});
+        if (!starts.count({b.x, b.y, b.z})) points.push_back({b, radius});
     });
     return points;
 }
@@ -195,15 +207,18 @@ std::shared_ptr<const PointSet> carvePointSet(const Skeleton& skeleton, const Ca
                                               glm::ivec3 worldOrigin, glm::ivec3 worldSize, const CarveLimits& limits) {
     checkCarveParams(params);
     auto set = std::make_shared<PointSet>();
-    for (glm::dvec3 point : structuralPoints(skeleton, params.pointSpacing(), limits))
-        set->centres.push_back(glm::vec3(displacedCentre(point, params, seed)));
+    for (const StructuralPoint& point : structuralPoints(skeleton, params, limits)) {
+        set->centres.push_back(glm::vec3(displacedCentre(point.position, params, seed)));
+        set->centreScales.push_back(float(1.0 / point.radius));
+    }
     uint64_t segments = 0;
-    forEachSegment(skeleton, [&](glm::dvec3, glm::dvec3) { ++segments; });
+    forEachSegment(skeleton, [&](glm::dvec3, glm::dvec3, SymbolType) { ++segments; });
     if (segments > limits.maxClearanceSegments)
         throw LimitError("maxClearanceSegments", segments, limits.maxClearanceSegments,
                          "the carve's clearance segments (skeleton and connection lines) would number");
     set->segments.reserve(size_t(segments));
-    forEachSegment(skeleton, [&](glm::dvec3 a, glm::dvec3 b) { set->segments.push_back(floatSegment(a, b)); });
+    forEachSegment(skeleton,
+                   [&](glm::dvec3 a, glm::dvec3 b, SymbolType) { set->segments.push_back(floatSegment(a, b)); });
     set->centreReach = float(centreReach(params));
     set->segmentReach = float(segmentReach(params));
     set->clearance = float(params.clearance);
@@ -239,12 +254,13 @@ Field carveField(std::shared_ptr<const PointSet> set, const CarveParams& params,
                                                     voronoi})});
     scale = dag.call("clamp", {scale, dag.number(params.minScale), dag.number(params.maxScale)});
 
-    // f = max(clamp(1 - M D / (2R), 0, 1), min(0.5 + 0.5x, 0.5 + 4x)), x = 1 - D_s / r_clear: the
+    // f = max(clamp(1 - M D / 2, 0, 1), min(0.5 + 0.5x, 0.5 + 4x)), x = 1 - D_s / r_clear, D the
+    // least |v - c_i| / R_i (the point set's scaled distance): the
     // spec's (1 + max(F, F_clr)) / 2 written so that beyond the reaches both terms pass an exact 0
     // through clamp and max, which interval analysis then proves constant.
     const uint32_t brush = dag.call(
         "clamp", {dag.call("sub", {dag.number(1.0), dag.call("mul", {dag.call("mul", {scale, centreDistance}),
-                                                                    dag.number(0.5 / params.radius)})}),
+                                                                    dag.number(0.5)})}),
                   dag.number(0.0), dag.number(1.0)});
     const uint32_t x = dag.call(
         "sub", {dag.number(1.0), dag.call("mul", {skeletonDistance, dag.number(1.0 / params.clearance)})});

@@ -1,7 +1,8 @@
 #pragma once
 // A table of points and segments that a field reads through a `FieldNode::Kind::PointSet` node:
 // the node's value at position p is vec2(min(D_c, centreReach), min(D_s, segmentReach)), D_c the
-// distance to the nearest centre and D_s to the nearest segment. Capping the distances at the
+// least scaled distance |p - c_i| * s_i over the centres (the carve scales by 1/radius, so each
+// centre has its own size) and D_s the distance to the nearest segment. Capping the distances at the
 // reaches makes the value independent of which points farther away are looked at, so every
 // backend reads per-cell lists of the points whose reach meets the cell (world-aligned cubes of
 // kPointSetCellSize voxels over the grid, whatever the chunk size) and still computes the same
@@ -48,8 +49,9 @@ struct PointBins {
 
 struct PointSet {
     std::vector<glm::vec3> centres;
+    std::vector<float> centreScales; // per centre, > 0: its distances count s_i times
     std::vector<PointSetSegment> segments;
-    float centreReach = 0.0f;  // > 0
+    float centreReach = 0.0f;  // > 0, in scaled distance
     float segmentReach = 0.0f; // > 0
     // The field built from the set makes air within this of a segment (the carve's r_clear; every
     // voxel closer than it by 1e-4 is air); later stages that must keep those voxels air ask
@@ -59,8 +61,9 @@ struct PointSet {
 };
 
 // The float operations both backends perform, in this order (lsystem_carve.glsl mirrors them with
-// every result `precise`): squared distances, the nearest kept by `<`, one sqrt at the end.
-float centreDistanceSquared(glm::vec3 p, glm::vec3 centre);
+// every result `precise`): squared distances (a centre's times scale * scale), the nearest kept
+// by `<`, one sqrt at the end.
+float centreDistanceSquared(glm::vec3 p, glm::vec3 centre, float scale);
 float segmentDistanceSquared(glm::vec3 p, const PointSetSegment& segment);
 
 // The bins of `set` over cells firstCell .. firstCell + cellCount - 1. Throws

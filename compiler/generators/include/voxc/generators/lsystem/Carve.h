@@ -4,11 +4,11 @@
 // an ordinary field whose value at world voxel v is, in the spec's terms, f = (1 + F_tot) / 2
 // (1 = cave air, 0 = rock), written as
 //   M(v)    = clamp(1 + a_s m_s S + a_v m_v V, m_min, m_max)   (the 6 noise calls per voxel)
-//   f_brush = clamp(1 - M D / (2R), 0, 1),   D = distance to the nearest displaced centre
+//   f_brush = clamp(1 - M D / 2, 0, 1),   D = min over displaced centres c_i of |v - c_i| / R_i
 //   f_clr   = min(0.5 + 0.5x, 0.5 + 4x),     x = 1 - D_s / r_clear, D_s = distance to the skeleton
 //   f       = max(f_brush, f_clr)
 // so every voxel closer than r_clear to the skeleton is air (f > 0.5), and f is exactly 0 farther
-// than 2R/m_min from every centre and 1.125 r_clear from the skeleton (the clearance term falls
+// than 2R_i/m_min from every centre and 1.125 r_clear from the skeleton (the clearance term falls
 // 8 times faster outside r_clear than inside, so it does not widen every tunnel by r_clear).
 #include "voxc/generators/lsystem/Turtle.h"
 #include "voxc/program/Field.h"
@@ -20,8 +20,9 @@
 namespace voxc::lsystem {
 
 struct CarveParams {
-    double radius = 6.0;               // R: a metaball's air radius (voxels)
-    double spacing = 0.0;              // d: between structural points; 0 = radius
+    double radius = 6.0;               // R: a metaball's air radius (voxels) on tunnels and connections
+    double roomRadius = 0.0;           // R on segments of type room; 0 = radius
+    double spacing = 0.0;              // d: between structural points; 0 = the segment's radius
     double clearance = 2.0;            // r_clear: always air within it of the skeleton
     double curlAmplitude = 3.0;        // A_c: the largest centre displacement
     double curlFrequency = 1.0 / 64.0; // f_c
@@ -31,7 +32,7 @@ struct CarveParams {
     double modulationFrequency = 1.0 / 256.0; // f_mod: the slow modulators m_c, m_s, m_v
     double minScale = 0.4, maxScale = 2.5;    // m_min, m_max: the clamp of M
 
-    double pointSpacing() const { return spacing > 0 ? spacing : radius; }
+    double radiusOf(SymbolType type) const;
 };
 
 struct CarveLimits {
@@ -42,18 +43,25 @@ struct CarveLimits {
 };
 
 // The distance beyond which a centre or a skeleton segment changes nothing (its term of f is at
-// most -0.1 before the clamp, resp. -0.5), a margin float roundings cannot cross: 2.2 R / m_min
-// and 1.25 r_clear. Distances are capped there (PointSet), so farther points need no listing.
+// most -0.1 before the clamp, resp. -0.5), a margin float roundings cannot cross: 2.2 / m_min in
+// the centres' scaled distance (2.2 R_i / m_min voxels) and 1.25 r_clear. Distances are capped
+// there (PointSet), so farther points need no listing.
 double centreReach(const CarveParams& params);
 double segmentReach(const CarveParams& params);
 
 // Throws ParameterError-like UserErrors naming the key (docs/language.md keys) for unusable values.
 void checkCarveParams(const CarveParams& params);
 
-// Structural points (§5.2): for each skeleton segment and connection-line segment (a, b),
-// a + (k/n)(b - a) for k < n = max(1, ceil(|b - a| / spacing)), then every segment end that
-// starts no segment (a leaf). Throws LimitError("maxCentres") before storing too many.
-std::vector<glm::dvec3> structuralPoints(const Skeleton& skeleton, double spacing, const CarveLimits& limits);
+// Structural points (§5.2) with the radius of their segment's type: for each skeleton segment
+// and connection-line segment (a, b), a + (k/n)(b - a) for k < n = max(1, ceil(|b - a| / d)),
+// d = spacing or that radius, then every segment end that starts no segment (a leaf). Throws
+// LimitError("maxCentres") before storing too many.
+struct StructuralPoint {
+    glm::dvec3 position{0.0};
+    double radius = 0.0;
+};
+std::vector<StructuralPoint> structuralPoints(const Skeleton& skeleton, const CarveParams& params,
+                                              const CarveLimits& limits);
 
 // sp + A_c m_c (u.x, k_y u.y, u.z): u = c / max(|c|, 1), c = curl3(sp f_c, substream(seed, 311)),
 // m_c = 0.5 + 0.5 simplex3(sp f_mod, substream(seed, 321)); in double, the caller rounds once.
