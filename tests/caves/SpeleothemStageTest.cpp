@@ -6,7 +6,9 @@
 #include "voxc/grid/Grid.h"
 #include "voxc/interp/Interpreter.h"
 #include "voxc/stages/Pipeline.h"
+#include "voxc/core/Errors.h"
 #include "voxc/vulkan/Context.h"
+#include "voxc/vulkan/DispatchPlan.h"
 #include "voxc/vulkan/Executor.h"
 
 #include "GridCompare.h"
@@ -158,6 +160,19 @@ TEST(caves_SpeleothemStage, ManifestDescribesThePasses) {
     for (std::string_view expected : {"\"prepass_kernel\": \"speleothem_mask\"", "\"scratch_words\": 2146",
                                       "\"name\": \"scratch\"", "\"speleothem_kind\": \"hoodoo\""})
         EXPECT_NE(manifest.find(expected), std::string::npos) << expected;
+}
+
+// The prepass is one dispatch over the whole grid, before the grid pass of the same stage.
+TEST(caves_SpeleothemStage, PrepassRunsBeforeTheGridPass) {
+    KernelPackage package = compileProgram(checked(slabSource("column", {0, 0, 0})), {});
+    const StagePlan& stage = package.stages.at(1);
+    std::vector<uint32_t> kernels;
+    DispatchCursor cursor(package, {65535, 65535, 65535});
+    for (Dispatch d; cursor.next(d);)
+        if (d.stage == 1) kernels.push_back(d.kernel);
+    EXPECT_EQ(kernels, (std::vector<uint32_t>{stage.prepassKernel, stage.gridKernel}));
+    package.stages[1].gridKernel = kNoKernel; // a prepass with nothing to prepare for
+    EXPECT_THROW(validatePackage(package), InternalError);
 }
 
 } // namespace

@@ -48,7 +48,8 @@ public:
     // Start (and field) stage: one dispatch of startKernel (fieldKernel) over the whole grid
     // (then, when skipping tiles, InvalidateRanges); a field stage with fieldBoxes dispatches per
     // box instead (skipping `unchanged` ones), a constant box with anchorCount.w = 1 and the
-    // value's bits in anchorStart.w. Grammar stage: for each iteration, each sweep (index in
+    // value's bits in anchorStart.w. A stage with a prepass kernel (speleothems) dispatches it once
+    // over the whole grid first. Grammar stage: for each iteration, each sweep (index in
     // GrammarPlan::sweeps), each phase with anchors, in order. When skipping tiles a sweep
     // without live rules is left out, and a sweep with some is the tile_ranges kernel (one
     // invocation per tile), then per phase its active-tiles kernel (one invocation per tile,
