@@ -19,7 +19,7 @@
 namespace voxc {
 
 // An `lsystem NAME { ... }` block, checked: its definition can be expanded within its limits
-// (docs/language.md, "L-systems"). Carving it into the grid comes later; `voxc lsystem` reads it.
+// (docs/language.md, "L-systems"). `voxc lsystem` reads it; an lsystem_cave feature carves it.
 struct CheckedLsystem {
     std::string name;
     SourceLoc loc; // the block's name
