@@ -27,8 +27,7 @@ void main() {
     const ivec3 end = min(chunkFirst + (1 << push.gridOrigin.w), push.gridSize.xyz);
     const uvec3 extent = uvec3(end - begin + 1);
     const uint voxelsRead = extent.x * extent.y * extent.z;
-    // Each invocation collects its own voxels' sides, then one atomic each (atomics per voxel
-    // cost lavapipe more than the scan itself).
+    // Each invocation collects the sides of its own voxels, then takes one atomic per side.
     bool solid = false, air = false;
     for (uint i = gl_LocalInvocationID.x; i < voxelsRead && !(solid && air); i += gl_WorkGroupSize.x) {
         const ivec3 p = begin + ivec3(i % extent.x, (i / extent.x) % extent.y, i / (extent.x * extent.y));

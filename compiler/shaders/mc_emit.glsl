@@ -1,6 +1,6 @@
 #version 450
-// GPU marching cubes, pass 3: every cell writes the vertices of the crossed edges it owns and its
-// triangles at the places the scan gave them, so vertices come out ordered by global edge and
+// GPU marching cubes, pass 4, over the active cells (mc_compact.glsl): every cell writes the
+// vertices of the crossed edges it owns and its triangles at the places the scan gave them, so vertices come out ordered by global edge and
 // triangles by global cell then table order, as the CPU mesher orders them. A triangle names a
 // vertex by its owner cell's place plus the owner's crossed edges of lower axis. The arithmetic
 // is the CPU mesher's, operation for operation (`precise`: no fused multiply-adds), so positions
@@ -12,14 +12,17 @@ layout(std430, set = 0, binding = 2) readonly buffer CaseTable {
     uint word[];
 } cases;
 layout(std430, set = 0, binding = 4) readonly buffer CellInfo {
-    uint info[];
+    uint info[]; // counts in bits 0-6 (owned crossed edges, triangles << 3)
 } cells;
 layout(std430, set = 0, binding = 5) readonly buffer Scan {
-    uvec2 value[];
+    uvec4 value[];
 } scan;
 layout(std430, set = 0, binding = 8) readonly buffer CellPlace {
     uint place[];
 } cellPlaces;
+layout(std430, set = 0, binding = 9) readonly buffer ActiveCells {
+    uint key[];
+} activeCells;
 // Seven words per vertex: position xyz and normal xyz (float bits), material.
 layout(std430, set = 0, binding = 6) writeonly buffer Vertices {
     uint word[];
@@ -33,7 +36,7 @@ layout(std430, set = 0, binding = 7) writeonly buffer Triangles {
 uvec2 place(uint key) {
     const uint packed = cellPlaces.place[key];
     uvec2 sum = uvec2(packed & 0xffffu, packed >> 16);
-    for (uint level = 1u; level < push.pass.y; ++level) sum += scan.value[push.levelOffset[level] + (key >> (10u * level))];
+    for (uint level = 1u; level < push.pass.y; ++level) sum += scan.value[push.levelOffset[level] + (key >> (10u * level))].xy;
     return sum;
 }
 
@@ -94,10 +97,10 @@ uint majorityMaterial(ivec3 cell, uint mask) {
 uint caseEdge(uint mask, uint i) { return (cases.word[mask * 10u + 1u + i / 4u] >> (8u * (i % 4u))) & 0xffu; }
 
 void main() {
-    const uint key = invocationIndex(64u);
-    if (key >= push.pass.z) return;
-    const uint info = cells.info[key];
-    if (info == 0u) return;
+    const uint index = invocationIndex(64u);
+    if (index >= push.pass.z) return;
+    const uint key = activeCells.key[index];
+    const uint info = cells.info[key] & 0x7fu;
     const ivec3 cell = cellOfKey(key);
     const uvec2 first = place(key);
     uint rank = 0u;

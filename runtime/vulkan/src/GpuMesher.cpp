@@ -24,6 +24,7 @@ constexpr uint32_t kScanBlockShift = 10;
 constexpr uint32_t kCaseWords = 10;        // per case: triangle count, 36 edge bytes
 constexpr uint32_t kVertexWords = 7;       // position, normal, material
 constexpr uint32_t kTriangleWords = 4;     // three indices, material
+constexpr VkDeviceSize kTotalsBytes = 4 * sizeof(uint32_t); // a scan element: vertices, triangles, active cells
 static_assert(kScanBlock == 1u << kScanBlockShift);
 
 struct Access {
@@ -70,7 +71,7 @@ struct GpuMarchingCubes::Impl {
     std::vector<uint32_t> levelOffset;   // of levels 1 and up in scanLevels ([0] unused: level 0 is cellPlaces)
     McPipelines pipelines;
     // `results` is host-visible: the totals and the chunk flags after the count, then the mesh.
-    DeviceBuffer caseTable, chunkFlags, cellInfo, cellPlaces, scanLevels, vertices, triangles, results;
+    DeviceBuffer caseTable, chunkFlags, cellInfo, cellPlaces, scanLevels, activeCells, vertices, triangles, results;
     VkCommandPool commandPool = VK_NULL_HANDLE;
     VkCommandBuffer cmd = VK_NULL_HANDLE;
     VkFence fence = VK_NULL_HANDLE;
@@ -97,7 +98,7 @@ GpuMarchingCubes::Impl::~Impl() {
     if (ctx.device) ctx.api.vkDeviceWaitIdle(ctx.device);
     if (fence) ctx.api.vkDestroyFence(ctx.device, fence, nullptr);
     if (commandPool) ctx.api.vkDestroyCommandPool(ctx.device, commandPool, nullptr);
-    for (DeviceBuffer* b : {&results, &triangles, &vertices, &scanLevels, &cellPlaces, &cellInfo, &chunkFlags, &caseTable})
+    for (DeviceBuffer* b : {&results, &triangles, &vertices, &activeCells, &scanLevels, &cellPlaces, &cellInfo, &chunkFlags, &caseTable})
         destroyBuffer(ctx, *b);
     destroyMcPipelines(ctx, pipelines);
 }
@@ -154,11 +155,12 @@ void GpuMarchingCubes::Impl::createBuffers() {
     ensureBuffer(chunkFlags, VkDeviceSize(chunkCount) * sizeof(uint32_t), MemoryUse::Device);
     ensureBuffer(cellInfo, VkDeviceSize(cells) * sizeof(uint32_t), MemoryUse::Device);
     ensureBuffer(cellPlaces, VkDeviceSize(cells) * sizeof(uint32_t), MemoryUse::Device);
-    ensureBuffer(scanLevels, VkDeviceSize(offset) * 2 * sizeof(uint32_t), MemoryUse::Device);
+    ensureBuffer(scanLevels, VkDeviceSize(offset) * kTotalsBytes, MemoryUse::Device);
     // Placeholders until a mesh has triangles: every binding of the set must name a buffer.
+    ensureBuffer(activeCells, 16, MemoryUse::Device);
     ensureBuffer(vertices, 16, MemoryUse::Device);
     ensureBuffer(triangles, 16, MemoryUse::Device);
-    ensureBuffer(results, 2 * sizeof(uint32_t) + VkDeviceSize(chunkCount) * sizeof(uint32_t), MemoryUse::HostAccess);
+    ensureBuffer(results, kTotalsBytes + VkDeviceSize(chunkCount) * sizeof(uint32_t), MemoryUse::HostAccess);
 }
 
 McPush GpuMarchingCubes::Impl::push(const MeshOptions& options) const {
@@ -222,7 +224,7 @@ GpuMarchingCubes::GpuMarchingCubes(VulkanExecutor& executor) : impl_(std::make_u
     s.createBuffers();
     bindMcBuffers(s.ctx, s.pipelines,
                   {s.source.voxels, s.source.materials, s.caseTable.buffer, s.chunkFlags.buffer, s.cellInfo.buffer,
-                   s.scanLevels.buffer, s.vertices.buffer, s.triangles.buffer, s.cellPlaces.buffer});
+                   s.scanLevels.buffer, s.vertices.buffer, s.triangles.buffer, s.cellPlaces.buffer, s.activeCells.buffer});
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     poolInfo.queueFamilyIndex = s.ctx.queueFamily;
@@ -257,23 +259,23 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
         s.dispatch(kMcScan, push, (s.levelSize[level] + kScanBlock - 1) / kScanBlock, s.levelSize[level]);
     }
     memoryBarrier(api, s.cmd, kCompute, kTransfer);
-    const VkBufferCopy totals{VkDeviceSize(s.levelOffset.back()) * 2 * sizeof(uint32_t), 0, 2 * sizeof(uint32_t)};
+    const VkBufferCopy totals{VkDeviceSize(s.levelOffset.back()) * kTotalsBytes, 0, kTotalsBytes};
     api.vkCmdCopyBuffer(s.cmd, s.scanLevels.buffer, s.results.buffer, 1, &totals);
     if (options.skipUniformChunks) {
-        const VkBufferCopy flags{0, 2 * sizeof(uint32_t), VkDeviceSize(s.chunkCount) * sizeof(uint32_t)};
+        const VkBufferCopy flags{0, kTotalsBytes, VkDeviceSize(s.chunkCount) * sizeof(uint32_t)};
         api.vkCmdCopyBuffer(s.cmd, s.chunkFlags.buffer, s.results.buffer, 1, &flags);
     }
     memoryBarrier(api, s.cmd, kTransfer, kHostRead);
     s.submitAndWait();
     invalidateForHost(s.ctx, s.results);
-    uint32_t counts[2];
+    uint32_t counts[3];
     std::memcpy(counts, s.results.mapped, sizeof counts);
-    const uint32_t vertexCount = counts[0], triangleCount = counts[1];
+    const uint32_t vertexCount = counts[0], triangleCount = counts[1], activeCount = counts[2];
     if (stats) {
         *stats = MeshStats{s.chunkCount, 0};
         if (options.skipUniformChunks) {
             std::vector<uint32_t> uniform(s.chunkCount);
-            std::memcpy(uniform.data(), static_cast<const char*>(s.results.mapped) + sizeof counts, uniform.size() * sizeof(uint32_t));
+            std::memcpy(uniform.data(), static_cast<const char*>(s.results.mapped) + kTotalsBytes, uniform.size() * sizeof(uint32_t));
             for (uint32_t flag : uniform) stats->skippedChunks += flag;
         }
     }
@@ -291,15 +293,21 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
                                     vertexCount, triangleCount, mib(vertexBytes), mib(triangleBytes), s.ctx.info.name, mib(maxRange)));
     const bool newVertices = s.ensureBuffer(s.vertices, vertexBytes, MemoryUse::Device);
     const bool newTriangles = s.ensureBuffer(s.triangles, triangleBytes, MemoryUse::Device);
+    const bool newActive = s.ensureBuffer(s.activeCells, VkDeviceSize(activeCount) * sizeof(uint32_t), MemoryUse::Device);
     s.ensureBuffer(s.results, vertexBytes + triangleBytes, MemoryUse::HostAccess);
-    if (newVertices || newTriangles) {
+    if (newVertices || newTriangles || newActive) {
         std::array<VkBuffer, kMcBindingCount> buffers{};
         buffers[kMcVertices] = s.vertices.buffer;
         buffers[kMcTriangles] = s.triangles.buffer;
-        bindMcBuffers(s.ctx, s.pipelines, buffers, kMcVertices, kMcTriangles + 1);
+        buffers[kMcCellPlaces] = s.cellPlaces.buffer;
+        buffers[kMcActiveCells] = s.activeCells.buffer;
+        bindMcBuffers(s.ctx, s.pipelines, buffers, kMcVertices, kMcBindingCount);
     }
+    // The active cells in cell order, then the emit over them alone.
     s.begin();
-    s.dispatch(kMcEmit, push, (s.cells + kCellsPerGroup - 1) / kCellsPerGroup, s.cells);
+    s.dispatch(kMcCompact, push, (s.cells + kCellsPerGroup - 1) / kCellsPerGroup, s.cells);
+    memoryBarrier(api, s.cmd, kCompute, kCompute);
+    s.dispatch(kMcEmit, push, (activeCount + kCellsPerGroup - 1) / kCellsPerGroup, activeCount);
     memoryBarrier(api, s.cmd, kCompute, kTransfer);
     const VkBufferCopy vertexCopy{0, 0, vertexBytes};
     api.vkCmdCopyBuffer(s.cmd, s.vertices.buffer, s.results.buffer, 1, &vertexCopy);

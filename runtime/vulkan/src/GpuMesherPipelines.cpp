@@ -9,7 +9,8 @@ namespace voxc::vulkan_detail {
 
 namespace {
 
-constexpr const char* kPassFiles[kMcPassCount] = {"mc_chunks.glsl", "mc_count.glsl", "mc_scan.glsl", "mc_emit.glsl"};
+constexpr const char* kPassFiles[kMcPassCount] = {"mc_chunks.glsl", "mc_count.glsl", "mc_scan.glsl", "mc_compact.glsl",
+                                                   "mc_emit.glsl"};
 
 // The pass's #version line, then the shared declarations, then the rest of the pass.
 std::string passSource(const char* file) {

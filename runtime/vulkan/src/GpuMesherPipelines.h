@@ -21,7 +21,7 @@ struct McPush {
 };
 static_assert(sizeof(McPush) == 128, "must match mc_common.glsl; 128 bytes is every device's minimum");
 
-enum McPass : uint32_t { kMcChunks, kMcCount, kMcScan, kMcEmit, kMcPassCount };
+enum McPass : uint32_t { kMcChunks, kMcCount, kMcScan, kMcCompact, kMcEmit, kMcPassCount };
 
 // Descriptor set 0 of the passes (the buffers' meaning is in the shaders).
 enum McBinding : uint32_t {
@@ -34,6 +34,7 @@ enum McBinding : uint32_t {
     kMcVertices,
     kMcTriangles,
     kMcCellPlaces,
+    kMcActiveCells,
     kMcBindingCount
 };
 

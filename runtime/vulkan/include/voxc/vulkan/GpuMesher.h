@@ -3,8 +3,8 @@
 // run() left there (no densities cross to the host). Three kinds of dispatch, each behind a
 // pipeline barrier on the one before (a workgroup barrier orders nothing between workgroups):
 // a count pass (per cell: the crossed edges it owns and its triangle count from the case table),
-// an exclusive scan of those counts in global cell order, and an emit pass that writes every
-// vertex and triangle at the place the scan gave it. The mesh is the CPU mesher's
+// an exclusive scan of those counts in global cell order, a list of the cells with any, and an
+// emit pass over that list that writes every vertex and triangle at the place the scan gave it. The mesh is the CPU mesher's
 // (voxc/mesh/MarchingCubes.h, the oracle): the same case table, vertices ordered by global edge,
 // triangles by global cell then table order, the same arithmetic; so the index buffer and the
 // materials are identical, and positions and normals bit-identical where the device rounds as

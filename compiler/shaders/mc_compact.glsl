@@ -1,0 +1,27 @@
+#version 450
+// GPU marching cubes, pass 3: the active cells (those that own a vertex or have a triangle), in
+// global cell order, into a list of the counted length, so that the emit pass runs over them
+// alone (lavapipe executes a shader's every branch under a lane mask, so an invocation that
+// returns early still costs the whole body).
+
+layout(local_size_x = 64) in;
+
+layout(std430, set = 0, binding = 4) readonly buffer CellInfo {
+    uint info[]; // counts in bits 0-6, the active index within the scan block above
+} cells;
+layout(std430, set = 0, binding = 5) readonly buffer Scan {
+    uvec4 value[];
+} scan;
+layout(std430, set = 0, binding = 9) writeonly buffer ActiveCells {
+    uint key[];
+} activeCells;
+
+void main() {
+    const uint key = invocationIndex(64u);
+    if (key >= push.pass.z) return;
+    const uint info = cells.info[key];
+    if ((info & 0x7fu) == 0u) return;
+    uint index = info >> 7;
+    for (uint level = 1u; level < push.pass.y; ++level) index += scan.value[push.levelOffset[level] + (key >> (10u * level))].z;
+    activeCells.key[index] = key;
+}
