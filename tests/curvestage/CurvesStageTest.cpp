@@ -4,6 +4,7 @@
 #include "Programs.h"
 
 #include "voxc/check/Check.h"
+#include "voxc/codegen/KernelPackage.h"
 #include "voxc/mesh/MarchingCubes.h"
 #include "voxc/mesh/Mesh.h"
 #include "voxc/program/Semantics.h"
@@ -94,6 +95,36 @@ TEST(curvestage_Modes, CombineInsideTheBoxOnly) {
                 }
         EXPECT_GT(changed, 100u);
     }
+}
+
+// The plan tiles the grid: the slabs outside the box and the pieces inside where the union
+// provably changes nothing (the table is air there and no density is below 0) are not
+// dispatched; the rest are, and they cover the box's cells exactly once.
+TEST(curvestage_Plan, SkipsTheBoxPiecesThatChangeNothing) {
+    Program program = checked(test::ridgeProgram("union", ""));
+    program.world.chunkSize = 8;
+    const SolveTable& table = *program.curves.at(0).table;
+    const KernelPackage package = compileProgram(program, {});
+    const StagePlan& plan = package.stages.back();
+    EXPECT_EQ(plan.kind, "curves");
+    uint64_t dispatched = 0, skippedInside = 0, covered = 0;
+    for (const FieldBox& box : plan.gridBoxes) {
+        const glm::ivec3 extent = box.max - box.min;
+        const uint64_t cells = uint64_t(extent.x) * uint64_t(extent.y) * uint64_t(extent.z);
+        covered += cells;
+        const bool inside = glm::all(glm::greaterThanEqual(box.min, table.min)) &&
+                            glm::all(glm::lessThanEqual(box.max, table.min + table.size));
+        if (!box.unchanged) {
+            EXPECT_TRUE(inside);
+            dispatched += cells;
+        } else if (inside) {
+            skippedInside += cells;
+        }
+    }
+    EXPECT_EQ(covered, uint64_t(37 * 21 * 29));
+    EXPECT_EQ(dispatched + skippedInside, table.cellCount());
+    EXPECT_GT(skippedInside, 0u);
+    EXPECT_GT(dispatched, 0u);
 }
 
 // The example: a non-empty watertight mesh, and the solid voxels carry the three materials of

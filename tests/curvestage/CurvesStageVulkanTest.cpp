@@ -46,6 +46,15 @@ TEST(vulkan_CurvesStage, EveryModeMatchesTheInterpreter) {
         }
 }
 
+// A set over a box smaller than the grid keeps what the stages before it wrote outside the box
+// (here a start state without materials, which nothing else keeps alive).
+TEST(vulkan_CurvesStage, SetKeepsTheGridOutsideItsBox) {
+    const Program program = checked(test::ridgeProgram("set", "", false));
+    const DenseGrid expected = interpret(program);
+    EXPECT_EQ(expected.at({0, 0, 0}), 1.0f); // the start's rock, outside the box
+    expectDeviceMatches(program);
+}
+
 TEST(vulkan_CurvesStage, PlaneMatchesTheInterpreter) {
     expectDeviceMatches(checked(test::planeProgram(glm::normalize(glm::dvec3(1, 2, 0.5)), {15.5, 11.3, 16.25}, {32, 24, 32})));
 }

@@ -34,20 +34,21 @@ pipeline {{ start; set plane; }}
 }
 
 // Rock below y = 9 (material rock) in an odd-sized grid, and a ridge of moss-covered curves in
-// a box that does not reach the grid's edges, combined by `mode`.
-inline std::string ridgeProgram(const std::string& mode, const std::string& world) {
+// a box that does not reach the grid's edges, combined by `mode`; without `materials`, neither
+// the start nor the curves name one.
+inline std::string ridgeProgram(const std::string& mode, const std::string& world, bool materials = true) {
+    const std::string rock = materials ? "material = rock;" : "", moss = materials ? "material = moss;" : "";
     return fmt::format(R"(
 world {{ size = [37, 21, 29]; {} }}
-material rock {{ id = 1; }}
-material moss {{ id = 2; }}
-start {{ box {{ min = [0, 0, 0]; max = [37, 9, 29]; material = rock; }} }}
+{}
+start {{ box {{ min = [0, 0, 0]; max = [37, 9, 29]; {} }} }}
 curves ridge {{
   box = [[3, 2, 4], [30, 17, 25]];
   noise_frequency = 0.2;
   curve crest {{
     points = [[6, 12, 6], [14, 14, 10], [22, 11, 18], [28, 13, 23]];
-    constraint {{ t = 0; material = moss; amplitude = 1.5; roughness = 0.7; }}
-    constraint {{ t = 1; material = moss; amplitude = 0.5; }}
+    constraint {{ t = 0; {} amplitude = 1.5; roughness = 0.7; }}
+    constraint {{ t = 1; {} amplitude = 0.5; }}
   }}
   curve side {{
     seed = false;
@@ -58,7 +59,8 @@ curves ridge {{
 }}
 pipeline {{ start; {} ridge; }}
 )",
-                       world, mode);
+                       world, materials ? "material rock { id = 1; }\nmaterial moss { id = 2; }" : "", rock, moss, moss,
+                       mode);
 }
 
 } // namespace voxc::test

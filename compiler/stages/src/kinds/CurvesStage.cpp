@@ -21,7 +21,8 @@ std::string label(const Program& program, const Stage& stage) {
     return fmt::format("{} {}", ir::fieldModeName(stage.mode), program.curves.at(stage.index).name);
 }
 
-bool readsDensities(const Stage& stage) { return stage.mode != FieldMode::Set; }
+// Even a set leaves the voxels outside its box as they were, so the stages before it stay live.
+bool readsDensities(const Stage&) { return true; }
 
 bool writesMaterials(const Program& program, const Stage& stage) { return !tableOf(program, stage).material.empty(); }
 
