@@ -266,6 +266,16 @@ expect_same lsystem_cave_chunk_8_vs_32 "$work/lsystem_cave.npy" "$work/lsystem_c
 printf 'world { size = [8, 8, 8]; }\nlsystem a { production Z { "FZ"; } }\npipeline { start; subtract a; }\n' > "$work/carve.vox"
 expect lsystem_not_carvable 1 "E0013: 'a' is an lsystem; carving" -- "$voxc" run "$work/carve.vox" -o "$work/carve.ply"
 expect_no_file lsystem_not_carvable_no_mesh "$work/carve.ply"
+# curves: run and interp report the example's host solves; the same voxels at chunk 8 as at 32
+expect curves_run_solves 0 "curves 'cliffs' \(64x32x64 cells, solved on the host when checked\): normals 5 levels, [1-9][0-9]* V-cycles, max residual [0-9.e+-]+ -> [0-9.e+-]+; parameters" -- \
+    "$voxc" run "$src/examples/curves_cliff.vox" --device lavapipe --chunk 8 -o "$work/curves_cliff8.ply" \
+    --voxels "$work/curves_cliff8.npy"
+expect_same curves_cliff_chunk_8_vs_32 "$work/curves_cliff.npy" "$work/curves_cliff8.npy"
+expect curves_interp_solves 0 "curves 'cliffs' .*parameters 5 levels" -- "$voxc" interp "$src/examples/curves_cliff.vox"
+printf 'world { size = [8, 8, 8]; }\ncurves c { box = [[0, 0, 0], [7, 7, 8]]; }\npipeline { start; union c; }\n' > "$work/curves_box.vox"
+expect curves_box_outside 1 "curves_box\.vox:2:18: error E0007: the box \[0, 0, 0\] to \[7, 7, 8\]" -- \
+    "$voxc" run "$work/curves_box.vox" -o "$work/curves_box.ply"
+expect_no_file curves_box_no_mesh "$work/curves_box.ply"
 
 # evolve: a generation of variants, each a .vox that checks, with previews; the same inputs give
 # the same files; picks continue into the next generation
