@@ -279,6 +279,12 @@ TEST(caves_Speleothems, ColumnsDoNotDependOnTheGridExtent) {
 
 TEST(caves_Speleothems, ParametersAreChecked) {
     EXPECT_NO_THROW(checkSpeleothemParams(SpeleothemParams{}));
+    SpeleothemParams edges; // every range's ends, as floats from the checker
+    edges.spawnThreshold = float(0.99);
+    edges.clusterFrequency = edges.spawnFrequency = edges.growth = 1000.0f;
+    edges.taper = 8;
+    edges.minGap = edges.maxGap = 4096;
+    EXPECT_NO_THROW(checkSpeleothemParams(edges));
     const auto rejects = [](const char* key, auto change) {
         SpeleothemParams p;
         change(p);

@@ -74,8 +74,9 @@ void checkSpeleothemParams(const SpeleothemParams& p) {
         throw generators::ParameterError("speleothems", "cluster_low", p.clusterLow,
                                          fmt::format("must be <= cluster_high ({})", p.clusterHigh));
     checkRange("spawn_frequency", p.spawnFrequency, 0, 1000);
-    // Below 1, so 1 - s_thr (the reach's denominator) is positive.
-    checkRange("spawn_threshold", p.spawnThreshold, -1, 0.99);
+    // Below 1, so 1 - s_thr (the reach's denominator) is positive; the bound as the float a
+    // checked 0.99 becomes, so the checker's range and this one agree.
+    checkRange("spawn_threshold", p.spawnThreshold, -1, double(0.99f));
     checkRange("growth", p.growth, 0, 1000);
     checkRange("taper", p.taper, 0, 8);
     checkRange("min_gap", p.minGap, 1, 4096);
