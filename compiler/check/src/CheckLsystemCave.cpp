@@ -144,7 +144,10 @@ std::optional<CheckedLsystemCave> checkLsystemCave(Context& context, const ast::
         const lsystem::Expansion expansion = lsystem::expand(definition);
         lsystem::Skeleton skeleton = lsystem::interpret(definition, expansion.symbols, expansion.types);
         lsystem::connectBranches(skeleton, net->connect, definition.seed, definition.limits);
-        auto set = lsystem::carvePointSet(skeleton, params, world.seed, world.origin, world.size, {});
+        lsystem::CarveLimits limits;
+        limits.maxListEntries -= std::min(limits.maxListEntries, context.pointSetListEntries);
+        auto set = lsystem::carvePointSet(skeleton, params, world.seed, world.origin, world.size, limits);
+        context.pointSetListEntries += set->bins.centreItems.size() + set->bins.segmentItems.size();
         if (set->bins.centreItems.empty() && set->bins.segmentItems.empty())
             warnCarvesNothing(context, lsystemKey->value.loc, net->name, skeleton, world);
         out.field = lsystem::carveField(std::move(set), params, world.seed);

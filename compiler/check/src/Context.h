@@ -14,6 +14,8 @@ struct Context {
     Constants constants;
     MaterialNames materials; // filled by checkMaterials before any other block is checked
     std::vector<std::string> curvesNames; // the curves blocks, declaration order (checkCurves), for the pipeline
+    // List entries of the lsystem_cave point sets checked so far: the runtime bounds their sum.
+    uint64_t pointSetListEntries = 0;
 };
 
 } // namespace voxc::check

@@ -199,7 +199,9 @@ PointBins binCarveCells(const PointSet& set, glm::ivec3 worldOrigin, glm::ivec3 
                              fmt::format("one {}^3 cell would list this many centres or skeleton segments of the carve "
                                          "(the points whose reach meets it) at least",
                                          kPointSetCellSize));
-        throw LimitError("maxListEntries", e.amount, e.cap, "the carve's per-cell lists would hold at least");
+        throw LimitError("maxListEntries", e.amount, e.cap,
+                         "the carve's per-cell lists (with those of the lsystem_cave features before it) would hold "
+                         "at least");
     }
 }
 

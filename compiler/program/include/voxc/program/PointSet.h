@@ -95,7 +95,7 @@ glm::bvec2 pointSetReaches(const PointSet& set, glm::dvec3 lo, glm::dvec3 hi);
 
 // Bounds on the lists of one binning: list entries over all cells, and centres or segments one
 // cell lists (the length of a kernel's loop per voxel, before its early exit).
-constexpr uint64_t kMaxPointSetListEntries = uint64_t(1) << 25;
+constexpr uint64_t kMaxPointSetListEntries = uint64_t(1) << 24;
 constexpr uint32_t kMaxPointSetPerCell = uint32_t(1) << 13;
 
 // The storage buffer of kBindingPointSets (layout in compiler/shaders/lsystem_carve.glsl): every
