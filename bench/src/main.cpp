@@ -10,6 +10,7 @@
 #include "CompileCases.h"
 #include "JsonReporter.h"
 #include "CarveCases.h"
+#include "SpeleothemCases.h"
 #include "CurvesCases.h"
 #include "LsystemCases.h"
 #include "MeshCases.h"
@@ -128,6 +129,13 @@ int main(int argc, char** argv) {
             if (uses("libnoise")) registerLibnoise(reporter, n);
         }
         if (uses("vulkan") || uses("interp")) bench::registerLsystemCarve(reporter, context.get(), uses("interp"));
+        for (int n : {128, 256})
+            for (bool withStage : {false, true}) {
+                auto program = std::make_shared<const Program>(bench::speleothemProgram(n, withStage));
+                const std::string name = withStage ? "speleothems" : "speleothems_base";
+                if (uses("vulkan")) registerVulkan(reporter, *context, name, n, program);
+                if (uses("interp")) registerInterp(reporter, name, n, program);
+            }
         if (uses("vulkan") || uses("interp") || uses("host"))
             bench::registerCurves(reporter, context.get(), uses("interp"), uses("host"));
         if (uses("host")) bench::registerLsystemExpand(reporter);
