@@ -3,7 +3,8 @@
 // Requires common.glsl, random.glsl, noise_common.glsl, noise_simplex3.glsl, speleothem_air.glsl,
 // and before this file the stage's constants (speleothem_grow.glsl's PARAMETERS section):
 // SPELEOTHEM_KIND (0 stalactite, 1 stalagmite, 2 column, 3 hoodoo), SPELEOTHEM_CLUSTER_FREQUENCY,
-// _CLUSTER_LOW, _CLUSTER_HIGH, _SPAWN_FREQUENCY, _SPAWN_THRESHOLD, _GROWTH, _TAPER, _MIN_GAP,
+// _CLUSTER_LOW, _CLUSTER_HIGH, _SPAWN_FREQUENCY, _SPAWN_THRESHOLD, _REACH_SCALE (voxc::
+// speleothemReachScale), _GROWTH, _TAPER, _MIN_GAP,
 // _MAX_GAP, SPELEOTHEM_MATERIAL (0: none written) and `bool speleothemProtected(ivec3 world)`.
 
 // L (voxc::caves::speleothemLength): 0 when the run's midpoint fails the cluster range or the
@@ -18,7 +19,7 @@ int speleothemLength(int worldX, int worldZ, int worldFloorY, int worldCeilingY)
     precise vec3 spawnPoint = midpoint * SPELEOTHEM_SPAWN_FREQUENCY;
     float spawn = noiseSimplex3(spawnPoint, int(noiseSubstream(seed, 402u)));
     if (!(spawn > SPELEOTHEM_SPAWN_THRESHOLD)) return 0;
-    precise float reach = SPELEOTHEM_GROWTH * (spawn - SPELEOTHEM_SPAWN_THRESHOLD) / (1.0 - SPELEOTHEM_SPAWN_THRESHOLD);
+    precise float reach = SPELEOTHEM_GROWTH * (spawn - SPELEOTHEM_SPAWN_THRESHOLD) * SPELEOTHEM_REACH_SCALE;
     // std::min(std::max(reach, 0), 1): reach is finite, so GLSL's min and max agree.
     float phi = min(max(reach, 0.0), 1.0);
     precise float halfLength = phi * float(worldCeilingY - worldFloorY - 1) * 0.5;

@@ -33,13 +33,14 @@ std::string speleothemGrowKernelSource(const ir::IrModule& module, const Speleot
         "const float SPELEOTHEM_CLUSTER_HIGH = {};\n"
         "const float SPELEOTHEM_SPAWN_FREQUENCY = {};\n"
         "const float SPELEOTHEM_SPAWN_THRESHOLD = {};\n"
+        "const float SPELEOTHEM_REACH_SCALE = {};\n"
         "const float SPELEOTHEM_GROWTH = {};\n"
         "const int SPELEOTHEM_TAPER = {};\n"
         "const int SPELEOTHEM_MIN_GAP = {};\n"
         "const int SPELEOTHEM_MAX_GAP = {};\n"
         "const uint SPELEOTHEM_MATERIAL = {}u;\n",
         int(p.kind), glslFloat(p.clusterFrequency), glslFloat(p.clusterLow), glslFloat(p.clusterHigh),
-        glslFloat(p.spawnFrequency), glslFloat(p.spawnThreshold), glslFloat(p.growth), p.taper, p.minGap, p.maxGap,
+        glslFloat(p.spawnFrequency), glslFloat(p.spawnThreshold), glslFloat(speleothemReachScale(p)), glslFloat(p.growth), p.taper, p.minGap, p.maxGap,
         material.value_or(0));
     if (clearanceSet) {
         // pointSetClearance: the capped segment distance below the clearance (header word 12).

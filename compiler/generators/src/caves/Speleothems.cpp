@@ -115,7 +115,7 @@ int32_t speleothemLength(const SpeleothemParams& params, uint32_t seed, int32_t 
     if (!(cluster >= params.clusterLow && cluster <= params.clusterHigh)) return 0;
     const float spawn = simplex3(midpoint * params.spawnFrequency, spawnSeed(seed));
     if (!(spawn > params.spawnThreshold)) return 0;
-    const float reach = params.growth * (spawn - params.spawnThreshold) / (1.0f - params.spawnThreshold);
+    const float reach = params.growth * (spawn - params.spawnThreshold) * speleothemReachScale(params);
     const float phi = std::min(std::max(reach, 0.0f), 1.0f);
     return int32_t(std::ceil(phi * float(worldCeilingY - worldFloorY - 1) * 0.5f));
 }

@@ -38,6 +38,11 @@ struct SpeleothemParams {
     std::optional<uint8_t> material; // written where a feature wins (voxc::combineField, union)
 };
 
+// 1 / (1 - spawn_threshold), rounded once on the host: the reach multiplies by it, so both
+// backends perform only correctly rounded additions and multiplications (exact on every Vulkan
+// device, where a division may be off by 2.5 ulp).
+inline float speleothemReachScale(const SpeleothemParams& params) { return 1.0f / (1.0f - params.spawnThreshold); }
+
 // One declared speleothem feature; a pipeline entry naming it is a Stage::Kind::Speleothems.
 struct SpeleothemStage {
     std::string name;

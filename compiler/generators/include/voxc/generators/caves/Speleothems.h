@@ -59,8 +59,8 @@ std::vector<AirRun> closedRuns(const SpeleothemParams& params, const AirMask& ma
 
 // L, the voxels a feature grows from each anchor: 0 when the run's midpoint fails the cluster
 // range or the spawn threshold, else ceil(phi * gap / 2) with
-// phi = clamp(growth * (n_s - s_thr) / (1 - s_thr), 0, 1). `worldX`, `worldZ`: the column;
-// the midpoint's y is (world floor + world ceiling) / 2.
+// phi = clamp(growth * (n_s - s_thr) * speleothemReachScale, 0, 1), the scale 1 / (1 - s_thr).
+// `worldX`, `worldZ`: the column; the midpoint's y is (world floor + world ceiling) / 2.
 int32_t speleothemLength(const SpeleothemParams& params, uint32_t seed, int32_t worldX, int32_t worldZ,
                          int32_t worldFloorY, int32_t worldCeilingY);
 
