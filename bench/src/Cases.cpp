@@ -37,6 +37,13 @@ Program loadResized(const Case& benchCase, int n) {
 
 } // namespace
 
+Program loadExampleProgram(const std::string& example) {
+    const std::string path = fmt::format("{}/{}", VOXC_SOURCE_DIR, example);
+    CheckResult result = checkFile(path);
+    if (result.hasErrors() || !result.program) throw UserError(fmt::format("{} does not check", path));
+    return std::move(*result.program);
+}
+
 Program loadFeatureProgram(const Case& benchCase, int n) { return loadResized(benchCase, n); }
 
 Program loadCaseProgram(const Case& benchCase, int n) {

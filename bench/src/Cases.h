@@ -21,6 +21,9 @@ Program loadCaseProgram(const Case& benchCase, int n);
 // The generator cases: examples/arch.vox, cave.vox and cliff.vox (Dey's thesis defaults) on an
 // n^3 grid; the features keep their default size and place, as in the thesis's timings.
 const std::vector<Case>& featureCases();
+// An example as written (its own size), e.g. "examples/caves.vox".
+Program loadExampleProgram(const std::string& example);
+
 Program loadFeatureProgram(const Case& benchCase, int n);
 
 // The "fbm5" case: a 5-octave Perlin fBm density over n^3 voxels (frequency 0.02 per voxel,

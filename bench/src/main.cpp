@@ -129,6 +129,12 @@ int main(int argc, char** argv) {
             if (uses("libnoise")) registerLibnoise(reporter, n);
         }
         if (uses("vulkan") || uses("interp")) bench::registerLsystemCarve(reporter, context.get(), uses("interp"));
+        // The whole cave network of examples/caves.vox (256x96x256): carve and two speleothem stages.
+        if (uses("vulkan") || uses("interp")) {
+            auto program = std::make_shared<const Program>(bench::loadExampleProgram("examples/caves.vox"));
+            if (uses("vulkan")) registerVulkan(reporter, *context, "caves_example", 256, program);
+            if (uses("interp")) registerInterp(reporter, "caves_example", 256, program);
+        }
         for (int n : {128, 256})
             for (bool withStage : {false, true}) {
                 auto program = std::make_shared<const Program>(bench::speleothemProgram(n, withStage));
