@@ -249,6 +249,23 @@ TEST(CarveTest, LimitsAreCheckedBeforeStoring) {
     }
 }
 
+// Long diagonal segments list few cells but their bounding boxes hold the whole grid: the
+// binning refuses before testing 2^28 (segment, cell) pairs.
+TEST(CarveTest, BinningWorkIsBoundedBeforeTesting) {
+    PointSet set;
+    set.segmentReach = 1;
+    set.centreReach = 1;
+    for (int i = 0; i < 1100; ++i)
+        set.segments.push_back({glm::vec3(0.0f, float(i % 7), 0.0f), glm::vec3(511.0f), 1.0f / (3.0f * 511.0f * 511.0f)});
+    try {
+        binPointSetOverGrid(set, {0, 0, 0}, {512, 512, 512}, UINT64_MAX, UINT32_MAX);
+        FAIL() << "no PointSetLimitError";
+    } catch (const PointSetLimitError& e) {
+        EXPECT_EQ(std::string(e.limit), "cellTests");
+        EXPECT_GT(e.amount, kMaxPointSetCellTests);
+    }
+}
+
 TEST(CarveTest, ParametersOutOfRangeAreRejected) {
     CarveParams params;
     params.maxScale = params.minScale / 2;

@@ -78,6 +78,17 @@ void fillLists(PointBins& bins, size_t count, double reach, Bounds bounds, Lower
                std::vector<uint32_t>& start, std::vector<PointListItem>& items, uint64_t& entries,
                uint64_t maxEntries, uint32_t maxPerCell) {
     const size_t cells = size_t(bins.cells());
+    // The cells tested, counted from the bounding boxes before testing any: a long diagonal
+    // segment's box holds far more cells than it lists, so entries alone would not bound the work.
+    uint64_t tests = 0;
+    for (size_t item = 0; item < count; ++item) {
+        glm::dvec3 boxLo, boxHi;
+        bounds(item, boxLo, boxHi);
+        glm::ivec3 lo, hi;
+        if (!cellRange(bins, boxLo, boxHi, lo, hi)) continue;
+        tests += uint64_t(hi.x - lo.x + 1) * uint64_t(hi.y - lo.y + 1) * uint64_t(hi.z - lo.z + 1);
+        if (tests > kMaxPointSetCellTests) throw PointSetLimitError{"cellTests", tests, kMaxPointSetCellTests};
+    }
     std::vector<uint32_t> perCell(cells, 0);
     const auto visit = [&](auto&& onCell) {
         for (size_t item = 0; item < count; ++item) {

@@ -195,7 +195,7 @@ std::vector<int32_t> VulkanExecutor::Impl::pointSetTable() const {
                                     "use a smaller radius or fewer points",
                                     e.cap,
                                     std::string_view(e.limit) == "perCell" ? "entries in one cell's list"
-                                                                           : "list entries or words",
+                                                                           : "list entries, cell tests or words",
                                     e.amount));
     }
 }

@@ -194,6 +194,11 @@ PointBins binCarveCells(const PointSet& set, glm::ivec3 worldOrigin, glm::ivec3 
     try {
         return binPointSetOverGrid(set, worldOrigin, worldSize, limits.maxListEntries, limits.maxPerCell);
     } catch (const PointSetLimitError& e) {
+        if (std::string_view(e.limit) == "cellTests")
+            throw LimitError("maxCellTests", e.amount, e.cap,
+                             fmt::format("binning the carve's points would test this many (point, {}^3 cell) pairs "
+                                         "(their bounding boxes; long segments or a large radius make many) at least",
+                                         kPointSetCellSize));
         if (std::string_view(e.limit) == "perCell")
             throw LimitError("maxPerCell", e.amount, e.cap,
                              fmt::format("one {}^3 cell would list this many centres or skeleton segments of the carve "
