@@ -74,7 +74,7 @@ void registerCurves(JsonReporter& reporter, VulkanContext* context, bool interp,
                 benchmark::DoNotOptimize(curvesProgram().curves.data());
                 state.SetIterationTime(millisecondsSince(start) / 1000.0);
             }
-        })->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(1);
+        })->UseManualTime()->Unit(benchmark::kMillisecond);
         reporter.describe(name + "/manual_time", {"curves", kSize, "host", "cpu (1 thread)"});
     }
     auto program = std::make_shared<std::unique_ptr<const Program>>();

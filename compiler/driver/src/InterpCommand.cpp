@@ -53,7 +53,7 @@ SliceSpec parseSlice(const std::string& text, glm::ivec3 size) {
 
 void interpretFile(const InterpOptions& options) {
     const Program program = loadProgram(options.file, options.overrides);
-    std::cerr << formatSolveReport(program);
+    std::cerr << formatSolveReport(program, options.trace);
     std::optional<SliceSpec> slice;
     if (!options.slice.empty()) slice = parseSlice(options.slice, program.world.size);
 

@@ -4,7 +4,7 @@
 
 namespace voxc::driver {
 
-std::string formatSolveReport(const Program& program) {
+std::string formatSolveReport(const Program& program, bool perCycle) {
     std::string out;
     for (const Stage& stage : program.pipeline) {
         if (stage.kind != Stage::Kind::Curves) continue;
@@ -14,9 +14,16 @@ std::string formatSolveReport(const Program& program) {
                            table.size.y, table.size.z);
         for (const SolveSummary& solve : table.solves)
             out += fmt::format("{} {} {} levels, {} V-cycles, max residual {:.2e} -> {:.2e}",
-                               out.back() == ':' ? "" : ";", solve.name, solve.levels, solve.cycles,
-                               solve.firstResidual, solve.finalResidual);
+                               out.back() == ':' ? "" : ";", solve.name, solve.levels, solve.cycles(),
+                               solve.residuals.front(), solve.residuals.back());
         out += "\n";
+        if (!perCycle) continue;
+        for (const SolveSummary& solve : table.solves) {
+            out += fmt::format("  {} max residual: full multigrid {:.3e}", solve.name, solve.residuals.front());
+            for (size_t c = 1; c < solve.residuals.size(); ++c)
+                out += fmt::format(", V-cycle {} {:.3e}", c, solve.residuals[c]);
+            out += "\n";
+        }
     }
     return out;
 }

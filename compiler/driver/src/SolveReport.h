@@ -7,7 +7,9 @@
 namespace voxc::driver {
 
 // Per curves stage of the pipeline: its box and, per solve, multigrid levels, V-cycles and the
-// max residual after the full-multigrid start and at the end. Empty without curves stages.
-std::string formatSolveReport(const Program& program);
+// max residual after the full-multigrid start and at the end; with `perCycle` (voxc interp
+// --trace) also a line per solve listing the max residual after each cycle. Empty without
+// curves stages.
+std::string formatSolveReport(const Program& program, bool perCycle = false);
 
 } // namespace voxc::driver

@@ -53,8 +53,7 @@ SolveTable solveScene(const Scene& scene, const Limits& limits) {
                 if (materials && density >= 0.5f) table.material[i] = uint8_t(solved.material.material[i]);
             }
     for (const SolveReport& report : solved.solves)
-        table.solves.push_back({report.name, report.levels, report.cycles(), report.residuals.front(),
-                                report.residuals.back()});
+        table.solves.push_back({report.name, report.levels, report.residuals});
     return table;
 }
 

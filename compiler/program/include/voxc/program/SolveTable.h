@@ -17,9 +17,10 @@ namespace voxc {
 struct SolveSummary {
     std::string name;              // e.g. "normals", "parameters"
     int32_t levels = 0;            // multigrid levels
-    int32_t cycles = 0;            // V-cycles after the full-multigrid start
-    float firstResidual = 0.0f;    // max residual after the full-multigrid start
-    float finalResidual = 0.0f;    // max residual at the end
+    // Max residual after the full-multigrid start (index 0) and after each V-cycle.
+    std::vector<float> residuals;
+
+    int32_t cycles() const { return int32_t(residuals.size()) - 1; }
 };
 
 struct SolveTable {
