@@ -23,12 +23,13 @@ VulkanContext& validatedLavapipe() {
     return context;
 }
 
-Program example(const std::string& name, int32_t chunkSize, glm::ivec3 origin) {
+Program example(const std::string& name, int32_t chunkSize, glm::ivec3 origin, glm::ivec3 size = glm::ivec3(0)) {
     CheckResult result = checkFile(fmt::format("{}/examples/{}", VOXC_SOURCE_DIR, name));
     EXPECT_TRUE(result.program) << result.rendered();
     Program program = std::move(*result.program);
     program.world.chunkSize = chunkSize;
     program.world.origin = origin;
+    if (size != glm::ivec3(0)) program.world.size = size;
     return program;
 }
 
@@ -107,6 +108,23 @@ TEST(mesh_GpuMarchingCubes, IsTheSameForEveryChunkSizeAndRepeatedCall) {
         meshes.push_back(gpu.mesh({})); // the buffers of the first call are reused
     }
     for (size_t i = 1; i < meshes.size(); ++i) expectSameMesh(meshes[0], meshes[i], fmt::format("mesh {}", i));
+    expectNoValidationMessages(context);
+}
+
+// The scan has one level per factor of 1024 cells: a grid of fewer than 1024 cells is one count
+// block and needs no scan dispatch; a 110 x 99 x 110 grid has 1.23 million cells, three levels.
+TEST(mesh_GpuMarchingCubes, MatchesTheCpuMesherFromOneScanBlockToThreeLevels) {
+    VulkanContext& context = validatedLavapipe();
+    for (const glm::ivec3 size : {glm::ivec3(9, 8, 7), glm::ivec3(110, 99, 110)}) {
+        VulkanExecutor executor(context, compileProgram(example("fields.vox", 16, {-3, 20, 5}, size), {}));
+        const RunResult result = executor.run();
+        GpuMarchingCubes gpu(executor);
+        const std::string what = fmt::format("{}x{}x{}", size.x, size.y, size.z);
+        const float iso = size.x < 16 ? 0.0f : 0.5f; // the small box: whatever is not air
+        const Mesh cpu = meshMarchingCubes(result.grid, {.iso = iso});
+        ASSERT_GT(cpu.triangles.size(), 0u) << what;
+        expectSameMesh(cpu, gpu.mesh({.iso = iso}), what);
+    }
     expectNoValidationMessages(context);
 }
 

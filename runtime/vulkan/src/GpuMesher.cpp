@@ -18,8 +18,8 @@ using namespace vulkan_detail;
 
 namespace {
 
-constexpr uint32_t kCellsPerGroup = 64;    // local size of the chunk, count and emit passes
-constexpr uint32_t kScanBlock = 1024;      // elements per scan workgroup (mc_scan.glsl)
+constexpr uint32_t kCellsPerGroup = 64;    // local size of the compaction and emit passes
+constexpr uint32_t kScanBlock = 1024;      // elements per count and scan workgroup (mc_count, mc_scan.glsl)
 constexpr uint32_t kScanBlockShift = 10;
 constexpr uint32_t kCaseWords = 10;        // per case: triangle count, 36 edge bytes
 constexpr uint32_t kVertexWords = 7;       // position, normal, material
@@ -252,8 +252,9 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
         s.dispatch(kMcChunks, push, s.chunkCount, s.chunkCount);
         memoryBarrier(api, s.cmd, kCompute, kCompute);
     }
-    s.dispatch(kMcCount, push, (s.cells + kCellsPerGroup - 1) / kCellsPerGroup, s.cells);
-    for (uint32_t level = 0; level + 1 < s.levelSize.size(); ++level) {
+    // The count scans its own 1024-cell blocks (level 0); the levels above follow.
+    s.dispatch(kMcCount, push, (s.cells + kScanBlock - 1) / kScanBlock, s.cells);
+    for (uint32_t level = 1; level + 1 < s.levelSize.size(); ++level) {
         memoryBarrier(api, s.cmd, kCompute, kCompute);
         push.pass[3] = level;
         s.dispatch(kMcScan, push, (s.levelSize[level] + kScanBlock - 1) / kScanBlock, s.levelSize[level]);
