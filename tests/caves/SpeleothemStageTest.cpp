@@ -147,6 +147,39 @@ pipeline { start; subtract tunnels; drips; }
     EXPECT_GT(filled, 100u);
 }
 
+// Spec test 14 after a speleothem stage, on the interpreter: for several grammars, seeds and
+// brush settings, every voxel within the carve's clearance is still air after hoodoos and
+// columns that would otherwise fill every closed run from floor to ceiling.
+TEST(caves_SpeleothemStage, ClearanceHoldsForEveryGrammarAndSeed) {
+    const char* productions[] = {"FZ[RFZ]FZ", "FUFZ[LFDZ]", "FFZ[RRFZ][LLFZ]"};
+    size_t clearVoxels = 0;
+    for (const char* production : productions)
+        for (uint32_t seed : {1u, 9u, 23u}) {
+            SCOPED_TRACE(fmt::format("{} seed {}", production, seed));
+            const Program program = checked(fmt::format(
+                R"(world {{ size = [48, 32, 40]; origin = [-5, 2, 3]; seed = {}; }}
+start {{ fill {{ value = 1; }} }}
+lsystem net {{ axiom = "Z"; expansions = 2; step = 4; start = [2, 18, 22]; production Z {{ "{}"; }} }}
+feature tunnels = lsystem_cave {{ lsystem = net; radius = 3; clearance = 2; simplex_amplitude = 0.6; }}
+feature columns = speleothems {{ kind = column; cluster_low = -1; spawn_threshold = -1; growth = 1000; keep_clear = tunnels; }}
+feature hoodoos = speleothems {{ kind = hoodoo; cluster_low = -1; spawn_threshold = -1; taper = 0; keep_clear = tunnels; }}
+pipeline {{ start; subtract tunnels; columns; hoodoos; }}
+)",
+                seed, production));
+            const PointSet& set = *program.speleothems.at(0).clearance;
+            const DenseGrid grid = interpret(program);
+            const glm::ivec3 origin = program.world.origin;
+            for (int z = 0; z < 40; ++z)
+                for (int y = 0; y < 32; ++y)
+                    for (int x = 0; x < 48; ++x)
+                        if (pointSetClearance(set, glm::vec3(origin + glm::ivec3(x, y, z)))) {
+                            ASSERT_LT(grid.at({x, y, z}), 0.5f) << x << "," << y << "," << z;
+                            ++clearVoxels;
+                        }
+        }
+    EXPECT_GT(clearVoxels, 1000u);
+}
+
 // The package lists the stage as a prepass and a grid pass sharing the scratch buffer's air mask.
 TEST(caves_SpeleothemStage, ManifestDescribesThePasses) {
     const KernelPackage package = compileProgram(checked(slabSource("hoodoo", {0, 0, 0})), {});
