@@ -304,6 +304,17 @@ std::optional<curves::Scene> readScene(Context& context, const ast::Block& block
     return scene;
 }
 
+// W0210: no seed ribbon meets a cell of the box (or every cell ends up air), so the stage
+// combines air: a curve drawn outside the box, most often.
+void warnAllAir(Context& context, const ast::Block& block, const SolveTable& table) {
+    if (std::any_of(table.density.begin(), table.density.end(), [](float d) { return d != 0.0f; })) return;
+    context.diagnostics.warning("W0210", block.loc,
+                                fmt::format("curves '{}' solves to air in every cell of its box: no seed curve's "
+                                            "ribbon pins a surface inside it; move the curves into the box "
+                                            "(grid-local voxels) or widen it",
+                                            *block.label));
+}
+
 } // namespace
 
 std::vector<CurvesBlock> checkCurves(Context& context, const ast::File& file, const World& world,
@@ -327,6 +338,7 @@ std::vector<CurvesBlock> checkCurves(Context& context, const ast::File& file, co
         if (std::optional<curves::Scene> scene = readScene(context, block, world, cellBudget, limits)) {
             try {
                 out.table = std::make_shared<const SolveTable>(curves::solveScene(*scene, limits));
+                warnAllAir(context, block, *out.table);
             } catch (const curves::ParameterError& e) {
                 context.diagnostics.error("E0007", block.loc, e.what());
             } catch (const UserError& e) { // LimitError, ConvergenceError: bounds on the solve's work
