@@ -25,11 +25,11 @@ std::optional<FieldMode> parseMode(Context& context, const ast::NameStatement& e
     return std::nullopt;
 }
 
-// Only field stages take a clause (E0010 on `start` and grammars, as for a mode word).
+// Only field and speleothem stages take a clause (E0010 on `start` and grammars, as for a mode word).
 bool rejectClause(Context& context, const ast::NameStatement& entry, std::string_view why) {
     if (!entry.clause) return true;
     context.diagnostics.error("E0010", entry.clause->wordLoc,
-                              fmt::format("'{}' {}; only field stages take a '{}' clause", entry.name, why,
+                              fmt::format("'{}' {}; only field and speleothem stages take a '{}' clause", entry.name, why,
                                           entry.clause->word));
     return false;
 }
