@@ -250,7 +250,7 @@ TEST(CarveTest, LimitsAreCheckedBeforeStoring) {
 }
 
 // Long diagonal segments list few cells but their bounding boxes hold the whole grid: the
-// binning refuses before testing 2^28 (segment, cell) pairs.
+// binning refuses before testing 2^26 (segment, cell) pairs.
 TEST(CarveTest, BinningWorkIsBoundedBeforeTesting) {
     PointSet set;
     set.segmentReach = 1;

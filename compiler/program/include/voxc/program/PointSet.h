@@ -98,7 +98,7 @@ glm::bvec2 pointSetReaches(const PointSet& set, glm::dvec3 lo, glm::dvec3 hi);
 constexpr uint64_t kMaxPointSetListEntries = uint64_t(1) << 24;
 constexpr uint32_t kMaxPointSetPerCell = uint32_t(1) << 13;
 // (item, cell) pairs one binning tests for each kind (its items' bounding boxes in cells).
-constexpr uint64_t kMaxPointSetCellTests = uint64_t(1) << 28;
+constexpr uint64_t kMaxPointSetCellTests = uint64_t(1) << 26;
 
 // The storage buffer of kBindingPointSets (layout in compiler/shaders/lsystem_carve.glsl): every
 // set binned over the grid (binPointSetOverGrid). Throws PointSetLimitError past the bounds above
