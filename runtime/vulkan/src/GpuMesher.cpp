@@ -18,7 +18,7 @@ using namespace vulkan_detail;
 
 namespace {
 
-constexpr uint32_t kCellsPerGroup = 64;    // local size of the compaction and emit passes
+constexpr uint32_t kCellsPerGroup = 64;    // local size of the emit pass
 constexpr uint32_t kScanBlock = 1024;      // elements per count and scan workgroup (mc_count, mc_scan.glsl)
 constexpr uint32_t kScanBlockShift = 10;
 constexpr uint32_t kCaseWords = 10;        // per case: triangle count, 36 edge bytes
@@ -306,7 +306,7 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     }
     // The active cells in cell order, then the emit over them alone.
     s.begin();
-    s.dispatch(kMcCompact, push, (s.cells + kCellsPerGroup - 1) / kCellsPerGroup, s.cells);
+    s.dispatch(kMcCompact, push, (s.cells + kScanBlock - 1) / kScanBlock, s.cells); // 16 cells per invocation
     memoryBarrier(api, s.cmd, kCompute, kCompute);
     s.dispatch(kMcEmit, push, (activeCount + kCellsPerGroup - 1) / kCellsPerGroup, activeCount);
     memoryBarrier(api, s.cmd, kCompute, kTransfer);
