@@ -1,6 +1,7 @@
 #include "voxc/check/Check.h"
 
 #include "CheckCurves.h"
+#include "CheckTerrain.h"
 #include "Materials.h"
 #include "Sections.h"
 #include "voxc/stages/StageKind.h"
@@ -24,7 +25,7 @@ std::string CheckResult::rendered() const { return renderAll(diagnostics, source
 namespace check {
 namespace {
 
-constexpr std::string_view kTopLevelBlocks[] = {"world", "start", "grammar", "pipeline", "material", "lsystem", "curves"};
+constexpr std::string_view kTopLevelBlocks[] = {"world", "start", "grammar", "pipeline", "material", "lsystem", "curves", "terrain"};
 
 // The first block of a kind that may appear once; later ones are E0003.
 const ast::Block* uniqueBlock(Context& context, const ast::File& file, std::string_view kind) {
@@ -106,6 +107,10 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
     for (const ast::FieldDecl& field : file.fields) stageNames.push_back(field.name);
     for (const ast::FeatureDecl& feature : file.features) stageNames.push_back(feature.name);
     program.curves = checkCurves(context, file, program.world, stageNames);
+    // Terrain blocks are solve blocks too: their tables run on the curves stage kind.
+    for (const CurvesBlock& block : program.curves) stageNames.push_back(block.name);
+    for (CurvesBlock& block : checkTerrains(context, file, program.world, stageNames))
+        program.curves.push_back(std::move(block));
     for (const CurvesBlock& block : program.curves) context.curvesNames.push_back(block.name);
     program.speleothems = std::move(features.speleothems);
 

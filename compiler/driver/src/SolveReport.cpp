@@ -10,12 +10,13 @@ std::string formatSolveReport(const Program& program, bool perCycle) {
         if (stage.kind != Stage::Kind::Curves) continue;
         const CurvesBlock& block = program.curves.at(stage.index);
         const SolveTable& table = *block.table;
-        out += fmt::format("curves '{}' ({}x{}x{} cells, solved on the host when checked):", block.name, table.size.x,
-                           table.size.y, table.size.z);
+        out += fmt::format("{} '{}' ({}x{}x{} cells, solved on the host when checked):", table.source, block.name,
+                           table.size.x, table.size.y, table.size.z);
         for (const SolveSummary& solve : table.solves)
             out += fmt::format("{} {} {} levels, {} V-cycles, max residual {:.2e} -> {:.2e}",
                                out.back() == ':' ? "" : ";", solve.name, solve.levels, solve.cycles(),
                                solve.residuals.front(), solve.residuals.back());
+        if (!table.notes.empty()) out += fmt::format("{} {}", out.back() == ':' ? "" : ";", table.notes);
         out += "\n";
         if (!perCycle) continue;
         for (const SolveSummary& solve : table.solves) {

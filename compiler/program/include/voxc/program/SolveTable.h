@@ -29,6 +29,8 @@ struct SolveTable {
     std::vector<float> density;     // x fastest, then y, then z; every value in [0, 1]
     std::vector<uint8_t> material;  // same order; empty when the solve writes no material
     std::vector<SolveSummary> solves;
+    std::string source = "curves"; // the block kind that made it: "curves" or "terrain"
+    std::string notes;             // what the solve did besides `solves`, for reports (may be empty)
 
     uint64_t cellCount() const { return uint64_t(size.x) * uint64_t(size.y) * uint64_t(size.z); }
 };

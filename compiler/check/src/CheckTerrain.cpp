@@ -1,0 +1,349 @@
+// The `terrain` block: keys and ranges with located errors here, then the terrain generator
+// (terrain::generateTerrain), whose own checks (unstable erosion, bounds on work) are located at
+// the block; its height map is voxelised into a SolveTable that the curves stage kind combines.
+#include "CheckTerrain.h"
+
+#include "Materials.h"
+#include "Suggest.h"
+#include "Values.h"
+
+#include "voxc/generators/terrain/Terrain.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace voxc::check {
+
+namespace {
+
+// All terrain blocks together: their tables are uploaded whole (two words per cell).
+constexpr uint64_t kMaxTotalCells = 8'388'608; // 256 x 128 x 256
+constexpr int32_t kMaxLevel = 12;              // 4096^2 cells, the generator's largest level
+constexpr double kMaxCoordinate = 1e7;
+
+constexpr std::string_view kBlockKeys[] = {"origin",   "size",  "levels",     "base",  "max_height",
+                                           "ramp",     "preset", "steps_scale", "material",
+                                           "deposit_material", "deposit_threshold"};
+constexpr std::string_view kNoiseKeys[] = {"amplitude", "scale", "seed"};
+constexpr std::string_view kSplineKeys[] = {"points",          "levels",    "radius",    "left",
+                                            "right",           "hardness",  "noise_amplitude",
+                                            "roughness",       "warp_low",  "warp_high", "rain",
+                                            "capacity"};
+
+// What a block asks for besides the generator's map.
+struct TerrainBlock {
+    terrain::TerrainMap map;
+    std::optional<terrain::ErosionSettings> erosion;
+    double base = 0.0, ramp = 2.0;
+    std::optional<uint8_t> material, depositMaterial;
+    double depositThreshold = 0.5;
+};
+
+void number(Context& context, const BlockKeys& keys, std::string_view key, double lo, double hi, double& out, bool& ok) {
+    if (const ast::Assignment* a = keys.find(key)) {
+        const std::optional<double> v = readNumber(context, *a, lo, hi);
+        ok = ok && v.has_value();
+        if (v) out = *v;
+    }
+}
+
+std::optional<std::array<int32_t, 2>> readLevels(Context& context, const ast::Assignment& a) {
+    const std::optional<std::array<double, 2>> v = readRange(context, a);
+    if (!v) return std::nullopt;
+    if ((*v)[0] != std::floor((*v)[0]) || (*v)[1] != std::floor((*v)[1]) || (*v)[0] < 1 || (*v)[1] > kMaxLevel) {
+        context.diagnostics.error("E0007", a.value.loc,
+                                  fmt::format("'{}' is a range [low, high] of whole levels in 1..{}", a.key, kMaxLevel));
+        return std::nullopt;
+    }
+    return std::array<int32_t, 2>{int32_t((*v)[0]), int32_t((*v)[1])};
+}
+
+// `[a, b]` of numbers, each in [lo, hi] (in any order, unlike readRange).
+std::optional<glm::dvec2> readPair(Context& context, const ast::Assignment& a, double lo, double hi) {
+    const ast::Value& value = a.value;
+    if (!value.isList() || value.elements.size() != 2 || value.elements[0].isList() || value.elements[1].isList()) {
+        context.diagnostics.error("E0010", value.loc, fmt::format("'{}' expects two numbers [a, b]", a.key));
+        return std::nullopt;
+    }
+    glm::dvec2 out;
+    for (int i = 0; i < 2; ++i) {
+        const ast::Value& element = value.elements[size_t(i)];
+        const std::optional<double> v = context.constants.evaluate(*element.scalar);
+        if (!v) return std::nullopt;
+        if (!(*v >= lo && *v <= hi)) {
+            context.diagnostics.error("E0007", element.loc, fmt::format("'{}' values must lie in [{}, {}]", a.key, lo, hi));
+            return std::nullopt;
+        }
+        out[i] = *v;
+    }
+    return out;
+}
+
+// `points = [[x, y, z], ...]`: 3k + 1 control points of k cubic Bezier pieces.
+bool readControlPoints(Context& context, const ast::Assignment& a, std::vector<glm::dvec3>& out) {
+    const ast::Value& value = a.value;
+    const size_t n = value.isList() ? value.elements.size() : 0;
+    if (n < 4 || (n - 1) % 3 != 0) {
+        context.diagnostics.error("E0004", value.loc,
+                                  fmt::format("'points' lists 3k + 1 control points [x, y, z] (k cubic pieces), "
+                                              "found {}", n));
+        return false;
+    }
+    for (const ast::Value& element : value.elements) {
+        if (!element.isList() || element.elements.size() != 3) {
+            context.diagnostics.error("E0010", element.loc, "'points' expects points [x, y, z]");
+            return false;
+        }
+        glm::dvec3 p;
+        for (int i = 0; i < 3; ++i) {
+            const ast::Value& c = element.elements[size_t(i)];
+            const std::optional<double> v = c.isList() ? std::nullopt : context.constants.evaluate(*c.scalar);
+            if (!v) {
+                if (c.isList()) context.diagnostics.error("E0010", c.loc, "a coordinate must be a number");
+                return false;
+            }
+            if (!(std::fabs(*v) <= kMaxCoordinate)) {
+                context.diagnostics.error("E0007", c.loc, fmt::format("a coordinate must lie within ±{}", kMaxCoordinate));
+                return false;
+            }
+            p[i] = *v;
+        }
+        out.push_back(p);
+    }
+    return true;
+}
+
+// One meta point, constant along the spline (the generator interpolates between meta points).
+std::optional<terrain::Spline> readSpline(Context& context, const ast::Block& block, const terrain::Domain& domain) {
+    const std::string where = fmt::format("spline '{}'", block.label.value_or(""));
+    rejectUnexpectedMembers(context, block, where, {});
+    BlockKeys keys(context, block, where, kSplineKeys);
+    terrain::Spline spline;
+    spline.minLevel = domain.minLevel;
+    spline.maxLevel = domain.maxLevel;
+    bool ok = true;
+    if (const ast::Assignment* a = keys.require("points"))
+        ok = readControlPoints(context, *a, spline.controlPoints) && ok;
+    else
+        ok = false;
+    if (const ast::Assignment* a = keys.find("levels")) {
+        const auto levels = readLevels(context, *a);
+        ok = ok && levels.has_value();
+        if (levels) spline.minLevel = (*levels)[0], spline.maxLevel = (*levels)[1];
+    }
+    terrain::MetaPoint meta;
+    number(context, keys, "radius", 0, 1e6, meta.radius, ok);
+    for (auto [key, side] : {std::pair{"left", &meta.left}, std::pair{"right", &meta.right}})
+        if (const ast::Assignment* a = keys.find(key)) {
+            const std::optional<glm::dvec2> v = readPair(context, *a, -1e6, 1e6);
+            ok = ok && v.has_value();
+            if (v) *side = *v;
+        }
+    number(context, keys, "hardness", 0, 1, meta.hardness, ok);
+    number(context, keys, "noise_amplitude", 0, 1e6, meta.noiseAmplitude, ok);
+    number(context, keys, "roughness", 0, 1, meta.noiseRoughness, ok);
+    number(context, keys, "warp_low", 0, 1e6, meta.warpLow, ok);
+    number(context, keys, "warp_high", 0, 1e6, meta.warpHigh, ok);
+    number(context, keys, "rain", 0, 1e6, meta.rain, ok);
+    number(context, keys, "capacity", 0, 1e6, meta.capacity, ok);
+    if (!ok) return std::nullopt;
+    spline.metaPoints = {meta};
+    return spline;
+}
+
+// The preset's Table 5.3 schedule is for levels 8..11 (256^2 to 2048^2); it is moved so its
+// finest level is the map's, levels that fall below the map's coarsest dropped.
+terrain::ErosionSettings shiftedPreset(const std::string& name, int32_t minLevel, int32_t maxLevel, double scale) {
+    terrain::ErosionSettings preset = terrain::presetSettings(name);
+    const int32_t shift = maxLevel - preset.levelSteps.rbegin()->first;
+    std::map<int32_t, uint32_t> steps;
+    for (const auto& [level, count] : preset.levelSteps)
+        if (level + shift >= minLevel) steps[level + shift] = uint32_t(std::lround(count * scale));
+    preset.levelSteps = steps;
+    return preset;
+}
+
+std::optional<TerrainBlock> readTerrain(Context& context, const ast::Block& block, const World& world) {
+    const std::string where = fmt::format("terrain '{}'", *block.label);
+    rejectUnexpectedMembers(context, block, where, {.blocks = true});
+    BlockKeys keys(context, block, where, kBlockKeys);
+    TerrainBlock out;
+    terrain::Domain& domain = out.map.domain;
+    bool ok = true;
+    domain.origin = {double(world.origin.x), double(world.origin.z)};
+    domain.size = double(std::max(world.size.x, world.size.z));
+    domain.maxHeight = double(world.size.y);
+    out.base = double(world.origin.y);
+    if (const ast::Assignment* a = keys.find("origin")) {
+        const std::optional<glm::dvec2> v = readPair(context, *a, -kMaxCoordinate, kMaxCoordinate);
+        ok = ok && v.has_value();
+        if (v) domain.origin = *v;
+    }
+    number(context, keys, "size", 1, 1e6, domain.size, ok);
+    number(context, keys, "base", -kMaxCoordinate, kMaxCoordinate, out.base, ok);
+    number(context, keys, "max_height", 1e-3, 1e6, domain.maxHeight, ok);
+    number(context, keys, "ramp", 0.25, 64, out.ramp, ok);
+    // By default the finest level has about one cell per voxel.
+    domain.maxLevel = std::clamp(int32_t(std::ceil(std::log2(domain.size))), 2, kMaxLevel);
+    domain.minLevel = std::min(2, domain.maxLevel);
+    if (const ast::Assignment* a = keys.find("levels")) {
+        const auto levels = readLevels(context, *a);
+        ok = ok && levels.has_value();
+        if (levels) domain.minLevel = (*levels)[0], domain.maxLevel = (*levels)[1];
+    }
+    double stepsScale = 1.0;
+    number(context, keys, "steps_scale", 0, 100, stepsScale, ok);
+    if (const ast::Assignment* a = keys.find("material")) {
+        out.material = readMaterialKey(context, *a);
+        ok = ok && out.material.has_value();
+    }
+    if (const ast::Assignment* a = keys.find("deposit_material")) {
+        out.depositMaterial = readMaterialKey(context, *a);
+        ok = ok && out.depositMaterial.has_value();
+    }
+    number(context, keys, "deposit_threshold", 0, 1e6, out.depositThreshold, ok);
+    for (const ast::Block& nested : block.blocks) {
+        if (nested.kind == "spline") {
+            if (!checkLabel(context, nested, true)) {
+                ok = false;
+                continue;
+            }
+            std::optional<terrain::Spline> spline = readSpline(context, nested, domain);
+            ok = ok && spline.has_value();
+            if (spline) out.map.splines.push_back(std::move(*spline));
+        } else if (nested.kind == "noise") {
+            checkLabel(context, nested, false);
+            rejectUnexpectedMembers(context, nested, "'noise' block", {});
+            BlockKeys noise(context, nested, "'noise' block", kNoiseKeys);
+            number(context, noise, "amplitude", 0, 1e6, out.map.noise.amplitude, ok);
+            number(context, noise, "scale", 0, 1e6, out.map.noise.scale, ok);
+            if (const ast::Assignment* a = noise.find("seed")) {
+                const std::optional<int64_t> v = readInteger(context, *a, 0, UINT32_MAX);
+                ok = ok && v.has_value();
+                if (v) out.map.noise.seed = uint32_t(*v);
+            }
+        } else {
+            constexpr std::string_view kNested[] = {"spline", "noise"};
+            context.diagnostics.error("E0008", nested.loc,
+                                      fmt::format("unknown block '{}' in {}{}", nested.kind, where,
+                                                  didYouMean(nested.kind, kNested)));
+            ok = false;
+        }
+    }
+    if (const ast::Assignment* a = keys.find("preset")) {
+        const ast::Expr* expr = a->value.isList() ? nullptr : a->value.scalar.get();
+        std::vector<std::string_view> names{"none"};
+        for (const terrain::Preset& preset : terrain::presets()) names.push_back(preset.name);
+        const bool known = expr && expr->kind == ast::Expr::Kind::Name &&
+                           std::find(names.begin(), names.end(), expr->name) != names.end();
+        if (!known) {
+            context.diagnostics.error("E0011", a->value.loc,
+                                      fmt::format("'preset' must be one of {}{}", fmt::join(names, ", "),
+                                                  expr && expr->kind == ast::Expr::Kind::Name
+                                                      ? didYouMean(expr->name, names)
+                                                      : std::string()));
+            ok = false;
+        } else if (ok && expr->name != "none") {
+            out.erosion = shiftedPreset(expr->name, domain.minLevel, domain.maxLevel, stepsScale);
+            out.erosion->params.seed = world.seed;
+        }
+    }
+    if (!ok) return std::nullopt;
+    return out;
+}
+
+// A map of the finest level at world (wx, wz): bilinear between its cell centres, clamped at the edges.
+double sample(const terrain::Field2& map, const terrain::Domain& domain, double wx, double wz) {
+    const double cell = domain.cellSize(domain.maxLevel);
+    const double u = (wx - domain.origin.x) / cell - 0.5, v = (wz - domain.origin.y) / cell - 0.5;
+    const double fu = std::floor(std::clamp(u, -1.0, double(map.width))), fv = std::floor(std::clamp(v, -1.0, double(map.height)));
+    const int32_t i = int32_t(fu), j = int32_t(fv);
+    const double tu = std::clamp(u - fu, 0.0, 1.0), tv = std::clamp(v - fv, 0.0, 1.0);
+    const double top = map.clamped(i, j) * (1 - tu) + map.clamped(i + 1, j) * tu;
+    const double bottom = map.clamped(i, j + 1) * (1 - tu) + map.clamped(i + 1, j + 1) * tu;
+    return top * (1 - tv) + bottom * tv;
+}
+
+// The height map as densities over the whole grid: (H - y) / ramp + 0.5 clamped to [0, 1], so
+// the 0.5 surface lies at the height; materials where solid (the deposit material where erosion
+// raised the ground by more than the threshold).
+SolveTable voxelise(const TerrainBlock& block, const terrain::TerrainResult& result, const World& world) {
+    SolveTable table;
+    table.min = glm::ivec3(0);
+    table.size = world.size;
+    table.density.resize(size_t(table.cellCount()));
+    const bool materials = block.material || block.depositMaterial;
+    if (materials) table.material.resize(table.density.size(), kMaterialNone);
+    const terrain::Domain& domain = block.map.domain;
+    size_t at = 0;
+    for (int32_t z = 0; z < world.size.z; ++z)
+        for (int32_t y = 0; y < world.size.y; ++y)
+            for (int32_t x = 0; x < world.size.x; ++x, ++at) {
+                const double wx = world.origin.x + x, wy = world.origin.y + y, wz = world.origin.z + z;
+                const double height = block.base + sample(result.height, domain, wx, wz) * domain.maxHeight;
+                const float density = float(std::clamp((height - wy) / block.ramp + 0.5, 0.0, 1.0));
+                table.density[at] = density;
+                if (!materials || density < 0.5f) continue;
+                const double raised = sample(result.difference, domain, wx, wz) * domain.maxHeight;
+                if (block.depositMaterial && raised > block.depositThreshold)
+                    table.material[at] = *block.depositMaterial;
+                else if (block.material)
+                    table.material[at] = *block.material;
+            }
+    table.source = "terrain";
+    table.notes = fmt::format("levels {}..{} ({}^2 cells), {} erosion steps ({} cell-steps), water {:.4g}, sediment "
+                              "{:.4g}, ground moved {:.4g} (sums over the finest level, in units of max_height)",
+                              domain.minLevel, domain.maxLevel, result.height.width, result.erosionSteps,
+                              result.erosionCellSteps, result.totalWater, result.totalSediment,
+                              result.totalDifference);
+    return table;
+}
+
+} // namespace
+
+std::vector<CurvesBlock> checkTerrains(Context& context, const ast::File& file, const World& world,
+                                       const std::vector<std::string>& usedNames) {
+    std::vector<CurvesBlock> blocks;
+    std::map<std::string, SourceLoc> names;
+    uint64_t cellBudget = kMaxTotalCells;
+    for (const ast::Block& block : file.blocks) {
+        if (block.kind != "terrain") continue;
+        if (!checkLabel(context, block, true) || !block.label) continue;
+        CurvesBlock out{*block.label, block.loc, nullptr};
+        const auto [previous, inserted] = names.emplace(*block.label, block.labelLoc);
+        if (!inserted || std::find(usedNames.begin(), usedNames.end(), *block.label) != usedNames.end() ||
+            *block.label == "start") {
+            context.diagnostics.error("E0003", block.labelLoc,
+                                      fmt::format("the name '{}' is already used by another stage", *block.label));
+            blocks.push_back(std::move(out));
+            continue;
+        }
+        const uint64_t cells = uint64_t(world.size.x) * uint64_t(world.size.y) * uint64_t(world.size.z);
+        if (cells > cellBudget) {
+            context.diagnostics.error("E0012", block.labelLoc,
+                                      fmt::format("terrain '{}' would voxelise {} cells, past what is left of the "
+                                                  "{} all terrain blocks may use",
+                                                  *block.label, cells, kMaxTotalCells));
+            blocks.push_back(std::move(out));
+            continue;
+        }
+        if (std::optional<TerrainBlock> terrainBlock = readTerrain(context, block, world)) {
+            try {
+                const terrain::TerrainResult result = terrain::generateTerrain(terrainBlock->map, terrainBlock->erosion);
+                out.table = std::make_shared<const SolveTable>(voxelise(*terrainBlock, result, world));
+                cellBudget -= cells;
+            } catch (const terrain::LimitError& e) {
+                context.diagnostics.error("E0012", block.labelLoc, fmt::format("terrain '{}': {}", *block.label, e.what()));
+            } catch (const terrain::ParameterError& e) {
+                context.diagnostics.error("E0007", block.labelLoc, fmt::format("terrain '{}': {}", *block.label, e.what()));
+            }
+        }
+        blocks.push_back(std::move(out));
+    }
+    return blocks;
+}
+
+} // namespace voxc::check
