@@ -55,6 +55,25 @@ TEST(vulkan_CurvesStage, SetKeepsTheGridOutsideItsBox) {
     expectDeviceMatches(program);
 }
 
+// A curves stage among others: a field carves a tunnel through the solved ridge, a grammar
+// crumbles the rock under overhangs, and a second curves stage is intersected at the end.
+TEST(vulkan_CurvesStage, AmongFieldsAndGrammarsMatchesTheInterpreter) {
+    std::string text = test::ridgeProgram("union", "origin = [5, -3, -11];");
+    text.replace(text.find("pipeline {"), std::string::npos, R"(
+field tunnel = clamp(4 - length(p.xy - vec2(18, 8)), 0, 1);
+grammar crumble {
+  rule thin {
+    size = [1, 3, 1];
+    probability = 0.5;
+    symbol { [GEQ 0.5] [GEQ 0.5] [LT 0.5] }
+    transform { [NOP] [ADD -0.5] [NOP] }
+  }
+}
+pipeline { start; union ridge; subtract tunnel material rock; crumble; intersect ridge; }
+)");
+    expectDeviceMatches(checked(text));
+}
+
 TEST(vulkan_CurvesStage, PlaneMatchesTheInterpreter) {
     expectDeviceMatches(checked(test::planeProgram(glm::normalize(glm::dvec3(1, 2, 0.5)), {15.5, 11.3, 16.25}, {32, 24, 32})));
 }
