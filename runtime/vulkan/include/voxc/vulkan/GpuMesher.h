@@ -1,15 +1,16 @@
 #pragma once
 // Marching cubes on the Vulkan device, over the voxel and material buffers a VulkanExecutor's
-// run() left there (no densities cross to the host). Three kinds of dispatch, each behind a
-// pipeline barrier on the one before (a workgroup barrier orders nothing between workgroups):
-// a count pass (per cell: the crossed edges it owns and its triangle count from the case table),
-// an exclusive scan of those counts in global cell order, a list of the cells with any, and an
-// emit pass over that list that writes every vertex and triangle at the place the scan gave it. The mesh is the CPU mesher's
-// (voxc/mesh/MarchingCubes.h, the oracle): the same case table, vertices ordered by global edge,
-// triangles by global cell then table order, the same arithmetic; so the index buffer and the
-// materials are identical, and positions and normals bit-identical where the device rounds as
-// IEEE 754 requires (lavapipe; tests/vulkan/GpuMesherTest). Uniform chunks are skipped as the
-// CPU mesher skips them, after a pass that finds them on the device.
+// run() left there (no densities cross to the host). Passes, each behind a pipeline barrier on
+// the one before (a workgroup barrier orders nothing between workgroups): a count pass (per cell:
+// the crossed edges it owns and its triangle count from the case table), an exclusive scan of
+// those counts in global cell order, a list of the cells with any, and an emit pass over that
+// list that writes every vertex and triangle at the place the scan gave it (docs/architecture.md,
+// "On the device"). The mesh is the CPU mesher's (voxc/mesh/MarchingCubes.h, the oracle): the
+// same case table, vertices ordered by global edge, triangles by global cell then table order,
+// the same arithmetic; so the index buffer and the materials are identical, and positions and
+// normals bit-identical where the device rounds as IEEE 754 requires (lavapipe;
+// tests/mesh/GpuMesherTest; no other device has been tried). Uniform chunks are skipped as the
+// CPU mesher skips them (the same MeshStats), after a pass that finds them on the device.
 #include "voxc/mesh/SurfaceNets.h"
 #include "voxc/vulkan/Executor.h"
 
