@@ -7,7 +7,7 @@
 #include "voxc/core/Errors.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    const voxc::CheckResult result = voxc::checkSource(voxc::fuzz::sourceFromBytes(data, size));
+    const voxc::CheckResult result = voxc::checkSource(voxc::fuzz::sourceFromBytes(data, size), voxc::fuzz::fuzzLimits());
     (void)result.rendered();
     VOXC_ASSERT(result.program.has_value() != result.hasErrors());
     return 0;

@@ -46,7 +46,7 @@ void generateGlsl(const voxc::ir::IrModule& module) {
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    const voxc::CheckResult result = voxc::checkSource(voxc::fuzz::sourceFromBytes(data, size));
+    const voxc::CheckResult result = voxc::checkSource(voxc::fuzz::sourceFromBytes(data, size), voxc::fuzz::fuzzLimits());
     if (!result.program) return 0;
     if (hashBytes(data, size) % kCompileOneIn == 0) {
         (void)voxc::compileProgram(*result.program);

@@ -24,7 +24,6 @@ namespace {
 
 // All curves blocks together: the host solve runs at check time (about 3 s per million cells on
 // one core), and its tables are uploaded whole (two words per cell).
-constexpr uint64_t kMaxTotalCells = 8'388'608; // 256 x 128 x 256
 
 constexpr std::string_view kBlockKeys[] = {"box", "normals", "k", "sweeps", "smoothing", "noise_frequency",
                                            "noise_seed"};
@@ -229,7 +228,7 @@ std::optional<curves::Scene> readScene(Context& context, const ast::Block& block
                         "E0012", a->value.loc,
                         fmt::format("the box has {} cells; the curves blocks of a file may solve {} cells in all "
                                     "({} left for this one)",
-                                    scene.box.cellCount(), kMaxTotalCells, cellBudget));
+                                    scene.box.cellCount(), context.limits.maxSolveCells, cellBudget));
                     ok = false;
                 } else {
                     cellBudget -= scene.box.cellCount();
@@ -322,7 +321,7 @@ std::vector<CurvesBlock> checkCurves(Context& context, const ast::File& file, co
     const curves::Limits limits;
     std::vector<CurvesBlock> blocks;
     std::map<std::string, SourceLoc> names;
-    uint64_t cellBudget = kMaxTotalCells;
+    uint64_t cellBudget = uint64_t(context.limits.maxSolveCells);
     for (const ast::Block& block : file.blocks) {
         if (block.kind != "curves") continue;
         if (!checkLabel(context, block, true) || !block.label) continue;

@@ -19,8 +19,6 @@ namespace voxc::check {
 
 namespace {
 
-// All terrain blocks together: their tables are uploaded whole (two words per cell).
-constexpr uint64_t kMaxTotalCells = 8'388'608; // 256 x 128 x 256
 constexpr int32_t kMaxLevel = 12;              // 4096^2 cells, the generator's largest level
 constexpr double kMaxCoordinate = 1e7;
 
@@ -308,7 +306,11 @@ std::vector<CurvesBlock> checkTerrains(Context& context, const ast::File& file, 
                                        const std::vector<std::string>& usedNames) {
     std::vector<CurvesBlock> blocks;
     std::map<std::string, SourceLoc> names;
-    uint64_t cellBudget = kMaxTotalCells;
+    // All terrain blocks together: their tables are uploaded whole (two words per cell).
+    uint64_t cellBudget = uint64_t(context.limits.maxSolveCells);
+    terrain::Limits limits;
+    limits.maxDiffusionCellUpdates = uint64_t(context.limits.maxTerrainWork);
+    limits.maxErosionCellSteps = uint64_t(context.limits.maxTerrainWork);
     for (const ast::Block& block : file.blocks) {
         if (block.kind != "terrain") continue;
         if (!checkLabel(context, block, true) || !block.label) continue;
@@ -326,13 +328,13 @@ std::vector<CurvesBlock> checkTerrains(Context& context, const ast::File& file, 
             context.diagnostics.error("E0012", block.labelLoc,
                                       fmt::format("terrain '{}' would voxelise {} cells, past what is left of the "
                                                   "{} all terrain blocks may use",
-                                                  *block.label, cells, kMaxTotalCells));
+                                                  *block.label, cells, context.limits.maxSolveCells));
             blocks.push_back(std::move(out));
             continue;
         }
         if (std::optional<TerrainBlock> terrainBlock = readTerrain(context, block, world)) {
             try {
-                const terrain::TerrainResult result = terrain::generateTerrain(terrainBlock->map, terrainBlock->erosion);
+                const terrain::TerrainResult result = terrain::generateTerrain(terrainBlock->map, terrainBlock->erosion, limits);
                 out.table = std::make_shared<const SolveTable>(voxelise(*terrainBlock, result, world));
                 cellBudget -= cells;
             } catch (const terrain::LimitError& e) {
