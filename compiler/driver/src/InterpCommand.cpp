@@ -1,5 +1,6 @@
 #include "Commands.h"
 #include "Common.h"
+#include "LsystemInputs.h"
 #include "NonFiniteReport.h"
 #include "OutputPaths.h"
 #include "SolveReport.h"
@@ -23,6 +24,7 @@ struct InterpOptions {
     bool trace = false;
     TraceFilter filter;
     std::optional<uint64_t> traceLimit;
+    std::optional<std::string> traceLsystem;
     std::string slice;
     WorldOverrides overrides;
 };
@@ -52,7 +54,8 @@ SliceSpec parseSlice(const std::string& text, glm::ivec3 size) {
 }
 
 void interpretFile(const InterpOptions& options) {
-    const Program program = loadProgram(options.file, options.overrides);
+    std::vector<CheckedLsystem> lsystems;
+    const Program program = loadProgram(options.file, options.overrides, false, nullptr, &lsystems);
     std::cerr << formatSolveReport(program, options.trace);
     std::optional<SliceSpec> slice;
     if (!options.slice.empty()) slice = parseSlice(options.slice, program.world.size);
@@ -60,10 +63,16 @@ void interpretFile(const InterpOptions& options) {
     voxc::InterpOptions interpOptions;
     uint64_t printed = 0;
     uint64_t fired = 0;
-    // Any --trace-* filter asks for a trace too.
-    const bool trace = options.trace || options.filter.rule || options.filter.grammar || options.filter.iteration ||
-                       options.traceLimit;
-    if (trace) {
+    // Any --trace-* filter asks for a trace too; --trace-lsystem alone traces only that expansion.
+    const bool grammarFilter = options.filter.rule || options.filter.grammar || options.filter.iteration;
+    const bool trace = options.trace || grammarFilter || options.traceLimit || options.traceLsystem;
+    const bool traceFirings = options.trace || grammarFilter || (options.traceLimit && !options.traceLsystem);
+    if (options.traceLsystem) findLsystem(lsystems, options.file, *options.traceLsystem);
+    if (trace && (options.traceLsystem || !grammarFilter))
+        for (const CheckedLsystem& lsystem : lsystems)
+            if (!options.traceLsystem || lsystem.name == *options.traceLsystem)
+                std::cout << expansionTrace(lsystem, options.traceLimit.value_or(UINT64_MAX), printed);
+    if (traceFirings) {
         interpOptions.onFire = [&](const TraceEvent& event) {
             if (!traceFilterAccepts(program, options.filter, event)) return;
             ++fired;
@@ -78,8 +87,8 @@ void interpretFile(const InterpOptions& options) {
     std::vector<SourceLoc> stageLocs;
     for (const Stage& stage : program.pipeline) stageLocs.push_back(stage.loc);
     std::cerr << formatNonFiniteWarnings(program, options.file, stageLocs, nonFinite);
-    if (trace)
-        std::cout << fmt::format("{} firings matched the trace filter ({} printed)\n", fired, printed);
+    if (traceFirings)
+        std::cout << fmt::format("{} firings matched the trace filter ({} trace lines printed)\n", fired, printed);
     if (slice) std::cout << renderSlice(grid, slice->axis, slice->index);
     // Solid as the mesh of `voxc run` sees it at its default --iso.
     if (program.usesMaterials()) std::cerr << formatMaterialCounts(program, grid, 0.5f);
@@ -102,7 +111,10 @@ void addInterpCommand(CLI::App& app) {
     command->add_option("--trace-rule", options->filter.rule, "Trace only this rule");
     command->add_option("--trace-grammar", options->filter.grammar, "Trace only this grammar");
     command->add_option("--trace-iteration", options->filter.iteration, "Trace only this iteration (0-based)");
-    command->add_option("--trace-limit", options->traceLimit, "Print at most this many firings");
+    command->add_option("--trace-limit", options->traceLimit, "Print at most this many trace lines");
+    command->add_option("--trace-lsystem", options->traceLsystem,
+                        "Trace only this lsystem's expansion: each choice of a production or macro substitute, and "
+                        "the lengths (plain --trace traces every lsystem's)");
     command->add_option("--slice", options->slice, "Print one layer as text, e.g. y=12");
     addWorldOverrideFlags(*command, options->overrides);
     command->callback([options] {
