@@ -91,7 +91,13 @@ void run(const RunOptions& options) {
     if (!options.meshPath.empty()) {
         MeshStats stats;
         const bool marchingCubes = options.mesher == "mc";
-        const bool onDevice = marchingCubes && options.meshOn != "host";
+        // Without shaderFloat64 the default falls back to the host mesher (the same mesh, bit for
+        // bit); asking for the device explicitly is then GpuMarchingCubes' error.
+        const bool deviceCanMesh = context.hasShaderFloat64();
+        const bool onDevice = marchingCubes && (options.meshOn == "device" || (options.meshOn.empty() && deviceCanMesh));
+        if (marchingCubes && options.meshOn.empty() && !deviceCanMesh)
+            std::cerr << fmt::format("voxc: note: the device '{}' has no shaderFloat64; marching cubes runs on the host\n",
+                                     context.device().name);
         const MeshOptions meshOptions{.iso = options.iso};
         const Mesh mesh = onDevice        ? GpuMarchingCubes(executor).mesh(meshOptions, &stats)
                           : marchingCubes ? meshMarchingCubes(voxels, meshOptions, &stats)

@@ -301,6 +301,8 @@ const DeviceInfo& VulkanContext::device() const { return impl_->info; }
 
 bool VulkanContext::validationEnabled() const { return impl_->validation; }
 
+bool VulkanContext::hasShaderFloat64() const { return impl_->shaderFloat64; }
+
 std::vector<ValidationMessage> VulkanContext::validationMessages() const {
     std::lock_guard<std::mutex> lock(impl_->messageMutex);
     return impl_->messages;

@@ -61,6 +61,8 @@ public:
 
     const DeviceInfo& device() const;
     bool validationEnabled() const;
+    // Whether the device computes in double (shaderFloat64), which marching cubes on the device needs.
+    bool hasShaderFloat64() const;
     // Messages captured so far (warnings and errors); empty unless validation is enabled.
     std::vector<ValidationMessage> validationMessages() const;
     void clearValidationMessages();
