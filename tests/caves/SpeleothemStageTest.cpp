@@ -1,6 +1,7 @@
 // Speleothem stages from .vox source: the interpreter and Vulkan (lavapipe) agree bit for bit at
 // chunk sizes 8/16/32/64 and odd origins (spec test 17 included: columns join across chunk
 // borders), every kind, materials, and keep_clear never writes the carve's clearance.
+#include "Lavapipe.h"
 #include "voxc/check/Check.h"
 #include "voxc/codegen/PackageWriter.h"
 #include "voxc/grid/Grid.h"
@@ -19,10 +20,7 @@
 namespace voxc {
 namespace {
 
-VulkanContext& lavapipe() {
-    static VulkanContext context(ContextOptions{.device = "lavapipe"});
-    return context;
-}
+using test::lavapipe;
 
 Program checked(const std::string& text) {
     CheckResult result = checkSource(SourceFile("speleothems.vox", text));

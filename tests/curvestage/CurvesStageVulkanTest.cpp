@@ -1,6 +1,7 @@
 // The curves stage on lavapipe against the interpreter: densities and materials bit-identical
 // for every mode at chunk sizes 8, 16 and 32, at the origin and at an odd negative one, and the
 // planes program likewise.
+#include "Lavapipe.h"
 #include "GridCompare.h"
 #include "Programs.h"
 
@@ -14,10 +15,7 @@
 namespace voxc {
 namespace {
 
-VulkanContext& lavapipe() {
-    static VulkanContext context(ContextOptions{.device = "lavapipe"});
-    return context;
-}
+using test::lavapipe;
 
 Program checked(const std::string& text) {
     CheckResult result = checkSource(SourceFile("curves.vox", text));

@@ -3,6 +3,7 @@
 // isolated bubbles of a handful of voxels, never a cut passage), its rooms and tunnels are
 // carved and its speleothems grow. (The interpreter's agreement with Vulkan for the carve and the
 // speleothem stages is tested at every chunk size in tests/vulkan and tests/caves.)
+#include "Lavapipe.h"
 #include "GridCompare.h"
 #include "voxc/check/Check.h"
 #include "voxc/generators/lsystem/Connect.h"
@@ -22,10 +23,7 @@
 namespace voxc {
 namespace {
 
-VulkanContext& lavapipe() {
-    static VulkanContext context(ContextOptions{.device = "lavapipe"});
-    return context;
-}
+using test::lavapipe;
 
 // Component id per air voxel (density < 0.5), 6-connected, and each component's size.
 struct AirComponents {

@@ -3,6 +3,7 @@
 // of negative coordinates matters), must give bit-identical voxels. Field stages too: every
 // record they use is exact on lavapipe except sin and cos, which FieldsWithinRecordTolerance
 // compares within the records' tolerances.
+#include "Lavapipe.h"
 #include "voxc/builtins/Functions.h"
 #include "GridCompare.h"
 #include "voxc/check/Check.h"
@@ -21,10 +22,7 @@
 namespace voxc {
 namespace {
 
-VulkanContext& lavapipe() {
-    static VulkanContext context(ContextOptions{.device = "lavapipe"});
-    return context;
-}
+using test::lavapipe;
 
 // `name` is an example in examples/ or, with a "cases/" prefix, a file beside this test.
 Program loadExample(const std::string& name) {

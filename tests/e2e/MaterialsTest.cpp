@@ -2,6 +2,7 @@
 // (tests/ir/support/SamplePrograms.h) that read and write materials every way the language can:
 // at chunk sizes 8, 16 and 32, at shifted origins, through the staging path and without tile
 // skipping.
+#include "Lavapipe.h"
 #include "GridCompare.h"
 #include "SamplePrograms.h"
 #include "voxc/check/Check.h"
@@ -18,10 +19,7 @@
 namespace voxc {
 namespace {
 
-VulkanContext& lavapipe() {
-    static VulkanContext context(ContextOptions{.device = "lavapipe"});
-    return context;
-}
+using test::lavapipe;
 
 std::set<int> materialsIn(const DenseGrid& grid) {
     return std::set<int>(grid.materials().begin(), grid.materials().end());

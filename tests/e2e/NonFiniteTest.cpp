@@ -3,6 +3,7 @@
 // grammar ADD past the float range. The grids are compared bit for bit by InterpVsVulkanTest;
 // here every density must be finite and both backends must count the same replacements per
 // stage, through the staging path and without tile skipping too.
+#include "Lavapipe.h"
 #include "GridCompare.h"
 #include "NonFiniteReport.h"
 #include "voxc/check/Check.h"
@@ -20,10 +21,7 @@
 namespace voxc {
 namespace {
 
-VulkanContext& lavapipe() {
-    static VulkanContext context(ContextOptions{.device = "lavapipe"});
-    return context;
-}
+using test::lavapipe;
 
 Program nonFiniteCase() {
     CheckResult result = checkFile(fmt::format("{}/tests/e2e/cases/nonfinite.vox", VOXC_SOURCE_DIR));

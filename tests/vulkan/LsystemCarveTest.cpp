@@ -2,6 +2,7 @@
 // "Carving"): bit-identical voxels at chunk sizes 8/16/32/64 and an odd origin (spec §10
 // test 16), the clearance guarantee and bounded carving on the device (tests 14, 15), and chunks
 // far from the skeleton proven constant by interval analysis.
+#include "Lavapipe.h"
 #include "GridCompare.h"
 #include "voxc/check/Check.h"
 #include "voxc/generators/lsystem/Connect.h"
@@ -21,10 +22,7 @@
 namespace voxc {
 namespace {
 
-VulkanContext& lavapipe() {
-    static VulkanContext context(ContextOptions{.device = "lavapipe"});
-    return context;
-}
+using test::lavapipe;
 
 CheckResult checked(const std::string& text) {
     CheckResult result = checkSource(SourceFile("carve.vox", text));

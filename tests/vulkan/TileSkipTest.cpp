@@ -1,6 +1,7 @@
 // Tile skipping (DispatchCursor with a tile shift, tiles.glsl): sweeps run only over the tiles
 // where some rule may match, and the result stays bit-identical to the interpreter and to a
 // run that dispatches every anchor.
+#include "Lavapipe.h"
 #include "GridCompare.h"
 #include "voxc/check/Check.h"
 #include "voxc/stages/Pipeline.h"
@@ -15,10 +16,7 @@
 namespace voxc {
 namespace {
 
-VulkanContext& lavapipe() {
-    static VulkanContext context(ContextOptions{.device = "lavapipe"});
-    return context;
-}
+using test::lavapipe;
 
 Program checked(const std::string& text) {
     CheckResult result = checkSource(SourceFile("grow.vox", text));

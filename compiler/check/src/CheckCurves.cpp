@@ -326,11 +326,7 @@ std::vector<CurvesBlock> checkCurves(Context& context, const ast::File& file, co
         if (block.kind != "curves") continue;
         if (!checkLabel(context, block, true) || !block.label) continue;
         CurvesBlock out{*block.label, block.loc, nullptr};
-        const auto [previous, inserted] = names.emplace(*block.label, block.labelLoc);
-        if (!inserted || std::find(stageNames.begin(), stageNames.end(), *block.label) != stageNames.end() ||
-            *block.label == "start") {
-            context.diagnostics.error("E0003", block.labelLoc,
-                                      fmt::format("the name '{}' is already used by another stage", *block.label));
+        if (!claimStageName(context, block, names, stageNames)) {
             blocks.push_back(std::move(out));
             continue;
         }

@@ -315,11 +315,7 @@ std::vector<CurvesBlock> checkTerrains(Context& context, const ast::File& file, 
         if (block.kind != "terrain") continue;
         if (!checkLabel(context, block, true) || !block.label) continue;
         CurvesBlock out{*block.label, block.loc, nullptr};
-        const auto [previous, inserted] = names.emplace(*block.label, block.labelLoc);
-        if (!inserted || std::find(usedNames.begin(), usedNames.end(), *block.label) != usedNames.end() ||
-            *block.label == "start") {
-            context.diagnostics.error("E0003", block.labelLoc,
-                                      fmt::format("the name '{}' is already used by another stage", *block.label));
+        if (!claimStageName(context, block, names, usedNames)) {
             blocks.push_back(std::move(out));
             continue;
         }

@@ -78,6 +78,17 @@ bool checkLabel(Context& context, const ast::Block& block, bool needsLabel) {
     return true;
 }
 
+bool claimStageName(Context& context, const ast::Block& block, std::map<std::string, SourceLoc>& names,
+                    const std::vector<std::string>& usedNames) {
+    const bool inserted = names.emplace(*block.label, block.labelLoc).second;
+    if (inserted && std::find(usedNames.begin(), usedNames.end(), *block.label) == usedNames.end() &&
+        *block.label != "start")
+        return true;
+    context.diagnostics.error("E0003", block.labelLoc,
+                              fmt::format("the name '{}' is already used by another stage", *block.label));
+    return false;
+}
+
 namespace {
 
 // Bounds at or past the int32 limits are "no bound" to the user, except the uint32 range of seeds.

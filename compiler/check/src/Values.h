@@ -8,6 +8,7 @@
 
 #include <array>
 #include <glm/vec3.hpp>
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
@@ -49,6 +50,11 @@ void rejectUnexpectedMembers(Context& context, const ast::Block& block, const st
 
 // Reports E0001 when the block has a label it should not have, or lacks one it needs.
 bool checkLabel(Context& context, const ast::Block& block, bool needsLabel);
+
+// Takes a labelled block's name for a pipeline stage (curves, terrain): E0003 and false when an
+// earlier block in `names`, another stage (`usedNames`) or the start state already has it.
+bool claimStageName(Context& context, const ast::Block& block, std::map<std::string, SourceLoc>& names,
+                    const std::vector<std::string>& usedNames);
 
 // Value readers: each reports its own errors against `key` and returns nothing on failure.
 std::optional<double> readNumber(Context& context, const ast::Assignment& a, double min, double max);
