@@ -111,7 +111,10 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
     for (const CurvesBlock& block : program.curves) stageNames.push_back(block.name);
     for (CurvesBlock& block : checkTerrains(context, file, program.world, stageNames))
         program.curves.push_back(std::move(block));
-    for (const CurvesBlock& block : program.curves) context.curvesNames.push_back(block.name);
+    for (const CurvesBlock& block : program.curves) {
+        context.curvesNames.push_back(block.name);
+        context.curvesKinds.push_back(block.table ? block.table->source : "solve");
+    }
     program.speleothems = std::move(features.speleothems);
 
     program.pipeline.push_back({Stage::Kind::Start, 0, FieldMode::Set, {}, std::nullopt});

@@ -53,29 +53,32 @@ std::optional<uint8_t> stageMaterial(Context& context, const ast::NameStatement&
     return material;
 }
 
-// `union cliffs;`: a curves stage takes a combining mode; its materials are its constraint points'.
+// `union cliffs;`: a solve stage (a curves or terrain block) takes a combining mode; its materials
+// are the block's own.
 void checkCurvesEntry(Context& context, const ast::NameStatement& entry, uint32_t index, std::vector<Stage>& stages) {
+    const std::string& kind = context.curvesKinds.at(index);
+    const std::string materialKeys = kind == "terrain" ? "the block's 'material' and 'deposit_material' keys"
+                                                       : "its constraint points' 'material' keys";
     if (!entry.mode) {
         context.diagnostics.error("E0009", entry.loc,
-                                  fmt::format("curves stage '{0}' needs a mode: 'set {0}', 'union {0}', 'subtract "
+                                  fmt::format("{1} stage '{0}' needs a mode: 'set {0}', 'union {0}', 'subtract "
                                               "{0}' or 'intersect {0}'",
-                                              entry.name));
+                                              entry.name, kind));
         return;
     }
     const std::optional<FieldMode> mode = parseMode(context, entry);
     if (!mode) return;
     if (*mode == FieldMode::Paint) {
         context.diagnostics.error("E0010", entry.modeLoc,
-                                  fmt::format("'{}' is a curves block; it takes 'set', 'union', 'subtract' or "
-                                              "'intersect' (its materials come from its constraint points)",
-                                              entry.name));
+                                  fmt::format("'{}' is a {} block; it takes 'set', 'union', 'subtract' or "
+                                              "'intersect' (its materials come from {})",
+                                              entry.name, kind, materialKeys));
         return;
     }
     if (entry.clause) {
         context.diagnostics.error("E0010", entry.clause->wordLoc,
-                                  fmt::format("'{}' is a curves block: its materials come from its constraint "
-                                              "points' 'material' keys, not a '{}' clause",
-                                              entry.name, entry.clause->word));
+                                  fmt::format("'{}' is a {} block: its materials come from {}, not a '{}' clause",
+                                              entry.name, kind, materialKeys, entry.clause->word));
         return;
     }
     stages.push_back({Stage::Kind::Curves, index, *mode, entry.loc, std::nullopt});

@@ -13,7 +13,8 @@ struct Context {
     const Limits& limits;
     Constants constants;
     MaterialNames materials; // filled by checkMaterials before any other block is checked
-    std::vector<std::string> curvesNames; // the curves blocks, declaration order (checkCurves), for the pipeline
+    std::vector<std::string> curvesNames; // the solve blocks (curves, then terrain), declaration order, for the pipeline
+    std::vector<std::string> curvesKinds; // per solve block: "curves" or "terrain", for messages
     // List entries of the lsystem_cave point sets checked so far: the runtime bounds their sum.
     uint64_t pointSetListEntries = 0;
 };
