@@ -283,6 +283,12 @@ expect trace_lsystem_lengths 0 "lsystem net after 3 expansions: 358 symbols" -- 
 printf 'world { size = [8, 8, 8]; }\nlsystem net {\n  seed = 3;\n  expansions = 2;\n  production Z { "CZ"; "HZ"; }\n  macro C { "FLFZ" tunnel 1; "FRFZ" tunnel 1; }\n  macro H { "FUFZ" room 1; }\n}\n' > "$work/choices.vox"
 expect trace_lsystem_choices 0 "lsystem net expansion 2: symbol Z at [0-9]+ took production [12] of 2" -- "$voxc" interp "$work/choices.vox" --trace-lsystem net
 expect trace_lsystem_unknown 1 "no lsystem named 'nope' \(it declares: net\)" -- "$voxc" interp "$work/choices.vox" --trace-lsystem nope
+# a package holds the buffers the compiler fills (data/*.bin), and voxc knows them as its own
+expect compile_point_sets 0 "wrote [0-9]+ kernels" -- "$voxc" compile "$src/examples/lsystem_cave.vox" -o "$work/cavepkg"
+expect compile_point_sets_file 0 "" -- test -s "$work/cavepkg/data/point_sets.bin"
+expect compile_point_sets_again 0 "is up to date" -- "$voxc" compile "$src/examples/lsystem_cave.vox" -o "$work/cavepkg"
+echo x > "$work/cavepkg/data/notes.txt"
+expect compile_foreign_data 1 "voxc did not write 'data/notes.txt'" -- "$voxc" compile "$src/examples/lsystem_cave.vox" -o "$work/cavepkg"
 expect help_evolve 0 "--population UINT" -- "$voxc" evolve --help
 expect evolve_writes 0 "wrote 4 variants of lsystem 'macros' \(generation 1" -- "$voxc" evolve "$src/examples/lsystem_macros.vox" macros --population 4 -o "$work/gen1"
 for k in 1 2 3 4; do

@@ -6,10 +6,13 @@
 #ifdef VOXC_HAVE_CHECK
 #include "voxc/check/Check.h"
 #endif
+#include "voxc/program/PointSet.h"
+#include "voxc/program/SolveTable.h"
 
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
+#include <fmt/format.h>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <map>
@@ -150,6 +153,43 @@ TEST(codegen_ManifestContract, EveryExampleMatchesItsSpirv) {
         ASSERT_TRUE(checked.program) << checked.rendered();
         SCOPED_TRACE(entry.path().filename().string());
         expectManifestMatchesSpirv(compileProgram(*checked.program), entry.path().stem().string());
+    }
+}
+
+// A package holds the buffers the compiler fills (point sets, solve tables), so an engine needs
+// nothing but the directory: every buffer a kernel declares whose words come from the compiler
+// names its file, which holds exactly `count` little-endian words, the words the executor uploads.
+TEST(codegen_ManifestContract, BuffersTheCompilerFillsAreFilesOfThePackage) {
+    for (const char* example : {"lsystem_cave", "curves_cliff", "valley"}) {
+        SCOPED_TRACE(example);
+        CheckResult checked = checkFile(fmt::format("{}/{}.vox", VOXC_EXAMPLES_DIR, example));
+        ASSERT_TRUE(checked.program) << checked.rendered();
+        const KernelPackage package = compileProgram(*checked.program);
+        const std::map<std::string, std::string> files = packageFiles(package);
+        const nlohmann::json manifest = nlohmann::json::parse(files.at("manifest.json"));
+        size_t withFile = 0;
+        for (const auto& buffer : manifest["buffers"]) {
+            const uint32_t binding = buffer["binding"];
+            if (binding != kBindingPointSets && binding != kBindingSolveTables) {
+                EXPECT_FALSE(buffer.contains("file")) << binding;
+                continue;
+            }
+            ASSERT_TRUE(buffer.contains("file")) << binding;
+            const std::string& bytes = files.at(buffer["file"].get<std::string>());
+            const std::vector<int32_t> words = binding == kBindingPointSets
+                                                   ? pointSetWords(package.pointSets, package.world.origin,
+                                                                   package.world.size)
+                                                   : solveTableWords(package.solveTables);
+            ASSERT_EQ(buffer["count"].get<size_t>(), words.size());
+            ASSERT_EQ(bytes.size(), 4 * words.size());
+            for (size_t i = 0; i < words.size(); i += 997) {
+                const uint32_t word = uint32_t(uint8_t(bytes[4 * i])) | uint32_t(uint8_t(bytes[4 * i + 1])) << 8 |
+                                      uint32_t(uint8_t(bytes[4 * i + 2])) << 16 | uint32_t(uint8_t(bytes[4 * i + 3])) << 24;
+                ASSERT_EQ(word, uint32_t(words[i])) << "word " << i;
+            }
+            ++withFile;
+        }
+        EXPECT_EQ(withFile, 1u);
     }
 }
 #endif

@@ -112,14 +112,17 @@ std::optional<std::map<std::string, std::string>> readPackage(const fs::path& di
     for (const Entry& entry : listAt(dir, dirFd.get(), "")) {
         if (entry.name == "manifest.json" && entry.type == S_IFREG) {
             files[entry.name] = readAt(dir, dirFd.get(), entry.name, entry.name);
-        } else if (entry.name == "kernels" && entry.type == S_IFDIR) {
-            const Fd kernelsFd(::openat(dirFd.get(), "kernels", O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC));
-            if (kernelsFd.get() < 0) failErrno(dir, "kernels/");
-            for (const Entry& kernel : listAt(dir, kernelsFd.get(), "kernels/")) {
-                const std::string relative = "kernels/" + kernel.name;
-                const std::string extension = fs::path(kernel.name).extension().string();
-                if (kernel.type != S_IFREG || (extension != ".comp" && extension != ".spv")) foreign(dir, relative);
-                files[relative] = readAt(dir, kernelsFd.get(), kernel.name, relative);
+        } else if ((entry.name == "kernels" || entry.name == "data") && entry.type == S_IFDIR) {
+            // kernels/*.comp and *.spv; data/*.bin
+            const std::string sub = entry.name + "/";
+            const Fd subFd(::openat(dirFd.get(), entry.name.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC));
+            if (subFd.get() < 0) failErrno(dir, sub);
+            for (const Entry& file : listAt(dir, subFd.get(), sub)) {
+                const std::string relative = sub + file.name;
+                const std::string extension = fs::path(file.name).extension().string();
+                const bool ours = entry.name == "kernels" ? extension == ".comp" || extension == ".spv" : extension == ".bin";
+                if (file.type != S_IFREG || !ours) foreign(dir, relative);
+                files[relative] = readAt(dir, subFd.get(), file.name, relative);
             }
         } else {
             foreign(dir, entry.name);

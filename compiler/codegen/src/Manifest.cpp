@@ -5,6 +5,7 @@
 #include "voxc/core/Errors.h"
 #include "voxc/ir/Ir.h"
 
+#include <algorithm>
 #include <bit>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -111,16 +112,21 @@ Json buffersJson(const KernelPackage& package) {
     std::set<uint32_t> declared;
     for (const Kernel& k : package.kernels)
         declared.insert(k.bindings.begin(), k.bindings.end());
+    const std::vector<PackageData> data = packageData(package);
     Json buffers = Json::array();
     for (uint32_t binding : declared) {
         const BufferInfo info = bufferInfo(binding);
-        buffers.push_back(Json{{"binding", binding},
-                               {"name", info.name},
-                               {"element_type", info.elementType},
-                               {"element_bytes", 4},
-                               {"count", bufferCount(binding, package.world)},
-                               {"count_formula", info.countFormula},
-                               {"meaning", info.meaning}});
+        const auto contents = std::find_if(data.begin(), data.end(), [&](const PackageData& d) { return d.binding == binding; });
+        Json buffer{{"binding", binding},
+                    {"name", info.name},
+                    {"element_type", info.elementType},
+                    {"element_bytes", 4},
+                    {"count", contents != data.end() ? Json(contents->words.size()) : bufferCount(binding, package.world)},
+                    {"count_formula", info.countFormula},
+                    {"meaning", info.meaning}};
+        // The words to upload, little endian, as the package holds them.
+        if (contents != data.end()) buffer["file"] = contents->path;
+        buffers.push_back(buffer);
     }
     return buffers;
 }

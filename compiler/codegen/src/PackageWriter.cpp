@@ -7,6 +7,7 @@
 #include "voxc/core/Errors.h"
 #include "voxc/core/TempFiles.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -109,10 +110,15 @@ void syncDirectory(const fs::path& directory) {
 }
 
 void writeTree(const fs::path& dir, const fs::path& temp, const std::map<std::string, std::string>& files) {
-    if (::mkdir((temp / "kernels").c_str(), 0777) != 0) fail(dir, fmt::format("kernels: {}", std::strerror(errno)));
+    for (const char* sub : {"kernels", "data"}) {
+        const bool used = std::any_of(files.begin(), files.end(),
+                                      [&](const auto& file) { return file.first.starts_with(std::string(sub) + "/"); });
+        if (used && ::mkdir((temp / sub).c_str(), 0777) != 0) fail(dir, fmt::format("{}: {}", sub, std::strerror(errno)));
+    }
     for (const auto& [relative, bytes] : files)
         writeNewFile(dir, temp / relative, bytes);
-    syncDirectory(temp / "kernels");
+    for (const char* sub : {"kernels", "data"})
+        if (fs::is_directory(temp / sub)) syncDirectory(temp / sub);
     syncDirectory(temp);
 }
 
@@ -157,6 +163,7 @@ std::map<std::string, std::string> packageFiles(const KernelPackage& package, co
         files[packageGlslPath(k)] = k.glsl;
         files[packageSpirvPath(k)] = spirvBytes(k.spirv);
     }
+    for (const PackageData& data : packageData(package)) files[data.path] = littleEndianWords(data.words);
     files["manifest.json"] = packageManifest(package, source);
     return files;
 }

@@ -1,11 +1,13 @@
 #pragma once
 // Writes a KernelPackage as a package directory: dir/manifest.json, dir/kernels/<name>.comp
-// (GLSL) and dir/kernels/<name>.spv (SPIR-V words, little endian). The directory is replaced as
+// (GLSL), dir/kernels/<name>.spv (SPIR-V words, little endian) and dir/data/<buffer>.bin (the
+// words of the buffers the compiler fills, little endian). The directory is replaced as
 // a whole, so a reader sees the old package or the new one, never a mix.
 #include "voxc/codegen/KernelPackage.h"
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace voxc::codegen {
 
@@ -25,6 +27,16 @@ std::string packageManifest(const KernelPackage& package, const PackageSource& s
 // A kernel's files, relative to the package directory.
 std::string packageGlslPath(const Kernel& kernel);
 std::string packageSpirvPath(const Kernel& kernel);
+
+// A storage buffer whose words the compiler computes, and the package file that holds them.
+struct PackageData {
+    uint32_t binding = 0;
+    std::string path; // relative to the package directory, under data/
+    std::vector<int32_t> words;
+};
+// The package's buffers with known contents: point sets (binding 10), solve tables (binding 12).
+std::vector<PackageData> packageData(const KernelPackage& package);
+std::string littleEndianWords(const std::vector<int32_t>& words);
 
 // Every file of the package: path relative to the package directory -> bytes.
 std::map<std::string, std::string> packageFiles(const KernelPackage& package, const PackageSource& source = {});
