@@ -3,6 +3,7 @@
 // Besides crashes and sanitizer reports, a result that breaks CheckResult's contract (a program
 // exactly when there is no error) is a finding.
 #include "FuzzInput.h"
+#include "FuzzLimits.h"
 #include "voxc/check/Check.h"
 #include "voxc/core/Errors.h"
 

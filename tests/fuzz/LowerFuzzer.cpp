@@ -5,6 +5,7 @@
 // compileProgram. A Program the checker accepted must lower and compile: any exception
 // is a finding.
 #include "FuzzInput.h"
+#include "FuzzLimits.h"
 #include "voxc/codegen/KernelSources.h"
 #include "voxc/check/Check.h"
 #include "voxc/stages/Pipeline.h"
