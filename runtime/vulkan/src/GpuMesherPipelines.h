@@ -1,7 +1,7 @@
 #pragma once
 // The compute pipelines of the GPU marching-cubes passes (compiler/shaders/mc_*.glsl) and the
 // one descriptor set they share.
-#include "ContextImpl.h"
+#include "StorageSet.h"
 
 #include <array>
 #include <cstdint>
@@ -38,11 +38,7 @@ enum McBinding : uint32_t {
     kMcBindingCount
 };
 
-struct McPipelines {
-    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-    VkPipelineLayout layout = VK_NULL_HANDLE;
-    VkDescriptorPool pool = VK_NULL_HANDLE;
-    VkDescriptorSet set = VK_NULL_HANDLE;
+struct McPipelines : StorageSet {
     std::array<VkPipeline, kMcPassCount> pipelines{};
 };
 

@@ -1,7 +1,7 @@
 #pragma once
 // The compute pipelines of a package and the one descriptor set they share
 // (the kBinding* buffers of KernelPackage.h; push constants: PushBlock).
-#include "ContextImpl.h"
+#include "StorageSet.h"
 #include "voxc/codegen/KernelPackage.h"
 
 #include <array>
@@ -11,11 +11,7 @@ namespace voxc::vulkan_detail {
 
 constexpr uint32_t kKernelBindingCount = 13; // bindings 0..12
 
-struct KernelPipelines {
-    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-    VkPipelineLayout layout = VK_NULL_HANDLE;
-    VkDescriptorPool pool = VK_NULL_HANDLE;
-    VkDescriptorSet set = VK_NULL_HANDLE;
+struct KernelPipelines : StorageSet {
     std::vector<VkPipeline> pipelines; // one per Kernel, same order
 };
 
