@@ -1,6 +1,6 @@
 // Arch (Dey Eq 4.2): a sphere swept along a cubic Bézier from `start` to `end`, thickened toward
 // each end by the taper term T_i = r * M_i * (1 - I_i^E_i). docs/language.md ("Features").
-#include "DagBuilder.h"
+#include "Placement.h"
 #include "Records.h"
 
 #include <algorithm>
@@ -83,7 +83,7 @@ Field build(const GeneratorParams& params, uint32_t /*seed*/) {
         points.push_back(placement.apply(point));
         radii.push_back(radius + taper(radius, first, t) + taper(radius, last, s));
     }
-    DagBuilder builder;
+    FieldBuilder builder;
     return builder.field(builder.call("density", {sweptSpheres(builder, points, radii), builder.number(1.0)}));
 }
 

@@ -1,7 +1,7 @@
 // Cave (Dey Eq 4.3): a particle traced from `start` along `direction`, pulled down by gravity
 // and pushed by curl noise, carving a sphere whose radius decays; the field is 1 inside the
 // swept spheres, so `subtract` carves it. docs/language.md ("Features").
-#include "DagBuilder.h"
+#include "Placement.h"
 #include "Records.h"
 
 #include "voxc/builtins/Functions.h"
@@ -65,7 +65,7 @@ Field build(const GeneratorParams& params, uint32_t seed) {
     }
     const Placement placement = Placement::of(params, start);
     for (glm::dvec3& point : points) point = placement.apply(point);
-    DagBuilder builder;
+    FieldBuilder builder;
     return builder.field(builder.call("density", {sweptSpheres(builder, points, radii), builder.number(1.0)}));
 }
 

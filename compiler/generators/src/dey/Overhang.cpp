@@ -1,7 +1,7 @@
 // Overhang / cliff (Dey Eq 4.1): inside the box [min, max), rock where the normalised depth I_x
 // is below min(S(u, v), P(u)), S a bicubic Bézier patch and P a parabola across the face.
 // docs/language.md ("Features") gives the control net.
-#include "DagBuilder.h"
+#include "Placement.h"
 #include "Records.h"
 
 #include <array>
@@ -53,7 +53,7 @@ ControlNet controlNet(const GeneratorParams& params) {
 }
 
 // The four cubic Bernstein polynomials of t (the rows of U·B).
-std::array<uint32_t, 4> bernstein(DagBuilder& b, uint32_t t) {
+std::array<uint32_t, 4> bernstein(FieldBuilder& b, uint32_t t) {
     const uint32_t s = b.call("sub", {b.number(1.0), t});
     const uint32_t three = b.number(3.0);
     return {b.call("mul", {b.call("mul", {s, s}), s}), b.call("mul", {b.call("mul", {three, t}), b.call("mul", {s, s})}),
@@ -64,7 +64,7 @@ std::array<uint32_t, 4> bernstein(DagBuilder& b, uint32_t t) {
 Field build(const GeneratorParams& params, uint32_t /*seed*/) {
     const glm::dvec3 lo = params.vec("min"), hi = params.vec("max");
     const glm::dvec3 extent = hi - lo;
-    DagBuilder b;
+    FieldBuilder b;
     const uint32_t q = Placement::of(params, 0.5 * (lo + hi)).inverseOfPosition(b);
     uint32_t normalised[3];
     for (uint32_t axis = 0; axis < 3; ++axis)

@@ -1,5 +1,7 @@
 #include "voxc/generators/lsystem/Carve.h"
 
+#include "../FieldBuilder.h"
+
 #include "voxc/builtins/Functions.h"
 #include "voxc/core/Errors.h"
 #include "voxc/program/FieldDag.h"
@@ -38,73 +40,22 @@ void requireRange(const char* key, double value, double lo, double hi) {
         throw UserError(fmt::format("lsystem_cave: '{}' is {}, outside [{}, {}]", key, value, lo, hi));
 }
 
-// Field nodes of the carve; every constant a float, seeds int bit patterns.
-class CarveDag {
+// The carve's nodes beyond the generators' common ones.
+class CarveDag : public generators::FieldBuilder {
 public:
-    uint32_t number(double value) {
-        FieldNode node;
-        node.type = Type::Float;
-        node.constant = glm::vec3(float(value), 0.0f, 0.0f);
-        return dag_.add(node);
-    }
-    uint32_t seed(uint32_t value) {
-        FieldNode node;
-        node.type = Type::Int;
-        node.constantInt = int32_t(value);
-        return dag_.add(node);
-    }
-    uint32_t worldPosition() {
-        uint32_t axes[3];
-        for (int i = 0; i < 3; ++i) {
-            FieldNode node;
-            node.kind = FieldNode::Kind::Input;
-            node.input = FieldInput(uint8_t(FieldInput::WorldX) + i);
-            axes[i] = dag_.add(node);
-        }
-        return call("vec3", {axes[0], axes[1], axes[2]});
-    }
-    uint32_t component(uint32_t vector, uint32_t index) {
-        FieldNode node;
-        node.kind = FieldNode::Kind::Component;
-        node.component = index;
-        node.operands = {vector};
-        return dag_.add(node);
-    }
     uint32_t pointSet(std::shared_ptr<const PointSet> set, uint32_t position) {
         FieldNode node;
         node.kind = FieldNode::Kind::PointSet;
         node.type = Type::Vec2;
         node.operands = {position};
         node.pointSet = std::move(set);
-        return dag_.add(node);
-    }
-    uint32_t call(std::string_view name, std::initializer_list<uint32_t> operands) {
-        const FunctionInfo* info = findFunction(name);
-        VOXC_ASSERT(info != nullptr);
-        std::vector<Type> types;
-        for (uint32_t operand : operands) types.push_back(dag_[operand].type);
-        const std::optional<Type> result = info->typeRule(types);
-        VOXC_ASSERT(result.has_value());
-        FieldNode node;
-        node.kind = FieldNode::Kind::Call;
-        node.type = *result;
-        node.function = uint32_t(info - functions().data());
-        node.operands = operands;
-        return dag_.add(node);
+        return add(node);
     }
     // 0.5 + 0.5 simplex3(p * frequency, seed): a modulator in [0, 1].
     uint32_t modulator(uint32_t p, double frequency, uint32_t seedValue) {
         const uint32_t noise = call("simplex3", {call("mul", {p, number(frequency)}), seed(seedValue)});
         return call("add", {number(0.5), call("mul", {number(0.5), noise})});
     }
-    Field field(uint32_t root) const {
-        Field out;
-        out.nodes = dag_.reachableFrom(root, out.root);
-        return out;
-    }
-
-private:
-    FieldDag dag_;
 };
 
 PointSetSegment floatSegment(glm::dvec3 a, glm::dvec3 b) {

@@ -1,69 +1,11 @@
-#include "DagBuilder.h"
+#include "Placement.h"
 
-#include "voxc/builtins/Functions.h"
 #include "voxc/core/Errors.h"
 
 #include <cmath>
 #include <numbers>
 
 namespace voxc::dey {
-
-uint32_t DagBuilder::number(double value) {
-    FieldNode node;
-    node.kind = FieldNode::Kind::Constant;
-    node.type = Type::Float;
-    node.constant = glm::vec3(float(value), 0.0f, 0.0f);
-    return dag_.add(node);
-}
-
-uint32_t DagBuilder::vec3(glm::dvec3 value) {
-    FieldNode node;
-    node.kind = FieldNode::Kind::Constant;
-    node.type = Type::Vec3;
-    node.constant = glm::vec3(value);
-    return dag_.add(node);
-}
-
-uint32_t DagBuilder::position() {
-    uint32_t axes[3];
-    for (int i = 0; i < 3; ++i) {
-        FieldNode node;
-        node.kind = FieldNode::Kind::Input;
-        node.input = FieldInput(uint8_t(FieldInput::LocalX) + i);
-        axes[i] = dag_.add(node);
-    }
-    return call("vec3", {axes[0], axes[1], axes[2]});
-}
-
-uint32_t DagBuilder::component(uint32_t vector, uint32_t index) {
-    FieldNode node;
-    node.kind = FieldNode::Kind::Component;
-    node.type = Type::Float;
-    node.component = index;
-    node.operands = {vector};
-    return dag_.add(node);
-}
-
-uint32_t DagBuilder::call(std::string_view name, std::initializer_list<uint32_t> operands) {
-    const FunctionInfo* info = findFunction(name);
-    VOXC_ASSERT(info != nullptr);
-    std::vector<Type> types;
-    for (uint32_t operand : operands) types.push_back(dag_[operand].type);
-    const std::optional<Type> result = info->typeRule(types);
-    VOXC_ASSERT(result.has_value());
-    FieldNode node;
-    node.kind = FieldNode::Kind::Call;
-    node.type = *result;
-    node.function = uint32_t(info - functions().data());
-    node.operands = operands;
-    return dag_.add(node);
-}
-
-Field DagBuilder::field(uint32_t root) const {
-    Field out;
-    out.nodes = dag_.reachableFrom(root, out.root);
-    return out;
-}
 
 Placement Placement::of(const GeneratorParams& params, glm::dvec3 pivot) {
     const glm::dvec3 angles = params.vec("rotate") * (std::numbers::pi / 180.0);
@@ -85,7 +27,7 @@ bool Placement::identity() const { return rotation == glm::dmat3(1.0) && transla
 
 glm::dvec3 Placement::apply(glm::dvec3 point) const { return rotation * (point - pivot) + pivot + translate; }
 
-uint32_t Placement::inverseOfPosition(DagBuilder& builder) const {
+uint32_t Placement::inverseOfPosition(FieldBuilder& builder) const {
     const uint32_t p = builder.position();
     if (identity()) return p;
     // q = R^T (p - pivot - translate) + pivot, one component at a time with plain mul/add.
@@ -104,7 +46,7 @@ uint32_t Placement::inverseOfPosition(DagBuilder& builder) const {
     return builder.call("vec3", {q[0], q[1], q[2]});
 }
 
-uint32_t sweptSpheres(DagBuilder& builder, const std::vector<glm::dvec3>& points, const std::vector<double>& radii) {
+uint32_t sweptSpheres(FieldBuilder& builder, const std::vector<glm::dvec3>& points, const std::vector<double>& radii) {
     VOXC_ASSERT(points.size() >= 2 && radii.size() == points.size());
     const uint32_t p = builder.position();
     uint32_t distance = 0;
