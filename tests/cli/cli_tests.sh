@@ -283,6 +283,13 @@ expect trace_lsystem_lengths 0 "lsystem net after 3 expansions: 358 symbols" -- 
 printf 'world { size = [8, 8, 8]; }\nlsystem net {\n  seed = 3;\n  expansions = 2;\n  production Z { "CZ"; "HZ"; }\n  macro C { "FLFZ" tunnel 1; "FRFZ" tunnel 1; }\n  macro H { "FUFZ" room 1; }\n}\n' > "$work/choices.vox"
 expect trace_lsystem_choices 0 "lsystem net expansion 2: symbol Z at [0-9]+ took production [12] of 2" -- "$voxc" interp "$work/choices.vox" --trace-lsystem net
 expect trace_lsystem_unknown 1 "no lsystem named 'nope' \(it declares: net\)" -- "$voxc" interp "$work/choices.vox" --trace-lsystem nope
+# --seed is the file's seed: a carve (seeded while checking) comes out as if the file said it
+sed 's/  seed = 7;/  seed = 9;/' "$src/examples/lsystem_cave.vox" > "$work/cave_seed9.vox"
+"$voxc" interp "$work/cave_seed9.vox" --voxels "$work/seed9_file.npy" >/dev/null 2>&1
+expect seed_override_run 0 "" -- "$voxc" interp "$src/examples/lsystem_cave.vox" --seed 9 --voxels "$work/seed9_flag.npy"
+expect_same seed_override_is_the_file_seed "$work/seed9_file.npy" "$work/seed9_flag.npy"
+"$voxc" interp "$src/examples/lsystem_cave.vox" --voxels "$work/seed7.npy" >/dev/null 2>&1
+expect seed_override_changes_the_carve 1 "" -- cmp -s "$work/seed7.npy" "$work/seed9_flag.npy"
 # a package holds the buffers the compiler fills (data/*.bin), and voxc knows them as its own
 expect compile_point_sets 0 "wrote [0-9]+ kernels" -- "$voxc" compile "$src/examples/lsystem_cave.vox" -o "$work/cavepkg"
 expect compile_point_sets_file 0 "" -- test -s "$work/cavepkg/data/point_sets.bin"

@@ -87,6 +87,7 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
         world = checkWorld(context, *block);
     else
         context.diagnostics.error("E0009", {}, "missing the required 'world' block, e.g. 'world { size = [64, 64, 64]; }'");
+    if (world && context.seed) world->seed = *context.seed;
     if (world) program.world = *world;
     if (const ast::Block* block = uniqueBlock(context, file, "start")) program.start = checkStart(context, *block);
 
@@ -163,6 +164,7 @@ CheckResult checkSource(const SourceFile& source, const CheckOptions& options) {
         ast::File file = parse(source, diagnostics, uint32_t(options.limits.maxNesting));
         if (!diagnostics.hasErrors()) {
             check::Context context{diagnostics, options.limits, check::Constants(diagnostics, options.constOverrides), {}};
+            context.seed = options.seed;
             std::vector<CheckedLsystem> lsystems;
             Program program = check::checkProgram(context, file, source.path(), lsystems);
             if (!diagnostics.hasErrors()) {

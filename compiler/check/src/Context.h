@@ -17,6 +17,7 @@ struct Context {
     std::vector<std::string> curvesKinds; // per solve block: "curves" or "terrain", for messages
     // List entries of the lsystem_cave point sets checked so far: the runtime bounds their sum.
     uint64_t pointSetListEntries = 0;
+    std::optional<uint32_t> seed; // CheckOptions::seed
 };
 
 } // namespace voxc::check

@@ -38,6 +38,7 @@ Program loadProgram(const std::string& path, const WorldOverrides& overrides, bo
     CheckOptions options;
     if (overrides.maxWork)
         options.limits.maxWork = *overrides.maxWork >= 9.2e18 ? INT64_MAX : int64_t(*overrides.maxWork);
+    options.seed = overrides.seed;
     CheckResult result = checkFile(path, options);
     size_t errors = 0;
     size_t warnings = 0;
@@ -52,7 +53,6 @@ Program loadProgram(const std::string& path, const WorldOverrides& overrides, bo
     Program program = std::move(*result.program);
     if (sourceText) *sourceText = result.source.text();
     if (lsystems) *lsystems = std::move(result.lsystems);
-    if (overrides.seed) program.world.seed = *overrides.seed;
     if (overrides.chunk) {
         const int32_t c = *overrides.chunk;
         if (c < 8 || c > 64 || (c & (c - 1)) != 0)

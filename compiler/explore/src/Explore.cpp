@@ -28,15 +28,19 @@ void validate(const ExploreSettings& settings) {
     }
 }
 
-ValueSummary exploreValue(const Program& checked, double value, const ExploreSettings& settings) {
+// Each run checks the file again with its seed, so everything seeded while checking (features,
+// carves, solves) varies with it as well as the grammars' choices.
+ValueSummary exploreValue(const SourceFile& source, double value, const ExploreSettings& settings,
+                          uint32_t fileSeed) {
     ValueSummary summary;
     summary.value = value;
-    Program program = checked;
-    const uint32_t seedBase = settings.seedBase.value_or(checked.world.seed);
+    const uint32_t seedBase = settings.seedBase.value_or(fileSeed);
     std::vector<SolidSet> sets;
     std::vector<double> fractions, areas;
     for (uint32_t run = 0; run < settings.runs; ++run) {
-        program.world.seed = seedBase + run; // wraps modulo 2^32 like the seed itself
+        // The seed wraps modulo 2^32 like the seed itself.
+        Program program = checkWithParameter(source, settings.parameter, value, nullptr, seedBase + run);
+        if (settings.size) resizeWorld(program, *settings.size);
         if (settings.onRun) settings.onRun(value, run, program.world.seed);
         const DenseGrid grid = settings.generate ? settings.generate(program) : interpret(program);
         VOXC_ASSERT(grid.size() == program.world.size);
@@ -55,9 +59,10 @@ ValueSummary exploreValue(const Program& checked, double value, const ExploreSet
 } // namespace
 
 Program checkWithParameter(const SourceFile& source, const std::string& parameter, double value,
-                           std::string* warnings) {
+                           std::string* warnings, std::optional<uint32_t> seed) {
     CheckOptions options;
     options.constOverrides[parameter] = value;
+    options.seed = seed;
     CheckResult result = checkSource(source, options);
     if (result.hasErrors() || !result.program) {
         std::string rendered = result.rendered();
@@ -87,7 +92,7 @@ ExploreResult runExploration(const SourceFile& source, const ExploreSettings& se
         Program program = checkWithParameter(source, settings.parameter, value, i == 0 ? &result.warnings : nullptr);
         if (settings.size) resizeWorld(program, *settings.size);
         result.size = program.world.size;
-        result.values.push_back(exploreValue(program, value, settings));
+        result.values.push_back(exploreValue(source, value, settings, program.world.seed));
     }
     return result;
 }

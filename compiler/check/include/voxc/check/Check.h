@@ -56,6 +56,9 @@ struct CheckOptions {
     // declare is error E0002 without a location; a NaN or infinite value is E0007 at the
     // declaration. `voxc explore` sweeps a constant this way.
     std::map<std::string, double, std::less<>> constOverrides;
+    // Replaces the world's seed before anything reads it (`--seed`), so the features, carves and
+    // solves made while checking draw from it too, as if the file said `seed = S;`.
+    std::optional<uint32_t> seed;
 };
 
 CheckResult checkSource(const SourceFile& source, const Limits& limits = {});

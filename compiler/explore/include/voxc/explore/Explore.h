@@ -52,10 +52,11 @@ struct ExploreResult {
     std::string warnings;          // the checker's warnings for the first value, rendered
 };
 
-// Checks `source` with `parameter` overridden to `value` (CheckOptions::constOverrides). Throws
-// UserError carrying the rendered diagnostics when there are errors.
+// Checks `source` with `parameter` overridden to `value` (CheckOptions::constOverrides) and, when
+// given, the world's seed replaced (CheckOptions::seed). Throws UserError carrying the rendered
+// diagnostics when there are errors.
 Program checkWithParameter(const SourceFile& source, const std::string& parameter, double value,
-                           std::string* warnings = nullptr);
+                           std::string* warnings = nullptr, std::optional<uint32_t> seed = std::nullopt);
 
 // Applies ExploreSettings::size: the world size becomes `size` and grammar bounds are clipped.
 void resizeWorld(Program& program, glm::ivec3 size);
