@@ -94,7 +94,8 @@ Variant makeVariant(const std::string& name, const SourceFile& source, const Che
 
 std::string caption(const Variant& variant) {
     if (!variant.overLimit.empty()) return "over the limits";
-    return fmt::format("{} symbols, {} segments, {} ends, {} links", variant.symbols, variant.skeleton.segments.size(),
+    // Short enough for the preview's width (about 40 characters of the bitmap font).
+    return fmt::format("{} sym, {} seg, {} ends, {} links", variant.symbols, variant.skeleton.segments.size(),
                        variant.skeleton.endpoints.size(), variant.skeleton.connections.size());
 }
 
