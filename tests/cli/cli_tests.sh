@@ -290,6 +290,13 @@ expect seed_override_run 0 "" -- "$voxc" interp "$src/examples/lsystem_cave.vox"
 expect_same seed_override_is_the_file_seed "$work/seed9_file.npy" "$work/seed9_flag.npy"
 "$voxc" interp "$src/examples/lsystem_cave.vox" --voxels "$work/seed7.npy" >/dev/null 2>&1
 expect seed_override_changes_the_carve 1 "" -- cmp -s "$work/seed7.npy" "$work/seed9_flag.npy"
+# terrain: a block's maps as files, written together or not at all
+expect terrain_maps 0 "terrain 'valley': levels 2..7 \(128\^2 cells\), [0-9]+ erosion steps" -- "$voxc" terrain "$src/examples/valley.vox" valley --heightmap "$work/valley.png" --height "$work/valley_h.npy" --water "$work/valley_w.npy" --sediment "$work/valley_s.npy"
+expect terrain_heightmap_16bit 0 "" -- python3 -c "import struct,sys; b=open(sys.argv[1],'rb').read(); assert b[:8] == b'\x89PNG\r\n\x1a\n' and struct.unpack('>II', b[16:24]) == (128, 128) and b[24] == 16 and b[25] == 0" "$work/valley.png"
+expect terrain_npy 0 "" -- test -s "$work/valley_s.npy"
+expect terrain_unknown 1 "no terrain named 'hills' \(it declares: valley\)" -- "$voxc" terrain "$src/examples/valley.vox" hills --heightmap "$work/hills.png"
+expect terrain_extension 1 "must end in \.png" -- "$voxc" terrain "$src/examples/valley.vox" valley --heightmap "$work/valley.jpg" --height "$work/valley2.npy"
+expect_no_file terrain_extension_nothing_written "$work/valley2.npy"
 # a package holds the buffers the compiler fills (data/*.bin), and voxc knows them as its own
 expect compile_point_sets 0 "wrote [0-9]+ kernels" -- "$voxc" compile "$src/examples/lsystem_cave.vox" -o "$work/cavepkg"
 expect compile_point_sets_file 0 "" -- test -s "$work/cavepkg/data/point_sets.bin"

@@ -11,5 +11,6 @@ void addInterpCommand(CLI::App& app);
 void addExploreCommand(CLI::App& app);
 void addLsystemCommand(CLI::App& app);
 void addEvolveCommand(CLI::App& app);
+void addTerrainCommand(CLI::App& app);
 
 } // namespace voxc::driver

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
     voxc::driver::addExploreCommand(app);
     voxc::driver::addLsystemCommand(app);
     voxc::driver::addEvolveCommand(app);
+    voxc::driver::addTerrainCommand(app);
     try {
         app.parse(argc, argv);
         return 0;

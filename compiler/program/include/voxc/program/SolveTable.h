@@ -23,6 +23,13 @@ struct SolveSummary {
     int32_t cycles() const { return int32_t(residuals.size()) - 1; }
 };
 
+// A terrain block's final maps on its finest level, row-major, side x side cells, heights in units
+// of max_height (what `voxc terrain` writes out).
+struct TerrainMaps {
+    int32_t side = 0;
+    std::vector<float> height, water, sediment;
+};
+
 struct SolveTable {
     glm::ivec3 min{0};  // grid-local voxel of cell (0,0,0)
     glm::ivec3 size{0}; // cells per axis, each >= 1
@@ -31,6 +38,7 @@ struct SolveTable {
     std::vector<SolveSummary> solves;
     std::string source = "curves"; // the block kind that made it: "curves" or "terrain"
     std::string notes;             // what the solve did besides `solves`, for reports (may be empty)
+    std::shared_ptr<const TerrainMaps> terrainMaps; // terrain blocks only
 
     uint64_t cellCount() const { return uint64_t(size.x) * uint64_t(size.y) * uint64_t(size.z); }
 };

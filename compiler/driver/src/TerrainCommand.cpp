@@ -1,0 +1,86 @@
+// `voxc terrain FILE NAME [--heightmap H.png] [--height H.npy] [--water W.npy] [--sediment S.npy]`:
+// a terrain block's maps as a terrain artist takes them away (docs/terrain.md, "Outputs"), written
+// as one set, with the generator's summary.
+#include "Commands.h"
+#include "Common.h"
+#include "OutputPaths.h"
+
+#include "voxc/core/AtomicWrite.h"
+#include "voxc/core/Errors.h"
+#include "voxc/generators/terrain/Output.h"
+
+#include <fmt/format.h>
+#include <iostream>
+
+namespace voxc::driver {
+
+namespace {
+
+struct TerrainOptions {
+    std::string file;
+    std::string name;
+    std::string heightmapPath, heightPath, waterPath, sedimentPath;
+};
+
+// Without erosion the water and sediment maps are zero, never missing.
+terrain::Field2 field(int32_t side, const std::vector<float>& values) {
+    VOXC_ASSERT(values.size() == size_t(side) * size_t(side));
+    terrain::Field2 out(side, side);
+    out.values = values;
+    return out;
+}
+
+void runTerrain(const TerrainOptions& options) {
+    if (!options.heightmapPath.empty()) requireExtension(options.heightmapPath, {".png"}, "the heightmap");
+    for (const std::string* path : {&options.heightPath, &options.waterPath, &options.sedimentPath})
+        if (!path->empty()) requireExtension(*path, {".npy"}, "a map");
+    const RolePath inputs[] = {{"the input", options.file}};
+    const RolePath outputs[] = {{"--heightmap", options.heightmapPath},
+                                {"--height", options.heightPath},
+                                {"--water", options.waterPath},
+                                {"--sediment", options.sedimentPath}};
+    refuseClashingPaths(inputs, outputs);
+
+    const Program program = loadProgram(options.file, WorldOverrides{});
+    const CurvesBlock* block = nullptr;
+    std::string names;
+    for (const CurvesBlock& candidate : program.curves) {
+        if (!candidate.table || candidate.table->source != "terrain") continue;
+        if (candidate.name == options.name) block = &candidate;
+        names += fmt::format("{}{}", names.empty() ? "" : ", ", candidate.name);
+    }
+    if (!block)
+        throw UserError(fmt::format("{}: no terrain named '{}' ({})", options.file, options.name,
+                                    names.empty() ? "the file declares none" : "it declares: " + names));
+    const SolveTable& table = *block->table;
+    std::cout << fmt::format("terrain '{}': {}\n", block->name, table.notes);
+    const TerrainMaps& maps = *table.terrainMaps;
+    OutputFiles files;
+    if (!options.heightmapPath.empty())
+        terrain::writeHeightPng(files, options.heightmapPath, field(maps.side, maps.height));
+    if (!options.heightPath.empty())
+        terrain::writeFieldNpy(files, options.heightPath, field(maps.side, maps.height));
+    if (!options.waterPath.empty())
+        terrain::writeFieldNpy(files, options.waterPath, field(maps.side, maps.water));
+    if (!options.sedimentPath.empty())
+        terrain::writeFieldNpy(files, options.sedimentPath, field(maps.side, maps.sediment));
+    files.commit();
+    reportWritten({options.heightmapPath, options.heightPath, options.waterPath, options.sedimentPath});
+}
+
+} // namespace
+
+void addTerrainCommand(CLI::App& app) {
+    auto options = std::make_shared<TerrainOptions>();
+    CLI::App* command = app.add_subcommand(
+        "terrain", "Write a terrain block's maps: a 16-bit PNG heightmap and float32 .npy height, water and sediment");
+    command->add_option("file", options->file, "The .vox file")->required();
+    command->add_option("name", options->name, "The terrain block's name")->required();
+    command->add_option("--heightmap", options->heightmapPath, "16-bit greyscale PNG: 0..65535 spans 0..max_height");
+    command->add_option("--height", options->heightPath, "The height map as .npy (float32, units of max_height)");
+    command->add_option("--water", options->waterPath, "The water depth left after the drain as .npy");
+    command->add_option("--sediment", options->sedimentPath, "The suspended sediment as .npy");
+    command->callback([options] { runTerrain(*options); });
+}
+
+} // namespace voxc::driver
