@@ -20,8 +20,6 @@
 namespace voxc {
 namespace {
 
-using test::lavapipe;
-
 Program checked(const std::string& text) {
     CheckResult result = checkSource(SourceFile("speleothems.vox", text));
     EXPECT_FALSE(result.hasErrors()) << result.rendered();
@@ -34,8 +32,7 @@ DenseGrid agreeAtEveryChunkSize(Program program) {
     for (int chunk : {8, 16, 32, 64}) {
         SCOPED_TRACE(fmt::format("chunk {}", chunk));
         program.world.chunkSize = chunk;
-        VulkanExecutor executor(lavapipe(), compileProgram(program, {}));
-        EXPECT_EQ(test::countVoxelDifferences(expected, executor.run().grid.toDense()), 0u);
+        EXPECT_EQ(test::countVoxelDifferences(expected, test::runOnLavapipe(program)), 0u);
     }
     return expected;
 }

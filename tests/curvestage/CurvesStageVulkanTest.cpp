@@ -15,8 +15,6 @@
 namespace voxc {
 namespace {
 
-using test::lavapipe;
-
 Program checked(const std::string& text) {
     CheckResult result = checkSource(SourceFile("curves.vox", text));
     EXPECT_TRUE(result.diagnostics.empty()) << result.rendered();
@@ -29,8 +27,7 @@ void expectDeviceMatches(Program program) {
     for (int chunk : {8, 16, 32}) {
         SCOPED_TRACE(fmt::format("chunk {}", chunk));
         program.world.chunkSize = chunk;
-        VulkanExecutor executor(lavapipe(), compileProgram(program, {}));
-        const DenseGrid actual = executor.run().grid.toDense();
+        const DenseGrid actual = test::runOnLavapipe(program);
         EXPECT_EQ(test::countBitDifferences(expected, actual), 0u);
         EXPECT_EQ(test::countMaterialDifferences(expected, actual), 0u);
     }

@@ -23,8 +23,6 @@
 namespace voxc {
 namespace {
 
-using test::lavapipe;
-
 // Component id per air voxel (density < 0.5), 6-connected, and each component's size.
 struct AirComponents {
     std::vector<int32_t> id; // -1 for rock
@@ -68,8 +66,7 @@ TEST(e2e_CavesExample, OneConnectedNetworkWithRoomsTunnelsAndSpeleothems) {
     CheckResult checked = checkFile(std::string(VOXC_SOURCE_DIR) + "/examples/caves.vox");
     ASSERT_TRUE(checked.program && !checked.hasErrors()) << checked.rendered();
     const Program& program = *checked.program;
-    VulkanExecutor executor(lavapipe(), compileProgram(program, {}));
-    const DenseGrid grid = executor.run().grid.toDense();
+    const DenseGrid grid = test::runOnLavapipe(program);
 
     const AirComponents air = airComponents(grid);
     ASSERT_FALSE(air.sizes.empty());

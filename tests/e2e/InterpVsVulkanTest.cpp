@@ -22,8 +22,6 @@
 namespace voxc {
 namespace {
 
-using test::lavapipe;
-
 // `name` is an example in examples/ or, with a "cases/" prefix, a file beside this test.
 Program loadExample(const std::string& name) {
     const bool testCase = name.rfind("cases/", 0) == 0;
@@ -51,8 +49,7 @@ TEST_P(InterpVsVulkan, BitIdenticalAtEveryChunkSize) {
     for (int chunk : {8, 16, 32}) {
         SCOPED_TRACE(fmt::format("chunk {}", chunk));
         program.world.chunkSize = chunk;
-        VulkanExecutor executor(lavapipe(), compileProgram(program, {}));
-        const DenseGrid actual = executor.run().grid.toDense();
+        const DenseGrid actual = test::runOnLavapipe(program);
         EXPECT_EQ(test::countVoxelDifferences(expected, actual), 0u);
     }
 }
@@ -70,8 +67,7 @@ TEST(InterpVsVulkanFields, FieldsWithinRecordTolerance) {
     for (int chunk : {8, 32}) {
         SCOPED_TRACE(fmt::format("chunk {}", chunk));
         program.world.chunkSize = chunk;
-        VulkanExecutor executor(lavapipe(), compileProgram(program, {}));
-        const DenseGrid actual = executor.run().grid.toDense();
+        const DenseGrid actual = test::runOnLavapipe(program);
         float largest = 0.0f;
         const glm::ivec3 size = expected.size();
         for (int z = 0; z < size.z; ++z)

@@ -25,11 +25,6 @@ std::set<int> materialsIn(const DenseGrid& grid) {
     return std::set<int>(grid.materials().begin(), grid.materials().end());
 }
 
-DenseGrid runOnVulkan(const Program& program, const ExecutorOptions& options = {}) {
-    VulkanExecutor executor(lavapipe(), compileProgram(program, {}), options);
-    return executor.run().grid.toDense();
-}
-
 class MaterialsOnVulkan : public ::testing::TestWithParam<bool> {};
 
 TEST_P(MaterialsOnVulkan, MatchInterpreterAtEveryChunkSizeAndOrigin) {
@@ -43,7 +38,7 @@ TEST_P(MaterialsOnVulkan, MatchInterpreterAtEveryChunkSizeAndOrigin) {
         for (int chunk : {8, 16, 32}) {
             SCOPED_TRACE(fmt::format("origin shift ({}, {}, {}), chunk {}", shift.x, shift.y, shift.z, chunk));
             shifted.world.chunkSize = chunk;
-            EXPECT_EQ(test::countVoxelDifferences(expected, runOnVulkan(shifted)), 0u);
+            EXPECT_EQ(test::countVoxelDifferences(expected, test::runOnLavapipe(shifted)), 0u);
         }
     }
 }
@@ -53,10 +48,10 @@ TEST_P(MaterialsOnVulkan, StagedAndUnskippedRunsMatch) {
     const DenseGrid expected = interpret(program);
     ExecutorOptions staged;
     staged.alwaysStage = true;
-    EXPECT_EQ(test::countVoxelDifferences(expected, runOnVulkan(program, staged)), 0u);
+    EXPECT_EQ(test::countVoxelDifferences(expected, test::runOnLavapipe(program, staged)), 0u);
     ExecutorOptions unskipped;
     unskipped.skipInactiveTiles = false;
-    EXPECT_EQ(test::countVoxelDifferences(expected, runOnVulkan(program, unskipped)), 0u);
+    EXPECT_EQ(test::countVoxelDifferences(expected, test::runOnLavapipe(program, unskipped)), 0u);
 }
 
 INSTANTIATE_TEST_SUITE_P(e2e, MaterialsOnVulkan, ::testing::Bool(),
@@ -98,7 +93,7 @@ TEST(e2e_Materials, MaterialCasesWriteSeveralMaterials) {
 TEST(e2e_Materials, ProgramWithoutMaterialsReadsBackNone) {
     Program program = test::sampleProgram();
     ASSERT_FALSE(program.usesMaterials());
-    const DenseGrid actual = runOnVulkan(program);
+    const DenseGrid actual = test::runOnLavapipe(program);
     EXPECT_EQ(materialsIn(actual), std::set<int>{0});
     EXPECT_EQ(test::countVoxelDifferences(interpret(program), actual), 0u);
 }

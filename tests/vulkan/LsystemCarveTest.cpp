@@ -22,17 +22,10 @@
 namespace voxc {
 namespace {
 
-using test::lavapipe;
-
 CheckResult checked(const std::string& text) {
     CheckResult result = checkSource(SourceFile("carve.vox", text));
     EXPECT_FALSE(result.hasErrors()) << result.rendered();
     return result;
-}
-
-DenseGrid runVulkan(const Program& program) {
-    VulkanExecutor executor(lavapipe(), compileProgram(program, {}), ExecutorOptions{});
-    return executor.run().grid.toDense();
 }
 
 // Grammar (3), three expansions, in rock, its production of `type`; `keys` adds feature keys,
@@ -90,7 +83,7 @@ TEST(vulkan_LsystemCarve, MatchesTheInterpreterAtEveryChunkSize) {
     EXPECT_GT(air, 500u); // the carve reached the grid
     for (int chunk : {8, 16, 32, 64}) {
         program.world.chunkSize = chunk;
-        EXPECT_EQ(test::countBitDifferences(expected, runVulkan(program)), 0u) << "chunk " << chunk;
+        EXPECT_EQ(test::countBitDifferences(expected, test::runOnLavapipe(program)), 0u) << "chunk " << chunk;
     }
 }
 
@@ -116,7 +109,7 @@ TEST(vulkan_LsystemCarve, ClearanceAndSupportHoldOnTheDevice) {
         ASSERT_NE(set, nullptr);
         // Centre i supports 2 R_i / m_min + 1 voxels: its scale is 1 / R_i, the reach 2.2 / m_min.
         const auto support = [&](size_t i) { return set->centreReach / 2.2 * 2.0 / set->centreScales[i] + 1.0; };
-        const DenseGrid grid = runVulkan(*result.program);
+        const DenseGrid grid = test::runOnLavapipe(*result.program);
         int near = 0, far = 0;
         for (int z = 0; z < 48; ++z)
             for (int y = 0; y < 24; ++y)
