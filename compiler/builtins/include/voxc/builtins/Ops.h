@@ -20,6 +20,7 @@ struct SymbolOpInfo {
     ValueSet (*accepts)(float value);
     // A GLSL bool expression; `density` and `value` are GLSL expressions.
     std::string (*glsl)(const std::string& density, const std::string& value);
+    std::string_view doc; // one line for hover help (voxc lsp): when the cell passes
 };
 
 struct TransformOpInfo {
@@ -29,6 +30,7 @@ struct TransformOpInfo {
     bool writes; // false for NOP: the cell is left untouched (and not clamped)
     float (*eval)(float density, float value);
     std::string (*glsl)(const std::string& density, const std::string& value);
+    std::string_view doc; // one line for hover help (voxc lsp): what the cell writes
 };
 
 // Material tests (MAT m, NMAT m) in symbol cells. A transform cell's `MAT m` is not a record of
@@ -39,6 +41,7 @@ struct MaterialOpInfo {
     bool (*eval)(uint8_t material, uint8_t id);
     // A GLSL bool expression; `material` and `id` are GLSL uint expressions.
     std::string (*glsl)(const std::string& material, const std::string& id);
+    std::string_view doc; // one line for hover help (voxc lsp)
 };
 
 std::span<const SymbolOpInfo> symbolOps();
