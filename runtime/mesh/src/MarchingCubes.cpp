@@ -183,7 +183,10 @@ Mesh meshMarchingCubes(const ChunkedGrid& grid, const MeshOptions& options, Mesh
         return true;
     });
     if (stats) *stats = MeshStats{chunks.size(), skipped};
+    return marching_cubes::mergeChunks(std::move(parts));
+}
 
+Mesh marching_cubes::mergeChunks(std::vector<ChunkMesh> parts) {
     // Global edge and cell order makes the result independent of the chunking. Edges on a chunk
     // face come from both chunks; they must agree bit for bit (the same samples, the same code).
     std::vector<EdgeVertex> vertices;

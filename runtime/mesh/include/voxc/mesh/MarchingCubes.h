@@ -78,6 +78,9 @@ struct ChunkMesh {
     std::vector<CellTriangle> triangles; // ascending cell, table order within a cell
 };
 ChunkMesh extractChunk(const ChunkedGrid& grid, float iso, glm::ivec3 worldChunk);
+// Joins chunk meshes into one: vertices in ascending edge key (a key from two chunks must carry
+// the same bits, else InternalError), triangles in ascending cell key, chunk order within a cell.
+Mesh mergeChunks(std::vector<ChunkMesh> parts);
 
 } // namespace marching_cubes
 } // namespace voxc

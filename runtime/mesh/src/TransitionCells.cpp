@@ -1,0 +1,189 @@
+// Transition cells derived per case from the facet rule (voxc/mesh/TransitionCells.h).
+#include "voxc/mesh/TransitionCells.h"
+
+#include "voxc/core/Errors.h"
+
+#include <algorithm>
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+#include <limits>
+
+namespace voxc::transition_cells {
+namespace {
+
+// A sub-edge as a small integer, for the per-case tables below.
+constexpr int kSubEdgeIds = kPoints * 6;
+int subEdgeId(const SubEdge& e) { return e.lower * 6 + e.axis * 2 + (e.halfSteps - 1); }
+SubEdge subEdgeOf(int id) { return {uint8_t(id / 6), uint8_t((id % 6) / 2), uint8_t(id % 2 + 1)}; }
+
+SubEdge subEdgeBetween(int a, int b) {
+    const glm::ivec3 d = pointOffset(b) - pointOffset(a);
+    for (int axis = 0; axis < 3; ++axis)
+        if (d[axis] != 0) {
+            const int lower = d[axis] > 0 ? a : b;
+            return {uint8_t(lower), uint8_t(axis), uint8_t(std::abs(d[axis]))};
+        }
+    throw InternalError("transition cells: a facet repeats a point");
+}
+
+glm::vec3 midpoint(const SubEdge& e) {
+    glm::vec3 p(pointOffset(e.lower));
+    p[e.axis] += 0.5f * float(e.halfSteps);
+    return p;
+}
+
+bool present(uint32_t points, glm::ivec3 p) { return (points >> pointAt(p)) & 1u; }
+
+// The facets of the cell's surface, each a ring of points counter-clockwise seen from outside.
+std::vector<std::vector<int>> facets(uint32_t points) {
+    std::vector<std::vector<int>> result;
+    for (int axis = 0; axis < 3; ++axis)
+        for (int side = 0; side < 2; ++side) {
+            const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+            auto point = [&](int cu, int cv) {
+                glm::ivec3 p;
+                p[axis] = 2 * side;
+                p[u] = cu;
+                p[v] = cv;
+                return p;
+            };
+            // Counter-clockwise in (u, v), which is seen from +axis; the low side is reversed.
+            std::vector<std::vector<glm::ivec2>> rings;
+            if (present(points, point(1, 1))) {
+                rings = {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{1, 0}, {2, 0}, {2, 1}, {1, 1}},
+                         {{1, 1}, {2, 1}, {2, 2}, {1, 2}}, {{0, 1}, {1, 1}, {1, 2}, {0, 2}}};
+            } else {
+                std::vector<glm::ivec2> ring;
+                for (glm::ivec2 q : {glm::ivec2{0, 0}, {1, 0}, {2, 0}, {2, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}})
+                    if ((q.x != 1 && q.y != 1) || present(points, point(q.x, q.y))) ring.push_back(q);
+                rings = {ring};
+            }
+            for (std::vector<glm::ivec2>& ring : rings) {
+                if (side == 0) std::reverse(ring.begin(), ring.end());
+                std::vector<int> facet;
+                for (glm::ivec2 q : ring) facet.push_back(pointAt(point(q.x, q.y)));
+                result.push_back(facet);
+            }
+        }
+    return result;
+}
+
+} // namespace
+
+bool validShape(uint32_t points) {
+    if ((points & kCornerPoints) != kCornerPoints || points >= (1u << kPoints)) return false;
+    for (int point = 0; point < kPoints; ++point) {
+        if (!((points >> point) & 1u)) continue;
+        const glm::ivec3 p = pointOffset(point);
+        const int halves = (p.x == 1) + (p.y == 1) + (p.z == 1);
+        if (halves == 3) return false;
+        if (halves == 2)
+            for (int axis = 0; axis < 3; ++axis) {
+                if (p[axis] != 1) continue;
+                for (int end : {0, 2}) {
+                    glm::ivec3 edgeMid = p;
+                    edgeMid[axis] = end;
+                    if (!present(points, edgeMid)) return false;
+                }
+            }
+    }
+    return true;
+}
+
+CellTriangles deriveCell(uint32_t points, uint32_t solid) {
+    VOXC_ASSERT(validShape(points) && (solid & ~points) == 0);
+    const std::vector<std::vector<int>> rings = facets(points);
+
+    // Which facets each sub-edge lies on (two, as the surface of a polyhedron), and the segments:
+    // on each ring, a run of solid points is cut off by a segment from the crossing where the ring
+    // enters it to the crossing where it leaves, so the solid lies to the segment's right seen
+    // from outside (the regular table's orientation: loops counter-clockwise seen from air).
+    std::array<std::vector<int>, kSubEdgeIds> facetsOf;
+    std::array<int, kSubEdgeIds> next;
+    next.fill(-1);
+    for (size_t f = 0; f < rings.size(); ++f) {
+        const std::vector<int>& ring = rings[f];
+        const size_t n = ring.size();
+        auto isSolid = [&](size_t i) { return bool((solid >> ring[i % n]) & 1u); };
+        auto edgeAfter = [&](size_t i) { return subEdgeId(subEdgeBetween(ring[i % n], ring[(i + 1) % n])); };
+        for (size_t i = 0; i < n; ++i) facetsOf[size_t(edgeAfter(i))].push_back(int(f));
+        for (size_t i = 0; i < n; ++i) {
+            if (!isSolid(i) || isSolid(i + n - 1)) continue; // not where a solid run starts (an all-solid ring has none)
+            size_t j = i;
+            while (isSolid(j + 1)) ++j;
+            const int from = edgeAfter(i + n - 1), to = edgeAfter(j);
+            VOXC_ASSERT(next[size_t(from)] == -1);
+            next[size_t(from)] = to;
+        }
+    }
+
+    CellTriangles result;
+    std::array<bool, kSubEdgeIds> used{};
+    for (int start = 0; start < kSubEdgeIds; ++start) {
+        if (next[size_t(start)] < 0 || used[size_t(start)]) continue;
+        std::vector<int> loop;
+        for (int e = start; !used[size_t(e)]; e = next[size_t(e)]) {
+            VOXC_ASSERT(next[size_t(e)] >= 0); // a crossed sub-edge leaves on its second facet
+            used[size_t(e)] = true;
+            loop.push_back(e);
+        }
+        VOXC_ASSERT(next[size_t(loop.back())] == start);
+
+        // Optimal triangulation of the loop: no chord between two vertices of one facet (the cell
+        // across it could use that chord too), no triangle whose vertices are collinear at the
+        // sub-edges' midpoints (where binary 0/1 samples put them: a loop along a refined face can
+        // run straight through several), then the least total chord length.
+        const size_t n = loop.size();
+        constexpr float kForbidden = std::numeric_limits<float>::infinity();
+        auto shareFacet = [&](int a, int b) {
+            for (int f : facetsOf[size_t(a)])
+                if (std::find(facetsOf[size_t(b)].begin(), facetsOf[size_t(b)].end(), f) != facetsOf[size_t(b)].end()) return true;
+            return false;
+        };
+        auto collinear = [&](int a, int b, int c) {
+            const glm::vec3 pa = midpoint(subEdgeOf(a));
+            return glm::cross(midpoint(subEdgeOf(b)) - pa, midpoint(subEdgeOf(c)) - pa) == glm::vec3(0.0f);
+        };
+        auto chordCost = [&](size_t i, size_t j) {
+            if (j == i + 1 || (i == 0 && j == n - 1)) return 0.0f;
+            if (shareFacet(loop[i], loop[j])) return kForbidden;
+            return glm::length(midpoint(subEdgeOf(loop[i])) - midpoint(subEdgeOf(loop[j])));
+        };
+        std::vector<float> cost(n * n, 0.0f);
+        std::vector<size_t> split(n * n, 0);
+        for (size_t len = 2; len < n; ++len)
+            for (size_t i = 0; i + len < n; ++i) {
+                const size_t j = i + len;
+                float best = kForbidden;
+                for (size_t k = i + 1; k < j; ++k) {
+                    if (collinear(loop[i], loop[k], loop[j])) continue;
+                    const float c = cost[i * n + k] + cost[k * n + j];
+                    if (c < best) {
+                        best = c;
+                        split[i * n + j] = k;
+                    }
+                }
+                cost[i * n + j] = best + chordCost(i, j);
+            }
+        if (!(cost[n - 1] < kForbidden)) {
+            const int8_t centre = int8_t(result.centredLoops.size());
+            std::vector<SubEdge>& members = result.centredLoops.emplace_back();
+            for (int e : loop) members.push_back(subEdgeOf(e));
+            for (size_t i = 0; i < n; ++i)
+                for (CellVertex corner : {CellVertex{{}, centre}, CellVertex{members[i]}, CellVertex{members[(i + 1) % n]}})
+                    result.corners.push_back(corner);
+            continue;
+        }
+        auto emit = [&](auto&& self, size_t i, size_t j) -> void {
+            if (j < i + 2) return;
+            const size_t k = split[i * n + j];
+            self(self, i, k);
+            for (size_t corner : {i, k, j}) result.corners.push_back(CellVertex{subEdgeOf(loop[corner])});
+            self(self, k, j);
+        };
+        emit(emit, 0, n - 1);
+    }
+    return result;
+}
+
+} // namespace voxc::transition_cells
