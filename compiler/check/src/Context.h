@@ -2,6 +2,7 @@
 // State shared by the checker's passes over one file.
 #include "Constants.h"
 #include "Materials.h"
+#include "voxc/generators/curves/Multigrid.h"
 
 #include "voxc/program/Program.h"
 #include "voxc/syntax/Diagnostics.h"
@@ -18,6 +19,7 @@ struct Context {
     // List entries of the lsystem_cave point sets checked so far: the runtime bounds their sum.
     uint64_t pointSetListEntries = 0;
     std::optional<uint32_t> seed; // CheckOptions::seed
+    curves::LinearSolver curvesSolver; // CheckOptions::curvesSolver
 };
 
 } // namespace voxc::check

@@ -1,17 +1,32 @@
 #include "voxc/generators/curves/Curves.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <optional>
 
 namespace voxc::curves {
 
-Result solveCurves(const Constraints& cs, const Options& options, const Limits& limits) {
+namespace {
+
+// Runs `part` and appends its wall time to `phases` under `name`.
+template <typename Part>
+void timed(std::vector<std::pair<std::string, double>>& phases, const char* name, Part&& part) {
+    const auto start = std::chrono::steady_clock::now();
+    part();
+    phases.emplace_back(name, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+}
+
+} // namespace
+
+Result solveCurves(const Constraints& cs, const Options& options, const Limits& limits, const LinearSolver& solver) {
+    const LinearSolver& linear = solver ? solver : LinearSolver(solveLaplace);
     checkBox(cs.box, limits);
     if (!(std::isfinite(options.k) && options.k > 0.0f)) throw ParameterError("k", options.k, "must be finite and > 0");
     if (options.smoothPasses < 0 || options.smoothPasses > limits.maxSmoothPasses)
         throw ParameterError("smooth_passes", options.smoothPasses, "must lie in [0, " + std::to_string(limits.maxSmoothPasses) + "]");
     const Box& b = cs.box;
-    Result r{Field3(b), Field3(b), Field3(b), cs.amplitude, cs.roughness, {}, {}, Field3(b), {}};
+    Result r{Field3(b), Field3(b), Field3(b), cs.amplitude, cs.roughness, {}, {}, Field3(b), {}, {}};
 
     std::vector<uint8_t> fixedN(b.cellCount()), fixedR(b.cellCount());
     float maxAmplitude = 1.0f;
@@ -21,26 +36,38 @@ Result solveCurves(const Constraints& cs, const Options& options, const Limits& 
         if (fixedR[i]) maxAmplitude = std::max(maxAmplitude, cs.amplitude.values[i]);
     }
     if (options.normals == NormalMode::Laplace) {
-        Field3 x = cs.normalX, y = cs.normalY, z = cs.normalZ;
-        r.solves.push_back(solveLaplace("normals", fixedN, {&x, &y, &z}, 1e-5f, limits));
-        normalizeField(x, y, z, r.normalX, r.normalY, r.normalZ);
+        timed(r.phaseMs, "normals", [&] {
+            Field3 x = cs.normalX, y = cs.normalY, z = cs.normalZ;
+            r.solves.push_back(linear("normals", fixedN, {&x, &y, &z}, 1e-5f, limits));
+            normalizeField(x, y, z, r.normalX, r.normalY, r.normalZ);
+        });
     } else {
         const uint32_t sweeps = options.sweeps != 0 ? options.sweeps : uint32_t(std::max({b.size.x, b.size.y, b.size.z}));
         if (sweeps > limits.maxSweeps) throw LimitError("Perona-Malik sweeps", sweeps, limits.maxSweeps);
         if (uint64_t(sweeps) * b.cellCount() > limits.maxSweepCellUpdates)
             throw LimitError("Perona-Malik sweep cell updates", uint64_t(sweeps) * b.cellCount(), limits.maxSweepCellUpdates);
-        const NormalField n = peronaMalikNormals(cs, options.k, sweeps, limits);
-        normalizeField(n.x, n.y, n.z, r.normalX, r.normalY, r.normalZ);
+        timed(r.phaseMs, "normals", [&] {
+            const NormalField n = peronaMalikNormals(cs, options.k, sweeps, limits);
+            normalizeField(n.x, n.y, n.z, r.normalX, r.normalY, r.normalZ);
+        });
     }
-    r.solves.push_back(solveLaplace("parameters", fixedR, {&r.amplitude, &r.roughness}, 1e-5f * maxAmplitude, limits));
-    r.material = propagateMaterial(cs);
-    r.surface = propagateSurface(cs, r.normalX, r.normalY, r.normalZ, options.propagate);
-    r.smoothed = smoothBinomial(r.surface.distance, options.smoothPasses);
+    timed(r.phaseMs, "parameters", [&] {
+        r.solves.push_back(linear("parameters", fixedR, {&r.amplitude, &r.roughness}, 1e-5f * maxAmplitude, limits));
+    });
+    timed(r.phaseMs, "material", [&] { r.material = propagateMaterial(cs); });
+    timed(r.phaseMs, "surface", [&] { r.surface = propagateSurface(cs, r.normalX, r.normalY, r.normalZ, options.propagate); });
+    timed(r.phaseMs, "smoothing", [&] { r.smoothed = smoothBinomial(r.surface.distance, options.smoothPasses); });
     return r;
 }
 
-Result runCurves(const std::vector<FeatureCurve>& curves, const Box& box, const Options& options, const Limits& limits) {
-    return solveCurves(voxelize(curves, box, options.seedValue, limits), options, limits);
+Result runCurves(const std::vector<FeatureCurve>& curves, const Box& box, const Options& options, const Limits& limits,
+                 const LinearSolver& solver) {
+    std::vector<std::pair<std::string, double>> phases;
+    std::optional<Constraints> constraints;
+    timed(phases, "voxelize", [&] { constraints.emplace(voxelize(curves, box, options.seedValue, limits)); });
+    Result r = solveCurves(*constraints, options, limits, solver);
+    r.phaseMs.insert(r.phaseMs.begin(), phases.front());
+    return r;
 }
 
 } // namespace voxc::curves

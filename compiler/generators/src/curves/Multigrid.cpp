@@ -6,17 +6,15 @@
 namespace voxc::curves {
 namespace {
 
-// V(3,3), not the spec's V(2,2): with Dirichlet coarse cells wherever any child is constrained,
-// V(2,2) cut the max residual only 1.9x per cycle on the cliff scene (spec A4.7 asks >= 2x);
-// V(3,3) cuts it 2.2-2.9x (docs/curves.md).
-constexpr int32_t kPreSmooth = 3, kPostSmooth = 3, kCoarsestSweeps = 50;
+// V(3,3), not the spec's V(2,2) (kPreSmooth, kPostSmooth in Multigrid.h): with Dirichlet coarse
+// cells wherever any child is constrained, V(2,2) cut the max residual only 1.9x per cycle on the
+// cliff scene (spec A4.7 asks >= 2x); V(3,3) cuts it 2.2-2.9x (docs/curves.md).
 
 // A level's cells are `1 << scale[a]` finest cells wide along axis a; its stencil weights axis a
 // by 1 / width^2 (exact powers of 1/4), so every level discretises the same Laplacian in finest
 // units and the coarse right-hand side is the plain mean of the fine residual.
 struct Level {
     Box box;
-    glm::ivec3 scale{0};
     glm::vec3 weight{1.0f};
     std::vector<uint8_t> fixed;
     std::vector<std::vector<float>> u, f; // per component: unknowns (or corrections) and right-hand side
@@ -165,9 +163,41 @@ float maxResidualOf(const Level& level) {
 
 } // namespace
 
+std::vector<MultigridLevel> multigridLevels(glm::ivec3 size) {
+    std::vector<MultigridLevel> levels{MultigridLevel{size, halvedAxes(Box{glm::ivec3(0), size}), glm::vec3(1.0f)}};
+    glm::ivec3 scale(0);
+    while (levels.back().halved != glm::ivec3(0)) {
+        const glm::ivec3 halved = levels.back().halved;
+        scale += halved;
+        const glm::ivec3 coarse = (levels.back().size + halved) >> halved;
+        const glm::vec3 weight(std::ldexp(1.0f, -2 * scale.x), std::ldexp(1.0f, -2 * scale.y), std::ldexp(1.0f, -2 * scale.z));
+        levels.push_back(MultigridLevel{coarse, halvedAxes(Box{glm::ivec3(0), coarse}), weight});
+    }
+    return levels;
+}
+
+std::vector<std::vector<uint8_t>> multigridMasks(const std::vector<MultigridLevel>& levels,
+                                                 const std::vector<uint8_t>& fixed) {
+    std::vector<std::vector<uint8_t>> masks{fixed};
+    for (size_t l = 1; l < levels.size(); ++l) {
+        const Box fine{glm::ivec3(0), levels[l - 1].size}, coarse{glm::ivec3(0), levels[l].size};
+        const glm::ivec3 halved = levels[l - 1].halved;
+        std::vector<uint8_t> mask(coarse.cellCount(), 0);
+        for (int32_t z = 0; z < fine.size.z; ++z)
+            for (int32_t y = 0; y < fine.size.y; ++y)
+                for (int32_t x = 0; x < fine.size.x; ++x)
+                    if (masks.back()[fine.index(x, y, z)]) {
+                        const glm::ivec3 p = parentOf(halved, x, y, z);
+                        mask[coarse.index(p.x, p.y, p.z)] = 1;
+                    }
+        masks.push_back(std::move(mask));
+    }
+    return masks;
+}
+
 float maxResidual(const std::vector<uint8_t>& fixed, const Field3& u) {
     if (u.values.size() != fixed.size()) throw InternalError("curves: a residual with a mask of another size");
-    Level level{u.box, glm::ivec3(0), glm::vec3(1.0f), fixed, {u.values}, {}};
+    Level level{u.box, glm::vec3(1.0f), fixed, {u.values}, {}};
     return maxResidualOf(level);
 }
 
@@ -178,25 +208,11 @@ SolveReport solveLaplace(const std::string& name, const std::vector<uint8_t>& fi
         if (c->box.size != components.front()->box.size || c->values.size() != fixed.size())
             throw InternalError("curves: the components and mask of a linear solve differ in size");
     const Box box{glm::ivec3(0), components.front()->box.size};
+    const std::vector<MultigridLevel> shapes = multigridLevels(box.size);
+    std::vector<std::vector<uint8_t>> masks = multigridMasks(shapes, fixed);
     std::vector<Level> levels;
-    levels.push_back(Level{box, glm::ivec3(0), glm::vec3(1.0f), fixed, {}, {}});
-    for (;;) {
-        const Level& fine = levels.back();
-        const glm::ivec3 halved = halvedAxes(fine.box);
-        if (halved == glm::ivec3(0)) break;
-        const glm::ivec3 scale = fine.scale + halved;
-        const Box coarse{glm::ivec3(0), (fine.box.size + halved) >> halved};
-        const glm::vec3 weight(std::ldexp(1.0f, -2 * scale.x), std::ldexp(1.0f, -2 * scale.y), std::ldexp(1.0f, -2 * scale.z));
-        Level next{coarse, scale, weight, std::vector<uint8_t>(coarse.cellCount(), 0), {}, {}};
-        for (int32_t z = 0; z < fine.box.size.z; ++z)
-            for (int32_t y = 0; y < fine.box.size.y; ++y)
-                for (int32_t x = 0; x < fine.box.size.x; ++x)
-                    if (fine.fixed[fine.box.index(x, y, z)]) {
-                        const glm::ivec3 p = parentOf(halved, x, y, z);
-                        next.fixed[coarse.index(p.x, p.y, p.z)] = 1;
-                    }
-        levels.push_back(std::move(next));
-    }
+    for (size_t l = 0; l < shapes.size(); ++l)
+        levels.push_back(Level{Box{glm::ivec3(0), shapes[l].size}, shapes[l].weight, std::move(masks[l]), {}, {}});
 
     // Full multigrid start: Dirichlet values restricted to every level (mean of the fixed
     // children), free cells 0; solve the coarsest, then prolongate and V-cycle level by level.

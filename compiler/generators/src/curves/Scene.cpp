@@ -20,8 +20,8 @@ bool namesMaterial(const std::vector<FeatureCurve>& curves) {
 
 } // namespace
 
-SolveTable solveScene(const Scene& scene, const Limits& limits) {
-    const Result solved = runCurves(scene.curves, scene.box, scene.options, limits);
+SolveTable solveScene(const Scene& scene, const Limits& limits, const LinearSolver& solver) {
+    const Result solved = runCurves(scene.curves, scene.box, scene.options, limits, solver);
     // The builtin's own evaluation, so the displacement is the function a field would call.
     const FunctionInfo* warped = findFunction("warped_fbm");
     VOXC_ASSERT(warped != nullptr);

@@ -5,6 +5,7 @@
 #include "voxc/program/Semantics.h"
 #include "voxc/program/SolveTable.h"
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -135,6 +136,29 @@ struct StagePlan {
     bool writesDensities = true;
     std::optional<uint8_t> material; // Stage::material, when the stage writes one
     std::optional<GrammarPlan> grammar; // the sweeps, repeated grammar->iterations times
+};
+
+// The dispatch shape of a global solve (docs/architecture.md, "Stage kinds"), kind-free: kernels
+// over a few dense storage buffers (binding b = buffers[b]; domain-major, so the result does not
+// depend on chunks), run as `prologue` once, then `cycle` repeated while the convergence measure
+// is above `tolerance`, at most `maxCycles` times. Levels, ping-pong halves and colours are data of
+// the steps (their push words), so a multigrid V-cycle (smoothing, restriction, prolongation
+// between levels) and a fixed-sweep Jacobi schedule are both a list of steps. Each step waits for
+// the one before it. The measure: buffers[measureBuffer] word 0 cleared to 0, then `measure` run,
+// then that word read back as a float (after the prologue and after every cycle).
+struct SolveStep {
+    uint32_t kernel = 0;                // index into SolveProgram::kernels
+    uint32_t groups[3] = {1, 1, 1};     // workgroups per axis
+    std::array<int32_t, 16> push{};     // the kernel's push-constant block (64 bytes)
+};
+
+struct SolveProgram {
+    std::vector<Kernel> kernels;        // SPIR-V; push constants are SolveStep::push
+    std::vector<uint64_t> bufferWords;  // 32-bit words of each storage buffer, binding = index
+    std::vector<SolveStep> prologue, cycle, measure;
+    uint32_t measureBuffer = 0;
+    float tolerance = 0.0f;
+    int32_t maxCycles = 0;
 };
 
 struct KernelPackage {

@@ -71,6 +71,7 @@ public:
 
 private:
     friend class VulkanExecutor;
+    friend class VulkanSolveRunner;
     std::unique_ptr<Impl> impl_;
 };
 

@@ -6,6 +6,9 @@
 #include "voxc/generators/curves/Multigrid.h"
 #include "voxc/generators/curves/Propagate.h"
 
+#include <string>
+#include <utility>
+
 namespace voxc::curves {
 
 enum class NormalMode { Laplace, PeronaMalik };
@@ -26,12 +29,18 @@ struct Result {
     SurfaceField surface;               // raw S
     Field3 smoothed;                    // S after smoothPasses
     std::vector<SolveReport> solves;    // normals (laplace mode), parameters
+    // Wall time of each part in order ("voxelize", "normals", "parameters", "material", "surface",
+    // "smoothing"), for reports and benchmarks only: nothing computed depends on it.
+    std::vector<std::pair<std::string, double>> phaseMs;
 };
 
-// Validates options (ParameterError, LimitError) and runs the stages on given constraints.
-Result solveCurves(const Constraints& constraints, const Options& options, const Limits& limits);
+// Validates options (ParameterError, LimitError) and runs the stages on given constraints; the
+// linear solves (normals in laplace mode, parameters) through `solver` (empty: solveLaplace).
+Result solveCurves(const Constraints& constraints, const Options& options, const Limits& limits,
+                   const LinearSolver& solver = {});
 
 // voxelize then solveCurves.
-Result runCurves(const std::vector<FeatureCurve>& curves, const Box& box, const Options& options, const Limits& limits);
+Result runCurves(const std::vector<FeatureCurve>& curves, const Box& box, const Options& options, const Limits& limits,
+                 const LinearSolver& solver = {});
 
 } // namespace voxc::curves

@@ -5,6 +5,7 @@
 #include "voxc/generators/curves/Grid.h"
 #include "voxc/generators/curves/Limits.h"
 
+#include <functional>
 #include <string>
 
 namespace voxc::curves {
@@ -16,11 +17,31 @@ struct SolveReport {
     int32_t cycles() const { return int32_t(residuals.size()) - 1; }
 };
 
+// The schedule's constants: V(3,3) cycles, 50 red-black sweeps on the coarsest level.
+inline constexpr int32_t kPreSmooth = 3, kPostSmooth = 3, kCoarsestSweeps = 50;
+
+// One level of the hierarchy, finest first: its size, the axes the next (coarser) level halves
+// (none on the coarsest) and its stencil weight per axis (1 / cell width^2 in finest cells, exact).
+struct MultigridLevel {
+    glm::ivec3 size{1};
+    glm::ivec3 halved{0};
+    glm::vec3 weight{1.0f};
+};
+std::vector<MultigridLevel> multigridLevels(glm::ivec3 size);
+// Every level's Dirichlet mask: a coarse cell is fixed iff any child is.
+std::vector<std::vector<uint8_t>> multigridMasks(const std::vector<MultigridLevel>& levels,
+                                                 const std::vector<uint8_t>& fixed);
+
 // Solves the components together: one schedule, one cycle count, stopped when the largest
 // residual of any component is <= tolerance (so a uniform constraint direction stays exact).
 // Cells with fixed[i] != 0 keep their values bitwise. Throws ConvergenceError past the cap.
 SolveReport solveLaplace(const std::string& name, const std::vector<uint8_t>& fixed, std::vector<Field3*> components,
                          float tolerance, const Limits& limits);
+
+// How a curves solve runs its linear solves: solveLaplace on the host, or the same schedule on a
+// Vulkan device (voxc/vulkan/GpuMultigrid.h), bit for bit on lavapipe.
+using LinearSolver = std::function<SolveReport(const std::string& name, const std::vector<uint8_t>& fixed,
+                                               std::vector<Field3*> components, float tolerance, const Limits& limits)>;
 
 // max over free cells of |sum_j (u_j - u_i)|, the quantity the schedule stops on.
 float maxResidual(const std::vector<uint8_t>& fixed, const Field3& u);

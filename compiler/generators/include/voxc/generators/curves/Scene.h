@@ -19,7 +19,8 @@ struct Scene {
 // seed reaches the cell), D = alpha * warped_fbm(f0 * p, beta, 0, 0, seed) at the cell's
 // grid-local voxel p (0 where alpha is 0), all in float32 in that order; the material is the
 // propagated one where the density is >= 0.5, else 0, and is left empty when no constraint
-// point names a material. Throws ParameterError, LimitError and ConvergenceError.
-SolveTable solveScene(const Scene& scene, const Limits& limits);
+// point names a material. Throws ParameterError, LimitError and ConvergenceError. The linear
+// solves run through `solver` (empty: the host's solveLaplace).
+SolveTable solveScene(const Scene& scene, const Limits& limits, const LinearSolver& solver = {});
 
 } // namespace voxc::curves
