@@ -163,7 +163,7 @@ VoxelState startVoxel(const Program& program, glm::ivec3 local) {
     const glm::ivec3 world = program.world.origin + local;
     VoxelState voxel;
     for (const StartShape& shape : program.start) {
-        if (!shapeInfo(shape.kind).inside(shape, local, world, program.world.seed)) continue;
+        if (!shapeInfo(shape.kind).inside(shape, program.world.localBase + local, world, program.world.seed)) continue;
         voxel.density = shape.value;
         if (shape.material) voxel.material = *shape.material;
     }

@@ -43,11 +43,13 @@ std::string constantGlsl(const FieldNode& node) {
     return "?";
 }
 
-std::string inputGlsl(FieldInput input) {
+// x, y, z are the grid index plus World::localBase (0 but in a region grid), summed as integers.
+std::string inputGlsl(FieldInput input, glm::ivec3 localBase) {
     const int axis = int(input) % 3;
     const bool world = input >= FieldInput::WorldX;
     const bool perColumn = axis != 1;
     const char* vector = world ? (perColumn ? "columnWorld" : "world") : (perColumn ? "columnLocal" : "local");
+    if (!world && localBase[axis] != 0) return fmt::format("float({}.{} + ({}))", vector, "xyz"[axis], localBase[axis]);
     return fmt::format("float({}.{})", vector, "xyz"[axis]);
 }
 
@@ -76,7 +78,7 @@ FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::s
         switch (node.kind) {
         case FieldNode::Kind::Constant: break;
         case FieldNode::Kind::Input:
-            value = inputGlsl(node.input);
+            value = inputGlsl(node.input, module.world.localBase);
             what = std::array{"x", "y", "z", "wx", "wy", "wz"}[int(node.input)];
             break;
         case FieldNode::Kind::Component:

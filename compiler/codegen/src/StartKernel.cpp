@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <glm/vector_relational.hpp>
 
 namespace voxc::codegen {
 
@@ -32,6 +33,10 @@ std::string startKernelSource(const ir::IrModule& module, std::string_view sourc
         const std::string material = shape.material ? fmt::format(" material {}", *shape.material) : "";
         header += fmt::format("  {} value {}{} ({})\n", info.name, glslFloat(shape.value), material, where);
         shapes += fmt::format("// {} ({})\n{{\n", info.name, where);
+        // A region grid (World::localBase) tests the shape at the file's grid-local voxel.
+        const glm::ivec3 base = module.world.localBase;
+        if (base != glm::ivec3(0))
+            shapes += fmt::format("    ivec3 local = local + ivec3({}, {}, {});\n", base.x, base.y, base.z);
         if (info.columnGlsl) {
             columns += fmt::format("float column{} = {}; // {} ({})\n", i, info.columnGlsl(shape), info.name, where);
             shapes += fmt::format("    float column = column{};\n", i);

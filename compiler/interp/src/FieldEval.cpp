@@ -8,8 +8,8 @@
 
 namespace voxc {
 
-FieldEvaluator::FieldEvaluator(const Field& field, glm::ivec3 origin)
-    : field_(field), origin_(origin), functions_(field.nodes.size(), nullptr), values_(field.nodes.size()) {
+FieldEvaluator::FieldEvaluator(const Field& field, glm::ivec3 origin, glm::ivec3 localBase)
+    : field_(field), origin_(origin), localBase_(localBase), functions_(field.nodes.size(), nullptr), values_(field.nodes.size()) {
     VOXC_ASSERT(field.root < field.nodes.size());
     size_t maxOperands = 0;
     for (size_t i = 0; i < field.nodes.size(); ++i) {
@@ -39,7 +39,7 @@ const std::vector<Value>& FieldEvaluator::evaluate(glm::ivec3 local) {
         case FieldNode::Kind::Input: {
             const int axis = int(node.input) % 3;
             const bool isWorld = node.input >= FieldInput::WorldX;
-            out = Value::makeFloat(float(isWorld ? world[axis] : local[axis]));
+            out = Value::makeFloat(float(isWorld ? world[axis] : localBase_[axis] + local[axis]));
             break;
         }
         case FieldNode::Kind::Component:
@@ -61,7 +61,7 @@ const std::vector<Value>& FieldEvaluator::evaluate(glm::ivec3 local) {
 void runField(const Program& program, const Stage& stage, DenseGrid& grid, NonFiniteCount* nonFinite) {
     VOXC_ASSERT(stage.kind == Stage::Kind::Field && stage.index < program.fields.size());
     VOXC_ASSERT(grid.size() == program.world.size);
-    FieldEvaluator evaluator(program.fields[stage.index], program.world.origin);
+    FieldEvaluator evaluator(program.fields[stage.index], program.world.origin, program.world.localBase);
     NonFiniteCount uncounted;
     NonFiniteCount& replaced = nonFinite ? *nonFinite : uncounted;
     const glm::ivec3 size = grid.size();

@@ -44,9 +44,11 @@ PhaseAnchors phaseAnchors(const Grammar& grammar, const Sweep& sweep, int phase)
     for (int axis = 0; axis < 3; ++axis) {
         const int n = sweep.anchorCount[axis];
         const int m = sweep.phaseCount[axis];
-        anchors.start[axis] = grammar.boundsMin[axis] + residue[axis] * grammar.stride[axis];
+        // The first anchor here whose declared number is residue mod m.
+        const int first = ((residue[axis] - grammar.firstAnchor[axis]) % m + m) % m;
+        anchors.start[axis] = grammar.boundsMin[axis] + first * grammar.stride[axis];
         anchors.step[axis] = m * grammar.stride[axis];
-        anchors.count[axis] = residue[axis] < n ? (n - residue[axis] + m - 1) / m : 0;
+        anchors.count[axis] = first < n ? (n - first + m - 1) / m : 0;
     }
     return anchors;
 }

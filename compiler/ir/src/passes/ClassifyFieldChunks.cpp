@@ -27,7 +27,7 @@ Interval rootInterval(const World& world, const IrField& field, glm::ivec3 local
             break;
         case FieldNode::Kind::Input: {
             const int axis = int(node.input) % 3;
-            const int shift = node.input >= FieldInput::WorldX ? world.origin[axis] : 0;
+            const int shift = node.input >= FieldInput::WorldX ? world.origin[axis] : world.localBase[axis];
             // The evaluator converts the integer coordinate to float: monotone, so the
             // converted ends bound every converted coordinate (even past 2^24).
             const double lo = double(float(int64_t(localMin[axis]) + shift));

@@ -40,6 +40,13 @@ int64_t newKernels(const Program& program, const Stage& stage, std::set<std::str
     return seen.insert(kernelName(program, stage)).second ? 1 : 0;
 }
 
+// The table was solved over the block's declared box when the file was checked, so the stage
+// samples it by position and combines it with the voxel's own density.
+StageRadius dependencyRadius(const Program& program, const Stage& stage) {
+    return {glm::ivec3(0), fmt::format("a table solved once over the {} block's box, sampled by position",
+                                       tableOf(program, stage).source)};
+}
+
 // The checker keeps the box inside the grid, and every table value is a finite float in [0, 1].
 void interpret(const Program& program, const Stage& stage, DenseGrid& grid, const InterpOptions&, NonFiniteCount*) {
     const SolveTable& table = tableOf(program, stage);
@@ -154,6 +161,6 @@ void plan(PlanContext& context, const Stage& stage, StagePlan& plan) {
 } // namespace
 
 const StageKind kCurvesStage{Stage::Kind::Curves, "curves", label,     readsDensities, writesMaterials, estimateWork,
-                             newKernels,          interpret, addKernels, plan};
+                             newKernels,          dependencyRadius, interpret, addKernels, plan};
 
 } // namespace voxc::stages

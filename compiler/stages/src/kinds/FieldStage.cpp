@@ -43,6 +43,11 @@ int64_t newKernels(const Program& program, const Stage& stage, std::set<std::str
     return seen.insert(kernelName(program, program.fields[stage.index].name, stage)).second ? 1 : 0;
 }
 
+// A field is a function of position (point sets and features were made when the file was checked).
+StageRadius dependencyRadius(const Program&, const Stage&) {
+    return {glm::ivec3(0), "the field is a function of position, combined with the voxel's own density"};
+}
+
 void interpret(const Program& program, const Stage& stage, DenseGrid& grid, const InterpOptions&,
                NonFiniteCount* nonFinite) {
     runField(program, stage, grid, nonFinite);
@@ -82,6 +87,6 @@ void plan(PlanContext& context, const Stage& stage, StagePlan& plan) {
 } // namespace
 
 const StageKind kFieldStage{Stage::Kind::Field, "field", label,     readsDensities, writesMaterials, estimateWork,
-                            newKernels,         interpret, addKernels, plan};
+                            newKernels,         dependencyRadius, interpret, addKernels, plan};
 
 } // namespace voxc::stages

@@ -1,5 +1,6 @@
 // A grammar stage: every iteration runs the grammar's sweeps, each a kernel dispatched once per
 // phase (with tile skipping, after an active-tiles kernel that lists where a rule may match).
+#include "GrammarCone.h"
 #include "Kinds.h"
 
 #include <fmt/format.h>
@@ -43,6 +44,14 @@ StageWork estimateWork(const Program& program, const Stage& stage, double) {
 int64_t newKernels(const Program& program, const Stage& stage, std::set<std::string>& seen) {
     if (!seen.insert(fmt::format("grammar {}", stage.index)).second) return 0;
     return int64_t(orderSweeps(program.grammars[stage.index]).size());
+}
+
+StageRadius dependencyRadius(const Program& program, const Stage& stage) {
+    const Grammar& grammar = program.grammars.at(stage.index);
+    const glm::ivec3 radius = grammarConeRadius(grammar, program.world.size - 1);
+    return {radius, fmt::format("{} iteration{} of {} (per axis, the windows of every phase a voxel's value "
+                                "passes through, last phase first)",
+                                grammar.iterations, grammar.iterations == 1 ? "" : "s", describeSweeps(grammar))};
 }
 
 void interpret(const Program& program, const Stage& stage, DenseGrid& grid, const InterpOptions& options,
@@ -111,6 +120,6 @@ void plan(PlanContext& context, const Stage& stage, StagePlan& plan) {
 } // namespace
 
 const StageKind kGrammarStage{Stage::Kind::Grammar, "grammar", label,     readsDensities, writesMaterials, estimateWork,
-                              newKernels,           interpret, addKernels, plan};
+                              newKernels,           dependencyRadius, interpret, addKernels, plan};
 
 } // namespace voxc::stages

@@ -43,6 +43,16 @@ int64_t newKernels(const Program& program, const Stage& stage, std::set<std::str
     return int64_t(seen.insert(std::string(kMaskKernel)).second) + int64_t(seen.insert(growKernelName(program, stage)).second);
 }
 
+// A column's features grow from the closed air runs of that column (hoodoos: also of the columns
+// at x - 1 and z - 1), and a run reaches as far up and down as the air does: the whole column.
+StageRadius dependencyRadius(const Program& program, const Stage& stage) {
+    const bool hoodoo = declared(program, stage).params.kind == SpeleothemKind::Hoodoo;
+    const int32_t across = hoodoo ? 1 : 0;
+    return {glm::ivec3(across, program.world.size.y - 1, across),
+            hoodoo ? "the air runs of its whole column and of the columns at x - 1 and z - 1"
+                   : "the air runs of its whole column"};
+}
+
 void interpret(const Program& program, const Stage& stage, DenseGrid& grid, const InterpOptions&, NonFiniteCount*) {
     const SpeleothemStage& s = declared(program, stage);
     SpeleothemParams params = s.params;
@@ -98,6 +108,6 @@ void plan(PlanContext& context, const Stage& stage, StagePlan& plan) {
 } // namespace
 
 const StageKind kSpeleothemStage{Stage::Kind::Speleothems, "speleothems", label, readsDensities, writesMaterials,
-                                 estimateWork, newKernels, interpret, addKernels, plan};
+                                 estimateWork, newKernels, dependencyRadius, interpret, addKernels, plan};
 
 } // namespace voxc::stages

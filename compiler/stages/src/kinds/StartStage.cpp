@@ -28,6 +28,11 @@ StageWork estimateWork(const Program& program, const Stage& stage, double voxels
 // Compiling the start kernel is not counted against Limits::maxKernels: every program has one.
 int64_t newKernels(const Program&, const Stage&, std::set<std::string>&) { return 0; }
 
+// Every shape is a function of the voxel's position (the heightfield of its world x and z).
+StageRadius dependencyRadius(const Program&, const Stage&) {
+    return {glm::ivec3(0), "each voxel's shapes are functions of its position alone"};
+}
+
 // Shape values are finite literals within +-1e6 (E0007), so nothing is replaced.
 void interpret(const Program& program, const Stage&, DenseGrid& grid, const InterpOptions&, NonFiniteCount*) {
     grid = evaluateStart(program);
@@ -56,6 +61,6 @@ void plan(PlanContext& context, const Stage&, StagePlan& plan) {
 } // namespace
 
 const StageKind kStartStage{Stage::Kind::Start, "start", label,     readsDensities, writesMaterials, estimateWork,
-                            newKernels,         interpret, addKernels, plan};
+                            newKernels,         dependencyRadius, interpret, addKernels, plan};
 
 } // namespace voxc::stages

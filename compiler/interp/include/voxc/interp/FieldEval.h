@@ -14,9 +14,10 @@ namespace voxc {
 // Evaluates one field at voxels, reusing its buffers: no allocation per voxel.
 class FieldEvaluator {
 public:
-    FieldEvaluator(const Field& field, glm::ivec3 origin);
+    // `localBase`: World::localBase, the file's grid-local coordinate of grid voxel (0,0,0).
+    FieldEvaluator(const Field& field, glm::ivec3 origin, glm::ivec3 localBase = glm::ivec3(0));
 
-    // The value of every node at grid-local voxel `local` (inputs: x = float(local.x),
+    // The value of every node at grid voxel `local` (inputs: x = float(localBase.x + local.x),
     // wx = float(origin.x + local.x), ...); the root's value is `values()[field.root]`.
     const std::vector<Value>& evaluate(glm::ivec3 local);
     float density(glm::ivec3 local) { return evaluate(local)[field_.root].v.x; }
@@ -24,6 +25,7 @@ public:
 private:
     const Field& field_;
     glm::ivec3 origin_;
+    glm::ivec3 localBase_;
     std::vector<const FunctionInfo*> functions_; // per node, Call nodes only
     std::vector<Value> values_;
     std::vector<Value> arguments_;

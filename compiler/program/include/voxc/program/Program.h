@@ -76,6 +76,10 @@ struct Grammar {
     glm::ivec3 stride{1, 1, 1};
     glm::ivec3 boundsMin{0, 0, 0}; // grid-local, half-open, already clipped to the grid
     glm::ivec3 boundsMax{0, 0, 0};
+    // The anchor at boundsMin is number firstAnchor of the declared bounds' anchors (per axis):
+    // 0, except in a region grid (voxc/stages/Region.h) that starts past the declared bounds'
+    // min, so phases stay the declared ones (n mod ceil(size / stride) of the declared n).
+    glm::ivec3 firstAnchor{0, 0, 0};
     int32_t iterations = 1;
     std::optional<float> clampMin; // clamp applies to every value a transform writes
     std::optional<float> clampMax;
@@ -115,6 +119,11 @@ struct StartShape {
 struct World {
     glm::ivec3 size{64, 64, 64};
     glm::ivec3 origin{0, 0, 0}; // world coordinate of grid voxel (0,0,0)
+    // The file's grid-local coordinate of grid voxel (0,0,0): 0 for the declared grid; a region
+    // grid's corner inside it otherwise (voxc/stages/Region.h). Positions a file writes in grid-local
+    // voxels (start shapes, x/y/z, features) are grid index + localBase, so a region computes what
+    // the declared grid computes there.
+    glm::ivec3 localBase{0, 0, 0};
     int32_t chunkSize = 32;     // power of two, 8..64
     uint32_t seed = 0;
 };

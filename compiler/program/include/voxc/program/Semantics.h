@@ -6,7 +6,8 @@
 //   volumes in the declaration order of their first rule.
 // - Anchors are boundsMin + n*stride for every n whose window lies inside the half-open bounds.
 // - A sweep's anchors split into phases by n mod ceil(size/stride) per axis, so the windows of
-//   one phase never overlap. Phases run x fastest, then y, then z; each reads the previous result.
+//   one phase never overlap. n counts from the declared bounds' min (Grammar::firstAnchor), so a
+//   region grid runs the declared grid's phases. Phases run x fastest, then y, then z; each reads the previous result.
 // - Among matching rules the highest priority wins; ties are drawn by weight with
 //   anchorHash(RuleChoice); the chosen rule then fires with its probability (anchorHash(Probability)).
 #include "voxc/program/Program.h"

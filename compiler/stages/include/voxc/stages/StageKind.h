@@ -29,6 +29,15 @@ struct StageWork {
     std::string what; // how the work is made up, for that message
 };
 
+// How far a voxel's value after a stage can depend on the grid before it: every grid voxel
+// within `radius` of it per axis (a box), the farthest such voxel found on some grid. 0 for a
+// pure function of position; capped at world size - 1 (the whole world along that axis, e.g. a
+// column stage's y). Regions and tiles compute a halo of the pipeline's sum (voxc/stages/Region.h).
+struct StageRadius {
+    glm::ivec3 radius{0};
+    std::string why; // how it is made up, for `voxc check --explain-halo`
+};
+
 // What the records share while one package is built.
 struct PlanContext {
     const Program& program;
@@ -55,6 +64,7 @@ struct StageKind {
     StageWork (*estimateWork)(const Program& program, const Stage& stage, double voxels);
     // Kernels the stage adds to those `seen` keys name (Limits::maxKernels); records its keys there.
     int64_t (*newKernels)(const Program& program, const Stage& stage, std::set<std::string>& seen);
+    StageRadius (*dependencyRadius)(const Program& program, const Stage& stage);
 
     // Interpretation: runs the stage on the grid in place.
     void (*interpret)(const Program& program, const Stage& stage, DenseGrid& grid, const InterpOptions& options,
