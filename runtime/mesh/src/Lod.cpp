@@ -396,7 +396,9 @@ public:
                     auto subEdgeVertex = [&](const tc::SubEdge& e) {
                         return vertexOf(pointWorld(e.lower), e.axis, e.halfSteps == 2 ? plan.level : plan.level - 1);
                     };
-                    // A fanned loop's centre: the mean of its vertices, their normals averaged.
+                    // A fanned loop's centre: the mean of its vertices moved a quarter of the way to
+                    // the cell's centre, strictly inside the cell (a loop can lie flat in a face, and
+                    // its mean on a neighbour's edge), their normals averaged.
                     for (size_t loop = 0; loop < cellCase.centredLoops.size(); ++loop) {
                         glm::vec3 sum(0.0f), normal(0.0f);
                         for (const tc::SubEdge& e : cellCase.centredLoops[loop]) {
@@ -405,7 +407,9 @@ public:
                             normal += v.normal;
                         }
                         const float length = glm::length(normal);
-                        out.vertices.push_back({keys_.loopCentre(cell, int(loop), plan.level), sum / float(cellCase.centredLoops[loop].size()),
+                        const glm::vec3 mean = sum / float(cellCase.centredLoops[loop].size());
+                        const glm::vec3 cellCentre = glm::vec3(cell) + 0.5f * float(step);
+                        out.vertices.push_back({keys_.loopCentre(cell, int(loop), plan.level), mean + 0.25f * (cellCentre - mean),
                                                 length > 0.0f ? normal / length : glm::vec3(0.0f, 1.0f, 0.0f), material});
                     }
                     for (size_t i = 0; i < cellCase.corners.size(); i += 3) {

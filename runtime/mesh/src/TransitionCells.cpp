@@ -94,11 +94,9 @@ CellTriangles deriveCell(uint32_t points, uint32_t solid) {
     VOXC_ASSERT(validShape(points) && (solid & ~points) == 0);
     const std::vector<std::vector<int>> rings = facets(points);
 
-    // Which facets each sub-edge lies on (two, as the surface of a polyhedron), and the segments:
-    // on each ring, a run of solid points is cut off by a segment from the crossing where the ring
+    // The segments: on each ring, a run of solid points is cut off by a segment from the crossing where the ring
     // enters it to the crossing where it leaves, so the solid lies to the segment's right seen
     // from outside (the regular table's orientation: loops counter-clockwise seen from air).
-    std::array<std::vector<int>, kSubEdgeIds> facetsOf;
     std::array<int, kSubEdgeIds> next;
     next.fill(-1);
     for (size_t f = 0; f < rings.size(); ++f) {
@@ -106,7 +104,6 @@ CellTriangles deriveCell(uint32_t points, uint32_t solid) {
         const size_t n = ring.size();
         auto isSolid = [&](size_t i) { return bool((solid >> ring[i % n]) & 1u); };
         auto edgeAfter = [&](size_t i) { return subEdgeId(subEdgeBetween(ring[i % n], ring[(i + 1) % n])); };
-        for (size_t i = 0; i < n; ++i) facetsOf[size_t(edgeAfter(i))].push_back(int(f));
         for (size_t i = 0; i < n; ++i) {
             if (!isSolid(i) || isSolid(i + n - 1)) continue; // not where a solid run starts (an all-solid ring has none)
             size_t j = i;
@@ -129,15 +126,19 @@ CellTriangles deriveCell(uint32_t points, uint32_t solid) {
         }
         VOXC_ASSERT(next[size_t(loop.back())] == start);
 
-        // Optimal triangulation of the loop: no chord between two vertices of one facet (the cell
-        // across it could use that chord too), no triangle whose vertices are collinear at the
+        // Optimal triangulation of the loop: no chord between two vertices on one face of the cube
+        // (a chord inside the cell is this cell's alone), no triangle whose vertices are collinear at the
         // sub-edges' midpoints (where binary 0/1 samples put them: a loop along a refined face can
         // run straight through several), then the least total chord length.
         const size_t n = loop.size();
         constexpr float kForbidden = std::numeric_limits<float>::infinity();
-        auto shareFacet = [&](int a, int b) {
-            for (int f : facetsOf[size_t(a)])
-                if (std::find(facetsOf[size_t(b)].begin(), facetsOf[size_t(b)].end(), f) != facetsOf[size_t(b)].end()) return true;
+        // Two vertices on one face of the cube: the chord between them lies in that face, where
+        // the cell across it (or, along a split edge, three other cells) may use it as well.
+        auto shareFace = [&](int a, int b) {
+            const SubEdge ea = subEdgeOf(a), eb = subEdgeOf(b);
+            const glm::ivec3 pa = pointOffset(ea.lower), pb = pointOffset(eb.lower);
+            for (int axis = 0; axis < 3; ++axis)
+                if (axis != ea.axis && axis != eb.axis && pa[axis] == pb[axis] && pa[axis] != 1) return true;
             return false;
         };
         auto collinear = [&](int a, int b, int c) {
@@ -146,7 +147,7 @@ CellTriangles deriveCell(uint32_t points, uint32_t solid) {
         };
         auto chordCost = [&](size_t i, size_t j) {
             if (j == i + 1 || (i == 0 && j == n - 1)) return 0.0f;
-            if (shareFacet(loop[i], loop[j])) return kForbidden;
+            if (shareFace(loop[i], loop[j])) return kForbidden;
             return glm::length(midpoint(subEdgeOf(loop[i])) - midpoint(subEdgeOf(loop[j])));
         };
         std::vector<float> cost(n * n, 0.0f);

@@ -19,7 +19,9 @@
 // by the two cells on either side, which see the same samples and apply the same rule, so their
 // cuts agree; on a plain square the rule is the regular table's. Segments are chained into loops
 // through the crossed sub-edges (each lies on exactly two facets) and every loop is triangulated
-// without a chord between two vertices of one facet, so no edge is used by more than two triangles,
+// without a chord between two vertices on one face of the cube (such a chord lies in the face, where
+// the cell across, or along a split edge three other cells, may draw it too: the regular table's
+// rule, there a face is one facet), so no edge is used by more than two triangles,
 // and without a triangle that is flat where binary samples put the vertices (sub-edge midpoints).
 // A loop that allows no such triangulation (a few, around cells with two or three refined faces) is
 // fanned from a vertex of its own at its centre, which keeps both promises.
@@ -45,8 +47,8 @@ struct SubEdge {
     bool operator==(const SubEdge&) const = default;
 };
 
-// A triangle corner: the vertex on a crossed sub-edge, or the centre of loop `loop` (the mean of
-// its vertices), which only that loop's fan uses.
+// A triangle corner: the vertex on a crossed sub-edge, or the centre of loop `loop` (a point
+// strictly inside the cell, near the mean of the loop's vertices), which only that loop's fan uses.
 struct CellVertex {
     SubEdge edge{};
     int8_t loop = -1; // >= 0: the centre of centredLoops[loop]
