@@ -8,6 +8,7 @@
 #include "voxc/core/Errors.h"
 #include "voxc/grid/Grid.h"
 #include "voxc/mesh/Export.h"
+#include "voxc/mesh/LodExport.h"
 #include "voxc/mesh/MarchingCubes.h"
 #include "voxc/mesh/MeshQuality.h"
 #include "voxc/mesh/SurfaceNets.h"
@@ -34,6 +35,8 @@ struct RunOptions {
     std::string meshOn; // "device" or "host"; empty: the device for mc, the host for surface nets
     bool validate = false;
     bool listDevices = false;
+    std::vector<int> lod;         // levels: one mesh each beside -o
+    std::vector<float> lodLayout; // with --lod: -o is the mixed-level mesh around this point
     WorldOverrides overrides;
 };
 
@@ -49,6 +52,10 @@ void run(const RunOptions& options) {
     if (!std::isfinite(options.iso)) throw UserError(fmt::format("--iso {}: the surface level must be a finite number", options.iso));
     if (options.meshOn == "device" && options.mesher != "mc")
         throw UserError("run: --mesh-on device: only marching cubes (--mesher mc) runs on the device; surface nets runs on the host");
+    if (!options.lod.empty() && (options.meshPath.empty() || options.mesher != "mc" || options.meshOn == "device"))
+        throw UserError("run: --lod meshes marching cubes on the host into files named after -o; give -o, and no "
+                        "--mesher surface-nets or --mesh-on device");
+    if (!options.lodLayout.empty() && options.lod.empty()) throw UserError("run: --lod-layout X,Y,Z needs --lod LEVELS");
     if (!options.voxelsPath.empty()) requireExtension(options.voxelsPath, {".npy"}, "voxel file");
     if (!options.materialsPath.empty()) requireExtension(options.materialsPath, {".npy"}, "material file");
     const std::string libraryPath = options.meshPath.ends_with(".obj") ? objMaterialLibraryPath(options.meshPath) : "";
@@ -88,7 +95,11 @@ void run(const RunOptions& options) {
         writeGridFiles(files, options.voxelsPath, options.materialsPath, dense);
     }
     std::string meshReport;
-    if (!options.meshPath.empty()) {
+    if (!options.lod.empty()) {
+        const std::optional<glm::vec3> centre =
+            options.lodLayout.empty() ? std::nullopt : std::optional(glm::vec3(options.lodLayout[0], options.lodLayout[1], options.lodLayout[2]));
+        meshReport = writeLodMeshes(files, voxels, {options.lod, centre, options.iso}, options.meshPath, program.materials);
+    } else if (!options.meshPath.empty()) {
         MeshStats stats;
         const bool marchingCubes = options.mesher == "mc";
         // Without shaderFloat64 the default falls back to the host mesher (the same mesh, bit for
@@ -148,6 +159,15 @@ void addRunCommand(CLI::App& app) {
                         "device (marching cubes on the Vulkan device, over its voxel buffer; the default for mc) or "
                         "host (the CPU mesher; always for surface-nets)")
         ->check(CLI::IsMember({"device", "host"}));
+    command->add_option("--lod", options->lod,
+                        "LEVELS, e.g. 0,1,2: write one marching-cubes mesh per level beside -o (x.lod1.glb), "
+                        "level k from every 2^k-th voxel")
+        ->delimiter(',');
+    command->add_option("--lod-layout", options->lodLayout,
+                        "X,Y,Z (with --lod): also write -o as one mesh of mixed levels, finer near the world point X,Y,Z, "
+                        "joined by transition cells")
+        ->delimiter(',')
+        ->expected(3);
     command->add_flag("--validate", options->validate, "Enable the Khronos validation layer; fail on any message");
     command->add_flag("--list-devices", options->listDevices, "List Vulkan devices and exit");
     addWorldOverrideFlags(*command, options->overrides);

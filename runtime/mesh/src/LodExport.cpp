@@ -47,7 +47,7 @@ std::string writeLodMeshes(OutputFiles& outputs, const ChunkedGrid& grid, const 
         const std::string path = lodMeshPath(meshPath, level);
         const Mesh mesh = meshLod(pyramid, LodLayout::uniform(grid.layout(), level), options);
         writeMesh(outputs, path, mesh, materials);
-        report += checkedReport(path, mesh, fmt::format("marching cubes, LOD {}, cells {} voxels wide", level, 1 << level));
+        report += checkedReport(path, mesh, fmt::format("marching cubes, LOD {}, cells {} voxel{} wide", level, 1 << level, level ? "s" : ""));
     }
     if (request.layoutCentre) {
         const glm::vec3 c = *request.layoutCentre;
