@@ -5,12 +5,14 @@
 #include "GridCompare.h"
 #include "ProgramText.h"
 #include "voxc/check/Check.h"
+#include "voxc/codegen/PackageWriter.h"
 #include "voxc/stages/Pipeline.h"
 #include "voxc/stages/Region.h"
 
 #include <fmt/format.h>
 #include <glm/common.hpp>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <random>
 
 namespace voxc {
@@ -56,6 +58,21 @@ pipeline { start; union f; drips; hoods; g; }
     EXPECT_LE(halo.stages[4].radius.x, 2 * 3 * 2);
     EXPECT_EQ(halo.radius, glm::min(halo.stages[3].radius + halo.stages[2].radius + halo.stages[4].radius,
                                     program.world.size - 1));
+}
+
+// `voxc compile` writes each stage's radius and the halo into manifest.json.
+TEST(DependencyRadius, IsInTheManifest) {
+    CheckResult checked = checkFile(fmt::format("{}/examples/speleothems.vox", VOXC_SOURCE_DIR));
+    ASSERT_FALSE(checked.hasErrors());
+    const Program& program = *checked.program;
+    const stages::PipelineHalo halo = stages::pipelineHalo(program);
+    const nlohmann::json manifest = nlohmann::json::parse(codegen::packageManifest(compileProgram(program)));
+    const auto vec = [](glm::ivec3 v) { return nlohmann::json::array({v.x, v.y, v.z}); };
+    EXPECT_EQ(manifest["world"]["halo"], vec(halo.radius));
+    EXPECT_EQ(halo.radius, glm::ivec3(1, program.world.size.y - 1, 1)); // the hoodoos' neighbours, whole columns
+    const nlohmann::json& stages = manifest["dispatch"]["stages"];
+    ASSERT_EQ(stages.size(), program.pipeline.size());
+    for (size_t i = 0; i < stages.size(); ++i) EXPECT_EQ(stages[i]["dependency_radius"], vec(halo.stages[i].radius));
 }
 
 // Solid spreads across whole windows both ways, so each end of a solid run moves exactly as a cone

@@ -223,6 +223,7 @@ Json stageJson(const KernelPackage& package, const StagePlan& stage) {
         json["iterations"] = stage.grammar->iterations;
         json["sweeps"] = sweeps;
     }
+    json["dependency_radius"] = vec(stage.dependencyRadius);
     return json;
 }
 
@@ -248,6 +249,7 @@ std::string packageManifest(const KernelPackage& package, const PackageSource& s
                        {"origin", vec(w.origin)},
                        {"chunk", w.chunkSize},
                        {"seed", w.seed},
+                       {"halo", vec(package.halo)},
                        {"chunk_table", Json{{"base", vec(w.origin >> chunkShift(w))},
                                             {"count", vec(chunkTableExtents(w))}}}}},
         {"uses_materials", package.usesMaterials},

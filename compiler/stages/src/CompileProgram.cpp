@@ -4,6 +4,7 @@
 #include "voxc/stages/StageKind.h"
 
 #include <filesystem>
+#include <glm/common.hpp>
 
 namespace voxc {
 
@@ -30,6 +31,8 @@ KernelPackage compileProgram(const Program& program, const CompileOptions& optio
         plan.label = stage.label;
         plan.material = stage.material;
         kind.plan(context, stage, plan);
+        plan.dependencyRadius = kind.dependencyRadius(program, stage).radius;
+        package.halo = glm::min(package.halo + plan.dependencyRadius, program.world.size - 1);
         package.stages.push_back(std::move(plan));
     }
     return package;

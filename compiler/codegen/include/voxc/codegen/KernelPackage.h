@@ -136,6 +136,8 @@ struct StagePlan {
     bool writesDensities = true;
     std::optional<uint8_t> material; // Stage::material, when the stage writes one
     std::optional<GrammarPlan> grammar; // the sweeps, repeated grammar->iterations times
+    // How far a voxel after the stage depends on voxels before it, per axis (stages::StageRadius).
+    glm::ivec3 dependencyRadius{0};
 };
 
 // The dispatch shape of a global solve (docs/architecture.md, "Stage kinds"), kind-free: kernels
@@ -167,6 +169,9 @@ struct KernelPackage {
     std::vector<Material> materials; // Program::materials, for the manifest's material table
     std::vector<Kernel> kernels;
     std::vector<StagePlan> stages;
+    // The stages' dependency radii summed, capped at world size - 1: the halo a region of the
+    // world is computed with (voxc/stages/Region.h).
+    glm::ivec3 halo{0};
     // Recomputes the density range of every stale tile, before each sweep when tiles are
     // skipped. kNoKernel: the package cannot skip tiles (every sweep runs over every anchor).
     uint32_t tileRangesKernel = kNoKernel;
