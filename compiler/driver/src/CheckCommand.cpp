@@ -1,5 +1,6 @@
 #include "Commands.h"
 #include "Common.h"
+#include "RegionOption.h"
 
 #include <iostream>
 
@@ -10,6 +11,7 @@ namespace {
 struct CheckOptions {
     std::string file;
     bool warningsAsErrors = false;
+    bool explainHalo = false;
     WorldOverrides overrides; // --max-work only
 };
 
@@ -20,9 +22,12 @@ void addCheckCommand(CLI::App& app) {
     CLI::App* command = app.add_subcommand("check", "Parse and type-check a .vox file; print diagnostics only");
     command->add_option("file", options->file, "The .vox file")->required();
     command->add_flag("--werror", options->warningsAsErrors, "Treat warnings as errors");
+    command->add_flag("--explain-halo", options->explainHalo,
+                      "Print each stage's dependency radius and the halo a --region is grown by");
     addMaxWorkFlag(*command, options->overrides);
     command->callback([options] {
-        loadProgram(options->file, options->overrides, options->warningsAsErrors);
+        const Program program = loadProgram(options->file, options->overrides, options->warningsAsErrors);
+        if (options->explainHalo) std::cout << explainHalo(program, options->file);
         std::cerr << options->file << ": ok\n";
     });
 }

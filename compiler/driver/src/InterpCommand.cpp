@@ -3,6 +3,7 @@
 #include "LsystemInputs.h"
 #include "NonFiniteReport.h"
 #include "OutputPaths.h"
+#include "RegionOption.h"
 #include "SolveReport.h"
 
 #include "voxc/core/Errors.h"
@@ -26,6 +27,7 @@ struct InterpOptions {
     std::optional<uint64_t> traceLimit;
     std::optional<std::string> traceLsystem;
     std::string slice;
+    std::string region;
     WorldOverrides overrides;
 };
 
@@ -55,10 +57,14 @@ SliceSpec parseSlice(const std::string& text, glm::ivec3 size) {
 
 void interpretFile(const InterpOptions& options) {
     std::vector<CheckedLsystem> lsystems;
-    const Program program = loadProgram(options.file, options.overrides, false, nullptr, &lsystems);
+    const RegionRun run = planRegionRun(loadProgram(options.file, options.overrides, false, nullptr, &lsystems),
+                                        options.region);
+    const Program& program = run.program;
     std::cerr << formatSolveReport(program, options.trace);
+    std::cerr << run.describe();
     std::optional<SliceSpec> slice;
-    if (!options.slice.empty()) slice = parseSlice(options.slice, program.world.size);
+    if (!options.slice.empty())
+        slice = parseSlice(options.slice, run.region ? run.region->size() : program.world.size);
 
     voxc::InterpOptions interpOptions;
     uint64_t printed = 0;
@@ -83,7 +89,7 @@ void interpretFile(const InterpOptions& options) {
     }
     std::vector<NonFiniteCount> nonFinite;
     interpOptions.nonFinite = &nonFinite;
-    const DenseGrid grid = interpret(program, interpOptions);
+    const DenseGrid grid = run.crop(interpret(program, interpOptions));
     std::vector<SourceLoc> stageLocs;
     for (const Stage& stage : program.pipeline) stageLocs.push_back(stage.loc);
     std::cerr << formatNonFiniteWarnings(program, options.file, stageLocs, nonFinite);
@@ -116,8 +122,12 @@ void addInterpCommand(CLI::App& app) {
                         "Trace only this lsystem's expansion: each choice of a production or macro substitute, and "
                         "the lengths (plain --trace traces every lsystem's)");
     command->add_option("--slice", options->slice, "Print one layer as text, e.g. y=12");
+    addRegionFlag(*command, options->region);
     addWorldOverrideFlags(*command, options->overrides);
     command->callback([options] {
+        if (!options->region.empty() && (options->trace || options->filter.rule || options->filter.grammar ||
+                                         options->filter.iteration || options->traceLimit))
+            throw UserError("interp: --region runs a grid of its own around the box; trace the whole world instead");
         if (!options->voxelsPath.empty()) requireExtension(options->voxelsPath, {".npy"}, "voxel file");
         if (!options->materialsPath.empty()) requireExtension(options->materialsPath, {".npy"}, "material file");
         const RolePath inputs[] = {{"the input", options->file}};

@@ -2,6 +2,7 @@
 #include "Common.h"
 #include "NonFiniteReport.h"
 #include "OutputPaths.h"
+#include "RegionOption.h"
 #include "SolveReport.h"
 
 #include "voxc/stages/Pipeline.h"
@@ -35,6 +36,7 @@ struct RunOptions {
     std::string meshOn; // "device" or "host"; empty: the device for mc, the host for surface nets
     bool validate = false;
     bool listDevices = false;
+    std::string region;
     std::vector<int> lod;         // levels: one mesh each beside -o
     std::vector<float> lodLayout; // with --lod: -o is the mixed-level mesh around this point
     WorldOverrides overrides;
@@ -50,6 +52,8 @@ void run(const RunOptions& options) {
         throw UserError("run: nothing to write; give -o MESH.ply|.obj|.glb, --voxels FILE.npy and/or --materials FILE.npy");
     if (!options.meshPath.empty()) requireExtension(options.meshPath, {".ply", ".obj", ".glb"}, "mesh file");
     if (!std::isfinite(options.iso)) throw UserError(fmt::format("--iso {}: the surface level must be a finite number", options.iso));
+    if (options.meshOn == "device" && !options.region.empty())
+        throw UserError("run: --mesh-on device meshes the device's whole grid; a --region is meshed on the host");
     if (options.meshOn == "device" && options.mesher != "mc")
         throw UserError("run: --mesh-on device: only marching cubes (--mesher mc) runs on the device; surface nets runs on the host");
     if (!options.lod.empty() && (options.meshPath.empty() || options.mesher != "mc" || options.meshOn == "device"))
@@ -66,13 +70,17 @@ void run(const RunOptions& options) {
                                 {"--materials", options.materialsPath}};
     refuseClashingPaths(inputs, outputs);
 
-    const Program program = loadProgram(options.file, options.overrides);
+    const RegionRun run = planRegionRun(loadProgram(options.file, options.overrides), options.region);
+    const Program& program = run.program;
     const KernelPackage package = compileProgram(program, {});
     std::cerr << formatSolveReport(program);
     VulkanContext context(ContextOptions{.device = options.device, .validation = options.validate});
     VulkanExecutor executor(context, package);
     const RunResult result = executor.run();
-    const ChunkedGrid& voxels = result.grid;
+    // A region's voxels, without its halo, mesh on the host.
+    const std::optional<ChunkedGrid> cropped = run.region ? std::optional(run.crop(result.grid)) : std::nullopt;
+    const ChunkedGrid& voxels = cropped ? *cropped : result.grid;
+    std::cerr << run.describe();
     std::cerr << fmt::format("device: {} ({})\n", context.device().name, deviceTypeName(context.device().type));
     std::cerr << fmt::format("grid {}x{}x{}, chunk {}, seed {}: {} dispatches, {:.1f} ms on device\n",
                              program.world.size.x, program.world.size.y, program.world.size.z,
@@ -105,8 +113,9 @@ void run(const RunOptions& options) {
         // Without shaderFloat64 the default falls back to the host mesher (the same mesh, bit for
         // bit); asking for the device explicitly is then GpuMarchingCubes' error.
         const bool deviceCanMesh = context.hasShaderFloat64();
-        const bool onDevice = marchingCubes && (options.meshOn == "device" || (options.meshOn.empty() && deviceCanMesh));
-        if (marchingCubes && options.meshOn.empty() && !deviceCanMesh)
+        const bool onDevice = marchingCubes && !run.region &&
+                              (options.meshOn == "device" || (options.meshOn.empty() && deviceCanMesh));
+        if (marchingCubes && options.meshOn.empty() && !deviceCanMesh && !run.region)
             std::cerr << fmt::format("voxc: note: the device '{}' has no shaderFloat64; marching cubes runs on the host\n",
                                      context.device().name);
         const MeshOptions meshOptions{.iso = options.iso};
@@ -170,6 +179,7 @@ void addRunCommand(CLI::App& app) {
         ->expected(3);
     command->add_flag("--validate", options->validate, "Enable the Khronos validation layer; fail on any message");
     command->add_flag("--list-devices", options->listDevices, "List Vulkan devices and exit");
+    addRegionFlag(*command, options->region);
     addWorldOverrideFlags(*command, options->overrides);
     command->callback([options] { run(*options); });
 }
