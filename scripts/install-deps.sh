@@ -2,7 +2,7 @@
 # Installs the Debian packages voxc needs, only those that are missing.
 set -euo pipefail
 packages=(
-  cmake g++ ninja-build pkg-config
+  cmake g++ ninja-build pkg-config make # make: examples/embed/Makefile (tests/pipeline)
   antlr4 libantlr4-runtime-dev
   glslang-dev glslang-tools spirv-tools
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers

@@ -1,5 +1,6 @@
 #include "Commands.h"
 #include "Common.h"
+#include "Console.h"
 #include "RegionOption.h"
 
 #include <iostream>
@@ -25,10 +26,11 @@ void addCheckCommand(CLI::App& app) {
     command->add_flag("--explain-halo", options->explainHalo,
                       "Print each stage's dependency radius and the halo a --region is grown by");
     addMaxWorkFlag(*command, options->overrides);
+    addConsoleFlags(*command);
     command->callback([options] {
         const Program program = loadProgram(options->file, options->overrides, options->warningsAsErrors);
         if (options->explainHalo) std::cout << explainHalo(program, options->file);
-        std::cerr << options->file << ": ok\n";
+        status() << options->file << ": ok\n";
     });
 }
 

@@ -12,5 +12,6 @@ void addExploreCommand(CLI::App& app);
 void addLsystemCommand(CLI::App& app);
 void addEvolveCommand(CLI::App& app);
 void addTerrainCommand(CLI::App& app);
+void addLspCommand(CLI::App& app);
 
 } // namespace voxc::driver

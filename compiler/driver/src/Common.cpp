@@ -1,10 +1,12 @@
 #include "Common.h"
+#include "Console.h"
 
 #include "voxc/check/Check.h"
 #include "voxc/core/Errors.h"
 #include "voxc/syntax/Diagnostics.h"
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <cstdlib>
 #include <fmt/format.h>
@@ -39,13 +41,20 @@ Program loadProgram(const std::string& path, const WorldOverrides& overrides, bo
     if (overrides.maxWork)
         options.limits.maxWork = *overrides.maxWork >= 9.2e18 ? INT64_MAX : int64_t(*overrides.maxWork);
     options.seed = overrides.seed;
+    const auto start = std::chrono::steady_clock::now();
     CheckResult result = checkFile(path, options);
+    const std::chrono::duration<double, std::milli> checkTime = std::chrono::steady_clock::now() - start;
+    printDiagnostics(result.diagnostics, result.source);
     size_t errors = 0;
     size_t warnings = 0;
-    for (const Diagnostic& diagnostic : result.diagnostics) {
-        std::cerr << render(diagnostic, result.source);
+    for (const Diagnostic& diagnostic : result.diagnostics)
         (diagnostic.severity == Severity::Error ? errors : warnings)++;
-    }
+    detail() << fmt::format("checked {} ({} bytes) in {:.1f} ms: {} error{}, {} warning{}\n", path,
+                            result.source.text().size(), checkTime.count(), errors, errors == 1 ? "" : "s", warnings,
+                            warnings == 1 ? "" : "s");
+    for (const CheckedLsystem& lsystem : result.lsystems)
+        if (!lsystem.rulesPath.empty())
+            detail() << fmt::format("lsystem {} imports the rule file {}\n", lsystem.name, lsystem.rulesPath);
     if (result.hasErrors() || !result.program)
         throw UserError(fmt::format("{}: {} error{}", path, errors, errors == 1 ? "" : "s"));
     if (warningsAsErrors && warnings > 0)
@@ -95,7 +104,7 @@ void writeGridFiles(OutputFiles& outputs, const std::string& voxelsPath, const s
 
 void reportWritten(std::initializer_list<std::string> paths) {
     for (const std::string& path : paths)
-        if (!path.empty()) std::cerr << "wrote " << path << "\n";
+        if (!path.empty()) status() << "wrote " << path << "\n";
 }
 
 } // namespace voxc::driver

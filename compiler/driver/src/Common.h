@@ -23,7 +23,7 @@ void addWorldOverrideFlags(CLI::App& command, WorldOverrides& overrides);
 // --max-work alone (for `check`, which runs nothing).
 void addMaxWorkFlag(CLI::App& command, WorldOverrides& overrides);
 
-// Parses and checks `path`, prints every diagnostic to stderr and throws UserError when there
+// Parses and checks `path`, prints every diagnostic to stderr (Console.h) and throws UserError when there
 // are errors (the message says how many). Applies the overrides to the checked program.
 // `sourceText`, when given, receives the text that was checked; `lsystems` the checked lsystem blocks.
 Program loadProgram(const std::string& path, const WorldOverrides& overrides, bool warningsAsErrors = false,
@@ -38,7 +38,7 @@ std::string formatMaterialCounts(const Program& program, const DenseGrid& grid, 
 void writeGridFiles(OutputFiles& outputs, const std::string& voxelsPath, const std::string& materialsPath,
                     const DenseGrid& grid);
 
-// "wrote PATH" on stderr for each non-empty path, after the set was committed.
+// "wrote PATH" on status() for each non-empty path, after the set was committed.
 void reportWritten(std::initializer_list<std::string> paths);
 
 // Output file names: the extension must be one of `extensions` (e.g. {".ply", ".obj"}).

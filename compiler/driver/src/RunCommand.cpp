@@ -1,5 +1,6 @@
 #include "Commands.h"
 #include "Common.h"
+#include "Console.h"
 #include "NonFiniteReport.h"
 #include "OutputPaths.h"
 #include "RegionOption.h"
@@ -73,7 +74,7 @@ void run(const RunOptions& options) {
     const RegionRun run = planRegionRun(loadProgram(options.file, options.overrides), options.region);
     const Program& program = run.program;
     const KernelPackage package = compileProgram(program, {});
-    std::cerr << formatSolveReport(program);
+    status() << formatSolveReport(program);
     VulkanContext context(ContextOptions{.device = options.device, .validation = options.validate});
     VulkanExecutor executor(context, package);
     const RunResult result = executor.run();
@@ -81,8 +82,8 @@ void run(const RunOptions& options) {
     const std::optional<ChunkedGrid> cropped = run.region ? std::optional(run.crop(result.grid)) : std::nullopt;
     const ChunkedGrid& voxels = cropped ? *cropped : result.grid;
     std::cerr << run.describe();
-    std::cerr << fmt::format("device: {} ({})\n", context.device().name, deviceTypeName(context.device().type));
-    std::cerr << fmt::format("grid {}x{}x{}, chunk {}, seed {}: {} dispatches, {:.1f} ms on device\n",
+    status() << fmt::format("device: {} ({})\n", context.device().name, deviceTypeName(context.device().type));
+    status() << fmt::format("grid {}x{}x{}, chunk {}, seed {}: {} dispatches, {:.1f} ms on device\n",
                              program.world.size.x, program.world.size.y, program.world.size.z,
                              program.world.chunkSize, program.world.seed, result.dispatches,
                              result.timings.executeMs);
@@ -90,7 +91,7 @@ void run(const RunOptions& options) {
     for (const StagePlan& stage : package.stages) stageLocs.push_back(stage.loc);
     std::cerr << formatNonFiniteWarnings(program, options.file, stageLocs, result.nonFinite);
     if (result.skip.enabled && result.skip.tilePhases > 0)
-        std::cerr << fmt::format("ran sweeps on {} of {} ({:.1f}%) {}^3-voxel tile-phases; the rest provably could not match\n",
+        status() << fmt::format("ran sweeps on {} of {} ({:.1f}%) {}^3-voxel tile-phases; the rest provably could not match\n",
                                  result.skip.activeTilePhases, result.skip.tilePhases,
                                  100.0 * double(result.skip.activeTilePhases) / double(result.skip.tilePhases),
                                  result.skip.tileSize);
@@ -99,7 +100,7 @@ void run(const RunOptions& options) {
     OutputFiles files;
     if (!options.voxelsPath.empty() || !options.materialsPath.empty() || program.usesMaterials()) {
         const DenseGrid dense = voxels.toDense();
-        if (program.usesMaterials()) std::cerr << formatMaterialCounts(program, dense, options.iso);
+        if (program.usesMaterials()) status() << formatMaterialCounts(program, dense, options.iso);
         writeGridFiles(files, options.voxelsPath, options.materialsPath, dense);
     }
     std::string meshReport;
@@ -139,7 +140,7 @@ void run(const RunOptions& options) {
     }
     files.commit();
     reportWritten({options.voxelsPath, options.materialsPath});
-    std::cerr << meshReport;
+    status() << meshReport;
     if (options.validate) {
         const std::vector<ValidationMessage> messages = context.validationMessages();
         std::cerr << fmt::format("validation layer: {} message{}\n", messages.size(), messages.size() == 1 ? "" : "s");
@@ -181,6 +182,7 @@ void addRunCommand(CLI::App& app) {
     command->add_flag("--list-devices", options->listDevices, "List Vulkan devices and exit");
     addRegionFlag(*command, options->region);
     addWorldOverrideFlags(*command, options->overrides);
+    addConsoleFlags(*command);
     command->callback([options] { run(*options); });
 }
 

@@ -1,11 +1,14 @@
 // voxc: the voxel grammar compiler. Exit codes: 0 success, 1 the user's error, 2 internal error.
 #include "Commands.h"
+#include "Console.h"
+#include "Depfile.h"
 
 #include "voxc/core/Errors.h"
 #include "voxc/core/TempFiles.h"
 
 #include <exception>
-#include <iostream>
+#include <string>
+#include <vector>
 
 int main(int argc, char** argv) {
     voxc::installTempFileCleanup(); // before any file is written
@@ -20,8 +23,12 @@ int main(int argc, char** argv) {
     voxc::driver::addLsystemCommand(app);
     voxc::driver::addEvolveCommand(app);
     voxc::driver::addTerrainCommand(app);
+    voxc::driver::addLspCommand(app);
+    std::vector<std::string> arguments = voxc::driver::spellDepfileFlagsLong(argc, argv);
+    std::vector<char*> argumentPointers;
+    for (std::string& argument : arguments) argumentPointers.push_back(argument.data());
     try {
-        app.parse(argc, argv);
+        app.parse(int(argumentPointers.size()), argumentPointers.data());
         return 0;
     } catch (const CLI::Success& success) {
         return app.exit(success); // --help, --version
@@ -29,13 +36,13 @@ int main(int argc, char** argv) {
         app.exit(error);
         return 1;
     } catch (const voxc::UserError& error) {
-        std::cerr << "voxc: error: " << error.what() << "\n";
+        voxc::driver::printFatalError(error.what(), false);
         return 1;
     } catch (const voxc::InternalError& error) {
-        std::cerr << "voxc: " << error.what() << "\nThis is a bug in voxc; please report it with the input file.\n";
+        voxc::driver::printFatalError(error.what(), true);
         return 2;
     } catch (const std::exception& error) {
-        std::cerr << "voxc: internal error: " << error.what() << "\nThis is a bug in voxc; please report it.\n";
+        voxc::driver::printFatalError(std::string("internal error: ") + error.what(), true);
         return 2;
     }
 }

@@ -1,0 +1,20 @@
+#include "Commands.h"
+
+#include "voxc/lsp/Server.h"
+
+#include <cstdlib>
+#include <iostream>
+
+namespace voxc::driver {
+
+void addLspCommand(CLI::App& app) {
+    CLI::App* command = app.add_subcommand(
+        "lsp", "Serve the Language Server Protocol on stdin/stdout: diagnostics, hover and completion for editors");
+    command->callback([] {
+        // Binary streams: Content-Length counts bytes, so nothing may translate them.
+        std::ios::sync_with_stdio(false);
+        std::exit(lsp::serve(std::cin, std::cout, std::cerr));
+    });
+}
+
+} // namespace voxc::driver

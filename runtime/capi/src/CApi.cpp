@@ -1,0 +1,175 @@
+// The C API over the compiler and the runtime. Every entry point that can fail catches
+// everything (no C++ exception may unwind into C) and turns it into a status and a message.
+#include "voxc/voxc.h"
+
+#include "voxc/check/Check.h"
+#include "voxc/core/Errors.h"
+#include "voxc/grid/Grid.h"
+#include "voxc/mesh/MarchingCubes.h"
+#include "voxc/stages/Pipeline.h"
+#include "voxc/vulkan/Context.h"
+#include "voxc/vulkan/Executor.h"
+
+#include <cmath>
+#include <exception>
+#include <fmt/format.h>
+#include <new>
+#include <string>
+
+struct voxc_program {
+    voxc::Program program;
+    voxc::KernelPackage package;
+};
+
+struct voxc_grid {
+    voxc::DenseGrid dense;     // what the accessors hand out, x fastest
+    voxc::ChunkedGrid chunked; // what the mesher reads
+};
+
+struct voxc_mesh {
+    voxc::Mesh mesh;
+};
+
+namespace {
+
+thread_local std::string lastError;
+
+voxc_status fail(voxc_status status, std::string message) {
+    lastError = std::move(message);
+    return status;
+}
+
+// Runs `body`, mapping what it throws to the command line's exit codes.
+template <typename Body>
+voxc_status guarded(Body&& body) {
+    try {
+        lastError.clear();
+        body();
+        return VOXC_OK;
+    } catch (const voxc::UserError& error) {
+        return fail(VOXC_ERROR_USER, error.what());
+    } catch (const voxc::InternalError& error) {
+        return fail(VOXC_ERROR_INTERNAL, error.what());
+    } catch (const std::bad_alloc&) {
+        return fail(VOXC_ERROR_USER, "out of memory");
+    } catch (const std::exception& error) {
+        return fail(VOXC_ERROR_INTERNAL, std::string("internal error: ") + error.what());
+    } catch (...) {
+        return fail(VOXC_ERROR_INTERNAL, "internal error: an unknown exception");
+    }
+}
+
+voxc::Program checkedProgram(const char* path, const voxc_load_options* options) {
+    voxc::CheckOptions checkOptions;
+    if (options && options->has_seed) checkOptions.seed = options->seed;
+    voxc::CheckResult result = voxc::checkFile(path, checkOptions);
+    if (result.hasErrors() || !result.program)
+        throw voxc::UserError(result.rendered());
+    voxc::Program program = std::move(*result.program);
+    if (options && options->chunk_size != 0) {
+        const int32_t c = options->chunk_size;
+        if (c < 8 || c > 64 || (c & (c - 1)) != 0)
+            throw voxc::UserError(fmt::format("chunk_size {}: the chunk size must be a power of two from 8 to 64", c));
+        program.world.chunkSize = c;
+    }
+    return program;
+}
+
+} // namespace
+
+extern "C" {
+
+const char* voxc_version(void) { return "voxc 0.1.0"; }
+
+const char* voxc_last_error(void) { return lastError.c_str(); }
+
+voxc_status voxc_program_load(const char* path, const voxc_load_options* options, voxc_program** out) {
+    if (!path || !out) return fail(VOXC_ERROR_ARGUMENT, "voxc_program_load: path and out must not be null");
+    *out = nullptr;
+    return guarded([&] {
+        voxc::Program program = checkedProgram(path, options);
+        voxc::KernelPackage package = voxc::compileProgram(program);
+        *out = new voxc_program{std::move(program), std::move(package)};
+    });
+}
+
+void voxc_program_free(voxc_program* program) { delete program; }
+
+void voxc_program_grid(const voxc_program* program, int32_t size[3], int32_t origin[3]) {
+    if (!program) return;
+    for (int axis = 0; axis < 3; ++axis) {
+        if (size) size[axis] = program->program.world.size[axis];
+        if (origin) origin[axis] = program->program.world.origin[axis];
+    }
+}
+
+const char* voxc_program_material_name(const voxc_program* program, uint8_t id) {
+    if (!program) return nullptr;
+    const voxc::Material* material = program->program.findMaterial(id);
+    return material ? material->name.c_str() : nullptr;
+}
+
+voxc_status voxc_generate(const voxc_program* program, voxc_backend backend, voxc_grid** out) {
+    if (!program || !out) return fail(VOXC_ERROR_ARGUMENT, "voxc_generate: program and out must not be null");
+    if (backend != VOXC_BACKEND_VULKAN && backend != VOXC_BACKEND_INTERPRETER)
+        return fail(VOXC_ERROR_ARGUMENT, fmt::format("voxc_generate: unknown backend {}", int(backend)));
+    *out = nullptr;
+    return guarded([&] {
+        const voxc::World& world = program->program.world;
+        const voxc::ChunkLayout layout = voxc::ChunkLayout::make(world.origin, world.size, world.chunkSize);
+        if (backend == VOXC_BACKEND_VULKAN) {
+            voxc::VulkanContext context(voxc::ContextOptions{});
+            voxc::VulkanExecutor executor(context, program->package);
+            voxc::ChunkedGrid chunked = executor.run().grid;
+            voxc::DenseGrid dense = chunked.toDense();
+            *out = new voxc_grid{std::move(dense), std::move(chunked)};
+        } else {
+            voxc::DenseGrid dense = voxc::interpret(program->program);
+            voxc::ChunkedGrid chunked = voxc::ChunkedGrid::fromDense(dense, layout);
+            *out = new voxc_grid{std::move(dense), std::move(chunked)};
+        }
+    });
+}
+
+void voxc_grid_free(voxc_grid* grid) { delete grid; }
+
+void voxc_grid_size(const voxc_grid* grid, int32_t size[3]) {
+    if (!grid || !size) return;
+    for (int axis = 0; axis < 3; ++axis) size[axis] = grid->dense.size()[axis];
+}
+
+const float* voxc_grid_densities(const voxc_grid* grid) { return grid ? grid->dense.data().data() : nullptr; }
+
+const uint8_t* voxc_grid_materials(const voxc_grid* grid) { return grid ? grid->dense.materials().data() : nullptr; }
+
+voxc_status voxc_mesh_grid(const voxc_grid* grid, float iso, voxc_mesh** out) {
+    if (!grid || !out) return fail(VOXC_ERROR_ARGUMENT, "voxc_mesh_grid: grid and out must not be null");
+    if (!std::isfinite(iso)) return fail(VOXC_ERROR_ARGUMENT, "voxc_mesh_grid: iso must be a finite number");
+    *out = nullptr;
+    return guarded([&] { *out = new voxc_mesh{voxc::meshMarchingCubes(grid->chunked, voxc::MeshOptions{.iso = iso})}; });
+}
+
+void voxc_mesh_free(voxc_mesh* mesh) { delete mesh; }
+
+size_t voxc_mesh_vertex_count(const voxc_mesh* mesh) { return mesh ? mesh->mesh.positions.size() : 0; }
+
+size_t voxc_mesh_triangle_count(const voxc_mesh* mesh) { return mesh ? mesh->mesh.triangles.size() / 3 : 0; }
+
+// glm::vec3 is three packed floats, so a vector of them is the flat array the header promises.
+static_assert(sizeof(glm::vec3) == 3 * sizeof(float));
+
+const float* voxc_mesh_positions(const voxc_mesh* mesh) {
+    return mesh ? reinterpret_cast<const float*>(mesh->mesh.positions.data()) : nullptr;
+}
+
+const float* voxc_mesh_normals(const voxc_mesh* mesh) {
+    return mesh ? reinterpret_cast<const float*>(mesh->mesh.normals.data()) : nullptr;
+}
+
+const uint32_t* voxc_mesh_indices(const voxc_mesh* mesh) { return mesh ? mesh->mesh.triangles.data() : nullptr; }
+
+const uint8_t* voxc_mesh_triangle_materials(const voxc_mesh* mesh) {
+    return mesh ? mesh->mesh.triangleMaterials.data() : nullptr;
+}
+
+} // extern "C"

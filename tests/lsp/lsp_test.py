@@ -1,0 +1,182 @@
+#!/usr/bin/env python3
+"""Speaks the Language Server Protocol to `voxc lsp` over pipes, as an editor does.
+
+Usage: lsp_test.py VOXC SOURCE_DIR. Checks initialize, that didOpen publishes exactly the
+diagnostics `voxc check --diagnostics-format json` reports (codes, ranges, severities, the rule
+file's on the rule file's URI), didChange, hover and completion from the registries, robustness
+against malformed messages, and shutdown/exit. Prints "N passed, N failed" last.
+"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+from lsp_client import Client, uri
+
+voxc, src = sys.argv[1], sys.argv[2]
+passed = failed = 0
+
+
+def check(name, condition, detail=""):
+    global passed, failed
+    if condition:
+        passed += 1
+        print("ok   " + name)
+    else:
+        failed += 1
+        print("FAIL " + name + (": " + str(detail)[:2000] if detail else ""))
+
+
+def check_json(path):
+    """What `voxc check --diagnostics-format json` says, as LSP would: uri -> [(code, severity, range)]."""
+    run = subprocess.run([voxc, "check", "-q", path, "--diagnostics-format", "json"], capture_output=True, text=True)
+    expected = {}
+    severities = {"error": 1, "warning": 2, "note": 3}
+    for line in run.stderr.splitlines():
+        d = json.loads(line)
+        if not d["code"]:
+            continue  # the closing summary
+        r = d["range"]
+        lsp_range = {"start": {"line": r["start"]["line"] - 1, "character": r["start"]["column"] - 1},
+                     "end": {"line": r["end"]["line"] - 1, "character": r["end"]["column"] - 1}} if r else \
+            {"start": {"line": 0, "character": 0}, "end": {"line": 0, "character": 0}}
+        expected.setdefault(uri(os.path.abspath(d["file"])) if d["file"].startswith("/") else d["file"], []).append(
+            (d["code"], severities[d["severity"]], json.dumps(lsp_range, sort_keys=True), d["message"]))
+    return expected
+
+
+def published(diagnostics):
+    return [(d.get("code"), d["severity"], json.dumps(d["range"], sort_keys=True), d["message"]) for d in diagnostics]
+
+
+work = tempfile.mkdtemp()
+bad = os.path.join(work, "bad.vox")
+rules = os.path.join(work, "bad.rules")
+with open(rules, "w") as f:
+    f.write("I;FFZ;tunnel;1\nC;FXZ;tunnel;1\n")
+bad_text = ("const UNUSED = 3;\nworld {\n  size = [16, 16, 16];\n}\nlsystem net {\n  rules = \"bad.rules\";\n}\n"
+            "grammar g { rule r { size = [1,1,1]; symbol { [PRES 3] } } }\npipeline { start; missing; }\n")
+with open(bad, "w") as f:
+    f.write(bad_text)
+
+client = Client(voxc)
+check("request_before_initialize", client.request("textDocument/hover", {}).get("error", {}).get("code") == -32002)
+init = client.request("initialize", {"processId": None, "rootUri": None, "capabilities": {}})
+caps = init.get("result", {}).get("capabilities", {})
+check("initialize", caps.get("hoverProvider") is True and "completionProvider" in caps
+      and caps.get("textDocumentSync", {}).get("change") == 1, init)
+client.notify("initialized", {})
+
+# didOpen: the same diagnostics as `voxc check`, the rule file's on the rule file
+client.notify("textDocument/didOpen", {"textDocument": {"uri": uri(bad), "languageId": "vox", "version": 1,
+                                                        "text": bad_text}})
+expected = check_json(bad)
+got_bad = published(client.diagnostics_for(uri(bad)))
+got_rules = published(client.diagnostics_for(uri(rules)))
+check("did_open_diagnostics_equal_check", got_bad == expected.get(uri(bad)), (got_bad, expected))
+check("rule_file_diagnostics_on_its_uri", got_rules and got_rules == expected.get(uri(rules)), (got_rules, expected))
+check("diagnostics_have_several_codes", len({d[0] for d in got_bad}) >= 2, got_bad)
+
+for example in ["overhang", "scene", "fields", "caves"]:
+    path = os.path.join(src, "examples", example + ".vox")
+    text = open(path).read()
+    client.notify("textDocument/didOpen", {"textDocument": {"uri": uri(path), "languageId": "vox", "version": 1,
+                                                            "text": text}})
+    got = published(client.diagnostics_for(uri(path)))
+    check("example_%s_equals_check" % example, got == check_json(path).get(uri(path), []), got)
+
+# didChange: a typo appears, then goes again
+overhang = os.path.join(src, "examples", "overhang.vox")
+overhang_text = open(overhang).read()
+typo = overhang_text.replace("pipeline { start; overhang; }", "pipeline { start; overhnag; }")
+client.notify("textDocument/didChange", {"textDocument": {"uri": uri(overhang), "version": 2},
+                                         "contentChanges": [{"text": typo}]})
+changed = client.diagnostics_for(uri(overhang))
+check("did_change_reports_typo", [d.get("code") for d in changed] == ["E0002"] and "overhang" in changed[0]["message"],
+      changed)
+client.notify("textDocument/didChange", {"textDocument": {"uri": uri(overhang), "version": 3},
+                                         "contentChanges": [{"text": overhang_text}]})
+check("did_change_clears", client.diagnostics_for(uri(overhang)) == [])
+
+
+def position_of(text, needle, offset=0):
+    index = text.index(needle) + offset
+    line = text.count("\n", 0, index)
+    return {"line": line, "character": index - (text.rfind("\n", 0, index) + 1)}
+
+
+def hover(path, text, needle, offset=0):
+    response = client.request("textDocument/hover", {"textDocument": {"uri": uri(path)},
+                                                     "position": position_of(text, needle, offset)})
+    result = response.get("result")
+    return result["contents"]["value"] if result else None
+
+
+fields = os.path.join(src, "examples", "fields.vox")
+fields_text = open(fields).read()
+h = hover(fields, fields_text, "fbm(", 1)
+check("hover_builtin_function", h and "fbm(" in h and "->" in h, h)
+h = hover(overhang, overhang_text, "GEQ", 1)
+check("hover_symbol_operator", h and "d >= v" in h, h)
+h = hover(overhang, overhang_text, "box {", 1)
+check("hover_start_shape_lists_keys", h and "start shape" in h and "`min = ...;`" in h and "required" in h, h)
+h = hover(overhang, overhang_text, "max = [24", 1)
+check("hover_shape_key", h and "key of the `box` shape" in h and "in [" in h, h)
+h = hover(fields, fields_text, "solid(segment", 1)
+check("hover_user_function", h and "fn solid(distance: float, r: float) -> float" in h, h)
+h = hover(overhang, overhang_text, "iterations", 1)
+check("hover_block_key", h and "a key of the `grammar` block" in h, h)
+
+
+def completion(path, text, needle, offset):
+    response = client.request("textDocument/completion", {"textDocument": {"uri": uri(path)},
+                                                          "position": position_of(text, needle, offset)})
+    return response["result"]["items"]
+
+
+items = completion(fields, fields_text, "perlin3(wp", 3)
+labels = [i["label"] for i in items]
+check("completion_builtins_by_prefix", "perlin3" in labels and all(l.lower().startswith("per") for l in labels), labels)
+perlin = next((i for i in items if i["label"] == "perlin3"), {})
+check("completion_carries_registry_doc", "perlin3(" in perlin.get("detail", "") and perlin.get("documentation"), perlin)
+items = completion(fields, fields_text, "  let height", 2)
+labels = [i["label"] for i in items]
+check("completion_names_and_builtins", {"ROCK", "SEED", "solid", "segment", "ground", "crumble", "fbm", "GEQ", "box"}
+      <= set(labels), labels)
+items = completion(overhang, overhang_text, "box { min", 6)
+labels = [i["label"] for i in items]
+check("completion_shape_keys_first", labels[:3] == ["min", "max", "value"] or {"min", "max", "value"} <= set(labels[:5]),
+      labels[:8])
+
+# malformed input: answered with errors, the server keeps serving
+client.send_raw(b"Content-Length: 9\r\n\r\n{not json")
+check("bad_json_parse_error", client.response(None)["error"]["code"] == -32700)
+client.send_raw(b"Content-Length: 4000\r\n\r\n" + b"[" * 4000)
+check("deep_nesting_refused", client.response(None)["error"]["code"] == -32700)
+client.send_raw(b"X-Nothing: 1\r\n\r\n")
+check("missing_content_length", client.response(None)["error"]["code"] == -32700)
+oversized = 40 << 20  # over the 32 MiB cap: read past in bounded memory, then refused
+client.send_raw(b"Content-Length: %d\r\n\r\n" % oversized + b" " * oversized)
+check("oversized_message_refused", client.response(None)["error"]["code"] == -32700)
+check("still_serving", "GEQ" in (hover(overhang, overhang_text, "GEQ", 1) or ""))
+client.process.kill()
+client.process.wait()
+
+client = Client(voxc)
+client.request("initialize", {"capabilities": {}})
+check("unknown_method", client.request("voxc/frobnicate")["error"]["code"] == -32601)
+check("bad_params", client.request("textDocument/hover", {"position": 3})["error"]["code"] == -32602)
+shutdown = client.request("shutdown")
+check("shutdown", "result" in shutdown and shutdown["result"] is None and "error" not in shutdown, shutdown)
+check("request_after_shutdown", client.request("textDocument/hover", {})["error"]["code"] == -32600)
+client.notify("exit", {})
+check("exit_after_shutdown_is_0", client.process.wait(timeout=30) == 0)
+
+client = Client(voxc)
+client.request("initialize", {"capabilities": {}})
+client.process.stdin.close()
+check("end_without_exit_is_1", client.process.wait(timeout=30) == 1)
+
+print("%d passed, %d failed" % (passed, failed))
+sys.exit(1 if failed else 0)

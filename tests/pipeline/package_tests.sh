@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# Usage: package_tests.sh BUILD_DIR SOURCE_DIR WITH_LIBVOXC(0|1). Installs voxc from BUILD_DIR into
+# a temporary prefix, then uses it as a project would (docs/embedding.md): a CMake project builds
+# a ruleset with find_package(voxc) and voxc_add_ruleset, rebuilding exactly when an input
+# changed; with libvoxc, the C example in examples/embed links against the installed library
+# through pkg-config (and through CMake) and generates a grid. Prints "N passed, N failed" last.
+set -u
+build=$1
+src=$2
+with_libvoxc=$3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0
+failed=0
+
+expect() {
+    local name=$1 want=$2 pattern=$3
+    shift 4
+    local out code
+    out=$("$@" 2>&1)
+    code=$?
+    if [ "$code" -ne "$want" ]; then
+        echo "FAIL $name: exit $code, want $want"; echo "$out" | tail -20; failed=$((failed + 1)); return
+    fi
+    if [ -n "$pattern" ] && ! grep -Eq -- "$pattern" <<<"$out"; then
+        echo "FAIL $name: output does not match /$pattern/"; echo "$out" | tail -20; failed=$((failed + 1)); return
+    fi
+    echo "ok   $name"; passed=$((passed + 1))
+}
+
+prefix=$work/prefix
+expect install 0 "" -- cmake --install "$build" --prefix "$prefix"
+expect installed_voxc 0 "voxc 0.1.0" -- "$prefix/bin/voxc" --version
+
+# A project that builds a ruleset: compiled once, then only when the .vox or its rule file changes.
+cp -r "$src/tests/pipeline/project" "$work/proj"
+expect project_configure 0 "" -- cmake -S "$work/proj" -B "$work/proj/build" -G Ninja -DCMAKE_PREFIX_PATH="$prefix"
+expect project_build 0 "voxc: compiling world.vox" -- cmake --build "$work/proj/build"
+expect project_package 0 "" -- test -s "$work/proj/build/packages/world/manifest.json"
+expect project_nothing_changed 0 "no work to do" -- cmake --build "$work/proj/build"
+touch "$work/proj/world.vox"
+expect project_vox_touched 0 "voxc: compiling world.vox" -- cmake --build "$work/proj/build"
+expect project_then_nothing 0 "no work to do" -- cmake --build "$work/proj/build"
+touch "$work/proj/tunnels.rules"
+expect project_rules_touched 0 "voxc: compiling world.vox" -- cmake --build "$work/proj/build"
+expect project_rules_then_nothing 0 "no work to do" -- cmake --build "$work/proj/build"
+sed -i 's/seed = 3;/seed = 4;/' "$work/proj/world.vox"
+expect project_vox_edited 0 "voxc: compiling world.vox" -- cmake --build "$work/proj/build"
+expect project_new_seed 0 "" -- grep -q '"seed": 4' "$work/proj/build/packages/world/manifest.json"
+printf 'pipeline { nope; }\n' >> "$work/proj/world.vox"
+expect project_error_located 1 "world.vox:[0-9]+:[0-9]+: error E" -- cmake --build "$work/proj/build"
+
+# The same project with the Makefile generator.
+cp -r "$src/tests/pipeline/project" "$work/projmake"
+expect make_configure 0 "" -- cmake -S "$work/projmake" -B "$work/projmake/build" -G "Unix Makefiles" -DCMAKE_PREFIX_PATH="$prefix"
+expect make_build 0 "voxc: compiling world.vox" -- cmake --build "$work/projmake/build"
+expect make_nothing_changed 0 "" -- bash -c "! cmake --build '$work/projmake/build' | grep -q 'voxc: compiling'"
+touch "$work/projmake/tunnels.rules"
+expect make_rules_touched 0 "voxc: compiling world.vox" -- cmake --build "$work/projmake/build"
+
+if [ "$with_libvoxc" = 1 ]; then
+    lib=$(echo "$prefix"/lib*/libvoxc.so.0.1.0 "$prefix"/lib/*/libvoxc.so.0.1.0)
+    lib=$(ls $lib 2>/dev/null | head -1)
+    expect libvoxc_installed 0 "" -- test -f "$lib"
+    # only the C API is exported; the C++ inside stays private
+    expect libvoxc_exports_only_c_api 0 "" -- bash -c "nm -D --defined-only '$lib' | awk '{print \$3}' | grep -v '^voxc_' | grep -v '^_init\$\|^_fini\$' | (! grep .)"
+    pcdir=$(dirname "$(ls "$prefix"/lib*/pkgconfig/voxc.pc "$prefix"/lib/*/pkgconfig/voxc.pc 2>/dev/null | head -1)")
+    cp -r "$src/examples/embed" "$work/embed"
+    expect embed_make 0 "" -- env PKG_CONFIG_PATH="$pcdir" make -C "$work/embed"
+    expect embed_links_installed 0 "$prefix" -- ldd "$work/embed/embed"
+    # The example's mesh is voxc run's, vertex for vertex (the same host marching cubes).
+    "$prefix/bin/voxc" run "$src/examples/overhang.vox" -o "$work/overhang.ply" --mesh-on host > "$work/run.out" 2>&1
+    counts=$(grep -Eo '[0-9]+ vertices, [0-9]+ triangles' "$work/run.out" | head -1)
+    expect embed_vulkan 0 "mesh: $counts" -- "$work/embed/embed" "$src/examples/overhang.vox" vulkan
+    expect embed_interpreter 0 "mesh: $counts" -- "$work/embed/embed" "$src/examples/overhang.vox" interpreter
+    expect embed_materials 0 "  (sand|grass|dirt|bedrock|sandstone): [0-9]+ triangles" -- "$work/embed/embed" "$src/examples/scene.vox" interpreter
+    expect embed_error_message 1 "nope.vox: error E0100" -- "$work/embed/embed" "$work/nope.vox"
+    expect embed_cmake_configure 0 "" -- cmake -S "$work/embed" -B "$work/embed/build" -G Ninja -DCMAKE_PREFIX_PATH="$prefix"
+    expect embed_cmake_build 0 "" -- cmake --build "$work/embed/build"
+    expect embed_cmake_runs 0 "grid 32x16x32: 8192 of 16384 voxels solid" -- "$work/embed/build/embed" "$src/tests/pipeline/project/world.vox" interpreter
+fi
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,98 @@
+#!/usr/bin/env bash
+# Usage: pipeline_tests.sh VOXC SOURCE_DIR. The flags build systems and tools use (docs/cli.md,
+# "Build pipelines"): the depfile of `compile -MD`, JSON diagnostics, quiet and verbose modes.
+# Prints "N passed, N failed" last.
+set -u
+voxc=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0
+failed=0
+
+# expect NAME WANT_EXIT PATTERN -- COMMAND...: the exit code must be WANT_EXIT and the combined
+# output must match the extended regex PATTERN (empty: not checked).
+expect() {
+    local name=$1 want=$2 pattern=$3
+    shift 4
+    local out code
+    out=$("$@" 2>&1)
+    code=$?
+    if [ "$code" -ne "$want" ]; then
+        echo "FAIL $name: exit $code, want $want"; echo "$out" | head -20; failed=$((failed + 1)); return
+    fi
+    if [ -n "$pattern" ] && ! grep -Eq -- "$pattern" <<<"$out"; then
+        echo "FAIL $name: output does not match /$pattern/"; echo "$out" | head -20; failed=$((failed + 1)); return
+    fi
+    echo "ok   $name"; passed=$((passed + 1))
+}
+
+cp -r "$src/tests/pipeline/project" "$work/proj"
+vox=$work/proj/world.vox
+rules=$work/proj/tunnels.rules
+
+# The depfile names the .vox and the rule file it imports, under the target -MT gives.
+expect depfile_compile 0 "wrote $work/deps.d \(2 inputs\)" -- "$voxc" compile "$vox" -o "$work/pkg" -MD -MF "$work/deps.d" -MT "$work/stamp"
+expect depfile_lists_every_input 0 "" -- python3 - "$work/deps.d" "$work/stamp" "$vox" "$rules" <<'PY'
+import sys
+text = open(sys.argv[1]).read()
+target, _, rest = text.partition(":")
+assert target == sys.argv[2], (target, sys.argv[2])
+inputs = rest.replace("\\\n", " ").split()
+assert inputs == sys.argv[3:], (inputs, sys.argv[3:])
+PY
+expect depfile_default_path 0 "wrote $work/pkg2.d" -- "$voxc" compile "$vox" -o "$work/pkg2/" -MD
+expect depfile_default_target 0 "" -- grep -q "^$work/pkg2/manifest.json:" "$work/pkg2.d"
+expect depfile_unchanged_package 0 "is up to date" -- "$voxc" compile "$vox" -o "$work/pkg2" --MD
+expect depfile_inside_package 1 "inside the package directory" -- "$voxc" compile "$vox" -o "$work/pkg" -MF "$work/pkg/deps.d"
+expect depfile_is_input 1 "voxc never writes over a file it reads" -- "$voxc" compile "$vox" -o "$work/pkg3" -MF "$vox"
+mkdir -p "$work/with space"
+cp "$vox" "$rules" "$work/with space/"
+expect depfile_space 0 "" -- "$voxc" compile "$work/with space/world.vox" -o "$work/pkg4" -MF "$work/spaced.d"
+expect depfile_space_escaped 0 "" -- grep -qF 'with\ space/tunnels.rules' "$work/spaced.d"
+printf 'world { size = [8, 8, 8]; }\npipeline { start; nope; }\n' > "$work/broken.vox"
+expect depfile_not_on_error 1 "E0002" -- "$voxc" compile "$work/broken.vox" -o "$work/pkg5" -MD -MF "$work/broken.d"
+expect depfile_not_on_error_absent 1 "" -- test -e "$work/broken.d"
+
+# JSON diagnostics carry what the text form says: code, file, line, column (for an error in the
+# .vox file and one in its rule file), on check, compile and run alike.
+printf 'world {\n  size = [16, 16, 16];\n}\nlsystem net {\n  rules = "bad.rules";\n}\ngrammar g { rule r { size = [1,1,1]; symbol { [PRES 3] } } }\npipeline { start; missing; }\n' > "$work/bad.vox"
+printf 'I;FFZ;tunnel;1\nC;FXZ;tunnel;1\n' > "$work/bad.rules"
+"$voxc" check "$work/bad.vox" > /dev/null 2> "$work/text.err"
+for verb in check compile run; do
+    extra=()
+    [ "$verb" = compile ] && extra=(-o "$work/badpkg")
+    [ "$verb" = run ] && extra=(-o "$work/bad.ply")
+    "$voxc" "$verb" "$work/bad.vox" "${extra[@]}" --diagnostics-format json > /dev/null 2> "$work/$verb.json"
+    expect "json_matches_text_$verb" 0 "" -- python3 - "$work/text.err" "$work/$verb.json" <<'PY'
+import json, re, sys
+text = open(sys.argv[1]).read()
+located = re.findall(r"^(\S+?):(\d+):(\d+): (error|warning) (E\d{4}|W\d{4}): (.*)$", text, re.M)
+assert len(located) >= 3, text
+objects = [json.loads(line) for line in open(sys.argv[2])]
+diagnostics = [o for o in objects if o["code"]]
+got = [(o["file"], str(o["range"]["start"]["line"]), str(o["range"]["start"]["column"]), o["severity"], o["code"], o["message"])
+       for o in diagnostics]
+assert got == [tuple(d) for d in located], (got, located)
+for o in diagnostics:
+    assert o["range"]["end"]["line"] == o["range"]["start"]["line"] and o["range"]["end"]["column"] > o["range"]["start"]["column"]
+    assert isinstance(o["notes"], list)
+assert any(o["file"].endswith("bad.rules") for o in diagnostics)
+# the closing summary is one more object, without a code or a location
+assert objects[-1]["code"] == "" and objects[-1]["range"] is None and "error" in objects[-1]["message"]
+PY
+done
+expect json_missing_file 1 '^\{"code":"E0100","severity":"error","file":"[^"]*nope.vox","range":null' -- "$voxc" check "$work/nope.vox" --diagnostics-format json
+expect json_bad_format 1 "diagnostics-format" -- "$voxc" check "$vox" --diagnostics-format xml
+
+# -q prints only warnings and errors; -v adds the inputs read and the time taken.
+expect quiet_check_silent 0 "^$" -- "$voxc" check -q "$vox"
+expect quiet_compile_silent 0 "^$" -- "$voxc" compile --quiet "$vox" -o "$work/pkg6" -MD
+expect quiet_still_errors 1 "E0002" -- "$voxc" check -q "$work/broken.vox"
+expect verbose_check 0 "checked .*world.vox \([0-9]+ bytes\) in [0-9.]+ ms: 0 errors, 0 warnings" -- "$voxc" check -v "$vox"
+expect verbose_rule_file 0 "lsystem net imports the rule file .*tunnels.rules" -- "$voxc" compile -v "$vox" -o "$work/pkg7"
+expect verbose_compile_time 0 "compiled [0-9]+ kernels in [0-9.]+ ms" -- "$voxc" compile -v "$vox" -o "$work/pkg7"
+expect quiet_and_verbose 1 "excludes" -- "$voxc" check -q -v "$vox"
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
