@@ -5,11 +5,12 @@
 
 namespace voxc::bench {
 
-// Registers curves at 128x64x128 (record n = 128): examples/curves_cliff.vox at twice its size.
-// curves/host_solve times checking the file, which runs the whole solve on the host (the Vulkan
-// solve does not exist yet); curves/vulkan and curves/interp time a run of the pipeline (the
-// start state and the stage combining the solved table). `context` is null when Vulkan is not benched;
-// `host` registers the solve.
+// Registers curves at 128x64x128 and 256x128x256 (records n = 128, 256): examples/curves_cliff.vox
+// at twice and four times its size. curves/host_solve/N and curves/vulkan_solve/N (case
+// curves_solve) time checking the file, which solves the block: all on the host, or with the
+// multigrid on the device; the parts' times are counters. curves/vulkan/N and curves/interp/N time
+// a run of the pipeline (the start state and the stage combining the solved table). `context` is
+// null when Vulkan is not benched; `host` registers the host solve.
 void registerCurves(JsonReporter& reporter, VulkanContext* context, bool interp, bool host);
 
 } // namespace voxc::bench

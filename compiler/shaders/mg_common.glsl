@@ -13,26 +13,15 @@ layout(push_constant) uniform Push {
 } push;
 
 layout(std430, set = 0, binding = 0) readonly buffer Mask { uint fixedCell[]; };
-layout(std430, set = 0, binding = 1) buffer U0 { float u0[]; };
-layout(std430, set = 0, binding = 2) buffer U1 { float u1[]; };
-layout(std430, set = 0, binding = 3) buffer U2 { float u2[]; };
-layout(std430, set = 0, binding = 4) buffer F0 { float f0[]; };
-layout(std430, set = 0, binding = 5) buffer F1 { float f1[]; };
-layout(std430, set = 0, binding = 6) buffer F2 { float f2[]; };
-layout(std430, set = 0, binding = 7) buffer Measure { uint maxResidualBits; };
+// Per cell its COMPONENTS values side by side: one buffer, no per-component selection.
+layout(std430, set = 0, binding = 1) buffer Unknowns { float u[]; };
+layout(std430, set = 0, binding = 2) buffer RightHandSides { float f[]; };
+layout(std430, set = 0, binding = 3) buffer Measure { uint maxResidualBits; };
 
-float loadU(int c, uint i) { return c == 0 ? u0[i] : (c == 1 ? u1[i] : u2[i]); }
-float loadF(int c, uint i) { return c == 0 ? f0[i] : (c == 1 ? f1[i] : f2[i]); }
-void storeU(int c, uint i, float v) {
-    if (c == 0) u0[i] = v;
-    else if (c == 1) u1[i] = v;
-    else u2[i] = v;
-}
-void storeF(int c, uint i, float v) {
-    if (c == 0) f0[i] = v;
-    else if (c == 1) f1[i] = v;
-    else f2[i] = v;
-}
+float loadU(int c, uint i) { return u[i * uint(COMPONENTS) + uint(c)]; }
+float loadF(int c, uint i) { return f[i * uint(COMPONENTS) + uint(c)]; }
+void storeU(int c, uint i, float v) { u[i * uint(COMPONENTS) + uint(c)] = v; }
+void storeF(int c, uint i, float v) { f[i * uint(COMPONENTS) + uint(c)] = v; }
 
 uint cellIndex(ivec4 level, ivec3 p) { return uint(level.w + p.x + level.x * (p.y + level.y * p.z)); }
 

@@ -20,7 +20,7 @@ constexpr uint32_t kLocalSize = 64; // every mg_*.glsl pass
 enum Pass : uint32_t { kSmooth, kRestrict, kProlong, kResidual, kPassCount };
 constexpr const char* kPassFiles[kPassCount] = {"mg_smooth.glsl", "mg_restrict.glsl", "mg_prolong.glsl",
                                                 "mg_residual.glsl"};
-constexpr uint32_t kMaskBuffer = 0, kUBuffer = 1, kFBuffer = 4, kMeasureBuffer = 7, kBufferCount = 8;
+constexpr uint32_t kMaskBuffer = 0, kUBuffer = 1, kFBuffer = 2, kMeasureBuffer = 3, kBufferCount = 4;
 
 // The pass's #version line, COMPONENTS, the shared declarations, then the rest of the pass.
 std::string passSource(const char* file, int32_t components) {
@@ -108,7 +108,7 @@ SolveProgram multigridProgram(const std::vector<curves::MultigridLevel>& levels,
     p.kernels = passKernels(components);
     p.bufferWords.assign(kBufferCount, 1);
     p.bufferWords[kMaskBuffer] = uint64_t(cells);
-    for (int32_t c = 0; c < components; ++c) p.bufferWords[kUBuffer + c] = p.bufferWords[kFBuffer + c] = uint64_t(cells);
+    p.bufferWords[kUBuffer] = p.bufferWords[kFBuffer] = uint64_t(cells) * uint64_t(components);
     // Full multigrid start: Dirichlet values down the levels, the coarsest solved, then per
     // finer level a prolongation and a V-cycle (curves::solveLaplace).
     for (size_t l = 0; l + 1 < levels.size(); ++l) b.restrictTo(p.prologue, l, 1);
@@ -139,23 +139,22 @@ curves::LinearSolver vulkanLinearSolver(VulkanContext& context) {
         std::vector<std::vector<uint32_t>> initial(kBufferCount);
         for (const std::vector<uint8_t>& mask : curves::multigridMasks(levels, fixed))
             initial[kMaskBuffer].insert(initial[kMaskBuffer].end(), mask.begin(), mask.end());
-        std::vector<uint64_t> read(kBufferCount, 0);
-        for (size_t c = 0; c < components.size(); ++c) {
-            std::vector<uint32_t>& u = initial[kUBuffer + c];
-            u.resize(fixed.size(), 0u);
+        const size_t count = components.size();
+        std::vector<uint32_t>& u = initial[kUBuffer];
+        u.resize(fixed.size() * count, 0u);
+        for (size_t c = 0; c < count; ++c)
             for (size_t i = 0; i < fixed.size(); ++i)
-                if (fixed[i]) u[i] = std::bit_cast<uint32_t>(components[c]->values[i]);
-            read[kUBuffer + c] = fixed.size();
-        }
+                if (fixed[i]) u[i * count + c] = std::bit_cast<uint32_t>(components[c]->values[i]);
+        std::vector<uint64_t> read(kBufferCount, 0);
+        read[kUBuffer] = fixed.size() * count;
         VulkanSolveRunner runner(context, program);
         const SolveRun run = runner.run(initial, read);
         curves::SolveReport report{name, int32_t(levels.size()), run.measures};
         if (!run.converged) throw curves::ConvergenceError(name, report.cycles(), report.residuals.back(), tolerance);
-        for (size_t c = 0; c < components.size(); ++c) {
-            const std::vector<uint32_t>& words = run.buffers.at(kUBuffer + c);
-            VOXC_ASSERT(words.size() == fixed.size());
-            for (size_t i = 0; i < words.size(); ++i) components[c]->values[i] = std::bit_cast<float>(words[i]);
-        }
+        const std::vector<uint32_t>& words = run.buffers.at(kUBuffer);
+        VOXC_ASSERT(words.size() == fixed.size() * count);
+        for (size_t c = 0; c < count; ++c)
+            for (size_t i = 0; i < fixed.size(); ++i) components[c]->values[i] = std::bit_cast<float>(words[i * count + c]);
         return report;
     };
 }

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 
 namespace voxc::curves {
@@ -22,6 +23,7 @@ bool namesMaterial(const std::vector<FeatureCurve>& curves) {
 
 SolveTable solveScene(const Scene& scene, const Limits& limits, const LinearSolver& solver) {
     const Result solved = runCurves(scene.curves, scene.box, scene.options, limits, solver);
+    const auto densityStart = std::chrono::steady_clock::now();
     // The builtin's own evaluation, so the displacement is the function a field would call.
     const FunctionInfo* warped = findFunction("warped_fbm");
     VOXC_ASSERT(warped != nullptr);
@@ -52,6 +54,9 @@ SolveTable solveScene(const Scene& scene, const Limits& limits, const LinearSolv
                 table.density[i] = density;
                 if (materials && density >= 0.5f) table.material[i] = uint8_t(solved.material.material[i]);
             }
+    table.phaseMs = solved.phaseMs;
+    table.phaseMs.emplace_back(
+        "density", std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - densityStart).count());
     for (const SolveReport& report : solved.solves)
         table.solves.push_back({report.name, report.levels, report.residuals});
     return table;

@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace voxc {
@@ -39,6 +40,9 @@ struct SolveTable {
     std::string source = "curves"; // the block kind that made it: "curves" or "terrain"
     std::string notes;             // what the solve did besides `solves`, for reports (may be empty)
     std::shared_ptr<const TerrainMaps> terrainMaps; // terrain blocks only
+    // Wall time of the solve's parts in order (curves: voxelize, normals, parameters, material,
+    // surface, smoothing, density), for benchmarks; never printed, nothing depends on it.
+    std::vector<std::pair<std::string, double>> phaseMs;
 
     uint64_t cellCount() const { return uint64_t(size.x) * uint64_t(size.y) * uint64_t(size.z); }
 };

@@ -9,9 +9,10 @@
 
 namespace voxc {
 
-// The program for `components` (2 or 3) unknowns per cell on the hierarchy `levels`
-// (curves::multigridLevels): buffers 0 mask, 1-3 u, 4-6 f (levels one after another, finest
-// first; 1 word for an unused component), 7 the max residual's bits.
+// The program for `components` (1 to 3) unknowns per cell on the hierarchy `levels`
+// (curves::multigridLevels): buffers 0 the Dirichlet mask, 1 the unknowns u, 2 the right-hand
+// sides f (levels one after another, finest first; a cell's components side by side), 3 the max
+// residual's bits.
 SolveProgram multigridProgram(const std::vector<curves::MultigridLevel>& levels, int32_t components, float tolerance,
                               int32_t maxCycles);
 
