@@ -2,6 +2,7 @@
 
 #include "voxc/check/Check.h"
 #include "voxc/core/Errors.h"
+#include "voxc/mesh/Lod.h"
 #include "voxc/mesh/MarchingCubes.h"
 #include "voxc/stages/Pipeline.h"
 #include "voxc/vulkan/Executor.h"
@@ -95,6 +96,16 @@ void registerMeshCases(JsonReporter& reporter, VulkanContext& context, const std
                     input->make(context);
                     size_t triangles = meshMarchingCubes(*input->grid, {}).triangles.size() / 3; // warm-up
                     for (auto _ : state) triangles = meshMarchingCubes(*input->grid, {}).triangles.size() / 3;
+                    setCounters(state, input->n, triangles);
+                });
+                // Levels 0-2 around a corner of the grid, transition cells where they meet; the
+                // pyramid is made once, outside the timing (it changes only with the voxels).
+                add(fmt::format("mesh_lod_{}", example), "host", hostDescription(), [input, &context](benchmark::State& state) {
+                    input->make(context);
+                    const LodPyramid pyramid(*input->grid, 2);
+                    const LodLayout layout = LodLayout::aroundPoint(input->grid->layout(), glm::vec3(0.0f, float(input->n) / 2, 0.0f), 2);
+                    size_t triangles = meshLod(pyramid, layout, {}).triangles.size() / 3; // warm-up
+                    for (auto _ : state) triangles = meshLod(pyramid, layout, {}).triangles.size() / 3;
                     setCounters(state, input->n, triangles);
                 });
                 add(sn, "host", hostDescription(), [input, &context](benchmark::State& state) {
