@@ -111,7 +111,7 @@ void runEvolve(const EvolveOptions& options) {
     }
     std::vector<RolePath> inputs;
     for (const std::string& path : inputPaths) inputs.push_back({"an input", path});
-    const RolePath outputs[] = {{"-o", options.outputDir}};
+    const RolePath outputs[] = {{"-o", options.outputDir, true}};
     refuseInputsInside({"-o", options.outputDir}, inputs);
     refuseClashingPaths(inputs, outputs);
     if (std::filesystem::exists(options.outputDir) && !std::filesystem::is_directory(options.outputDir))

@@ -35,6 +35,9 @@ void refuseClashingPaths(std::span<const RolePath> inputs, std::span<const RoleP
     for (size_t o = 0; o < outputs.size(); ++o) {
         const RolePath& output = outputs[o];
         if (output.path.empty()) continue;
+        std::error_code ec;
+        if (!output.isDirectory && fs::is_directory(output.path, ec))
+            throw UserError(fmt::format("{} '{}' is a directory: give a file name", output.role, output.path));
         for (const RolePath& input : inputs)
             if (!input.path.empty() && sameFile(output.path, input.path))
                 throw UserError(fmt::format("{} '{}' is {} '{}': voxc never writes over a file it reads", output.role,

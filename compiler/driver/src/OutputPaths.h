@@ -10,6 +10,7 @@ namespace voxc::driver {
 struct RolePath {
     std::string role;
     std::string path;
+    bool isDirectory = false; // an output directory (evolve's -o), not a file
 };
 
 // True when both name one file: the same device and inode when both exist (so a symlink or a
@@ -17,7 +18,8 @@ struct RolePath {
 // of the part that exists (std::filesystem::weakly_canonical).
 bool sameFile(const std::string& a, const std::string& b);
 
-// UserError naming the two roles when an output is an input or two outputs are one file.
+// UserError naming the two roles when an output is an input or two outputs are one file, or
+// when an output file names an existing directory (refused before any work, not at write time).
 // Empty paths (flags not given) are skipped.
 void refuseClashingPaths(std::span<const RolePath> inputs, std::span<const RolePath> outputs);
 

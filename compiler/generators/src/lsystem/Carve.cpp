@@ -119,7 +119,7 @@ std::vector<StructuralPoint> structuralPoints(const Skeleton& skeleton, const Ca
         if (count > limits.maxCentres)
             throw LimitError("maxCentres", count, limits.maxCentres,
                              "the carve's structural points (one per spacing along the skeleton and its connections, "
-                             "plus the leaves) would number at least");
+                             "plus the leaves) would number at least", "CarveLimits");
     });
     std::vector<StructuralPoint> points;
     points.reserve(size_t(count));
@@ -149,15 +149,15 @@ PointBins binCarveCells(const PointSet& set, glm::ivec3 worldOrigin, glm::ivec3 
             throw LimitError("maxCellTests", e.amount, e.cap,
                              fmt::format("binning the carve's points would test this many (point, {}^3 cell) pairs "
                                          "(their bounding boxes; long segments or a large radius make many) at least",
-                                         kPointSetCellSize));
+                                         kPointSetCellSize), "CarveLimits");
         if (std::string_view(e.limit) == "perCell")
             throw LimitError("maxPerCell", e.amount, e.cap,
                              fmt::format("one {}^3 cell would list this many centres or skeleton segments of the carve "
                                          "(the points whose reach meets it) at least",
-                                         kPointSetCellSize));
+                                         kPointSetCellSize), "CarveLimits");
         throw LimitError("maxListEntries", e.amount, e.cap,
                          "the carve's per-cell lists (with those of the lsystem_cave features before it) would hold "
-                         "at least");
+                         "at least", "CarveLimits");
     }
 }
 
@@ -173,7 +173,7 @@ std::shared_ptr<const PointSet> carvePointSet(const Skeleton& skeleton, const Ca
     forEachSegment(skeleton, [&](glm::dvec3, glm::dvec3, SymbolType) { ++segments; });
     if (segments > limits.maxClearanceSegments)
         throw LimitError("maxClearanceSegments", segments, limits.maxClearanceSegments,
-                         "the carve's clearance segments (skeleton and connection lines) would number");
+                         "the carve's clearance segments (skeleton and connection lines) would number", "CarveLimits");
     set->segments.reserve(size_t(segments));
     forEachSegment(skeleton,
                    [&](glm::dvec3 a, glm::dvec3 b, SymbolType) { set->segments.push_back(floatSegment(a, b)); });

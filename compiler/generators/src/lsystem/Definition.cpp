@@ -30,8 +30,9 @@ bool ConstrainedMode::contains(glm::dvec3 p) const {
     return p.x >= min.x && p.y >= min.y && p.z >= min.z && p.x <= max.x && p.y <= max.y && p.z <= max.z;
 }
 
-LimitError::LimitError(std::string limitName, uint64_t amountNeeded, uint64_t capValue, std::string detail)
-    : UserError(fmt::format("{}: {} (Limits::{} is {})", detail, amountNeeded, limitName, capValue)),
+LimitError::LimitError(std::string limitName, uint64_t amountNeeded, uint64_t capValue, std::string detail,
+                       std::string_view owner)
+    : UserError(fmt::format("{}: {} ({}::{} is {})", detail, amountNeeded, owner, limitName, capValue)),
       limit(std::move(limitName)), amount(amountNeeded), cap(capValue) {}
 
 bool isThesisSymbol(char c) {

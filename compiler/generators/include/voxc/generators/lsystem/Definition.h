@@ -101,8 +101,9 @@ struct Definition {
 
 // The expansion or interpretation would pass a bound: names it, with the predicted amount.
 struct LimitError : UserError {
-    LimitError(std::string limit, uint64_t amount, uint64_t cap, std::string detail);
-    std::string limit; // "maxSymbols", "maxExpansions", "maxSegments", "maxDepth"
+    // `owner` names the struct that holds the cap, so the message says where to raise it.
+    LimitError(std::string limit, uint64_t amount, uint64_t cap, std::string detail, std::string_view owner = "Limits");
+    std::string limit; // "maxSymbols", "maxExpansions", "maxSegments", "maxDepth", "maxCentres", ...
     uint64_t amount;   // what the work would need (saturated at UINT64_MAX)
     uint64_t cap;
 };
