@@ -152,7 +152,7 @@ expect mat_unwritable_npy 1 "cannot write" -- "$voxc" run "$work/mat.vox" --devi
     --materials "$work/no-dir/m.npy"
 expect_no_file mat_no_partial_npy "$work/no-dir"
 mkdir "$work/taken.obj"
-expect mat_unwritable_obj 1 "cannot write" -- "$voxc" run "$work/mat.vox" --device lavapipe -o "$work/taken.obj"
+expect mat_unwritable_obj 1 "is a directory" -- "$voxc" run "$work/mat.vox" --device lavapipe -o "$work/taken.obj"
 expect_no_file mat_no_partial_mtl "$work/taken.mtl"
 
 # expect_same NAME A B: the files must be byte-identical (a refused or failed command kept the user's file).
@@ -180,13 +180,20 @@ expect interp_outputs_clash 1 "are the same file" -- "$voxc" interp "$work/mat.v
     --voxels "$work/same.npy" --materials "$work/./same.npy"
 expect explore_outputs_clash 1 "--csv '.*' and --summary '.*' are the same file" -- "$voxc" explore \
     "$src/examples/terrain.vox" --param ROCK --range 0.3:0.5:0.2 --csv "$work/same.csv" --summary "$work/same.csv"
+# a rule written once with `symmetry` runs as named variants, and the trace names them
+expect trace_names_variants 0 "rule notch@(mirror_x|mirror_z|rot180y)" -- "$voxc" interp "$src/tests/e2e/cases/symmetry.vox" \
+    --trace --trace-limit 50
+mkdir -p "$work/adir.ply" "$work/adir.npy"
+expect output_is_directory 1 "-o '.*adir\.ply' is a directory: give a file name" -- "$voxc" run "$work/mat.vox" \
+    --device lavapipe -o "$work/adir.ply"
+expect voxels_output_is_directory 1 "--voxels '.*' is a directory" -- "$voxc" interp "$work/mat.vox" --voxels "$work/adir.npy"
 expect compile_over_input_dir 1 "contains the input" -- "$voxc" compile "$work/mat.vox" -o "$work"
 
 # a failed OBJ export keeps the user's .mtl beside it; a failed output keeps the other outputs' old files
-mkdir "$work/kept.obj"
 printf 'newmtl the_users_own\nKd 1 0 0\n' > "$work/kept.mtl"
 cp "$work/kept.mtl" "$work/kept.mtl.orig"
-expect obj_failure 1 "cannot write" -- "$voxc" run "$work/mat.vox" --device lavapipe -o "$work/kept.obj"
+expect obj_failure 1 "cannot write" -- "$voxc" run "$work/mat.vox" --device lavapipe -o "$work/kept.obj" \
+    --materials "$work/no-dir/m.npy"
 expect_same obj_failure_keeps_mtl "$work/kept.mtl.orig" "$work/kept.mtl"
 printf 'the user'"'"'s voxels' > "$work/kept.npy"
 cp "$work/kept.npy" "$work/kept.npy.orig"

@@ -11,6 +11,7 @@
 #include <bitset>
 #include <fmt/format.h>
 #include <glm/vector_relational.hpp>
+#include <set>
 
 namespace voxc::check {
 
@@ -93,7 +94,9 @@ void analyseGrammar(Context& context, const CheckedGrammar& checked) {
     for (size_t r = 0; r < grammar.rules.size(); ++r) {
         const Rule& rule = grammar.rules[r];
         for (const SymbolCell& cell : rule.symbol) sets[r].push_back(acceptedValues(cell));
-        canMatch[r] = analyseSymbol(context, rule, checked.rules[r], sets[r]);
+        // A variant matches exactly when its original does (the same cells, moved): say it once.
+        canMatch[r] = checked.rules[r].isVariant ? canMatch[r - 1]
+                                                 : analyseSymbol(context, rule, checked.rules[r], sets[r]);
 
         const glm::ivec3 extent = grammar.boundsMax - grammar.boundsMin;
         if (glm::any(glm::greaterThan(rule.size, extent)))
@@ -104,13 +107,19 @@ void analyseGrammar(Context& context, const CheckedGrammar& checked) {
                                                     formatVec(extent)));
     }
     // W0203: only rules of one size share a sweep, and only equal priorities leave the choice to weights.
+    // Variants of one declared rule overlapping is what symmetry asks for; other pairs are
+    // reported once per pair of declared rules.
+    std::set<std::pair<size_t, size_t>> reportedPairs;
     for (size_t b = 0; b < grammar.rules.size(); ++b)
         for (size_t a = 0; a < b; ++a) {
             const Rule& first = grammar.rules[a];
             const Rule& second = grammar.rules[b];
             if (first.size != second.size || first.priority != second.priority || !canMatch[a] || !canMatch[b])
                 continue;
+            const std::pair declaredPair{checked.rules[a].declaredIndex, checked.rules[b].declaredIndex};
+            if (declaredPair.first == declaredPair.second || reportedPairs.count(declaredPair)) continue;
             if (!canMatchTogether(sets[a], sets[b])) continue;
+            reportedPairs.insert(declaredPair);
             context.diagnostics.warning("W0203", second.loc,
                                         fmt::format("rules '{}' and '{}' have the same size and priority and can "
                                                     "both match the same window; their weights decide which fires",

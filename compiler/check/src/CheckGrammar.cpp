@@ -2,6 +2,7 @@
 #include "Layout.h"
 #include "Sections.h"
 #include "Suggest.h"
+#include "Symmetry.h"
 #include "Values.h"
 
 #include <cmath>
@@ -16,9 +17,10 @@ namespace {
 constexpr int64_t kInt32Min = std::numeric_limits<int32_t>::min();
 constexpr int64_t kInt32Max = std::numeric_limits<int32_t>::max();
 
-struct CheckedRule {
-    Rule rule;
-    RuleSyntax syntax;
+// A declared rule and, when it has a `symmetry` key, the elements it is expanded by.
+struct DeclaredRule {
+    CheckedRule checked;
+    std::optional<std::vector<SymmetryElement>> symmetry;
 };
 
 // The `symbol` or `transform` block of a rule: exactly one (E0009 when missing, E0003 twice).
@@ -77,8 +79,8 @@ void readWeight(Context& context, const ast::Assignment& a, Rule& rule) {
     rule.weightUnits = uint32_t(units);
 }
 
-std::optional<CheckedRule> checkRule(Context& context, const ast::Block& block) {
-    static constexpr std::string_view kKeys[] = {"size", "priority", "weight", "probability"};
+std::optional<DeclaredRule> checkRule(Context& context, const ast::Block& block) {
+    static constexpr std::string_view kKeys[] = {"size", "priority", "weight", "probability", "symmetry"};
     static constexpr std::string_view kParts[] = {"symbol", "transform"};
     if (!checkLabel(context, block, true)) return std::nullopt;
     const std::string where = fmt::format("rule '{}'", *block.label);
@@ -91,7 +93,8 @@ std::optional<CheckedRule> checkRule(Context& context, const ast::Block& block) 
                                                   didYouMean(part.kind, kParts)));
     const int errorsBefore = context.diagnostics.errorCount();
 
-    CheckedRule out;
+    DeclaredRule declared;
+    CheckedRule& out = declared.checked;
     out.rule.name = *block.label;
     out.rule.loc = block.labelLoc;
     bool sizeOk = false;
@@ -118,6 +121,7 @@ std::optional<CheckedRule> checkRule(Context& context, const ast::Block& block) 
             out.rule.probabilityUnits = uint32_t(std::round(*probability * double(kProbabilityOne)));
         }
     }
+    if (const ast::Assignment* a = keys.find("symmetry")) declared.symmetry = readSymmetry(context, *a);
     const ast::Block* symbol = findPart(context, block, "symbol", where);
     const ast::Block* transform = findPart(context, block, "transform", where);
     if (symbol) out.syntax.symbolLoc = symbol->loc;
@@ -125,7 +129,7 @@ std::optional<CheckedRule> checkRule(Context& context, const ast::Block& block) 
     if (sizeOk && transform) convertTransform(context, *transform, out);
 
     if (context.diagnostics.errorCount() != errorsBefore) return std::nullopt;
-    return out;
+    return declared;
 }
 
 // Bounds default to the whole grid and must lie inside it (nothing is clipped silently).
@@ -179,7 +183,7 @@ void checkSweepSizes(Context& context, const ast::Block& block, const Grammar& g
 } // namespace
 
 std::optional<CheckedGrammar> checkGrammar(Context& context, const ast::Block& block, const World* world) {
-    static constexpr std::string_view kKeys[] = {"stride", "bounds", "iterations", "clamp"};
+    static constexpr std::string_view kKeys[] = {"stride", "bounds", "iterations", "clamp", "symmetry"};
     static constexpr std::string_view kBlocks[] = {"rule"};
     if (!checkLabel(context, block, true)) return std::nullopt;
     const std::string where = fmt::format("grammar '{}'", *block.label);
@@ -212,7 +216,12 @@ std::optional<CheckedGrammar> checkGrammar(Context& context, const ast::Block& b
         }
     }
 
+    std::vector<SymmetryElement> grammarSymmetry = *symmetryGroup("none");
+    if (const ast::Assignment* a = keys.find("symmetry"))
+        if (auto elements = readSymmetry(context, *a)) grammarSymmetry = std::move(*elements);
+
     std::map<std::string, SourceLoc> ruleNames;
+    size_t declaredRules = 0;
     for (const ast::Block& ruleBlock : block.blocks) {
         if (ruleBlock.kind != "rule") {
             context.diagnostics.error("E0008", ruleBlock.loc,
@@ -228,8 +237,11 @@ std::optional<CheckedGrammar> checkGrammar(Context& context, const ast::Block& b
                                           {{it->second, "first declared here"}});
         }
         if (auto rule = checkRule(context, ruleBlock)) {
-            grammar.rules.push_back(std::move(rule->rule));
-            out.rules.push_back(std::move(rule->syntax));
+            rule->checked.syntax.declaredIndex = declaredRules++;
+            for (CheckedRule& variant : expandSymmetry(rule->checked, rule->symmetry.value_or(grammarSymmetry))) {
+                grammar.rules.push_back(std::move(variant.rule));
+                out.rules.push_back(std::move(variant.syntax));
+            }
         }
     }
     if (block.blocks.empty())

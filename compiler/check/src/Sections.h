@@ -17,6 +17,15 @@ struct RuleSyntax {
     SourceLoc sizeLoc;
     SourceLoc symbolLoc;
     std::vector<SourceLoc> symbolCells; // in Program's cell order (cellIndex)
+    // The declared rule this one is (index among the grammar's declared rules); a symmetry
+    // variant shares it with its original, so warnings are reported once per declared rule.
+    size_t declaredIndex = 0;
+    bool isVariant = false;
+};
+
+struct CheckedRule {
+    Rule rule;
+    RuleSyntax syntax;
 };
 
 struct CheckedGrammar {
