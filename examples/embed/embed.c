@@ -1,5 +1,6 @@
-/* An engine's use of libvoxc (docs/embedding.md): load a .vox file, generate its grid, mesh it
- * and read the arrays. Usage: embed FILE.vox [vulkan|interpreter]
+/* An engine's use of libvoxc (docs/embedding.md): load a .vox file, generate its grid (or a box
+ * of it), mesh it and read the arrays.
+ * Usage: embed FILE.vox [vulkan|interpreter] [MINX,MINY,MINZ:MAXX,MAXY,MAXZ]
  * Prints the grid size, the solid voxel count and the mesh's vertex and triangle counts. */
 #include <voxc/voxc.h>
 
@@ -12,22 +13,28 @@ static int fail(const char* what) {
 }
 
 int main(int argc, char** argv) {
-    if (argc < 2 || argc > 3) {
-        fprintf(stderr, "usage: embed FILE.vox [vulkan|interpreter]\n");
+    int32_t min[3], max[3];
+    const int region = argc == 4 && sscanf(argv[3], "%d,%d,%d:%d,%d,%d", &min[0], &min[1], &min[2], &max[0], &max[1],
+                                           &max[2]) == 6;
+    if (argc < 2 || argc > 4 || (argc == 4 && !region)) {
+        fprintf(stderr, "usage: embed FILE.vox [vulkan|interpreter] [MINX,MINY,MINZ:MAXX,MAXY,MAXZ]\n");
         return 2;
     }
     voxc_backend backend = VOXC_BACKEND_VULKAN;
-    if (argc == 3 && strcmp(argv[2], "interpreter") == 0) backend = VOXC_BACKEND_INTERPRETER;
+    if (argc >= 3 && strcmp(argv[2], "interpreter") == 0) backend = VOXC_BACKEND_INTERPRETER;
 
     voxc_program* program = NULL;
     if (voxc_program_load(argv[1], NULL, &program) != VOXC_OK) return fail("loading");
     voxc_grid* grid = NULL;
-    if (voxc_generate(program, backend, &grid) != VOXC_OK) {
+    const voxc_status generated =
+        region ? voxc_generate_region(program, min, max, backend, &grid) : voxc_generate(program, backend, &grid);
+    if (generated != VOXC_OK) {
         voxc_program_free(program);
         return fail("generating");
     }
-    int32_t size[3];
+    int32_t size[3], origin[3];
     voxc_grid_size(grid, size);
+    voxc_grid_origin(grid, origin);
     const size_t voxels = (size_t)size[0] * (size_t)size[1] * (size_t)size[2];
     const float* densities = voxc_grid_densities(grid);
     size_t solid = 0;
@@ -44,7 +51,8 @@ int main(int argc, char** argv) {
     size_t perMaterial[256] = {0};
     for (size_t t = 0; t < triangles; ++t) perMaterial[materials[t]]++;
 
-    printf("%s, grid %dx%dx%d: %zu of %zu voxels solid\n", voxc_version(), size[0], size[1], size[2], solid, voxels);
+    printf("%s, grid %dx%dx%d at %d,%d,%d: %zu of %zu voxels solid\n", voxc_version(), size[0], size[1], size[2],
+           origin[0], origin[1], origin[2], solid, voxels);
     printf("mesh: %zu vertices, %zu triangles\n", voxc_mesh_vertex_count(mesh), triangles);
     for (int id = 1; id < 256; ++id)
         if (perMaterial[id] > 0) printf("  %s: %zu triangles\n", voxc_program_material_name(program, (uint8_t)id), perMaterial[id]);

@@ -77,7 +77,26 @@ if [ "$with_libvoxc" = 1 ]; then
     expect embed_error_message 1 "nope.vox: error E0100" -- "$work/embed/embed" "$work/nope.vox"
     expect embed_cmake_configure 0 "" -- cmake -S "$work/embed" -B "$work/embed/build" -G Ninja -DCMAKE_PREFIX_PATH="$prefix"
     expect embed_cmake_build 0 "" -- cmake --build "$work/embed/build"
-    expect embed_cmake_runs 0 "grid 32x16x32: 8192 of 16384 voxels solid" -- "$work/embed/build/embed" "$src/tests/pipeline/project/world.vox" interpreter
+    expect embed_cmake_runs 0 "grid 32x16x32 at 0,0,0: 8192 of 16384 voxels solid" -- "$work/embed/build/embed" "$src/tests/pipeline/project/world.vox" interpreter
+    # A box of the world at odd offsets: the voxels and the mesh of `voxc interp/run --region`.
+    box=10,5,3:40,37,29
+    "$prefix/bin/voxc" run "$src/examples/overhang.vox" --region "$box" -o "$work/box.ply" --chunk 8 > "$work/box.out" 2>&1
+    box_counts=$(grep -Eo '[0-9]+ vertices, [0-9]+ triangles' "$work/box.out" | head -1)
+    "$prefix/bin/voxc" interp "$src/examples/overhang.vox" --region "$box" --voxels "$work/box.npy" > /dev/null 2>&1
+    box_solid=$(python3 - "$work/box.npy" <<'PY'
+import array, struct, sys
+data = open(sys.argv[1], "rb").read()
+assert data[:6] == b"\x93NUMPY" and data[6] == 1 and b"'<f4'" in data[:128]
+header = struct.unpack("<H", data[8:10])[0]
+print(sum(1 for d in array.array("f", data[10 + header:]) if d > 0.5))
+PY
+)
+    for backend in vulkan interpreter; do
+        "$work/embed/embed" "$src/examples/overhang.vox" $backend "$box" > "$work/box_$backend.out" 2>&1
+        expect "embed_region_voxels_$backend" 0 "grid 30x32x26 at 10,5,3: $box_solid of 24960 voxels solid" -- cat "$work/box_$backend.out"
+        expect "embed_region_mesh_$backend" 0 "mesh: $box_counts" -- cat "$work/box_$backend.out"
+    done
+    expect embed_region_outside 1 "not inside the grid" -- "$work/embed/embed" "$src/examples/overhang.vox" vulkan 0,0,0:999,1,1
 fi
 
 echo "$passed passed, $failed failed"

@@ -7,6 +7,7 @@
 #include "voxc/grid/Grid.h"
 #include "voxc/mesh/MarchingCubes.h"
 #include "voxc/stages/Pipeline.h"
+#include "voxc/stages/Region.h"
 #include "voxc/vulkan/Context.h"
 #include "voxc/vulkan/Executor.h"
 
@@ -75,6 +76,27 @@ voxc::Program checkedProgram(const char* path, const voxc_load_options* options)
     return program;
 }
 
+// The program's whole grid, run by `backend`; `package` is the program's compiled package.
+voxc::ChunkedGrid runGrid(const voxc::Program& program, const voxc::KernelPackage& package, voxc_backend backend) {
+    if (backend == VOXC_BACKEND_VULKAN) {
+        voxc::VulkanContext context(voxc::ContextOptions{});
+        voxc::VulkanExecutor executor(context, package);
+        return executor.run().grid;
+    }
+    const voxc::World& world = program.world;
+    return voxc::ChunkedGrid::fromDense(voxc::interpret(program),
+                                        voxc::ChunkLayout::make(world.origin, world.size, world.chunkSize));
+}
+
+voxc_grid* gridOf(voxc::ChunkedGrid chunked) {
+    voxc::DenseGrid dense = chunked.toDense();
+    return new voxc_grid{std::move(dense), std::move(chunked)};
+}
+
+bool validBackend(voxc_backend backend) {
+    return backend == VOXC_BACKEND_VULKAN || backend == VOXC_BACKEND_INTERPRETER;
+}
+
 } // namespace
 
 extern "C" {
@@ -111,23 +133,42 @@ const char* voxc_program_material_name(const voxc_program* program, uint8_t id) 
 
 voxc_status voxc_generate(const voxc_program* program, voxc_backend backend, voxc_grid** out) {
     if (!program || !out) return fail(VOXC_ERROR_ARGUMENT, "voxc_generate: program and out must not be null");
-    if (backend != VOXC_BACKEND_VULKAN && backend != VOXC_BACKEND_INTERPRETER)
+    if (!validBackend(backend))
         return fail(VOXC_ERROR_ARGUMENT, fmt::format("voxc_generate: unknown backend {}", int(backend)));
     *out = nullptr;
+    return guarded([&] { *out = gridOf(runGrid(program->program, program->package, backend)); });
+}
+
+voxc_status voxc_generate_region(const voxc_program* program, const int32_t min[3], const int32_t max[3],
+                                 voxc_backend backend, voxc_grid** out) {
+    if (!program || !min || !max || !out)
+        return fail(VOXC_ERROR_ARGUMENT, "voxc_generate_region: program, min, max and out must not be null");
+    if (!validBackend(backend))
+        return fail(VOXC_ERROR_ARGUMENT, fmt::format("voxc_generate_region: unknown backend {}", int(backend)));
+    *out = nullptr;
+    const voxc::World& world = program->program.world;
+    const voxc::stages::GridBox region{glm::ivec3(min[0], min[1], min[2]) - world.origin,
+                                       glm::ivec3(max[0], max[1], max[2]) - world.origin};
+    for (int axis = 0; axis < 3; ++axis)
+        if (region.min[axis] < 0 || region.max[axis] > world.size[axis] || region.min[axis] >= region.max[axis])
+            return fail(VOXC_ERROR_ARGUMENT,
+                        fmt::format("voxc_generate_region: the box {},{},{}:{},{},{} is empty or not inside the grid "
+                                    "{},{},{}:{},{},{}",
+                                    min[0], min[1], min[2], max[0], max[1], max[2], world.origin.x, world.origin.y,
+                                    world.origin.z, world.origin.x + world.size.x, world.origin.y + world.size.y,
+                                    world.origin.z + world.size.z));
     return guarded([&] {
-        const voxc::World& world = program->program.world;
-        const voxc::ChunkLayout layout = voxc::ChunkLayout::make(world.origin, world.size, world.chunkSize);
-        if (backend == VOXC_BACKEND_VULKAN) {
-            voxc::VulkanContext context(voxc::ContextOptions{});
-            voxc::VulkanExecutor executor(context, program->package);
-            voxc::ChunkedGrid chunked = executor.run().grid;
-            voxc::DenseGrid dense = chunked.toDense();
-            *out = new voxc_grid{std::move(dense), std::move(chunked)};
-        } else {
-            voxc::DenseGrid dense = voxc::interpret(program->program);
-            voxc::ChunkedGrid chunked = voxc::ChunkedGrid::fromDense(dense, layout);
-            *out = new voxc_grid{std::move(dense), std::move(chunked)};
-        }
+        const voxc::stages::PipelineHalo halo = voxc::stages::pipelineHalo(program->program);
+        const voxc::stages::GridBox computed = voxc::stages::haloBox(program->program, region, halo.radius);
+        const voxc::Program regionProgram = voxc::stages::regionProgram(program->program, computed);
+        const voxc::KernelPackage package =
+            backend == VOXC_BACKEND_VULKAN ? voxc::compileProgram(regionProgram) : voxc::KernelPackage{};
+        const voxc::ChunkedGrid grid = runGrid(regionProgram, package, backend);
+        const glm::ivec3 offset = region.min - computed.min;
+        const voxc::DenseGrid voxels = voxc::stages::cropGrid(grid.toDense(), {offset, offset + region.size()});
+        const voxc::ChunkLayout& layout = grid.layout();
+        *out = gridOf(voxc::ChunkedGrid::fromDense(
+            voxels, voxc::ChunkLayout::make(layout.gridOrigin + offset, voxels.size(), layout.chunkSize)));
     });
 }
 
@@ -136,6 +177,11 @@ void voxc_grid_free(voxc_grid* grid) { delete grid; }
 void voxc_grid_size(const voxc_grid* grid, int32_t size[3]) {
     if (!grid || !size) return;
     for (int axis = 0; axis < 3; ++axis) size[axis] = grid->dense.size()[axis];
+}
+
+void voxc_grid_origin(const voxc_grid* grid, int32_t origin[3]) {
+    if (!grid || !origin) return;
+    for (int axis = 0; axis < 3; ++axis) origin[axis] = grid->chunked.layout().gridOrigin[axis];
 }
 
 const float* voxc_grid_densities(const voxc_grid* grid) { return grid ? grid->dense.data().data() : nullptr; }

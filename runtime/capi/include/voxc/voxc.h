@@ -64,9 +64,16 @@ VOXC_API const char* voxc_program_material_name(const voxc_program* program, uin
 
 /* Runs the program over its grid. On success *out holds a grid to free with voxc_grid_free. */
 VOXC_API voxc_status voxc_generate(const voxc_program* program, voxc_backend backend, voxc_grid** out);
+/* Computes only the box min <= p < max (world coordinates) of the program's grid, grown by the
+ * pipeline's halo and cropped back, so its voxels equal the whole grid's there, bit for bit
+ * (`voxc run --region`). VOXC_ERROR_ARGUMENT for an empty box or one not inside the grid. */
+VOXC_API voxc_status voxc_generate_region(const voxc_program* program, const int32_t min[3], const int32_t max[3],
+                                          voxc_backend backend, voxc_grid** out);
 VOXC_API void voxc_grid_free(voxc_grid* grid);
 
 VOXC_API void voxc_grid_size(const voxc_grid* grid, int32_t size[3]);
+/* The world coordinate of voxel (0,0,0): the program's origin, or a region's minimum corner. */
+VOXC_API void voxc_grid_origin(const voxc_grid* grid, int32_t origin[3]);
 /* size[0]*size[1]*size[2] densities (solid where > the mesher's iso, 0.5 by default), x fastest:
  * voxel (x,y,z) at x + size[0]*(y + size[1]*z). */
 VOXC_API const float* voxc_grid_densities(const voxc_grid* grid);
