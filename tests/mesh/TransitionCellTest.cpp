@@ -71,7 +71,7 @@ void expectPatternsManifold(const Embedding& e, size_t samples /* 0: every patte
             const MeshQuality q = meshPattern(e, pattern, fill);
             ASSERT_TRUE(q.manifold()) << "pattern " << pattern << " fill " << fill << ": " << describeMeshQuality(q);
             ASSERT_EQ(q.zeroAreaTriangles + q.repeatedIndexTriangles, 0u) << "pattern " << pattern << " fill " << fill;
-            if (pattern != 0 || fill != 0.0f) ASSERT_GT(q.signedVolume, 0.0) << "pattern " << pattern << " fill " << fill;
+            if (pattern != 0 || fill != 0.0f) { ASSERT_GT(q.signedVolume, 0.0) << "pattern " << pattern << " fill " << fill; }
         }
     }
 }

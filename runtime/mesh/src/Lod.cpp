@@ -330,6 +330,16 @@ public:
         return {first, last};
     }
 
+    // The world box of the samples the chunk reads (its cells' corners and, for the normals, one
+    // step further); empty (first > last) when it has no cells.
+    std::pair<glm::ivec3, glm::ivec3> readBox(const ChunkPlan& plan) const {
+        const auto [first, last] = cellRange(plan);
+        const int step = 1 << plan.level;
+        if (glm::any(glm::lessThan(last, first))) return {first, last};
+        return {first - step, last + 2 * step};
+    }
+    glm::ivec3 gridOrigin() const { return pyramid_.lod0().layout().gridOrigin; }
+
     // The chunk's cells that take samples of the finer level (for LodStats).
     size_t countTransitionCells(const ChunkPlan& plan) const {
         if (plan.finerBoxes.empty()) return 0;
@@ -348,7 +358,8 @@ public:
         if (glm::any(glm::lessThan(last, first))) return true;
         const int step = 1 << plan.level;
         const int blockLevel = plan.finerBoxes.empty() ? plan.level : plan.level - 1;
-        const LodSamples samples(pyramid_, blockLevel, first - step, last + 2 * step);
+        const auto [readFirst, readLast] = readBox(plan);
+        const LodSamples samples(pyramid_, blockLevel, readFirst, readLast);
         if (skipUniform && samples.uniform(first, last + step, iso_)) return false;
 
         const std::array<marching_cubes::CellCase, 256>& table = marching_cubes::caseTable();
@@ -458,7 +469,34 @@ private:
 
 } // namespace
 
-Mesh meshLod(const LodPyramid& pyramid, const LodLayout& layout, const MeshOptions& options, LodStats* stats) {
+struct LodMesher::State {
+    State(const LodPyramid& pyramid, const LodLayout& layout, const MeshOptions& options)
+        : layout(layout), options(options), keys(keySpace(pyramid.lod0().layout(), layout)),
+          extractor(pyramid, this->layout, keys, options.iso, marching_cubes::crossingMargin(pyramid.lod0().layout())) {}
+
+    static KeySpace keySpace(const ChunkLayout& grid, const LodLayout& layout) {
+        const int pad = 1 << layout.maxLevel();
+        return {grid.gridOrigin - pad, grid.gridSize + 2 * pad + 1, layout.maxLevel() + 1};
+    }
+
+    // Extracts the chunks `which` (indices into plans), each into its own part.
+    size_t extract(const std::vector<size_t>& which) {
+        return forEachChunk(which.size(), [&](size_t i) {
+            parts[which[i]] = ChunkMesh{};
+            return extractor.extract(plans[which[i]], options.skipUniformChunks, parts[which[i]]);
+        });
+    }
+
+    const LodLayout layout;
+    const MeshOptions options;
+    const KeySpace keys;
+    const ChunkExtractor extractor;
+    std::vector<ChunkPlan> plans;
+    std::vector<ChunkMesh> parts;
+    LodStats stats;
+};
+
+LodMesher::LodMesher(const LodPyramid& pyramid, const LodLayout& layout, const MeshOptions& options) {
     checkLodLayout(layout);
     const ChunkLayout& grid = pyramid.lod0().layout();
     const LodLayout expected = LodLayout::uniform(grid, 0);
@@ -466,29 +504,53 @@ Mesh meshLod(const LodPyramid& pyramid, const LodLayout& layout, const MeshOptio
         throw InternalError("meshLod: the layout does not cover the grid's chunks");
     if (layout.maxLevel() > pyramid.maxLevel()) throw InternalError("meshLod: the layout needs levels the pyramid lacks");
 
-    const int pad = 1 << layout.maxLevel();
-    const KeySpace keys{grid.gridOrigin - pad, grid.gridSize + 2 * pad + 1, layout.maxLevel() + 1};
-    const ChunkExtractor extractor(pyramid, layout, keys, options.iso, marching_cubes::crossingMargin(grid));
-    const std::vector<glm::ivec3> chunks = cellChunks(grid);
-    std::vector<ChunkPlan> plans;
-    for (const glm::ivec3& chunk : chunks) plans.push_back(extractor.plan(chunk));
-    std::vector<ChunkMesh> parts(chunks.size());
-    const size_t skipped = forEachChunk(chunks.size(), [&](size_t i) { return extractor.extract(plans[i], options.skipUniformChunks, parts[i]); });
-    if (stats) {
-        *stats = LodStats{};
-        stats->chunks = chunks.size();
-        stats->skippedChunks = skipped;
-        for (const ChunkPlan& plan : plans) {
-            ++stats->chunksPerLevel[size_t(plan.level)];
-            stats->transitionCells += extractor.countTransitionCells(plan);
-            for (int axis = 0; axis < 3; ++axis)
-                for (int side : {-1, 1}) {
-                    const glm::ivec3 n = plan.chunk + axisStep(axis, side);
-                    stats->transitionFaces += layout.contains(n) && layout.levelAt(n) < plan.level;
-                }
-        }
+    state_ = std::make_unique<State>(pyramid, layout, options);
+    State& s = *state_;
+    std::vector<size_t> all;
+    for (const glm::ivec3& chunk : cellChunks(grid)) {
+        all.push_back(s.plans.size());
+        s.plans.push_back(s.extractor.plan(chunk));
     }
-    return marching_cubes::mergeChunks(std::move(parts));
+    s.parts.resize(s.plans.size());
+    s.stats.chunks = s.plans.size();
+    s.stats.skippedChunks = s.extract(all);
+    for (const ChunkPlan& plan : s.plans) {
+        ++s.stats.chunksPerLevel[size_t(plan.level)];
+        s.stats.transitionCells += s.extractor.countTransitionCells(plan);
+        for (int axis = 0; axis < 3; ++axis)
+            for (int side : {-1, 1}) {
+                const glm::ivec3 n = plan.chunk + axisStep(axis, side);
+                s.stats.transitionFaces += layout.contains(n) && layout.levelAt(n) < plan.level;
+            }
+    }
+}
+
+LodMesher::~LodMesher() = default;
+
+std::vector<glm::ivec3> LodMesher::update(glm::ivec3 first, glm::ivec3 last) {
+    State& s = *state_;
+    const glm::ivec3 origin = s.extractor.gridOrigin();
+    const glm::ivec3 editFirst = origin + first, editLast = origin + last;
+    std::vector<size_t> reached;
+    std::vector<glm::ivec3> chunks;
+    for (size_t i = 0; i < s.plans.size(); ++i) {
+        const auto [readFirst, readLast] = s.extractor.readBox(s.plans[i]);
+        if (glm::any(glm::lessThan(readLast, editFirst)) || glm::any(glm::greaterThan(readFirst, editLast))) continue;
+        reached.push_back(i);
+        chunks.push_back(s.plans[i].chunk);
+    }
+    s.extract(reached);
+    return chunks;
+}
+
+Mesh LodMesher::mesh() const { return marching_cubes::mergeChunks(state_->parts); }
+
+const LodStats& LodMesher::stats() const { return state_->stats; }
+
+Mesh meshLod(const LodPyramid& pyramid, const LodLayout& layout, const MeshOptions& options, LodStats* stats) {
+    const LodMesher mesher(pyramid, layout, options);
+    if (stats) *stats = mesher.stats();
+    return mesher.mesh();
 }
 
 } // namespace voxc

@@ -94,9 +94,9 @@ CellTriangles deriveCell(uint32_t points, uint32_t solid) {
     VOXC_ASSERT(validShape(points) && (solid & ~points) == 0);
     const std::vector<std::vector<int>> rings = facets(points);
 
-    // The segments: on each ring, a run of solid points is cut off by a segment from the crossing where the ring
-    // enters it to the crossing where it leaves, so the solid lies to the segment's right seen
-    // from outside (the regular table's orientation: loops counter-clockwise seen from air).
+    // The segments: on each ring, a run of solid points is cut off by a segment from the crossing
+    // where the ring enters it to the crossing where it leaves, so the solid lies to the segment's
+    // right seen from outside (the regular table's orientation: loops counter-clockwise seen from air).
     std::array<int, kSubEdgeIds> next;
     next.fill(-1);
     for (size_t f = 0; f < rings.size(); ++f) {

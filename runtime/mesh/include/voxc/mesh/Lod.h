@@ -27,6 +27,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -94,8 +95,28 @@ struct LodStats {
 };
 
 // Meshes every chunk of `layout` at its level from `pyramid` (whose maxLevel must reach the
-// layout's), with transition cells against finer neighbours; one welded mesh, closed and manifold.
-// The layout must cover the pyramid's grid (LodLayout::uniform / aroundPoint) and pass checkLodLayout.
+// layout's), with transition cells against finer neighbours, and keeps each chunk's share; mesh()
+// welds them into one mesh, closed and manifold. The layout must cover the pyramid's grid
+// (LodLayout::uniform / aroundPoint) and pass checkLodLayout (UserError otherwise). The mesher
+// refers to the pyramid, which must outlive it.
+class LodMesher {
+public:
+    LodMesher(const LodPyramid& pyramid, const LodLayout& layout, const MeshOptions& options);
+    ~LodMesher();
+    // After LOD0's grid-local voxels [first, last] changed and pyramid.refresh(first, last):
+    // re-meshes every chunk that reads a sample in that box (its cells' corners, and one step
+    // beyond for the normals), at every level, and returns those chunks. mesh() then equals a
+    // mesher built afresh.
+    std::vector<glm::ivec3> update(glm::ivec3 first, glm::ivec3 last);
+    Mesh mesh() const;
+    const LodStats& stats() const; // as of construction
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
+};
+
+// LodMesher(pyramid, layout, options).mesh(), with its stats.
 Mesh meshLod(const LodPyramid& pyramid, const LodLayout& layout, const MeshOptions& options, LodStats* stats = nullptr);
 
 } // namespace voxc
