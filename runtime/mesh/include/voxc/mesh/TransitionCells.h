@@ -23,8 +23,9 @@
 // the cell across, or along a split edge three other cells, may draw it too: the regular table's
 // rule, there a face is one facet), so no edge is used by more than two triangles,
 // and without a triangle that is flat where binary samples put the vertices (sub-edge midpoints).
-// A loop that allows no such triangulation (a few, around cells with two or three refined faces) is
-// fanned from a vertex of its own at its centre, which keeps both promises.
+// A loop that allows no such triangulation is fanned from a vertex of its own inside the cell, which
+// keeps both promises (985 of the 8,192 one-face cases, 15% of the two- and three-face cases; on
+// smooth surfaces rare: none on LodTest's sphere, 2,186 of 15,512 transition cells on noise).
 #include <array>
 #include <cstdint>
 #include <glm/vec3.hpp>
