@@ -8,6 +8,7 @@
 #include "voxc/mesh/MeshQuality.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <gtest/gtest.h>
@@ -315,7 +316,7 @@ TEST(mesh_Lod, transitionsAreWhereLevelsDiffer) {
         EXPECT_EQ(stats.transitionFaces, faces);
         EXPECT_EQ(stats.transitionCells, cells);
         EXPECT_EQ(stats.chunks, all.levels.size());
-        if (layout.maxLevel() { == 1 && levelsPresent(layout) == 1) EXPECT_EQ(stats.transitionFaces + stats.transitionCells, 0u); }
+        if (layout.maxLevel() == 1 && levelsPresent(layout) == 1) { EXPECT_EQ(stats.transitionFaces + stats.transitionCells, 0u); }
     }
 }
 
@@ -339,6 +340,24 @@ TEST(mesh_Lod, geometricErrorPerLevelFollowsTheRampWidth) {
         std::cout << "LOD " << k << " (w = 8): " << mesh.triangles.size() / 3 << " triangles, worst error " << error << "\n";
         EXPECT_LE(error, bound[k]) << k;
     }
+    // The spec's half-space split (x < 64 at LOD 0, x >= 64 at LOD 1): crack-free, and away from
+    // the transition its LOD 0 part is the regular mesh's, vertex for vertex, bit for bit.
+    const Mesh split = meshLod(pyramid, layoutBy(wide.layout(), [](glm::ivec3 chunk) { return chunk.x < 2 ? 0 : 1; }), MeshOptions{});
+    expectCrackFree(split, "sphere, half-space split");
+    const Mesh regular = meshMarchingCubes(wide, MeshOptions{});
+    auto lodZeroPart = [](const Mesh& mesh) {
+        std::set<std::array<uint32_t, 6>> part;
+        for (size_t v = 0; v < mesh.positions.size(); ++v) {
+            if (mesh.positions[v].x >= 62.0f) continue;
+            std::array<uint32_t, 6> bits;
+            std::memcpy(bits.data(), &mesh.positions[v], 12);
+            std::memcpy(bits.data() + 3, &mesh.normals[v], 12);
+            part.insert(bits);
+        }
+        return part;
+    };
+    EXPECT_GT(lodZeroPart(regular).size(), 1000u);
+    EXPECT_TRUE(lodZeroPart(split) == lodZeroPart(regular));
     // The mixed ring: its regular cells' vertices keep their level's bound, the transition cells'
     // vertices lie on the finer level's edges, so the same bounds hold for the whole mesh.
     const Mesh ring = meshLod(pyramid, LodLayout::aroundPoint(wide.layout(), c + glm::vec3(r, 0, 0), 2), MeshOptions{});
@@ -397,7 +416,7 @@ TEST(mesh_Lod, levelZeroIsTheRegularMeshAndChunkSizeDoesNotShow) {
                 << "chunk " << chunkSize;
             coarse.push_back(meshLod(pyramid, LodLayout::uniform(grid.layout(), 1), MeshOptions{}));
             expectCrackFree(coarse.back(), "uniform level 1");
-            if (coarse.size() { > 1) EXPECT_TRUE(identical(coarse.back(), coarse.front())) << "level 1, chunk " << chunkSize; }
+            if (coarse.size() > 1) { EXPECT_TRUE(identical(coarse.back(), coarse.front())) << "level 1, chunk " << chunkSize; }
 
             const LodLayout ring = LodLayout::aroundPoint(grid.layout(), glm::vec3(origin) + 4.0f, 1);
             const Mesh mixed = meshLod(pyramid, ring, MeshOptions{});
