@@ -1,5 +1,7 @@
 #include "voxc/codegen/Spirv.h"
 
+#include "CompileCacheEntries.h"
+
 #include "voxc/core/Errors.h"
 
 #include <algorithm>
@@ -78,7 +80,9 @@ std::vector<uint32_t> spirvDescriptorBindings(const std::vector<uint32_t>& spirv
     return bindings;
 }
 
-std::vector<uint32_t> compileComputeShader(std::string_view kernelName, const std::string& glsl) {
+namespace {
+
+std::vector<uint32_t> compileUncached(std::string_view kernelName, const std::string& glsl) {
     initGlslang();
     glslang::TShader shader(EShLangCompute);
     const char* text = glsl.c_str();
@@ -106,6 +110,12 @@ std::vector<uint32_t> compileComputeShader(std::string_view kernelName, const st
     if (std::optional<std::string> errors = spirvValidationErrors(spirv))
         fail(kernelName, "produces invalid SPIR-V", *errors, glsl);
     return spirv;
+}
+
+} // namespace
+
+std::vector<uint32_t> compileComputeShader(std::string_view kernelName, const std::string& glsl) {
+    return cachedCompile(kernelName, glsl, [&] { return compileUncached(kernelName, glsl); });
 }
 
 } // namespace voxc::codegen

@@ -1,4 +1,5 @@
 #include "ContextImpl.h"
+#include "PipelineCache.h"
 
 #include "voxc/core/Errors.h"
 
@@ -236,6 +237,10 @@ std::string formatDeviceList(const std::vector<DeviceInfo>& devices) {
 VulkanContext::Impl::~Impl() {
     if (device) {
         api.vkDeviceWaitIdle(device);
+        if (pipelineCache) {
+            savePipelineCache(*this);
+            api.vkDestroyPipelineCache(device, pipelineCache, nullptr);
+        }
         api.vkDestroyDevice(device, nullptr);
     }
     if (messenger) api.vkDestroyDebugUtilsMessengerEXT(instance, messenger, nullptr);
@@ -279,6 +284,7 @@ VulkanContext::VulkanContext(const ContextOptions& options) : impl_(std::make_un
     check(s.api.vkCreateDevice(s.physicalDevice, &deviceInfo, nullptr, &s.device), "vkCreateDevice");
     vulkan_detail::loadDeviceApi(s.api, s.device);
     s.api.vkGetDeviceQueue(s.device, s.queueFamily, 0, &s.queue);
+    openPipelineCache(s, options.pipelineCacheDirectory);
 }
 
 VulkanContext::~VulkanContext() = default;

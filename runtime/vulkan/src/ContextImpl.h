@@ -4,6 +4,7 @@
 #include "voxc/vulkan/Context.h"
 
 #include <mutex>
+#include <string>
 #include <vector>
 
 namespace voxc {
@@ -21,6 +22,11 @@ struct VulkanContext::Impl {
     DeviceInfo info;
     bool validation = false;
     bool shaderFloat64 = false; // enabled when the device has it (the GPU mesher's crossings need it)
+    // Every pipeline is created through it; loaded from and saved to a file when the context's
+    // options name a cache directory (PipelineCache.cpp), else it lives as long as the context.
+    VkPipelineCache pipelineCache = VK_NULL_HANDLE;
+    std::string pipelineCacheFile;      // empty: not saved
+    std::vector<char> pipelineCacheLoaded; // what the file held, to skip a save that changes nothing
 
     mutable std::mutex messageMutex; // the layer may call back from driver threads
     std::vector<ValidationMessage> messages;

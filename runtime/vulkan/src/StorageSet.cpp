@@ -60,7 +60,7 @@ VkPipeline createComputePipeline(VulkanContext::Impl& ctx, VkPipelineLayout layo
     pipelineInfo.stage.pName = "main";
     pipelineInfo.layout = layout;
     VkPipeline pipeline = VK_NULL_HANDLE;
-    result = ctx.api.vkCreateComputePipelines(ctx.device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &pipeline);
+    result = ctx.api.vkCreateComputePipelines(ctx.device, ctx.pipelineCache, 1, &pipelineInfo, nullptr, &pipeline);
     ctx.api.vkDestroyShaderModule(ctx.device, module, nullptr);
     if (result != VK_SUCCESS)
         throw InternalError(fmt::format("{}: vkCreateComputePipelines failed: {}", what, resultName(result)));

@@ -49,6 +49,9 @@ namespace voxc::vulkan_detail {
     X(vkCreatePipelineLayout)                    \
     X(vkDestroyPipelineLayout)                   \
     X(vkCreateComputePipelines)                  \
+    X(vkCreatePipelineCache)                     \
+    X(vkDestroyPipelineCache)                    \
+    X(vkGetPipelineCacheData)                    \
     X(vkDestroyPipeline)                         \
     X(vkCreateDescriptorPool)                    \
     X(vkDestroyDescriptorPool)                   \

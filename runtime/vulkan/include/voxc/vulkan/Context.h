@@ -39,6 +39,9 @@ struct ContextOptions {
     std::string device = "auto";               // see selectDevice
     bool validation = false;                   // VK_LAYER_KHRONOS_validation + message capture
     std::string loaderLibrary = "libvulkan.so.1"; // the Vulkan loader to open
+    // Where the device's VkPipelineCache is kept between runs (one file per device and driver
+    // version); empty: pipelines are cached for the life of the context only.
+    std::string pipelineCacheDirectory;
 };
 
 // A warning or error reported by the validation layer.
