@@ -543,14 +543,15 @@ std::vector<glm::ivec3> LodMesher::update(glm::ivec3 first, glm::ivec3 last) {
     return chunks;
 }
 
-Mesh LodMesher::mesh() const { return marching_cubes::mergeChunks(state_->parts); }
+Mesh LodMesher::mesh() const& { return marching_cubes::mergeChunks(state_->parts); }
+Mesh LodMesher::mesh() && { return marching_cubes::mergeChunks(std::move(state_->parts)); }
 
 const LodStats& LodMesher::stats() const { return state_->stats; }
 
 Mesh meshLod(const LodPyramid& pyramid, const LodLayout& layout, const MeshOptions& options, LodStats* stats) {
-    const LodMesher mesher(pyramid, layout, options);
+    LodMesher mesher(pyramid, layout, options);
     if (stats) *stats = mesher.stats();
-    return mesher.mesh();
+    return std::move(mesher).mesh();
 }
 
 } // namespace voxc

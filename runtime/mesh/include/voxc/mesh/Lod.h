@@ -108,7 +108,8 @@ public:
     // beyond for the normals), at every level, and returns those chunks. mesh() then equals a
     // mesher built afresh.
     std::vector<glm::ivec3> update(glm::ivec3 first, glm::ivec3 last);
-    Mesh mesh() const;
+    Mesh mesh() const &;
+    Mesh mesh() &&; // without copying the chunks' shares first
     const LodStats& stats() const; // as of construction
 
 private:
