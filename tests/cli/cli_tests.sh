@@ -279,6 +279,12 @@ expect curves_run_solves 0 "curves 'cliffs' \(64x32x64 cells, solved on the host
     --voxels "$work/curves_cliff8.npy"
 expect_same curves_cliff_chunk_8_vs_32 "$work/curves_cliff.npy" "$work/curves_cliff8.npy"
 expect curves_interp_solves 0 "curves 'cliffs' .*parameters 5 levels" -- "$voxc" interp "$src/examples/curves_cliff.vox"
+# --solve-on device: the multigrid on lavapipe, the same voxels as the host's solve
+expect curves_solve_on_device 0 "curves 'cliffs' \(64x32x64 cells, solved when checked, the multigrid on 'llvmpipe" -- \
+    "$voxc" run "$src/examples/curves_cliff.vox" --device lavapipe --solve-on device --voxels "$work/curves_cliff_device.npy"
+expect_same curves_solve_on_device_same_voxels "$work/curves_cliff.npy" "$work/curves_cliff_device.npy"
+expect curves_solve_on_bad 1 "--solve-on: gpu not in \{device,host\}" -- \
+    "$voxc" run "$src/examples/curves_cliff.vox" --solve-on gpu --voxels "$work/curves_bad.npy"
 printf 'world { size = [8, 8, 8]; }\ncurves c { box = [[0, 0, 0], [7, 7, 8]]; }\npipeline { start; union c; }\n' > "$work/curves_box.vox"
 expect curves_box_outside 1 "curves_box\.vox:2:18: error E0007: the box \[0, 0, 0\] to \[7, 7, 8\]" -- \
     "$voxc" run "$work/curves_box.vox" -o "$work/curves_box.ply"

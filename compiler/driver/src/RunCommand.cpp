@@ -16,11 +16,13 @@
 #include "voxc/mesh/SurfaceNets.h"
 #include "voxc/vulkan/Context.h"
 #include "voxc/vulkan/Executor.h"
+#include "voxc/vulkan/GpuMultigrid.h"
 #include "voxc/vulkan/GpuMesher.h"
 
 #include <cmath>
 #include <fmt/format.h>
 #include <iostream>
+#include <optional>
 
 namespace voxc::driver {
 
@@ -35,6 +37,7 @@ struct RunOptions {
     float iso = 0.5f;
     std::string mesher = "mc";
     std::string meshOn; // "device" or "host"; empty: the device for mc, the host for surface nets
+    std::string solveOn; // "device" or "host"; empty: the device unless it is a CPU (lavapipe)
     bool validate = false;
     bool listDevices = false;
     std::string region;
@@ -71,11 +74,30 @@ void run(const RunOptions& options) {
                                 {"--materials", options.materialsPath}};
     refuseClashingPaths(inputs, outputs);
 
-    const RegionRun run = planRegionRun(loadProgram(options.file, options.overrides), options.region);
+    // The check solves curves blocks: their multigrid runs on the device, made then, unless it is a
+    // CPU device, where the host's loops are faster (docs/curves.md, "What runs where").
+    std::optional<VulkanContext> device;
+    const auto openDevice = [&]() -> VulkanContext& {
+        if (!device) device.emplace(ContextOptions{.device = options.device, .validation = options.validate});
+        return *device;
+    };
+    WorldOverrides overrides = options.overrides;
+    std::string multigridDevice; // the device's name once a multigrid ran there
+    if (options.solveOn != "host")
+        overrides.curvesSolver = [&](const std::string& name, const std::vector<uint8_t>& fixed,
+                                     std::vector<curves::Field3*> components, float tolerance,
+                                     const curves::Limits& limits) {
+            VulkanContext& solver = openDevice();
+            if (options.solveOn.empty() && solver.device().type == DeviceType::Cpu)
+                return curves::solveLaplace(name, fixed, std::move(components), tolerance, limits);
+            multigridDevice = solver.device().name;
+            return vulkanLinearSolver(solver)(name, fixed, std::move(components), tolerance, limits);
+        };
+    const RegionRun run = planRegionRun(loadProgram(options.file, overrides), options.region);
     const Program& program = run.program;
     const KernelPackage package = compileProgram(program, {});
-    status() << formatSolveReport(program);
-    VulkanContext context(ContextOptions{.device = options.device, .validation = options.validate});
+    status() << formatSolveReport(program, false, multigridDevice);
+    VulkanContext& context = openDevice();
     VulkanExecutor executor(context, package);
     const RunResult result = executor.run();
     // A region's voxels, without its halo, mesh on the host.
@@ -168,6 +190,10 @@ void addRunCommand(CLI::App& app) {
     command->add_option("--mesh-on", options->meshOn,
                         "device (marching cubes on the Vulkan device, over its voxel buffer; the default for mc) or "
                         "host (the CPU mesher; always for surface-nets)")
+        ->check(CLI::IsMember({"device", "host"}));
+    command->add_option("--solve-on", options->solveOn,
+                        "device or host: where curves blocks run their multigrid solves (the same values bit for bit "
+                        "on lavapipe; default: the device unless it is a CPU device such as lavapipe)")
         ->check(CLI::IsMember({"device", "host"}));
     command->add_option("--lod", options->lod,
                         "LEVELS, e.g. 0,1,2: write one marching-cubes mesh per level beside -o (x.lod1.glb), "
