@@ -99,11 +99,13 @@ CellTriangles deriveCell(uint32_t points, uint32_t solid) {
     // right seen from outside (the regular table's orientation: loops counter-clockwise seen from air).
     std::array<int, kSubEdgeIds> next;
     next.fill(-1);
+    std::array<std::vector<int>, kSubEdgeIds> facetsOf;
     for (size_t f = 0; f < rings.size(); ++f) {
         const std::vector<int>& ring = rings[f];
         const size_t n = ring.size();
         auto isSolid = [&](size_t i) { return bool((solid >> ring[i % n]) & 1u); };
         auto edgeAfter = [&](size_t i) { return subEdgeId(subEdgeBetween(ring[i % n], ring[(i + 1) % n])); };
+        for (size_t i = 0; i < n; ++i) facetsOf[size_t(edgeAfter(i))].push_back(int(f));
         for (size_t i = 0; i < n; ++i) {
             if (!isSolid(i) || isSolid(i + n - 1)) continue; // not where a solid run starts (an all-solid ring has none)
             size_t j = i;
@@ -132,14 +134,24 @@ CellTriangles deriveCell(uint32_t points, uint32_t solid) {
         // run straight through several), then the least total chord length.
         const size_t n = loop.size();
         constexpr float kForbidden = std::numeric_limits<float>::infinity();
-        // Two vertices on one face of the cube: the chord between them lies in that face, where
-        // the cell across it (or, along a split edge, three other cells) may use it as well.
-        auto shareFace = [&](int a, int b) {
+        // A chord another cell can hold too: both vertices on one facet (the cell across it), on
+        // one cube edge line (the cells around it, coarse ones holding the whole line), or in one
+        // face that is not refined (the coarse cell across it). A refined face's other cells are
+        // fine and each holds one of its squares, so a chord across two squares is this cell's.
+        auto shared = [&](int a, int b) {
+            for (int f : facetsOf[size_t(a)])
+                if (std::find(facetsOf[size_t(b)].begin(), facetsOf[size_t(b)].end(), f) != facetsOf[size_t(b)].end()) return true;
             const SubEdge ea = subEdgeOf(a), eb = subEdgeOf(b);
             const glm::ivec3 pa = pointOffset(ea.lower), pb = pointOffset(eb.lower);
-            for (int axis = 0; axis < 3; ++axis)
-                if (axis != ea.axis && axis != eb.axis && pa[axis] == pb[axis] && pa[axis] != 1) return true;
-            return false;
+            int sharedBoundaryPlanes = 0;
+            for (int axis = 0; axis < 3; ++axis) {
+                if (axis == ea.axis || axis == eb.axis || pa[axis] != pb[axis] || pa[axis] == 1) continue;
+                ++sharedBoundaryPlanes;
+                glm::ivec3 centre(1);
+                centre[axis] = pa[axis];
+                if (!present(points, centre)) return true; // one face, not refined
+            }
+            return sharedBoundaryPlanes == 2; // one cube edge line
         };
         auto collinear = [&](int a, int b, int c) {
             const glm::vec3 pa = midpoint(subEdgeOf(a));
@@ -147,7 +159,7 @@ CellTriangles deriveCell(uint32_t points, uint32_t solid) {
         };
         auto chordCost = [&](size_t i, size_t j) {
             if (j == i + 1 || (i == 0 && j == n - 1)) return 0.0f;
-            if (shareFace(loop[i], loop[j])) return kForbidden;
+            if (shared(loop[i], loop[j])) return kForbidden;
             return glm::length(midpoint(subEdgeOf(loop[i])) - midpoint(subEdgeOf(loop[j])));
         };
         std::vector<float> cost(n * n, 0.0f);

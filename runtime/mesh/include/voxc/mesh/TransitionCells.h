@@ -19,13 +19,15 @@
 // by the two cells on either side, which see the same samples and apply the same rule, so their
 // cuts agree; on a plain square the rule is the regular table's. Segments are chained into loops
 // through the crossed sub-edges (each lies on exactly two facets) and every loop is triangulated
-// without a chord between two vertices on one face of the cube (such a chord lies in the face, where
-// the cell across, or along a split edge three other cells, may draw it too: the regular table's
-// rule, there a face is one facet), so no edge is used by more than two triangles,
-// and without a triangle that is flat where binary samples put the vertices (sub-edge midpoints).
-// A loop that allows no such triangulation is fanned from a vertex of its own inside the cell, which
-// keeps both promises (985 of the 8,192 one-face cases, 15% of the two- and three-face cases; on
-// smooth surfaces rare: none on LodTest's sphere, 2,186 of 15,512 transition cells on noise).
+// without a chord that another cell can draw too, so no edge is used by more than two triangles:
+// none between two vertices on one facet (the cell across it), on one cube edge line (the cells
+// around it; a coarse one holds the whole line), or in one face that is not refined (the coarse
+// cell across it); across a refined face the other cells are fine and each holds one of its
+// squares. On a regular cell this is the regular table's rule (no chord within a face). Nor is a
+// triangle flat where binary samples put the vertices (the sub-edges' midpoints). A loop that
+// allows no such triangulation is fanned from a vertex of its own inside the cell, which keeps
+// both promises (16 of the 8,192 one-face cases, 126 of 131,072 two-face and 384 of 1,048,576
+// three-face cases; none on LodTest's sphere, 18 of 15,512 transition cells on noise).
 #include <array>
 #include <cstdint>
 #include <glm/vec3.hpp>
