@@ -1,11 +1,13 @@
 // Runs the checker over every case in tests/diagnostics/cases and compares the rendered
 // diagnostics with the case's .expected file. With VOXC_UPDATE_GOLDENS=1 in the environment
-// it rewrites the .expected files instead (scripts/update-diagnostic-goldens.sh).
+// it rewrites the .expected files instead (scripts/update-diagnostic-goldens.sh). A case with a
+// NAME.region file ("MINX,MINY,MINZ:MAXX,MAXY,MAXZ") is checked for a run of that region.
 #include "voxc/check/Check.h"
 #include "voxc/core/AtomicWrite.h"
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -44,7 +46,14 @@ TEST_P(diagnostics_golden, MatchesExpected) {
     // Checked by relative path so the rendered output does not depend on the checkout's location.
     fs::current_path(kCasesDir);
     const std::string name = GetParam();
-    const std::string rendered = voxc::checkFile(name + ".vox").rendered();
+    voxc::CheckOptions options;
+    if (fs::exists(name + ".region")) {
+        glm::ivec3 lo, hi;
+        const std::string region = readFile(name + ".region");
+        ASSERT_EQ(std::sscanf(region.c_str(), "%d,%d,%d:%d,%d,%d", &lo.x, &lo.y, &lo.z, &hi.x, &hi.y, &hi.z), 6);
+        options.region = std::pair(lo, hi);
+    }
+    const std::string rendered = voxc::checkFile(name + ".vox", options).rendered();
     const fs::path expectedPath = kCasesDir / (name + ".expected");
     if (updating()) {
         voxc::writeFileAtomically(expectedPath.string(), rendered);

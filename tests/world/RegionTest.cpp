@@ -10,7 +10,10 @@
 
 #include <fmt/format.h>
 #include <glm/common.hpp>
+#include <fstream>
+#include <glm/vector_relational.hpp>
 #include <gtest/gtest.h>
+#include <iterator>
 
 namespace voxc {
 namespace {
@@ -57,6 +60,30 @@ TEST_P(RegionOfExample, EqualsTheWholeWorldThere) {
             EXPECT_EQ(test::countVoxelDifferences(stages::cropGrid(whole, region), interpretRegion(moved, region)), 0u);
         }
     }
+}
+
+// A world far larger than one grid: scene.vox at 4096 x 64 x 4096 (a whole run is over the grid
+// limit) checks for a region, whose voxels equal the declared 96 x 64 x 96 world's there (the box
+// and its halo lie inside the small world, away from its border, so both worlds agree on them).
+TEST(RegionOfALargeWorld, EqualsTheSmallWorldsBox) {
+    const std::string path = fmt::format("{}/examples/scene.vox", VOXC_SOURCE_DIR);
+    std::ifstream in(path);
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    const std::string small = "size = [96, 64, 96];";
+    ASSERT_NE(text.find(small), std::string::npos);
+    const std::string large = std::string(text).replace(text.find(small), small.size(), "size = [4096, 64, 4096];");
+    EXPECT_TRUE(checkSource(SourceFile(path, large)).hasErrors()); // the whole world is too large to run
+    CheckOptions options;
+    options.region = std::pair(glm::ivec3(30, 0, 41), glm::ivec3(67, 64, 60));
+    CheckResult checked = checkSource(SourceFile(path, large), options);
+    ASSERT_FALSE(checked.hasErrors()) << checked.rendered();
+    const stages::GridBox region{glm::ivec3(30, 0, 41), glm::ivec3(67, 64, 60)};
+    const Program smallWorld = loadExample("scene");
+    const glm::ivec3 halo = stages::pipelineHalo(smallWorld).radius;
+    ASSERT_TRUE(glm::all(glm::lessThanEqual(region.max + glm::ivec3(halo.x, 0, halo.z), smallWorld.world.size)));
+    EXPECT_EQ(test::countVoxelDifferences(stages::cropGrid(interpret(smallWorld), region),
+                                          interpretRegion(*checked.program, region)),
+              0u);
 }
 
 INSTANTIATE_TEST_SUITE_P(examples, RegionOfExample,

@@ -34,7 +34,8 @@ std::optional<World> checkWorld(Context& context, const ast::Block& block) {
             world.size = *size;
             sizeOk = true;
             int64_t voxels = int64_t(size->x) * size->y * size->z;
-            if (voxels > context.limits.maxVoxels)
+            // A run of a region runs the region's grid, which checkWork bounds.
+            if (voxels > context.limits.maxVoxels && !context.region)
                 context.diagnostics.error("E0012", a->value.loc,
                                           fmt::format("a {} grid has {} voxels, more than the limit of {}",
                                                       formatVec(*size), voxels, context.limits.maxVoxels));

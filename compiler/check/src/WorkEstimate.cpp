@@ -4,9 +4,12 @@
 #include "Sections.h"
 #include "Values.h"
 
+#include "voxc/stages/Region.h"
 #include "voxc/stages/StageKind.h"
 
 #include <fmt/format.h>
+#include <glm/common.hpp>
+#include <glm/vector_relational.hpp>
 
 #include <set>
 #include <string>
@@ -36,10 +39,62 @@ void checkKernelCount(Context& context, const Program& program) {
     }
 }
 
+std::string formatCorner(glm::ivec3 v) { return fmt::format("{},{},{}", v.x, v.y, v.z); }
+
+// A run of a region (CheckOptions::region) runs the box grown by the pipeline's halo, clipped to
+// the world: that grid must fit Limits::maxVoxels (E0014 at the stage whose radius reaches
+// farthest, or at no place when the box alone is too large). Returns the region's program, or
+// nothing when there is no region to run (one outside the world is the driver's error).
+std::optional<Program> regionRun(Context& context, const Program& program) {
+    const auto [lo, hi] = *context.region;
+    const stages::GridBox region{glm::max(lo - program.world.origin, glm::ivec3(0)),
+                                 glm::min(hi - program.world.origin, program.world.size)};
+    if (!glm::all(glm::lessThan(region.min, region.max))) return std::nullopt;
+    const stages::PipelineHalo halo = stages::pipelineHalo(program);
+    const stages::GridBox grid = stages::haloBox(program, region, halo.radius);
+    const glm::ivec3 size = grid.size();
+    const int64_t voxels = int64_t(size.x) * size.y * size.z;
+    if (voxels <= context.limits.maxVoxels) return stages::regionProgram(program, grid);
+    const glm::ivec3 asked = region.size();
+    const int64_t askedVoxels = int64_t(asked.x) * asked.y * asked.z;
+    if (askedVoxels > context.limits.maxVoxels) {
+        context.diagnostics.error("E0014", {},
+                                  fmt::format("the region {}:{} alone is a {}x{}x{} grid of {} voxels, more than the "
+                                              "limit of {}; ask for a smaller region",
+                                              formatCorner(lo), formatCorner(hi), asked.x, asked.y, asked.z,
+                                              askedVoxels, context.limits.maxVoxels));
+        return std::nullopt;
+    }
+    size_t farthest = 0;
+    for (size_t i = 1; i < halo.stages.size(); ++i) {
+        const glm::ivec3 r = halo.stages[i].radius, best = halo.stages[farthest].radius;
+        if (r.x + r.y + r.z > best.x + best.y + best.z) farthest = i;
+    }
+    const Stage& stage = program.pipeline.at(farthest);
+    const stages::StageRadius& radius = halo.stages.at(farthest);
+    // The default pipeline's grammar stages have no location of their own.
+    const SourceLoc loc = stage.loc.line != 0 || stage.kind != Stage::Kind::Grammar ? stage.loc
+                                                                                   : program.grammars[stage.index].loc;
+    context.diagnostics.error(
+        "E0014", loc,
+        fmt::format("the region {}:{} grown by the pipeline's halo [{}, {}, {}] is a {}x{}x{} grid of {} voxels, more "
+                    "than the limit of {}; stage '{}' alone reaches [{}, {}, {}] voxels: {}; ask for a smaller region",
+                    formatCorner(lo), formatCorner(hi), halo.radius.x, halo.radius.y, halo.radius.z, size.x, size.y,
+                    size.z, voxels, context.limits.maxVoxels, stage.label, radius.radius.x, radius.radius.y,
+                    radius.radius.z, radius.why));
+    return std::nullopt;
+}
+
 } // namespace
 
-void checkWork(Context& context, const Program& program) {
-    checkKernelCount(context, program);
+void checkWork(Context& context, const Program& whole) {
+    checkKernelCount(context, whole);
+    std::optional<Program> region;
+    if (context.region) {
+        region = regionRun(context, whole);
+        if (!region) return;
+    }
+    const Program& program = region ? *region : whole;
     const glm::ivec3 size = program.world.size;
     const double voxels = double(size.x) * size.y * size.z;
     const double budget = double(context.limits.maxWork);

@@ -114,7 +114,7 @@ DenseGrid cropGrid(const DenseGrid& grid, const GridBox& box) {
     return out;
 }
 
-GridBox parseRegion(const std::string& text, const World& world) {
+std::pair<glm::ivec3, glm::ivec3> parseWorldBox(const std::string& text) {
     const size_t colon = text.find(':');
     if (colon == std::string::npos)
         throw UserError(fmt::format("--region {}: expected MINX,MINY,MINZ:MAXX,MAXY,MAXZ (world voxels, max excluded)", text));
@@ -122,6 +122,11 @@ GridBox parseRegion(const std::string& text, const World& world) {
     const glm::ivec3 hi = parseCorner(std::string_view(text).substr(colon + 1), text);
     if (!glm::all(glm::lessThan(lo, hi)))
         throw UserError(fmt::format("--region {}: the box is empty; each min must be below its max", text));
+    return {lo, hi};
+}
+
+GridBox parseRegion(const std::string& text, const World& world) {
+    const auto [lo, hi] = parseWorldBox(text);
     const glm::ivec3 worldMax = world.origin + world.size;
     if (!glm::all(glm::lessThanEqual(world.origin, lo)) || !glm::all(glm::lessThanEqual(hi, worldMax)))
         throw UserError(fmt::format("--region {}: the box must lie inside the world, {},{},{}:{},{},{}", text,

@@ -49,8 +49,8 @@ int64_t newKernels(const Program& program, const Stage& stage, std::set<std::str
 StageRadius dependencyRadius(const Program& program, const Stage& stage) {
     const Grammar& grammar = program.grammars.at(stage.index);
     const glm::ivec3 radius = grammarConeRadius(grammar, program.world.size - 1);
-    return {radius, fmt::format("{} iteration{} of {} (per axis, the windows of every phase a voxel's value "
-                                "passes through, last phase first)",
+    return {radius, fmt::format("{} iteration{} of {}, each phase moving a voxel's reach to the ends of the "
+                                "windows holding it",
                                 grammar.iterations, grammar.iterations == 1 ? "" : "s", describeSweeps(grammar))};
 }
 

@@ -8,6 +8,7 @@
 #include "voxc/stages/StageKind.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace voxc::stages {
@@ -38,8 +39,10 @@ Program regionProgram(const Program& program, const GridBox& box);
 // The voxels of `box` (grid-local to `grid`), both channels.
 DenseGrid cropGrid(const DenseGrid& grid, const GridBox& box);
 
-// Parses "MINX,MINY,MINZ:MAXX,MAXY,MAXZ" (world coordinates, half-open) into the file's
-// grid-local box; UserError unless it is a non-empty box inside the declared grid.
+// Parses "MINX,MINY,MINZ:MAXX,MAXY,MAXZ" (world coordinates, half-open): its min and max corners;
+// UserError unless it is a non-empty box.
+std::pair<glm::ivec3, glm::ivec3> parseWorldBox(const std::string& text);
+// That box in the file's grid-local voxels; UserError unless it lies inside the declared grid.
 GridBox parseRegion(const std::string& text, const World& world);
 
 } // namespace voxc::stages
