@@ -46,21 +46,21 @@ std::string writeLodMeshes(OutputFiles& outputs, const ChunkedGrid& grid, const 
     for (int level : request.levels) {
         const std::string path = lodMeshPath(meshPath, level);
         const Mesh mesh = meshLod(pyramid, LodLayout::uniform(grid.layout(), level), options);
-        writeMesh(outputs, path, mesh, materials);
         report += checkedReport(path, mesh, fmt::format("marching cubes, LOD {}, cells {} voxel{} wide", level, 1 << level, level ? "s" : ""));
+        writeMesh(outputs, path, mesh, materials);
     }
     if (request.layoutCentre) {
         const glm::vec3 c = *request.layoutCentre;
         const LodLayout layout = LodLayout::aroundPoint(grid.layout(), c, maxLevel);
         LodStats stats;
         const Mesh mesh = meshLod(pyramid, layout, options, &stats);
-        writeMesh(outputs, meshPath, mesh, materials);
         std::string levels;
         for (int k = 0; k <= maxLevel; ++k) levels += fmt::format("{}{} at LOD {}", k ? ", " : "", stats.chunksPerLevel[size_t(k)], k);
         report += checkedReport(meshPath, mesh,
                                 fmt::format("marching cubes, LOD by distance from ({}, {}, {}): chunks {}; {} transition faces, "
                                             "{} transition cells",
                                             c.x, c.y, c.z, levels, stats.transitionFaces, stats.transitionCells));
+        writeMesh(outputs, meshPath, mesh, materials);
     }
     return report;
 }
