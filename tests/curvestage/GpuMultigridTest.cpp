@@ -1,12 +1,17 @@
 // The curves' linear solves on lavapipe (voxc/vulkan/GpuMultigrid.h) against the host's
 // solveLaplace, the reference: every unknown bit-identical, the same residual after FMG and after
 // every V-cycle, on boxes with 1 to 7 levels, odd and flat sizes, 2 and 3 components; then a
-// whole curves block (check with the Vulkan solver) gives the host's table bit for bit; the
-// SPIR-V of the passes is valid and the validation layer stays quiet.
+// whole curves block (check with the Vulkan solver) gives the host's table bit for bit, and its
+// run on lavapipe the interpreter's grid at chunk sizes 8/16/32 and an odd origin; the SPIR-V of
+// the passes is valid and the validation layer stays quiet.
 #include "../curves/Scenes.h"
+#include "GridCompare.h"
+#include "Lavapipe.h"
+#include "Programs.h"
 #include "voxc/check/Check.h"
 #include "voxc/codegen/Spirv.h"
 #include "voxc/generators/curves/Scene.h"
+#include "voxc/stages/Pipeline.h"
 #include "voxc/vulkan/Context.h"
 #include "voxc/vulkan/GpuMultigrid.h"
 
@@ -118,6 +123,30 @@ TEST(vulkan_GpuMultigrid, CurvesExampleTableMatchesTheHost) {
         EXPECT_EQ(a.material, b.material);
         ASSERT_EQ(a.solves.size(), b.solves.size());
         for (size_t s = 0; s < a.solves.size(); ++s) EXPECT_EQ(a.solves[s].residuals, b.solves[s].residuals);
+    }
+    expectNoValidationMessages();
+}
+
+// The whole pipeline with the multigrid solved on the device: lavapipe's run equals the
+// interpreter's run of the host-solved program, at chunk sizes 8, 16, 32 and an odd negative origin.
+TEST(vulkan_GpuMultigrid, DeviceSolvedRunMatchesTheInterpreter) {
+    for (const char* world : {"", "origin = [-13, -6, 5];"}) {
+        SCOPED_TRACE(world);
+        const SourceFile source("ridge.vox", test::ridgeProgram("union", world));
+        CheckOptions options;
+        const CheckResult host = checkSource(source, options);
+        options.curvesSolver = vulkanLinearSolver(validated());
+        const CheckResult device = checkSource(source, options);
+        ASSERT_TRUE(host.program && device.program) << host.rendered() << device.rendered();
+        const DenseGrid expected = interpret(*host.program);
+        Program program = *device.program;
+        for (int chunk : {8, 16, 32}) {
+            SCOPED_TRACE(fmt::format("chunk {}", chunk));
+            program.world.chunkSize = chunk;
+            const DenseGrid actual = test::runOnLavapipe(program);
+            EXPECT_EQ(test::countBitDifferences(expected, actual), 0u);
+            EXPECT_EQ(test::countMaterialDifferences(expected, actual), 0u);
+        }
     }
     expectNoValidationMessages();
 }
