@@ -49,6 +49,18 @@ grep -Eq "^wrote $work/part.glb \(marching cubes\): [1-9][0-9]* vertices.* water
 grep -q "^halo: 1 39 1 " "$work/halo.txt" && grep -q "hoodoos: 1 39 1  (the air runs of its whole column and of the columns at x - 1 and z - 1)" "$work/halo.txt" \
     && echo "ok   --explain-halo prints each stage and the halo" || { fail "--explain-halo"; cat "$work/halo.txt"; }
 
+# A world larger than one grid: checked and run for a region; whole, or with a box whose grid is
+# too large, it is refused.
+sed 's/size = \[96, 64, 96\];/size = [4096, 256, 4096];/' "$scene" >"$work/large.vox"
+"$voxc" check "$work/large.vox" >/dev/null 2>&1 && fail "a 4096x256x4096 world checked whole"
+"$voxc" check "$work/large.vox" --region 1000,0,1000:1064,256,1064 2>"$work/large.log" \
+    && echo "ok   a 4096x256x4096 world checks for a region" || { fail "large world region check"; cat "$work/large.log"; }
+"$voxc" run "$work/large.vox" --device lavapipe --region 1000,0,1000:1064,256,1064 --voxels "$work/large.npy" \
+    2>"$work/large.log" && [[ -s $work/large.npy ]] && echo "ok   a region of it runs" || { fail "large world run"; cat "$work/large.log"; }
+"$voxc" check "$work/large.vox" --region 0,0,0:1024,256,1024 2>"$work/large.log"
+[[ $? -eq 1 ]] && grep -q "error E0014: the region 0,0,0:1024,256,1024 alone is a 1024x256x1024 grid" "$work/large.log" \
+    && echo "ok   a box too large for one grid is E0014" || { fail "no E0014"; cat "$work/large.log"; }
+
 # Bad requests: exit 1, a message naming --region, nothing written.
 expect_error() {
     local message=$1; shift

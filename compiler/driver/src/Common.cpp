@@ -41,6 +41,7 @@ Program loadProgram(const std::string& path, const WorldOverrides& overrides, bo
     if (overrides.maxWork)
         options.limits.maxWork = *overrides.maxWork >= 9.2e18 ? INT64_MAX : int64_t(*overrides.maxWork);
     options.seed = overrides.seed;
+    options.region = overrides.region;
     options.curvesSolver = overrides.curvesSolver;
     const auto start = std::chrono::steady_clock::now();
     CheckResult result = checkFile(path, options);

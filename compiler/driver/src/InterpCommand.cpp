@@ -57,8 +57,9 @@ SliceSpec parseSlice(const std::string& text, glm::ivec3 size) {
 
 void interpretFile(const InterpOptions& options) {
     std::vector<CheckedLsystem> lsystems;
-    const RegionRun run = planRegionRun(loadProgram(options.file, options.overrides, false, nullptr, &lsystems),
-                                        options.region);
+    const RegionRun run = planRegionRun(
+        loadProgram(options.file, withRegion(options.overrides, options.region), false, nullptr, &lsystems),
+        options.region);
     const Program& program = run.program;
     std::cerr << formatSolveReport(program, options.trace);
     std::cerr << run.describe();

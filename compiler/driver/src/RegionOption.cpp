@@ -30,6 +30,11 @@ void addRegionFlag(CLI::App& command, std::string& region) {
                        "excluded); its voxels equal the whole world's there, bit for bit");
 }
 
+WorldOverrides withRegion(WorldOverrides overrides, const std::string& region) {
+    if (!region.empty()) overrides.region = stages::parseWorldBox(region);
+    return overrides;
+}
+
 RegionRun planRegionRun(Program program, const std::string& region) {
     RegionRun run{std::move(program), std::nullopt, {}};
     run.computed = {glm::ivec3(0), run.program.world.size};

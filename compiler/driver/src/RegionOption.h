@@ -1,6 +1,8 @@
 #pragma once
 // `--region MINX,MINY,MINZ:MAXX,MAXY,MAXZ` of `voxc run` and `voxc interp`: the program to run for
 // that box of the world (the box grown by the pipeline's halo), and the crop back to the box.
+#include "Common.h"
+
 #include "voxc/stages/Region.h"
 
 #include <CLI/CLI.hpp>
@@ -25,6 +27,10 @@ struct RegionRun {
 std::string explainHalo(const Program& program, const std::string& file);
 
 void addRegionFlag(CLI::App& command, std::string& region);
+
+// `overrides` with the box of `region` (empty: none) for the check, which then bounds the
+// region's grid instead of the world's (CheckOptions::region).
+WorldOverrides withRegion(WorldOverrides overrides, const std::string& region);
 
 // `region` empty: the whole world. Otherwise UserError for a box that is not inside the world.
 RegionRun planRegionRun(Program program, const std::string& region);

@@ -93,7 +93,8 @@ void run(const RunOptions& options) {
             multigridDevice = solver.device().name;
             return vulkanLinearSolver(solver)(name, fixed, std::move(components), tolerance, limits);
         };
-    const RegionRun run = planRegionRun(loadProgram(options.file, overrides), options.region);
+    const RegionRun run =
+        planRegionRun(loadProgram(options.file, withRegion(overrides, options.region)), options.region);
     const Program& program = run.program;
     const KernelPackage package = compileProgram(program, {});
     status() << formatSolveReport(program, false, multigridDevice);
