@@ -86,6 +86,22 @@ for example in ["overhang", "scene", "fields", "caves"]:
     got = published(client.diagnostics_for(uri(path)))
     check("example_%s_equals_check" % example, got == check_json(path).get(uri(path), []), got)
 
+# Columns: the checker counts characters, LSP counts UTF-16 units; a character beyond the basic
+# plane before the error on its line is two units.
+wide = os.path.join(work, "wide.vox")
+wide_text = "world { size = [8, 8, 8]; }\n/* \U0001F600 */ pipeline { start; nope; }\n"
+with open(wide, "w") as f:
+    f.write(wide_text)
+client.notify("textDocument/didOpen", {"textDocument": {"uri": uri(wide), "languageId": "vox", "version": 1,
+                                                        "text": wide_text}})
+wide_got = client.diagnostics_for(uri(wide))
+wide_check = check_json(wide)[uri(wide)]
+check_start = json.loads(wide_check[0][2])["start"]
+check("utf16_columns", len(wide_got) == 1 and wide_got[0]["range"]["start"] ==
+      {"line": check_start["line"], "character": check_start["character"] + 1}
+      and wide_text.split("\n")[1].encode("utf-16-le")[2 * wide_got[0]["range"]["start"]["character"]:].decode(
+          "utf-16-le").startswith("nope"), (wide_got, wide_check))
+
 # didChange: a typo appears, then goes again
 overhang = os.path.join(src, "examples", "overhang.vox")
 overhang_text = open(overhang).read()

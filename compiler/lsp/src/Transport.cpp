@@ -56,13 +56,17 @@ ReadResult readMessage(std::istream& in) {
     for (;;) {
         const LineStatus status = readHeaderLine(in, line);
         if (status == LineStatus::End) return {ReadResult::Kind::End, {}, {}};
-        if (status == LineStatus::TooLong) error = "a header line is longer than 1024 bytes";
         if (status == LineStatus::Ok && line.empty()) {
             if (lines == 0) continue; // blank lines between messages
             break;
         }
+        // A bad line makes the message malformed, but a Content-Length after it still says how
+        // much body to read past.
         if (++lines > kMaxHeaderLines && error.empty()) error = "more than 16 header lines";
-        if (status != LineStatus::Ok || !error.empty()) continue;
+        if (status == LineStatus::TooLong) {
+            error = "a header line is longer than 1024 bytes";
+            continue;
+        }
         const size_t colon = line.find(':');
         if (colon == std::string::npos) {
             error = "a header line without ':'";
