@@ -82,14 +82,15 @@ std::vector<uint32_t> spirvDescriptorBindings(const std::vector<uint32_t>& spirv
 
 namespace {
 
-std::vector<uint32_t> compileUncached(std::string_view kernelName, const std::string& glsl) {
+std::vector<uint32_t> compileUncached(std::string_view kernelName, const std::string& glsl,
+                                      EShLanguage stage = EShLangCompute) {
     initGlslang();
-    glslang::TShader shader(EShLangCompute);
+    glslang::TShader shader(stage);
     const char* text = glsl.c_str();
     const std::string name(kernelName);
     const char* names = name.c_str();
     shader.setStringsWithLengthsAndNames(&text, nullptr, &names, 1);
-    shader.setEnvInput(glslang::EShSourceGlsl, EShLangCompute, glslang::EShClientVulkan, 100);
+    shader.setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientVulkan, 100);
     shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
     shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
     const EShMessages messages = EShMessages(EShMsgSpvRules | EShMsgVulkanRules);
@@ -104,7 +105,7 @@ std::vector<uint32_t> compileUncached(std::string_view kernelName, const std::st
     spv::SpvBuildLogger logger;
     glslang::SpvOptions options;
     options.validate = false; // validated below, with the messages kept
-    glslang::GlslangToSpv(*program.getIntermediate(EShLangCompute), spirv, &logger, &options);
+    glslang::GlslangToSpv(*program.getIntermediate(stage), spirv, &logger, &options);
     const std::string buildMessages = logger.getAllMessages();
     if (!buildMessages.empty()) fail(kernelName, "fails SPIR-V generation", buildMessages, glsl);
     if (std::optional<std::string> errors = spirvValidationErrors(spirv))
@@ -116,6 +117,10 @@ std::vector<uint32_t> compileUncached(std::string_view kernelName, const std::st
 
 std::vector<uint32_t> compileComputeShader(std::string_view kernelName, const std::string& glsl) {
     return cachedCompile(kernelName, glsl, [&] { return compileUncached(kernelName, glsl); });
+}
+
+std::vector<uint32_t> compileGraphicsShader(std::string_view name, const std::string& glsl, GraphicsStage stage) {
+    return compileUncached(name, glsl, stage == GraphicsStage::Vertex ? EShLangVertex : EShLangFragment);
 }
 
 } // namespace voxc::codegen

@@ -75,6 +75,7 @@ public:
 private:
     friend class VulkanExecutor;
     friend class VulkanSolveRunner;
+    friend class MeshRenderer; // voxc/render: a graphics pipeline on this device and queue
     std::unique_ptr<Impl> impl_;
 };
 
