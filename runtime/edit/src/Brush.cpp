@@ -1,0 +1,66 @@
+#include "voxc/edit/Brush.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <glm/common.hpp>
+
+namespace voxc {
+
+namespace {
+
+// The grid-local voxels of the brush's support, clipped to a grid of `size` at `origin`; empty
+// (last < first) when it misses the grid.
+VoxelBox supportBox(const Brush& brush, glm::ivec3 origin, glm::ivec3 size) {
+    const glm::vec3 reach(brush.radius + 0.5f * brush.softness);
+    const glm::ivec3 low(glm::floor(brush.center - reach)), high(glm::ceil(brush.center + reach));
+    return {glm::max(low - origin, glm::ivec3(0)), glm::min(high - origin, size - 1)};
+}
+
+bool sameBits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// `density` maps a grid-local voxel to its stored density.
+template <typename Density>
+std::optional<VoxelBox> applyOver(const Brush& brush, glm::ivec3 origin, glm::ivec3 size, Density&& density) {
+    const VoxelBox box = supportBox(brush, origin, size);
+    std::optional<VoxelBox> changed;
+    for (int z = box.first.z; z <= box.last.z; ++z)
+        for (int y = box.first.y; y <= box.last.y; ++y)
+            for (int x = box.first.x; x <= box.last.x; ++x) {
+                const glm::ivec3 local(x, y, z);
+                const float b = brushDensity(brush, origin + local);
+                if (b == 0.0f) continue; // outside the support: untouched, even a density above 1
+                float& d = density(local);
+                const float next = brushed(brush.op, d, b);
+                if (sameBits(next, d)) continue;
+                d = next;
+                if (!changed) changed = VoxelBox{local, local};
+                changed->first = glm::min(changed->first, local);
+                changed->last = glm::max(changed->last, local);
+            }
+    return changed;
+}
+
+} // namespace
+
+float brushDensity(const Brush& brush, glm::ivec3 p) {
+    const glm::vec3 v = glm::vec3(p) - brush.center;
+    const float distance = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z) - brush.radius;
+    return std::min(std::max(0.5f - distance / brush.softness, 0.0f), 1.0f);
+}
+
+float brushed(Brush::Op op, float d, float b) {
+    const float density = std::isfinite(d) ? d : 0.0f;
+    return op == Brush::Op::Carve ? std::min(density, 1.0f - b) : std::max(density, b);
+}
+
+std::optional<VoxelBox> applyBrush(ChunkedGrid& grid, const Brush& brush) {
+    return applyOver(brush, grid.layout().gridOrigin, grid.layout().gridSize,
+                     [&](glm::ivec3 local) -> float& { return grid.at(local); });
+}
+
+std::optional<VoxelBox> applyBrush(DenseGrid& grid, glm::ivec3 origin, const Brush& brush) {
+    return applyOver(brush, origin, grid.size(), [&](glm::ivec3 local) -> float& { return grid.at(local); });
+}
+
+} // namespace voxc
