@@ -1,6 +1,6 @@
 #include "CompileCacheEntries.h"
 
-#include "Sha256.h"
+#include "voxc/core/Sha256.h"
 #include "voxc/core/AtomicWrite.h"
 
 #include <chrono>

@@ -1,6 +1,6 @@
 // manifest.json: everything an engine needs to load and run a package without voxc's headers
 // (docs/cli.md, "The manifest", documents it field by field).
-#include "Sha256.h"
+#include "voxc/core/Sha256.h"
 #include "voxc/codegen/PackageWriter.h"
 #include "voxc/core/Errors.h"
 #include "voxc/ir/Ir.h"

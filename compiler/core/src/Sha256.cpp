@@ -1,11 +1,11 @@
-#include "Sha256.h"
+#include "voxc/core/Sha256.h"
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
 #include <fmt/format.h>
 
-namespace voxc::codegen {
+namespace voxc {
 
 namespace {
 
@@ -78,4 +78,4 @@ std::string sha256Hex(std::string_view bytes) {
     return hex;
 }
 
-} // namespace voxc::codegen
+} // namespace voxc
