@@ -6,6 +6,7 @@ voxc=$1
 src=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+export VOXC_CACHE_DIR="$work/cache" # never the user's cache
 passed=0
 failed=0
 
@@ -205,6 +206,17 @@ if compgen -G "$work/*.tmp-*" >/dev/null; then
 else
     echo "ok   no_temp_files_left"; passed=$((passed + 1))
 fi
+
+# the compile cache: a second run reads every kernel back; --no-cache neither reads nor writes it
+expect cache_first_run 0 "spirv .* 0 from the cache, [1-9][0-9]* compiled" -- env VOXC_CACHE_DIR="$work/fresh-cache" "$voxc" run "$work/mat.vox" \
+    --device lavapipe -o "$work/cached.ply" --timings
+expect cache_second_run 0 "spirv .* [1-9][0-9]* from the cache, 0 compiled" -- env VOXC_CACHE_DIR="$work/fresh-cache" "$voxc" run "$work/mat.vox" \
+    --device lavapipe -o "$work/cached.ply" --timings
+expect cache_off 0 "0 from the cache, [1-9][0-9]* compiled \(--no-cache\)" -- env VOXC_CACHE_DIR="$work/fresh-cache" "$voxc" run "$work/mat.vox" \
+    --device lavapipe -o "$work/cached.ply" --timings --no-cache
+find "$work/fresh-cache/spirv" -name '*.spv' -exec sh -c 'printf garbage > "$1"' _ {} \;
+expect cache_damaged_rebuilt 0 "0 from the cache, [1-9][0-9]* compiled" -- env VOXC_CACHE_DIR="$work/fresh-cache" "$voxc" run "$work/mat.vox" \
+    --device lavapipe -o "$work/cached.ply" --timings
 
 # a run whose mesh is empty says so and still succeeds
 printf 'world { size = [16, 16, 16]; chunk = 8; }\nstart { fill { value = 0; } }\n' > "$work/air.vox"

@@ -3,10 +3,12 @@
 #include "Console.h"
 #include "NonFiniteReport.h"
 #include "OutputPaths.h"
+#include "PhaseTimes.h"
 #include "RegionOption.h"
 #include "SolveReport.h"
 
 #include "voxc/stages/Pipeline.h"
+#include "voxc/codegen/CompileCache.h"
 #include "voxc/core/Errors.h"
 #include "voxc/grid/Grid.h"
 #include "voxc/mesh/Export.h"
@@ -19,6 +21,7 @@
 #include "voxc/vulkan/GpuMultigrid.h"
 #include "voxc/vulkan/GpuMesher.h"
 
+#include <chrono>
 #include <cmath>
 #include <fmt/format.h>
 #include <iostream>
@@ -40,6 +43,8 @@ struct RunOptions {
     std::string solveOn; // "device" or "host"; empty: the device unless it is a CPU (lavapipe)
     bool validate = false;
     bool listDevices = false;
+    bool noCache = false;
+    bool timings = false;
     std::string region;
     std::vector<int> lod;         // levels: one mesh each beside -o
     std::vector<float> lodLayout; // with --lod: -o is the mixed-level mesh around this point
@@ -74,11 +79,25 @@ void run(const RunOptions& options) {
                                 {"--materials", options.materialsPath}};
     refuseClashingPaths(inputs, outputs);
 
+    // Kernels compiled by earlier runs (SPIR-V, and the device's pipeline cache) are reused.
+    const std::optional<std::filesystem::path> cache = options.noCache ? std::nullopt : codegen::defaultCacheDirectory();
+    codegen::setCompileCacheDirectory(cache);
+    PhaseTimes times;
+    const auto since = [](std::chrono::steady_clock::time_point start) {
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    };
+    double deviceMs = 0.0; // the device may be opened inside the check (a curves solve) or after it
+
     // The check solves curves blocks: their multigrid runs on the device, made then, unless it is a
     // CPU device, where the host's loops are faster (docs/curves.md, "What runs where").
     std::optional<VulkanContext> device;
     const auto openDevice = [&]() -> VulkanContext& {
-        if (!device) device.emplace(ContextOptions{.device = options.device, .validation = options.validate});
+        if (device) return *device;
+        const auto start = std::chrono::steady_clock::now();
+        device.emplace(ContextOptions{.device = options.device,
+                                      .validation = options.validate,
+                                      .pipelineCacheDirectory = cache ? cache->string() : ""});
+        deviceMs = since(start);
         return *device;
     };
     WorldOverrides overrides = options.overrides;
@@ -93,14 +112,25 @@ void run(const RunOptions& options) {
             multigridDevice = solver.device().name;
             return vulkanLinearSolver(solver)(name, fixed, std::move(components), tolerance, limits);
         };
+    const auto checkStart = std::chrono::steady_clock::now();
     const RegionRun run =
         planRegionRun(loadProgram(options.file, withRegion(overrides, options.region)), options.region);
+    times.add("check", since(checkStart) - deviceMs, "parse, check, host solves");
     const Program& program = run.program;
-    const KernelPackage package = compileProgram(program, {});
+    const codegen::CompileCacheCounts spirvBefore = codegen::compileCacheCounts();
+    const KernelPackage package = times.time("lower+glsl", [&] { return compileProgram(program, {}); });
+    const codegen::CompileCacheCounts spirvAfter = codegen::compileCacheCounts();
+    times.split("lower+glsl", "spirv",
+                spirvAfter.compileMs + spirvAfter.cacheMs - spirvBefore.compileMs - spirvBefore.cacheMs,
+                fmt::format("{} kernels: {} from the cache, {} compiled{}", package.kernels.size(),
+                            spirvAfter.hits - spirvBefore.hits, spirvAfter.compiled - spirvBefore.compiled,
+                            cache ? "" : " (--no-cache)"));
     status() << formatSolveReport(program, false, multigridDevice);
     VulkanContext& context = openDevice();
+    times.add("device", deviceMs, "instance, device, pipeline cache");
     VulkanExecutor executor(context, package);
-    const RunResult result = executor.run();
+    times.add("pipelines", executor.setupMs(), "shader modules, pipelines, buffers");
+    const RunResult result = times.time("generate", [&] { return executor.run(); });
     // A region's voxels, without its halo, mesh on the host.
     const std::optional<ChunkedGrid> cropped = run.region ? std::optional(run.crop(result.grid)) : std::nullopt;
     const ChunkedGrid& voxels = cropped ? *cropped : result.grid;
@@ -124,13 +154,15 @@ void run(const RunOptions& options) {
     if (!options.voxelsPath.empty() || !options.materialsPath.empty() || program.usesMaterials()) {
         const DenseGrid dense = voxels.toDense();
         if (program.usesMaterials()) status() << formatMaterialCounts(program, dense, options.iso);
-        writeGridFiles(files, options.voxelsPath, options.materialsPath, dense);
+        times.time("write", [&] { writeGridFiles(files, options.voxelsPath, options.materialsPath, dense); });
     }
     std::string meshReport;
     if (!options.lod.empty()) {
         const std::optional<glm::vec3> centre =
             options.lodLayout.empty() ? std::nullopt : std::optional(glm::vec3(options.lodLayout[0], options.lodLayout[1], options.lodLayout[2]));
-        meshReport = writeLodMeshes(files, voxels, {options.lod, centre, options.iso}, options.meshPath, program.materials);
+        meshReport = times.time("mesh", [&] {
+            return writeLodMeshes(files, voxels, {options.lod, centre, options.iso}, options.meshPath, program.materials);
+        });
     } else if (!options.meshPath.empty()) {
         MeshStats stats;
         const bool marchingCubes = options.mesher == "mc";
@@ -143,16 +175,18 @@ void run(const RunOptions& options) {
             std::cerr << fmt::format("voxc: note: the device '{}' has no shaderFloat64; marching cubes runs on the host\n",
                                      context.device().name);
         const MeshOptions meshOptions{.iso = options.iso};
-        const Mesh mesh = onDevice        ? GpuMarchingCubes(executor).mesh(meshOptions, &stats)
-                          : marchingCubes ? meshMarchingCubes(voxels, meshOptions, &stats)
-                                          : meshSurfaceNets(voxels, meshOptions, &stats);
+        const Mesh mesh = times.time("mesh", [&] {
+            return onDevice        ? GpuMarchingCubes(executor).mesh(meshOptions, &stats)
+                   : marchingCubes ? meshMarchingCubes(voxels, meshOptions, &stats)
+                                   : meshSurfaceNets(voxels, meshOptions, &stats);
+        });
         // Both meshers promise a closed mesh of finite vertices, marching cubes a manifold one too;
         // naive surface nets may join four faces at a saddle of the field (reported, not an error).
         const MeshQuality quality = measureMeshQuality(mesh);
         if (quality.boundaryEdges != 0 || quality.nonFiniteVertices != 0 || quality.misorientedEdges != 0 ||
             (marchingCubes && !quality.manifold()))
             throw InternalError("the " + options.mesher + " mesh is broken: " + describeMeshQuality(quality));
-        writeMesh(files, options.meshPath, mesh, program.materials);
+        times.time("write", [&] { writeMesh(files, options.meshPath, mesh, program.materials); });
         if (mesh.triangles.empty())
             std::cerr << fmt::format("voxc: warning: the mesh is empty: every voxel is on the same side of --iso {}\n", options.iso);
         meshReport = fmt::format("wrote {} ({}): {}; {}; skipped {} of {} chunks with no surface\n", options.meshPath,
@@ -161,7 +195,7 @@ void run(const RunOptions& options) {
                                  quality.nonManifoldEdges == 0 ? "watertight" : "closed, not manifold",
                                  stats.skippedChunks, stats.chunks);
     }
-    files.commit();
+    times.time("write", [&] { files.commit(); });
     reportWritten({options.voxelsPath, options.materialsPath});
     status() << meshReport;
     if (options.validate) {
@@ -171,6 +205,7 @@ void run(const RunOptions& options) {
             std::cerr << "  " << (message.error ? "error: " : "warning: ") << message.text << "\n";
         if (!messages.empty()) throw InternalError("the Vulkan validation layer reported problems");
     }
+    if (options.timings) std::cerr << times.format();
 }
 
 } // namespace
@@ -207,6 +242,11 @@ void addRunCommand(CLI::App& app) {
         ->expected(3);
     command->add_flag("--validate", options->validate, "Enable the Khronos validation layer; fail on any message");
     command->add_flag("--list-devices", options->listDevices, "List Vulkan devices and exit");
+    command->add_flag("--no-cache", options->noCache,
+                      "Neither read nor write the compile cache (SPIR-V by content, the device's pipeline cache) in "
+                      "$VOXC_CACHE_DIR, else $XDG_CACHE_HOME/voxc, else ~/.cache/voxc");
+    command->add_flag("--timings", options->timings,
+                      "Print wall time per phase: check, lower+glsl, spirv, device, pipelines, generate, mesh, write");
     addRegionFlag(*command, options->region);
     addWorldOverrideFlags(*command, options->overrides);
     addConsoleFlags(*command);
