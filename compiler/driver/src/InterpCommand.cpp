@@ -1,5 +1,6 @@
 #include "Commands.h"
 #include "Common.h"
+#include "EditsFile.h"
 #include "LsystemInputs.h"
 #include "NonFiniteReport.h"
 #include "OutputPaths.h"
@@ -28,6 +29,7 @@ struct InterpOptions {
     std::optional<std::string> traceLsystem;
     std::string slice;
     std::string region;
+    std::string editsPath;
     WorldOverrides overrides;
 };
 
@@ -56,6 +58,7 @@ SliceSpec parseSlice(const std::string& text, glm::ivec3 size) {
 }
 
 void interpretFile(const InterpOptions& options) {
+    const std::vector<Brush> edits = options.editsPath.empty() ? std::vector<Brush>{} : loadEdits(options.editsPath);
     std::vector<CheckedLsystem> lsystems;
     const RegionRun run = planRegionRun(
         loadProgram(options.file, withRegion(options.overrides, options.region), false, nullptr, &lsystems),
@@ -90,7 +93,10 @@ void interpretFile(const InterpOptions& options) {
     }
     std::vector<NonFiniteCount> nonFinite;
     interpOptions.nonFinite = &nonFinite;
-    const DenseGrid grid = run.crop(interpret(program, interpOptions));
+    DenseGrid computed = interpret(program, interpOptions);
+    // Before the crop: a brush is voxel by voxel, so edits then crop is crop then edits (`voxc run`).
+    if (!edits.empty()) std::cerr << describeEdits(edits.size(), applyEdits(computed, program.world.origin, edits));
+    const DenseGrid grid = run.crop(computed);
     std::vector<SourceLoc> stageLocs;
     for (const Stage& stage : program.pipeline) stageLocs.push_back(stage.loc);
     std::cerr << formatNonFiniteWarnings(program, options.file, stageLocs, nonFinite);
@@ -124,6 +130,7 @@ void addInterpCommand(CLI::App& app) {
                         "the lengths (plain --trace traces every lsystem's)");
     command->add_option("--slice", options->slice, "Print one layer as text, e.g. y=12");
     addRegionFlag(*command, options->region);
+    addEditsFlag(*command, options->editsPath);
     addWorldOverrideFlags(*command, options->overrides);
     command->callback([options] {
         if (!options->region.empty() && (options->trace || options->filter.rule || options->filter.grammar ||
@@ -131,7 +138,7 @@ void addInterpCommand(CLI::App& app) {
             throw UserError("interp: --region runs a grid of its own around the box; trace the whole world instead");
         if (!options->voxelsPath.empty()) requireExtension(options->voxelsPath, {".npy"}, "voxel file");
         if (!options->materialsPath.empty()) requireExtension(options->materialsPath, {".npy"}, "material file");
-        const RolePath inputs[] = {{"the input", options->file}};
+        const RolePath inputs[] = {{"the input", options->file}, {"--edits", options->editsPath}};
         const RolePath outputs[] = {{"--voxels", options->voxelsPath}, {"--materials", options->materialsPath}};
         refuseClashingPaths(inputs, outputs);
         interpretFile(*options);

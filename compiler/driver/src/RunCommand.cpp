@@ -1,6 +1,7 @@
 #include "Commands.h"
 #include "Common.h"
 #include "Console.h"
+#include "EditsFile.h"
 #include "NonFiniteReport.h"
 #include "OutputPaths.h"
 #include "PhaseTimes.h"
@@ -46,6 +47,7 @@ struct RunOptions {
     bool noCache = false;
     bool timings = false;
     std::string region;
+    std::string editsPath; // --edits: brushes replayed on the host after generation
     std::vector<int> lod;         // levels: one mesh each beside -o
     std::vector<float> lodLayout; // with --lod: -o is the mixed-level mesh around this point
     WorldOverrides overrides;
@@ -63,6 +65,8 @@ void run(const RunOptions& options) {
     if (!std::isfinite(options.iso)) throw UserError(fmt::format("--iso {}: the surface level must be a finite number", options.iso));
     if (options.meshOn == "device" && !options.region.empty())
         throw UserError("run: --mesh-on device meshes the device's whole grid; a --region is meshed on the host");
+    if (options.meshOn == "device" && !options.editsPath.empty())
+        throw UserError("run: --mesh-on device meshes the device's grid; with --edits the edited grid is meshed on the host");
     if (options.meshOn == "device" && options.mesher != "mc")
         throw UserError("run: --mesh-on device: only marching cubes (--mesher mc) runs on the device; surface nets runs on the host");
     if (!options.lod.empty() && (options.meshPath.empty() || options.mesher != "mc" || options.meshOn == "device"))
@@ -72,12 +76,13 @@ void run(const RunOptions& options) {
     if (!options.voxelsPath.empty()) requireExtension(options.voxelsPath, {".npy"}, "voxel file");
     if (!options.materialsPath.empty()) requireExtension(options.materialsPath, {".npy"}, "material file");
     const std::string libraryPath = options.meshPath.ends_with(".obj") ? objMaterialLibraryPath(options.meshPath) : "";
-    const RolePath inputs[] = {{"the input", options.file}};
+    const RolePath inputs[] = {{"the input", options.file}, {"--edits", options.editsPath}};
     const RolePath outputs[] = {{"-o", options.meshPath},
                                 {"the material library of -o", libraryPath},
                                 {"--voxels", options.voxelsPath},
                                 {"--materials", options.materialsPath}};
     refuseClashingPaths(inputs, outputs);
+    const std::vector<Brush> edits = options.editsPath.empty() ? std::vector<Brush>{} : loadEdits(options.editsPath);
 
     // Kernels compiled by earlier runs (SPIR-V, and the device's pipeline cache) are reused.
     const std::optional<std::filesystem::path> cache = options.noCache ? std::nullopt : codegen::defaultCacheDirectory();
@@ -131,8 +136,11 @@ void run(const RunOptions& options) {
     VulkanExecutor executor(context, package);
     times.add("pipelines", executor.setupMs(), "shader modules, pipelines, buffers");
     const RunResult result = times.time("generate", [&] { return executor.run(); });
-    // A region's voxels, without its halo, mesh on the host.
-    const std::optional<ChunkedGrid> cropped = run.region ? std::optional(run.crop(result.grid)) : std::nullopt;
+    // A region's voxels, without its halo, mesh on the host; so does a grid with edits (EditsFile.h).
+    std::optional<ChunkedGrid> cropped = run.region || !edits.empty()
+                                             ? std::optional(run.region ? run.crop(result.grid) : result.grid)
+                                             : std::nullopt;
+    if (!edits.empty()) status() << describeEdits(edits.size(), applyEdits(*cropped, edits));
     const ChunkedGrid& voxels = cropped ? *cropped : result.grid;
     std::cerr << run.describe();
     status() << fmt::format("device: {} ({})\n", context.device().name, deviceTypeName(context.device().type));
@@ -169,9 +177,9 @@ void run(const RunOptions& options) {
         // Without shaderFloat64 the default falls back to the host mesher (the same mesh, bit for
         // bit); asking for the device explicitly is then GpuMarchingCubes' error.
         const bool deviceCanMesh = context.hasShaderFloat64();
-        const bool onDevice = marchingCubes && !run.region &&
+        const bool onDevice = marchingCubes && !run.region && edits.empty() &&
                               (options.meshOn == "device" || (options.meshOn.empty() && deviceCanMesh));
-        if (marchingCubes && options.meshOn.empty() && !deviceCanMesh && !run.region)
+        if (marchingCubes && options.meshOn.empty() && !deviceCanMesh && !run.region && edits.empty())
             std::cerr << fmt::format("voxc: note: the device '{}' has no shaderFloat64; marching cubes runs on the host\n",
                                      context.device().name);
         const MeshOptions meshOptions{.iso = options.iso};
@@ -248,6 +256,7 @@ void addRunCommand(CLI::App& app) {
     command->add_flag("--timings", options->timings,
                       "Print wall time per phase: check, lower+glsl, spirv, device, pipelines, generate, mesh, write");
     addRegionFlag(*command, options->region);
+    addEditsFlag(*command, options->editsPath);
     addWorldOverrideFlags(*command, options->overrides);
     addConsoleFlags(*command);
     command->callback([options] { run(*options); });
