@@ -13,5 +13,6 @@ void addLsystemCommand(CLI::App& app);
 void addEvolveCommand(CLI::App& app);
 void addTerrainCommand(CLI::App& app);
 void addLspCommand(CLI::App& app);
+void addRenderCommand(CLI::App& app);
 
 } // namespace voxc::driver

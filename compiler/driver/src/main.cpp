@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
     voxc::driver::addCheckCommand(app);
     voxc::driver::addCompileCommand(app);
     voxc::driver::addRunCommand(app);
+    voxc::driver::addRenderCommand(app);
     voxc::driver::addInterpCommand(app);
     voxc::driver::addExploreCommand(app);
     voxc::driver::addLsystemCommand(app);

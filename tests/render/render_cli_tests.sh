@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# Usage: render_cli_tests.sh VOXC SOURCE_DIR. `voxc render` as a user runs it: clear errors for bad
+# flags with nothing written, and pictures of the requested size. Prints "N passed, N failed" last.
+set -u
+voxc=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+export VOXC_CACHE_DIR="$work/cache"
+passed=0
+failed=0
+
+# expect NAME WANT_EXIT PATTERN -- COMMAND...: exit code and a regex over the combined output.
+expect() {
+    local name=$1 want=$2 pattern=$3
+    shift 4
+    local out code
+    out=$("$@" 2>&1)
+    code=$?
+    if [ "$code" -ne "$want" ]; then
+        echo "FAIL $name: exit $code, want $want"; echo "$out" | head -20; failed=$((failed + 1)); return
+    fi
+    if [ -n "$pattern" ] && ! grep -Eq -- "$pattern" <<<"$out"; then
+        echo "FAIL $name: output does not match /$pattern/"; echo "$out" | head -20; failed=$((failed + 1)); return
+    fi
+    echo "ok   $name"; passed=$((passed + 1))
+}
+
+# expect_no_file NAME PATH: a failed command leaves no output (or temp) file behind.
+expect_no_file() {
+    if compgen -G "$2*" >/dev/null; then
+        echo "FAIL $1: $2 exists after a failure"; failed=$((failed + 1))
+    else
+        echo "ok   $1"; passed=$((passed + 1))
+    fi
+}
+
+# png_size PATH: "WIDTHxHEIGHT" from the IHDR chunk.
+png_size() {
+    python3 -c 'import struct,sys; d=open(sys.argv[1],"rb").read(24); print("%dx%d" % struct.unpack(">II", d[16:24]))' "$1"
+}
+
+scene=$src/examples/scene.vox
+expect help 0 "--camera" -- "$voxc" render --help
+expect bad_camera 1 "--camera front: expected iso, top, side or X,Y,Z:TX,TY,TZ" -- \
+    "$voxc" render "$scene" -o "$work/a.png" --camera front --device lavapipe
+expect_no_file bad_camera_nothing_written "$work/a.png"
+expect same_eye_and_target 1 "the eye and the target are the same point" -- \
+    "$voxc" render "$scene" -o "$work/a.png" --camera 1,2,3:1,2,3 --device lavapipe
+expect bad_size 1 "--size 1280by720: expected WIDTHxHEIGHT" -- "$voxc" render "$scene" -o "$work/a.png" --size 1280by720
+expect zero_size 1 "--size 0x720: expected WIDTHxHEIGHT in pixels, each 1 to 8192" -- \
+    "$voxc" render "$scene" -o "$work/a.png" --size 0x720
+expect_no_file bad_size_nothing_written "$work/a.png"
+expect not_png 1 "must end in" -- "$voxc" render "$scene" -o "$work/a.jpg"
+expect no_output 1 "give -o PICTURE.png" -- "$voxc" render "$scene"
+printf 'world { size = [8, 8, 8]; }\nrule r { match = nope; }\n' >"$work/bad.vox"
+expect located_error 1 "bad\.vox:[0-9]+:[0-9]+: error E[0-9]{4}" -- "$voxc" render "$work/bad.vox" -o "$work/bad.png"
+expect_no_file broken_program_nothing_written "$work/bad.png"
+expect unwritable 1 "cannot write" -- "$voxc" render "$scene" -o /nonexistent-dir/x.png --device lavapipe
+
+expect iso_validated 0 "validation layer: 0 messages" -- \
+    "$voxc" render "$scene" -o "$work/iso.png" --size 320x200 --device lavapipe --validate --wireframe --chunk-borders
+expect iso_size 0 "^320x200$" -- png_size "$work/iso.png"
+expect top 0 "wrote .*top.png \(64x48" -- "$voxc" render "$scene" -o "$work/top.png" --size 64x48 --camera top --device lavapipe
+expect top_again 0 "" -- "$voxc" render "$scene" -o "$work/top2.png" --size 64x48 --camera top --device lavapipe
+expect deterministic 0 "" -- cmp "$work/top.png" "$work/top2.png"
+expect side 0 "" -- "$voxc" render "$scene" -o "$work/side.png" --size 64x48 --camera side --device lavapipe
+expect top_differs_from_side 1 "" -- cmp -s "$work/top.png" "$work/side.png"
+expect explicit_camera 0 "camera 150,90,150:48,20,48" -- \
+    "$voxc" render "$scene" -o "$work/eye.png" --size 64x48 --camera 150,90,150:48,20,48 --device lavapipe
+expect mesh_run 0 "" -- "$voxc" run "$scene" -o "$work/scene.ply" --device lavapipe
+expect mesh_file 0 "wrote .*mesh.png" -- "$voxc" render "$work/scene.ply" -o "$work/mesh.png" --size 64x48 --device lavapipe
+expect mesh_file_no_chunks 1 "--chunk-borders needs a .vox file" -- \
+    "$voxc" render "$work/scene.ply" -o "$work/mesh2.png" --chunk-borders
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
