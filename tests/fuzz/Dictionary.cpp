@@ -20,6 +20,7 @@ constexpr std::string_view kLanguageWords[] = {
     "size", "origin", "seed", "chunk", "iterations", "weight", "probability", "priority", "stride", "value",
     "bounds", "color", "id", "set", "union", "subtract", "intersect", "paint", "arch", "cave", "overhang",
     "float", "int", "bool", "vec2", "vec3", "x", "y", "z", "xy", "xz", "xyz", "density", "none",
+    "symmetry", "rot_y", "square", "all", "rot90y", "rot180y", "mirror_x", "mirror_y", "mirror_diag",
 };
 
 std::string quoted(std::string_view word) {

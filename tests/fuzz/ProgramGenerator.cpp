@@ -302,6 +302,11 @@ void Generator::grammars() {
             if (random_.chance(0.3)) out_ += fmt::format("    priority = {};\n", random_.range(-2, 2));
             if (random_.chance(0.3)) out_ += fmt::format("    weight = {};\n", number(random_.real(0.01, 5.0)));
             if (random_.chance(0.3)) out_ += fmt::format("    probability = {};\n", number(random_.real(0.0, 1.0)));
+            if (random_.chance(0.25)) {
+                // Up to 8 variants a rule: `all` (48) would make kernels the fuzzer's time goes into.
+                static constexpr const char* kGroups[] = {"none", "x", "z", "xz", "rot_y", "square", "xyz"};
+                out_ += fmt::format("    symmetry = {};\n", kGroups[random_.range(0, 6)]);
+            }
             for (const bool symbol : {true, false}) {
                 out_ += symbol ? "    symbol {\n" : "    transform {\n";
                 for (int z = 0; z < window[2]; ++z) {
