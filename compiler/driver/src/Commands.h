@@ -14,5 +14,6 @@ void addEvolveCommand(CLI::App& app);
 void addTerrainCommand(CLI::App& app);
 void addLspCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
+void addWorldCommand(CLI::App& app);
 
 } // namespace voxc::driver

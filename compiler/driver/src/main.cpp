@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
     voxc::driver::addEvolveCommand(app);
     voxc::driver::addTerrainCommand(app);
     voxc::driver::addLspCommand(app);
+    voxc::driver::addWorldCommand(app);
     std::vector<std::string> arguments = voxc::driver::spellDepfileFlagsLong(argc, argv);
     std::vector<char*> argumentPointers;
     for (std::string& argument : arguments) argumentPointers.push_back(argument.data());

@@ -102,6 +102,8 @@ WorldSummary writeWorld(const Program& program, const WorldOptions& options) {
                 if (it != listed.end() && fs::exists(path) && sha256Hex(readBytes(path)) == it->second) {
                     digest = it->second;
                     ++progress.kept;
+                    const glm::ivec3 b = box.size();
+                    summary.voxelsKept += uint64_t(b.x) * uint64_t(b.y) * uint64_t(b.z);
                 } else {
                     const stages::GridBox computed = stages::haloBox(program, box, halo);
                     const DenseGrid grid = options.run(stages::regionProgram(program, computed));

@@ -1,7 +1,9 @@
 #include "voxc/world/VdbTile.h"
 
 #include "voxc/core/Errors.h"
+#include "voxc/core/Sha256.h"
 
+#include <algorithm>
 #include <fmt/format.h>
 #include <mutex>
 #include <openvdb/io/Stream.h>
@@ -12,6 +14,24 @@
 namespace voxc::world {
 
 namespace {
+
+// OpenVDB's archive header: magic (8 bytes), file version, library major and minor (4 each), the
+// grid-offsets flag (1), then the file's UUID as 36 characters, drawn at random on every write.
+constexpr size_t kUuidOffset = 21;
+constexpr size_t kUuidLength = 36;
+
+// Replaces the random UUID by one made from the rest of the file (SHA-256, written as a UUID), so
+// equal tiles are equal files: a second run, or a resumed one, writes the same bytes.
+void setUuidFromContents(std::string& bytes) {
+    const bool uuid = bytes.size() > kUuidOffset + kUuidLength && bytes[kUuidOffset + 8] == '-' &&
+                      bytes[kUuidOffset + 13] == '-' && bytes[kUuidOffset + 18] == '-' && bytes[kUuidOffset + 23] == '-';
+    if (!uuid) throw InternalError("OpenVDB wrote a header without a UUID where voxc expects it");
+    std::fill_n(bytes.begin() + kUuidOffset, kUuidLength, '0');
+    const std::string digest = sha256Hex(bytes);
+    const std::string name = fmt::format("{}-{}-5{}-8{}-{}", digest.substr(0, 8), digest.substr(8, 4),
+                                         digest.substr(12, 3), digest.substr(15, 3), digest.substr(18, 12));
+    bytes.replace(kUuidOffset, kUuidLength, name);
+}
 
 void initialiseOnce() {
     static std::once_flag once;
@@ -42,7 +62,9 @@ std::string tileVdbBytes(const DenseGrid& grid, glm::ivec3 worldMin) {
     openvdb::GridPtrVec grids{density, material};
     std::ostringstream out(std::ios::binary);
     openvdb::io::Stream(out).write(grids);
-    return std::move(out).str();
+    std::string bytes = std::move(out).str();
+    setUuidFromContents(bytes);
+    return bytes;
 }
 
 DenseGrid readTileVdb(const std::string& path, glm::ivec3 worldMin, glm::ivec3 size) {

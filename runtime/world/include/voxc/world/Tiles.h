@@ -34,7 +34,8 @@ struct WorldOptions {
 struct WorldSummary {
     int64_t tiles = 0, kept = 0;
     uint64_t voxelsComputed = 0; // over every computed tile's grid (its halo included)
-    uint64_t voxelsWritten = 0;  // the tiles' own voxels
+    uint64_t voxelsWritten = 0;  // the tiles' own voxels, kept ones included
+    uint64_t voxelsKept = 0;     // the kept tiles' voxels
 };
 
 // `program` is the whole world's (World::localBase 0). UserError when the directory holds

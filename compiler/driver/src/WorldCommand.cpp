@@ -1,0 +1,104 @@
+#include "Commands.h"
+#include "Common.h"
+#include "RegionOption.h"
+
+#include "voxc/core/Errors.h"
+#include "voxc/interp/Interpreter.h"
+#include "voxc/stages/Pipeline.h"
+#include "voxc/vulkan/Context.h"
+#include "voxc/vulkan/Executor.h"
+#include "voxc/world/Tiles.h"
+
+#include <cstdio>
+#include <fmt/format.h>
+#include <fstream>
+#include <glm/common.hpp>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <unistd.h>
+
+namespace voxc::driver {
+
+namespace {
+
+struct WorldCommandOptions {
+    std::string file;
+    std::string directory;
+    int32_t tile = 256;
+    std::string device = "auto";
+    bool interpreter = false;
+    WorldOverrides overrides;
+};
+
+std::string readText(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream out;
+    out << in.rdbuf();
+    return std::move(out).str();
+}
+
+// "[tile 12/64] 18% 1m20s left" on one terminal line, redrawn per tile.
+void drawProgress(const world::TileProgress& progress) {
+    const int64_t computed = progress.done - progress.kept;
+    const double perTile = computed > 0 ? progress.seconds / double(computed) : 0.0;
+    const int64_t left = int64_t(perTile * double(progress.total - progress.done) + 0.5);
+    std::fprintf(stderr, "\r[tile %lld/%lld] %3lld%% %lldm%02llds left ", (long long)progress.done,
+                 (long long)progress.total, (long long)(100 * progress.done / progress.total), (long long)(left / 60),
+                 (long long)(left % 60));
+    if (progress.done == progress.total) std::fputc('\n', stderr);
+}
+
+void writeWorldTiles(const WorldCommandOptions& options) {
+    if (options.tile < 8 || options.tile > 512) throw UserError(fmt::format("--tile {}: the tile edge must be 8 to 512 voxels", options.tile));
+    if (options.directory.empty()) throw UserError("world: -o DIR is required");
+    // The check bounds the grid of the largest tile: one in the middle of the world, its halo
+    // unclipped. The world's size comes from a first check for an empty box (no grid bounded yet).
+    WorldOverrides overrides = options.overrides;
+    overrides.region = std::pair(glm::ivec3(0), glm::ivec3(0));
+    const Program declared = loadProgram(options.file, overrides);
+    const glm::ivec3 size = declared.world.size;
+    const glm::ivec3 edge = glm::min(glm::ivec3(options.tile), size);
+    const glm::ivec3 middle = declared.world.origin + (size - edge) / 2;
+    overrides.region = std::pair(middle, middle + edge);
+    const Program program = loadProgram(options.file, overrides);
+
+    std::optional<VulkanContext> context;
+    if (!options.interpreter) context.emplace(ContextOptions{.device = options.device});
+    world::WorldOptions worldOptions;
+    worldOptions.directory = options.directory;
+    worldOptions.tile = options.tile;
+    worldOptions.sourceText = readText(options.file);
+    worldOptions.run = [&](const Program& region) {
+        if (!context) return interpret(region);
+        VulkanExecutor executor(*context, compileProgram(region, {}));
+        return executor.run().grid.toDense();
+    };
+    if (isatty(STDERR_FILENO)) worldOptions.progress = drawProgress;
+    const world::WorldSummary summary = world::writeWorld(program, worldOptions);
+    std::cerr << fmt::format("wrote {} of {} tiles of {}^3 voxels to {} ({} up to date)", summary.tiles - summary.kept,
+                             summary.tiles, options.tile, options.directory, summary.kept);
+    if (summary.voxelsComputed > 0)
+        std::cerr << fmt::format("; computed {:.2f}x their voxels with the halos",
+                                 double(summary.voxelsComputed) / double(summary.voxelsWritten - summary.voxelsKept));
+    std::cerr << "\n";
+}
+
+} // namespace
+
+void addWorldCommand(CLI::App& app) {
+    auto options = std::make_shared<WorldCommandOptions>();
+    CLI::App* command = app.add_subcommand(
+        "world", "Generate the world tile by tile into DIR: an OpenVDB file per tile (density and material grids) "
+                 "and index.json; a stopped run resumes");
+    command->add_option("file", options->file, "The .vox file")->required();
+    command->add_option("-o,--output", options->directory, "Directory of the tiles and index.json")->required();
+    command->add_option("--tile", options->tile, "Tile edge in voxels (default 256)");
+    command->add_option("--device", options->device, "auto (default: a GPU if present), lavapipe, gpu, or an index");
+    command->add_flag("--interpreter", options->interpreter,
+                      "Compute the tiles with the CPU interpreter (the reference) instead of Vulkan");
+    addWorldOverrideFlags(*command, options->overrides);
+    command->callback([options] { writeWorldTiles(*options); });
+}
+
+} // namespace voxc::driver
