@@ -17,6 +17,7 @@
 #include "LsystemCases.h"
 #include "MeshCases.h"
 #include "TerrainCases.h"
+#include "ViewCases.h"
 
 #include "voxc/stages/Pipeline.h"
 #include "voxc/core/Errors.h"
@@ -164,6 +165,7 @@ int main(int argc, char** argv) {
         if (uses("host")) bench::registerCompileCases(reporter);
         // The meshing cases' grids come from the Vulkan pipeline, so they need the device.
         if (context) bench::registerMeshCases(reporter, *context, options.meshSizes, uses("host"), uses("vulkan"), uses("openvdb"));
+        if (context) bench::registerViewFrame(reporter, *context);
         if (options.json) {
             benchmark::RunSpecifiedBenchmarks(&reporter);
         } else {

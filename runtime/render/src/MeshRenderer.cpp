@@ -403,10 +403,12 @@ void MeshRenderer::Impl::record(const rendering::Camera& camera) {
     api.vkCmdBeginRenderPass(commands, &pass, VK_SUBPASS_CONTENTS_INLINE);
 
     const float aspect = float(size.width) / float(size.height);
-    // The light comes from above, over the viewer's shoulder, so the faces the camera sees are lit.
+    // The light comes from above and over the viewer's left shoulder, so the faces the camera sees
+    // are lit, and faces turned right or down are shaded apart from those turned left or up.
     const glm::vec3 towardsEye = glm::normalize(camera.eye - camera.target);
-    const glm::vec3 light = glm::normalize(glm::vec3(0.0f, 1.0f, 0.0f) + 0.6f * towardsEye + glm::vec3(0.25f, 0.0f, 0.0f));
-    FramePush push{rendering::viewProjection(camera, aspect), glm::vec4(camera.eye, 0.0f), glm::vec4(light, 0.35f)};
+    const glm::vec3 right = glm::normalize(glm::cross(camera.up, towardsEye));
+    const glm::vec3 light = glm::normalize(glm::vec3(0.0f, 1.0f, 0.0f) + 0.5f * towardsEye - 0.6f * right);
+    FramePush push{rendering::viewProjection(camera, aspect), glm::vec4(camera.eye, 0.0f), glm::vec4(light, 0.3f)};
     const VkShaderStageFlags pushStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     const VkDeviceSize offset = 0;
     if (faceIndexCount > 0) {
