@@ -2,6 +2,7 @@
 
 #include "voxc/check/Check.h"
 #include "voxc/core/Errors.h"
+#include "voxc/edit/EditableWorld.h"
 #include "voxc/mesh/Lod.h"
 #include "voxc/mesh/MarchingCubes.h"
 #include "voxc/stages/Pipeline.h"
@@ -12,6 +13,7 @@
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/VolumeToMesh.h>
 
+#include <chrono>
 #include <iostream>
 #include <memory>
 #include <thread>
@@ -74,6 +76,46 @@ void setCounters(benchmark::State& state, int n, size_t triangles) {
 }
 
 std::string hostDescription() { return fmt::format("cpu ({} threads)", std::thread::hardware_concurrency()); }
+
+// edit_remesh: one brush on examples/scene.vox at 256^3, from the brush to the re-meshed chunks
+// (EditableWorld::edit: the brush, its diff, marching cubes over the chunks R2 names). The brush sits
+// on the surface under the grid's centre, found by a pick; iterations alternate carve and add at
+// the same place, so every one changes voxels and the world does not drift. Welding the whole
+// world's mesh is not part of it (a viewer uploads the re-meshed chunks); its time is a counter.
+// "edit_remesh_chunk16": the same grid re-chunked to 16^3, so a small brush re-meshes fewer cells.
+void registerEditCases(JsonReporter& reporter, VulkanContext& context) {
+    constexpr int n = 256;
+    auto input = std::make_shared<MeshInput>();
+    input->example = "scene";
+    input->n = n;
+    for (int32_t chunk : {kChunk, 16})
+    for (float radius : {4.0f, 8.0f, 16.0f}) {
+        const std::string caseName = chunk == kChunk ? "edit_remesh" : fmt::format("edit_remesh_chunk{}", chunk);
+        const std::string name = fmt::format("{}/{}/host", caseName, int(radius));
+        benchmark::RegisterBenchmark(name.c_str(), [input, &context, radius, chunk](benchmark::State& state) {
+            input->make(context);
+            const ChunkLayout& layout = input->grid->layout();
+            EditableWorld world(chunk == layout.chunkSize
+                                    ? *input->grid
+                                    : ChunkedGrid::fromDense(input->grid->toDense(),
+                                                             ChunkLayout::make(layout.gridOrigin, layout.gridSize, chunk)));
+            const std::optional<PickHit> hit = world.pick({n / 2.0f, float(n) + 1.0f, n / 2.0f}, {0.0f, -1.0f, 0.0f});
+            if (!hit) throw InternalError("edit_remesh: the pick from above the scene found no surface");
+            Brush brush{Brush::Op::Carve, hit->point, radius, 2.0f};
+            size_t chunks = world.edit(brush).chunksRemeshed.size(); // warm-up
+            for (auto _ : state) {
+                brush.op = brush.op == Brush::Op::Carve ? Brush::Op::Add : Brush::Op::Carve;
+                chunks = world.edit(brush).chunksRemeshed.size();
+            }
+            const auto start = std::chrono::steady_clock::now();
+            const size_t triangles = world.mesh().triangles.size() / 3;
+            state.counters["chunks_remeshed"] = double(chunks);
+            state.counters["weld_ms"] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            state.counters["triangles"] = double(triangles);
+        })->Unit(benchmark::kMillisecond)->UseRealTime();
+        reporter.describe(name + "/real_time", {caseName, int(radius), "host", hostDescription()});
+    }
+}
 
 } // namespace
 
@@ -138,6 +180,7 @@ void registerMeshCases(JsonReporter& reporter, VulkanContext& context, const std
                         setCounters(state, input->n, triangles);
                     });
         }
+    if (host) registerEditCases(reporter, context);
 }
 
 } // namespace voxc::bench
