@@ -148,6 +148,21 @@ TEST(MeshRenderer, LinesAreDrawnOverTheFaces) {
     expectNoValidationMessages();
 }
 
+TEST(MeshRenderer, OneRendererDrawsFrameAfterFrameAndSceneAfterScene) {
+    // Frame-to-frame hazards on the shared targets are what synchronisation validation would see.
+    MeshRenderer renderer(validatedLavapipe(), {160, 90});
+    const rendering::Camera camera = rendering::parseCamera("iso", meshBounds(scene().mesh), 160.0f / 90.0f);
+    renderer.setScene(scene().mesh, scene().program.materials);
+    const rendering::Picture first = renderer.draw(camera);
+    renderer.setScene(scene().mesh, scene().program.materials, rendering::wireframeLines(scene().mesh, {0, 0, 0}));
+    const rendering::Picture wired = renderer.draw(camera);
+    renderer.setScene(scene().mesh, scene().program.materials);
+    const rendering::Picture again = renderer.draw(camera);
+    EXPECT_TRUE(first.rgb == again.rgb);
+    EXPECT_FALSE(first.rgb == wired.rgb);
+    expectNoValidationMessages();
+}
+
 TEST(MeshRenderer, AnEmptySceneIsAllBackground) {
     MeshRenderer renderer(validatedLavapipe(), {64, 32});
     renderer.setScene(Mesh{}, {});
