@@ -85,6 +85,31 @@ TEST(vulkan_GpuMultigrid, MatchesTheHostBitForBit) {
     expectNoValidationMessages();
 }
 
+// Past the cycle cap the device solve fails as the host's does, with the same numbers.
+TEST(vulkan_GpuMultigrid, CycleCapIsTheHostsConvergenceError) {
+    const curves::Box box{glm::ivec3(0), glm::ivec3(32, 16, 32)};
+    curves::Limits limits;
+    limits.maxCycles = 1;
+    const curves::Constraints cs =
+        curves::voxelize(curves::test::cliffScene(), box, curves::SeedValue::PlaneDistance, limits);
+    std::vector<uint8_t> fixed(cs.flags.size());
+    for (size_t i = 0; i < fixed.size(); ++i) fixed[i] = (cs.flags[i] & curves::kInParams) ? 1 : 0;
+    const auto failure = [&](const curves::LinearSolver& solver) {
+        curves::Field3 a = cs.amplitude;
+        try {
+            solver("parameters", fixed, {&a}, 1e-12f, limits);
+        } catch (const curves::ConvergenceError& e) {
+            return std::pair(e.cycles, e.residual);
+        }
+        ADD_FAILURE() << "no ConvergenceError";
+        return std::pair(0, 0.0);
+    };
+    const auto host = failure(curves::solveLaplace);
+    EXPECT_EQ(host.first, 1);
+    EXPECT_EQ(failure(vulkanLinearSolver(validated())), host);
+    expectNoValidationMessages();
+}
+
 // The level rule and the program's shape: every step's workgroups cover its level.
 TEST(vulkan_GpuMultigrid, ProgramCoversEveryLevel) {
     const std::vector<curves::MultigridLevel> levels = curves::multigridLevels({128, 6, 96});
