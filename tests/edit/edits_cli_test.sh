@@ -59,6 +59,15 @@ PY
     && fail "--mesh-on device with --edits was accepted" || grep -q "with --edits the edited grid is meshed on the host" "$work/dev.log" \
     && echo "ok   --mesh-on device with --edits is refused" || fail "--mesh-on device message"
 
+# The example edits file: a tunnel through scene.vox's hills and a mound, every edit changing voxels.
+if "$voxc" run "$scene" --device lavapipe --edits "$src/examples/scene.edits.json" -o "$work/tunnel.ply" 2>"$work/tunnel.log"; then
+    grep -q "^edits: 20 applied on the host, 20 of them changed voxels$" "$work/tunnel.log" &&
+        grep -Eq "^wrote $work/tunnel.ply \(marching cubes\): .*watertight" "$work/tunnel.log" &&
+        echo "ok   examples/scene.edits.json: 20 edits, watertight" || { fail "scene.edits.json report"; cat "$work/tunnel.log"; }
+else
+    fail "run with examples/scene.edits.json"; cat "$work/tunnel.log"
+fi
+
 # Bad edits files: exit 1, the located diagnostic, no output written.
 expect() {
     local name=$1 text=$2; shift 2
@@ -81,6 +90,13 @@ expect values $'[{"op": "smash", "center": [1, 2, 3], "radius": 0, "softness": "
 expect notarray $'{"edits": []}\n' "notarray.json:1:1: error E0010: an edits file is a JSON array"
 expect center $'[{"op": "add", "center": [1, 2], "radius": 1}, {"op": "add", "center": [1, 2, 1e30], "radius": 1}]' \
     "center.json:1:16: error E0010: edit 1: 'center' must be three numbers" "center.json:1:62: error E0007: edit 2: 'center' beyond"
+python3 -c 'import sys; sys.stdout.write("[" + ",".join(["{\"op\":\"add\",\"center\":[0,0,0],\"radius\":1}"] * 100001) + "]")' >"$work/many.json"
+if "$voxc" run "$scene" --device lavapipe --edits "$work/many.json" -o "$work/bad.ply" 2>"$work/many.log"; then
+    fail "100001 edits were accepted"
+else
+    grep -Eq "many.json:1:[0-9]+: error E0012: 100001 edits: at most 100000 per file" "$work/many.log" \
+        && echo "ok   100001 edits: E0012 at the first one too many" || { fail "too many edits message"; head -3 "$work/many.log"; }
+fi
 if "$voxc" interp "$scene" --edits "$work/missing.json" --voxels "$work/bad.npy" 2>"$work/missing.log"; then
     fail "a missing edits file was accepted"
 else
