@@ -159,7 +159,12 @@ TEST_F(codegen_Package, ManifestListsFieldStages) {
     // The ground is evaluated in every chunk of fields.vox's grid: the chunks merge into one box.
     EXPECT_EQ(ground["boxes"], nlohmann::json::parse("[[[0, 0, 0], [64, 64, 64]]]"));
     ground.erase("boxes");
-    EXPECT_EQ(ground, (nlohmann::json{{"kind", "field"}, {"field", "ground"}, {"mode", "set"}, {"kernel", "ground_set"}}));
+    // A field is a function of position: its voxels depend on no other voxel.
+    EXPECT_EQ(ground, (nlohmann::json{{"kind", "field"},
+                                      {"field", "ground"},
+                                      {"mode", "set"},
+                                      {"kernel", "ground_set"},
+                                      {"dependency_radius", {0, 0, 0}}}));
     EXPECT_EQ(stages[1]["kernel"], "tunnel_subtract");
     EXPECT_EQ(stages[2]["mode"], "union");
     EXPECT_EQ(stages[3]["kind"], "grammar");
