@@ -158,6 +158,29 @@ TEST(edit_World, noOpEditsChangeNothing) {
     EXPECT_TRUE(identical(world.mesh(), before));
 }
 
+// An add with a material paints exactly the voxels it makes denser; without one, materials stay.
+TEST(edit_Brush, anAddPaintsTheVoxelsItMakesDenser) {
+    ChunkedGrid grid = makeGrid({0, 0, 0}, {32, 32, 32}, 16, ramp([](glm::vec3 p) { return p.y - 16.3f; }, 2.0f));
+    const ChunkedGrid original = grid;
+    Brush mound = add({16.2f, 16.0f, 15.7f}, 5.5f, 2.0f);
+    applyBrush(grid, mound);
+    EXPECT_EQ(grid.materials(), original.materials());
+    grid = original;
+    mound.material = 7;
+    ASSERT_TRUE(applyBrush(grid, mound));
+    size_t painted = 0;
+    for (int z = 0; z < 32; ++z)
+        for (int y = 0; y < 32; ++y)
+            for (int x = 0; x < 32; ++x) {
+                const bool denser = grid.at({x, y, z}) > original.at({x, y, z});
+                EXPECT_EQ(grid.materialAt({x, y, z}), denser ? 7 : 0) << x << "," << y << "," << z;
+                painted += denser;
+            }
+    EXPECT_GT(painted, 100u);
+    // A second identical add changes nothing.
+    EXPECT_FALSE(applyBrush(grid, mound));
+}
+
 // D3: carve then add of the same sphere deep in rock restores every voxel's class and the mesh's
 // bytes, though not the field (d'' = max(1 - b, b) in the ramp).
 TEST(edit_World, carveThenAddRestoresTheClassesNotTheField) {

@@ -14,7 +14,7 @@ scene=$src/examples/scene.vox
 cat >"$work/edits.json" <<'JSON'
 [
   {"op": "carve", "center": [48.5, 30.25, 48], "radius": 10, "softness": 2},
-  {"op": "add", "center": [20, 40, 20], "radius": 5},
+  {"op": "add", "center": [20, 40, 20], "radius": 5, "material": "sandstone"},
   {"op": "carve", "center": [500, 0, 0], "radius": 3}
 ]
 JSON
@@ -83,10 +83,13 @@ expect() {
 }
 expect syntax $'[\n  {"op": "carve", "center": [1, 2, 3], "radius": 4,}\n]\n' "syntax.json:2:52: error E0001: the edits file is not valid JSON"
 expect key $'[\n  {"op": "carve", "center": [1, 2, 3], "radius": 4},\n  {"op": "carve", "centre": [1, 2, 3], "radius": 4}\n]\n' \
-    "key.json:3:19: error E0008: edit 2: unknown key 'centre'" "key.json:3:3: error E0009: edit 2: missing key 'center'"
+    "key.json:3:19: error E0008: edit 2: unknown key 'centre' (keys: op, center, radius, softness, material)" "key.json:3:3: error E0009: edit 2: missing key 'center'"
 expect values $'[{"op": "smash", "center": [1, 2, 3], "radius": 0, "softness": "soft"},\n 7]\n' \
     "values.json:1:3: error E0011: edit 1: unknown op 'smash'" "values.json:1:39: error E0007: edit 1: 'radius' 0 is outside (0, 4096]" \
     "values.json:1:52: error E0010: edit 1: 'softness' must be a number" "values.json:2:2: error E0010: edit 2: an edit is an object"
+expect material $'[{"op": "add", "center": [1, 2, 3], "radius": 1, "material": "granite"},\n {"op": "carve", "center": [1, 2, 3], "radius": 1, "material": "sand"}]' \
+    "material.json:1:50: error E0002: edit 1: unknown material 'granite' (declared: " \
+    "material.json:2:52: error E0010: edit 2: 'material' is the name of a material, on an add"
 expect notarray $'{"edits": []}\n' "notarray.json:1:1: error E0010: an edits file is a JSON array"
 expect center $'[{"op": "add", "center": [1, 2], "radius": 1}, {"op": "add", "center": [1, 2, 1e30], "radius": 1}]' \
     "center.json:1:16: error E0010: edit 1: 'center' must be three numbers" "center.json:1:62: error E0007: edit 2: 'center' beyond"

@@ -76,7 +76,7 @@ bool isFiniteNumber(const nlohmann::json& value) { return value.is_number() && s
 
 } // namespace
 
-std::vector<Brush> parseEdits(const SourceFile& source, Diagnostics& diagnostics) {
+std::vector<Brush> parseEdits(const SourceFile& source, Diagnostics& diagnostics, const std::vector<Material>& materials) {
     const std::string& text = source.text();
     nlohmann::json document;
     try {
@@ -116,8 +116,9 @@ std::vector<Brush> parseEdits(const SourceFile& source, Diagnostics& diagnostics
         }
         bool ok = true;
         for (const auto& [key, value] : edit.items())
-            if (key != "op" && key != "center" && key != "radius" && key != "softness") {
-                diagnostics.error("E0008", keyAt(key), fmt::format("{}: unknown key '{}' (keys: op, center, radius, softness)", name, key));
+            if (key != "op" && key != "center" && key != "radius" && key != "softness" && key != "material") {
+                diagnostics.error("E0008", keyAt(key),
+                                  fmt::format("{}: unknown key '{}' (keys: op, center, radius, softness, material)", name, key));
                 ok = false;
             }
         for (const char* key : {"op", "center", "radius"})
@@ -163,16 +164,36 @@ std::vector<Brush> parseEdits(const SourceFile& source, Diagnostics& diagnostics
         };
         number("radius", brush.radius, kMaxBrushRadius);
         number("softness", brush.softness, kMaxBrushSoftness);
+        if (edit.contains("material")) {
+            const nlohmann::json& material = edit["material"];
+            const auto declared = material.is_string()
+                                      ? std::find_if(materials.begin(), materials.end(),
+                                                     [&](const Material& m) { return m.name == material.get<std::string>(); })
+                                      : materials.end();
+            if (!material.is_string() || brush.op != Brush::Op::Add) {
+                diagnostics.error("E0010", keyAt("material"), name + ": 'material' is the name of a material, on an add");
+                ok = false;
+            } else if (declared == materials.end()) {
+                std::string names;
+                for (const Material& m : materials) names += (names.empty() ? "" : ", ") + m.name;
+                diagnostics.error("E0002", keyAt("material"),
+                                  fmt::format("{}: unknown material '{}' ({})", name, material.get<std::string>(),
+                                              names.empty() ? "the program declares none" : "declared: " + names));
+                ok = false;
+            } else {
+                brush.material = declared->id;
+            }
+        }
         if (ok) edits.push_back(brush);
     }
     return edits;
 }
 
-std::vector<Brush> loadEdits(const std::string& path) {
+std::vector<Brush> loadEdits(const std::string& path, const std::vector<Material>& materials) {
     Diagnostics diagnostics;
     std::optional<SourceFile> source = loadSourceFile(path, diagnostics);
     std::vector<Brush> edits;
-    if (source && !reportIfNotText(*source, diagnostics)) edits = parseEdits(*source, diagnostics);
+    if (source && !reportIfNotText(*source, diagnostics)) edits = parseEdits(*source, diagnostics, materials);
     const SourceFile& shown = source ? *source : SourceFile(path, "");
     const std::vector<Diagnostic> all = diagnostics.take();
     for (const Diagnostic& diagnostic : all) std::cerr << render(diagnostic, shown);
@@ -183,7 +204,7 @@ std::vector<Brush> loadEdits(const std::string& path) {
 
 void addEditsFlag(CLI::App& command, std::string& path) {
     command.add_option("--edits", path,
-                       "A JSON edits file (sphere brushes: carve or add, center, radius, softness) replayed in order on "
+                       "A JSON edits file (sphere brushes: carve or add, center, radius, softness, material) replayed in order on "
                        "the generated grid, on the host, before meshing and writing");
 }
 

@@ -2,11 +2,13 @@
 // Edits as data (`voxc run|interp --edits FILE`): a JSON array of sphere brushes replayed, in order,
 // on the generated grid before meshing and writing (docs/cli.md, "Edits files"):
 //   [{"op": "carve", "center": [40.5, 20, 33], "radius": 6, "softness": 2},
-//    {"op": "add", "center": [10, 30, 12], "radius": 3}]
+//    {"op": "add", "center": [10, 30, 12], "radius": 3, "material": "rock"}]
 // Errors are located diagnostics: JSON syntax E0001 at the parser's position; at the offending key
 // (or the edit) an unknown key E0008, a missing one E0009, a value of the wrong type E0010, an
-// unknown op E0011, a value out of range E0007; more than kMaxEdits edits E0012.
+// unknown op E0011, a value out of range E0007, a material the program does not declare E0002;
+// more than kMaxEdits edits E0012.
 #include "voxc/edit/Brush.h"
+#include "voxc/program/Program.h"
 #include "voxc/syntax/Diagnostics.h"
 #include "voxc/syntax/SourceFile.h"
 
@@ -24,9 +26,10 @@ inline constexpr float kMaxBrushRadius = 4096.0f;
 inline constexpr float kMaxBrushSoftness = 256.0f;
 inline constexpr float kMaxBrushCoordinate = 16777216.0f; // 2^24: integer positions stay exact in float
 
-std::vector<Brush> parseEdits(const SourceFile& source, Diagnostics& diagnostics);
+// `materials`: the program's, which an add's "material" names.
+std::vector<Brush> parseEdits(const SourceFile& source, Diagnostics& diagnostics, const std::vector<Material>& materials);
 // Reads and parses `path`; prints every diagnostic to stderr and throws UserError when there are errors.
-std::vector<Brush> loadEdits(const std::string& path);
+std::vector<Brush> loadEdits(const std::string& path, const std::vector<Material>& materials);
 
 // Applies the brushes in order; returns how many changed at least one voxel.
 size_t applyEdits(ChunkedGrid& grid, const std::vector<Brush>& edits);

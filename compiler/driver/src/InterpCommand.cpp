@@ -58,12 +58,13 @@ SliceSpec parseSlice(const std::string& text, glm::ivec3 size) {
 }
 
 void interpretFile(const InterpOptions& options) {
-    const std::vector<Brush> edits = options.editsPath.empty() ? std::vector<Brush>{} : loadEdits(options.editsPath);
     std::vector<CheckedLsystem> lsystems;
     const RegionRun run = planRegionRun(
         loadProgram(options.file, withRegion(options.overrides, options.region), false, nullptr, &lsystems),
         options.region);
     const Program& program = run.program;
+    const std::vector<Brush> edits =
+        options.editsPath.empty() ? std::vector<Brush>{} : loadEdits(options.editsPath, program.materials);
     std::cerr << formatSolveReport(program, options.trace);
     std::cerr << run.describe();
     std::optional<SliceSpec> slice;

@@ -82,7 +82,6 @@ void run(const RunOptions& options) {
                                 {"--voxels", options.voxelsPath},
                                 {"--materials", options.materialsPath}};
     refuseClashingPaths(inputs, outputs);
-    const std::vector<Brush> edits = options.editsPath.empty() ? std::vector<Brush>{} : loadEdits(options.editsPath);
 
     // Kernels compiled by earlier runs (SPIR-V, and the device's pipeline cache) are reused.
     const std::optional<std::filesystem::path> cache = options.noCache ? std::nullopt : codegen::defaultCacheDirectory();
@@ -122,6 +121,8 @@ void run(const RunOptions& options) {
         planRegionRun(loadProgram(options.file, withRegion(overrides, options.region)), options.region);
     times.add("check", since(checkStart) - deviceMs, "parse, check, host solves");
     const Program& program = run.program;
+    const std::vector<Brush> edits =
+        options.editsPath.empty() ? std::vector<Brush>{} : loadEdits(options.editsPath, program.materials);
     const codegen::CompileCacheCounts spirvBefore = codegen::compileCacheCounts();
     const KernelPackage package = times.time("lower+glsl", [&] { return compileProgram(program, {}); });
     const codegen::CompileCacheCounts spirvAfter = codegen::compileCacheCounts();

@@ -19,9 +19,11 @@ VoxelBox supportBox(const Brush& brush, glm::ivec3 origin, glm::ivec3 size) {
 
 bool sameBits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
-// `density` maps a grid-local voxel to its stored density.
-template <typename Density>
-std::optional<VoxelBox> applyOver(const Brush& brush, glm::ivec3 origin, glm::ivec3 size, Density&& density) {
+// `density` and `material` map a grid-local voxel to its stored channels.
+template <typename Density, typename Material>
+std::optional<VoxelBox> applyOver(const Brush& brush, glm::ivec3 origin, glm::ivec3 size, Density&& density,
+                                  Material&& material) {
+    const bool paints = brush.op == Brush::Op::Add && brush.material != 0;
     const VoxelBox box = supportBox(brush, origin, size);
     std::optional<VoxelBox> changed;
     for (int z = box.first.z; z <= box.last.z; ++z)
@@ -32,8 +34,11 @@ std::optional<VoxelBox> applyOver(const Brush& brush, glm::ivec3 origin, glm::iv
                 if (b == 0.0f) continue; // outside the support: untouched, even a density above 1
                 float& d = density(local);
                 const float next = brushed(brush.op, d, b);
-                if (sameBits(next, d)) continue;
+                uint8_t& id = material(local);
+                const bool repaint = paints && next > (std::isfinite(d) ? d : 0.0f) && id != brush.material;
+                if (sameBits(next, d) && !repaint) continue;
                 d = next;
+                if (repaint) id = brush.material;
                 if (!changed) changed = VoxelBox{local, local};
                 changed->first = glm::min(changed->first, local);
                 changed->last = glm::max(changed->last, local);
@@ -56,11 +61,13 @@ float brushed(Brush::Op op, float d, float b) {
 
 std::optional<VoxelBox> applyBrush(ChunkedGrid& grid, const Brush& brush) {
     return applyOver(brush, grid.layout().gridOrigin, grid.layout().gridSize,
-                     [&](glm::ivec3 local) -> float& { return grid.at(local); });
+                     [&](glm::ivec3 local) -> float& { return grid.at(local); },
+                     [&](glm::ivec3 local) -> uint8_t& { return grid.materialAt(local); });
 }
 
 std::optional<VoxelBox> applyBrush(DenseGrid& grid, glm::ivec3 origin, const Brush& brush) {
-    return applyOver(brush, origin, grid.size(), [&](glm::ivec3 local) -> float& { return grid.at(local); });
+    return applyOver(brush, origin, grid.size(), [&](glm::ivec3 local) -> float& { return grid.at(local); },
+                     [&](glm::ivec3 local) -> uint8_t& { return grid.materialAt(local); });
 }
 
 } // namespace voxc

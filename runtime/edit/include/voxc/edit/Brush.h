@@ -24,6 +24,8 @@ struct Brush {
     glm::vec3 center{0.0f};
     float radius = 1.0f;   // > 0
     float softness = 1.0f; // the ramp width w of density(), > 0
+    // Add only: the material id given to every voxel the add makes denser; 0 keeps their own.
+    uint8_t material = 0;
 };
 
 // b at world voxel position p.
@@ -38,8 +40,8 @@ struct VoxelBox {
 };
 
 // Applies the brush to every voxel of its support inside the grid and returns the box of the
-// voxels whose density bits changed (nullopt when none did: the edit was a no-op). Materials are
-// kept: an add over air gives solid voxels of the air's material (none).
+// voxels whose density bits (or material) changed (nullopt when none did: the edit was a no-op).
+// Materials are kept, except where an add with a material makes a voxel denser.
 std::optional<VoxelBox> applyBrush(ChunkedGrid& grid, const Brush& brush);
 // The same on a dense grid whose voxel (0,0,0) is at world position `origin` (the interpreter's).
 std::optional<VoxelBox> applyBrush(DenseGrid& grid, glm::ivec3 origin, const Brush& brush);
