@@ -309,10 +309,12 @@ VkPipeline MeshRenderer::Impl::createPipeline(VkShaderModule vertex, VkShaderMod
     viewportState.pViewports = &viewport;
     viewportState.scissorCount = 1;
     viewportState.pScissors = &scissor;
-    // No culling: a mesh cut by the grid's box may be seen from inside.
+    // The meshes are closed and wind counter-clockwise seen from air, so a face seen from behind is
+    // hidden by others and is not drawn. Vulkan decides the winding in framebuffer coordinates
+    // (y down), where the projection's flipped y keeps a face seen from air counter-clockwise.
     VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
     raster.polygonMode = VK_POLYGON_MODE_FILL;
-    raster.cullMode = VK_CULL_MODE_NONE;
+    raster.cullMode = topology == VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
     raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
     raster.lineWidth = 1.0f;
     VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
