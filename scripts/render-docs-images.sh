@@ -2,7 +2,7 @@
 # Renders the pictures in docs/images that are a plain `voxc run` of an example seen from above one
 # corner, with `voxc render` on lavapipe (the same pixels on every machine with the same Mesa).
 # Usage: scripts/render-docs-images.sh [VOXC] (default: build/compiler/driver/voxc).
-# The rest (a cut-open or inverted mesh, a changed iteration count: cave, caves, lsystem_cave_air,
+# The rest (a cut-open or inverted mesh, a changed iteration count: caves, lsystem_cave_air,
 # overhang_weathered) are still made with scripts/render-mesh.py from a PLY, as docs/examples.md says.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -10,6 +10,9 @@ voxc=${1:-$root/build/compiler/driver/voxc}
 for example in overhang cave_grammar terrain fields arch cliff; do
     "$voxc" render "$root/examples/$example.vox" -o "$root/docs/images/$example.png" --size 400x400 --device lavapipe
 done
+# The cave's mouth in the z = 0 face.
+"$voxc" render "$root/examples/cave.vox" -o "$root/docs/images/cave.png" --size 400x400 \
+    --camera -50,80,-120:32,24,32 --device lavapipe
 # The cliff face from the floor's side.
 "$voxc" render "$root/examples/curves_cliff.vox" -o "$root/docs/images/curves_cliff.png" --size 400x400 \
     --camera -60,60,120:32,12,32 --device lavapipe

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Renders a binary PLY written by `voxc run` to a PNG (standard library only). `voxc render`
-draws the docs pictures now (scripts/render-docs-images.sh); this script is kept for the four
-whose mesh is edited first (cut open, turned inside out: docs/examples.md names them). Vertex colours (materials) are used when present. Usage: render-mesh.py MESH.ply OUT.png [--size 480]
+draws the docs pictures now (scripts/render-docs-images.sh); this script is kept for the three
+made from a changed file or an edited mesh (cut open, turned inside out: docs/examples.md names them). Vertex colours (materials) are used when present. Usage: render-mesh.py MESH.ply OUT.png [--size 480]
 [--yaw 35] [--pitch 30]."""
 import argparse
 import math
