@@ -94,7 +94,8 @@ std::vector<Brush> parseEdits(const SourceFile& source, Diagnostics& diagnostics
                           "an edits file is a JSON array of edits, e.g. [{\"op\": \"carve\", \"center\": [1, 2, 3], \"radius\": 4}]");
         return {};
     }
-    const std::vector<ElementPlaces> places = scanPlaces(text);
+    std::vector<ElementPlaces> places = scanPlaces(text);
+    places.resize(std::max(places.size(), document.size())); // the scan sees every element; never index past it
     if (document.size() > kMaxEdits) {
         diagnostics.error("E0012", locate(text, places[kMaxEdits].start),
                           fmt::format("{} edits: at most {} per file", document.size(), kMaxEdits));
@@ -103,7 +104,7 @@ std::vector<Brush> parseEdits(const SourceFile& source, Diagnostics& diagnostics
     std::vector<Brush> edits;
     for (size_t i = 0; i < document.size(); ++i) {
         const nlohmann::json& edit = document[i];
-        const ElementPlaces& place = places.at(i);
+        const ElementPlaces& place = places[i];
         const SourceLoc at = locate(text, place.start);
         const auto keyAt = [&](const std::string& key) {
             const auto found = place.keys.find(key);
