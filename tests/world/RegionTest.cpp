@@ -53,7 +53,10 @@ TEST_P(RegionOfExample, EqualsTheWholeWorldThere) {
         Program moved = program;
         moved.world.origin += shift;
         const DenseGrid whole = interpret(moved);
-        for (const stages::GridBox& region : regionsOf(moved.world.size)) {
+        std::vector<stages::GridBox> regions = regionsOf(moved.world.size);
+        // caves.vox interprets for half a minute per grid: the chunk-straddling box and the single voxel.
+        if (GetParam() == "caves") regions = {regions[3], regions[4]};
+        for (const stages::GridBox& region : regions) {
             SCOPED_TRACE(fmt::format("origin ({}, {}, {}), box ({}, {}, {})..({}, {}, {})", moved.world.origin.x,
                                      moved.world.origin.y, moved.world.origin.z, region.min.x, region.min.y,
                                      region.min.z, region.max.x, region.max.y, region.max.z));
