@@ -57,7 +57,7 @@ bool analyseSymbol(Context& context, const Rule& rule, const RuleSyntax& syntax,
     bool allIgnore = true;
     for (const SymbolCell& cell : rule.symbol)
         allIgnore = allIgnore && cell.predicates.empty() && cell.materialPredicates.empty();
-    if (allIgnore)
+    if (allIgnore && rule.aggregates.empty()) // a `where` block makes an all-IGN symbol selective
         context.diagnostics.warning("W0201", syntax.symbolLoc,
                                     fmt::format("the symbol of rule '{}' is all IGN, so it matches every window "
                                                 "inside the bounds",

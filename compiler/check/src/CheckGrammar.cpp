@@ -1,4 +1,5 @@
 // `grammar NAME { ... }` blocks and their rules.
+#include "CheckAggregates.h"
 #include "Layout.h"
 #include "Sections.h"
 #include "Suggest.h"
@@ -81,13 +82,13 @@ void readWeight(Context& context, const ast::Assignment& a, Rule& rule) {
 
 std::optional<DeclaredRule> checkRule(Context& context, const ast::Block& block) {
     static constexpr std::string_view kKeys[] = {"size", "priority", "weight", "probability", "symmetry"};
-    static constexpr std::string_view kParts[] = {"symbol", "transform"};
+    static constexpr std::string_view kParts[] = {"symbol", "transform", "where"};
     if (!checkLabel(context, block, true)) return std::nullopt;
     const std::string where = fmt::format("rule '{}'", *block.label);
     rejectUnexpectedMembers(context, block, where, {.blocks = true});
     BlockKeys keys(context, block, where, kKeys);
     for (const ast::Block& part : block.blocks)
-        if (part.kind != "symbol" && part.kind != "transform")
+        if (part.kind != "symbol" && part.kind != "transform" && part.kind != "where")
             context.diagnostics.error("E0008", part.loc,
                                       fmt::format("unknown block '{}' in {}{}", part.kind, where,
                                                   didYouMean(part.kind, kParts)));
@@ -127,6 +128,10 @@ std::optional<DeclaredRule> checkRule(Context& context, const ast::Block& block)
     if (symbol) out.syntax.symbolLoc = symbol->loc;
     if (sizeOk && symbol) convertSymbol(context, *symbol, out);
     if (sizeOk && transform) convertTransform(context, *transform, out);
+    for (const ast::Block& part : block.blocks)
+        if (part.kind == "where" && sizeOk)
+            for (const AggregateTest& test : checkWhereBlock(context, part, out.rule.size, where))
+                out.rule.aggregates.push_back(test);
 
     if (context.diagnostics.errorCount() != errorsBefore) return std::nullopt;
     return declared;

@@ -98,8 +98,15 @@ bool sameTransform(const TransformCell& a, const TransformCell& b) {
     return a.op == b.op && a.value == b.value && a.material == b.material;
 }
 
+bool sameAggregate(const AggregateTest& a, const AggregateTest& b) {
+    return a.kind == b.kind && a.boxMin == b.boxMin && a.boxMax == b.boxMax && a.material == b.material &&
+           a.low == b.low && a.high == b.high && a.minCount == b.minCount && a.maxCount == b.maxCount;
+}
+
 bool sameWindow(const Rule& a, const Rule& b) {
     return a.size == b.size &&
+           std::equal(a.aggregates.begin(), a.aggregates.end(), b.aggregates.begin(), b.aggregates.end(),
+                      sameAggregate) &&
            std::equal(a.symbol.begin(), a.symbol.end(), b.symbol.begin(), b.symbol.end(), sameSymbol) &&
            std::equal(a.transform.begin(), a.transform.end(), b.transform.begin(), b.transform.end(), sameTransform);
 }
@@ -211,6 +218,15 @@ CheckedRule applySymmetry(const CheckedRule& original, const SymmetryElement& el
                 out.rule.transform[to] = rule.transform[from];
                 out.syntax.symbolCells[to] = original.syntax.symbolCells[from];
             }
+    // An aggregate's box turns with the window: a mirrored axis maps [lo, hi) to [size - hi, size - lo).
+    for (AggregateTest& test : out.rule.aggregates) {
+        const AggregateTest before = test;
+        for (int axis = 0; axis < 3; ++axis) {
+            const int from = element.from[axis];
+            test.boxMin[axis] = element.negate[axis] ? size[from] - before.boxMax[from] : before.boxMin[from];
+            test.boxMax[axis] = element.negate[axis] ? size[from] - before.boxMin[from] : before.boxMax[from];
+        }
+    }
     return out;
 }
 

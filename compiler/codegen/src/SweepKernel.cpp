@@ -132,6 +132,49 @@ std::string cellAddress(const IrCell& cell) {
     return fmt::format("windowCellAddress(window, ivec3({}, {}, {}))", cell.offset.x, cell.offset.y, cell.offset.z);
 }
 
+// A rule's `where` tests, once its cells matched: voxc::aggregatePasses written out cell by
+// cell, in the same order and with the same float operations (Aggregates.h).
+std::string aggregateTests(const IrRule& rule, uint32_t r) {
+    std::string body;
+    for (const AggregateTest& test : rule.aggregates) {
+        const auto density = [](glm::ivec3 c) {
+            return fmt::format("voxels.density[windowCellAddress(window, ivec3({}, {}, {}))]", c.x, c.y, c.z);
+        };
+        std::string lines;
+        switch (test.kind) {
+        case AggregateKind::Mean:
+            lines = "float sum = 0.0;\n";
+            forEachAggregateCell(test, [&](glm::ivec3 c) { lines += fmt::format("sum = sum + {};\n", density(c)); });
+            lines += fmt::format("matched{} = sum >= {} && sum <= {};\n", r, glslFloat(test.low), glslFloat(test.high));
+            break;
+        case AggregateKind::Min:
+        case AggregateKind::Max: {
+            const char* keep = test.kind == AggregateKind::Min ? "d < m" : "m < d";
+            lines = fmt::format("float m = {};\nfloat d;\n", density(test.boxMin));
+            forEachAggregateCell(test, [&](glm::ivec3 c) {
+                lines += fmt::format("d = {};\nm = {} ? d : m;\n", density(c), keep);
+            });
+            lines += fmt::format("matched{} = m >= {} && m <= {};\n", r, glslFloat(test.low), glslFloat(test.high));
+            break;
+        }
+        case AggregateKind::SolidFraction:
+        case AggregateKind::MaterialFraction:
+            lines = "uint count = 0u;\n";
+            forEachAggregateCell(test, [&](glm::ivec3 c) {
+                lines += test.kind == AggregateKind::SolidFraction
+                             ? fmt::format("count += {} >= {} ? 1u : 0u;\n", density(c), glslFloat(kSolidDensity))
+                             : fmt::format("count += materials.material[windowCellAddress(window, ivec3({}, {}, {}))] "
+                                           "== {}u ? 1u : 0u;\n",
+                                           c.x, c.y, c.z, test.material);
+            });
+            lines += fmt::format("matched{} = count >= {}u && count <= {}u;\n", r, test.minCount, test.maxCount);
+            break;
+        }
+        body += fmt::format("if (matched{}) {{ // {}\n{}}}\n", r, ir::printAggregate(test), prefixLines(lines, "    "));
+    }
+    return fmt::format("\n// Rule {}'s aggregate tests, once its cells matched.\n", r) + body;
+}
+
 // Reads the window's tested cells one at a time, each only while a rule that tests it can still
 // match, and narrows `matchedN` (rule N matches while every cell read so far has all the bits
 // it needs). The order changes which cells are read, never which rules match.
@@ -198,6 +241,8 @@ std::string matchWindow(const IrSweep& sweep, std::string_view src) {
         }
         firstCell = false;
     }
+    for (uint32_t r = 0; r < sweep.rules.size(); ++r)
+        if (!sweep.rules[r].aggregates.empty()) s += aggregateTests(sweep.rules[r], r);
     return s;
 }
 

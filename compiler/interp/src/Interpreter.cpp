@@ -43,6 +43,12 @@ struct WindowView {
 bool windowMatches(const Rule& rule, WindowView anchor, const std::vector<ptrdiff_t>& offsets) {
     for (size_t c = 0; c < offsets.size(); ++c)
         if (!cellPasses(rule.symbol[c], anchor.density[offsets[c]], anchor.material[offsets[c]])) return false;
+    const auto offset = [&](glm::ivec3 cell) { return offsets[size_t(cellIndex(rule.size, cell.x, cell.y, cell.z))]; };
+    for (const AggregateTest& test : rule.aggregates)
+        if (!aggregatePasses(
+                test, [&](glm::ivec3 cell) { return anchor.density[offset(cell)]; },
+                [&](glm::ivec3 cell) { return anchor.material[offset(cell)]; }))
+            return false;
     return true;
 }
 

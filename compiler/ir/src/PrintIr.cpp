@@ -12,6 +12,17 @@ namespace {
 
 std::string loc(const SourceLoc& l) { return fmt::format("{}:{}", l.line, l.column); }
 
+const char* aggregateName(AggregateKind kind) {
+    switch (kind) {
+    case AggregateKind::Mean: return "mean";
+    case AggregateKind::Min: return "min";
+    case AggregateKind::Max: return "max";
+    case AggregateKind::SolidFraction: return "solid_fraction";
+    case AggregateKind::MaterialFraction: return "material_fraction";
+    }
+    return "?";
+}
+
 const char* accessName(CellAccess access) {
     switch (access) {
     case CellAccess::None: return "none";
@@ -42,6 +53,7 @@ void printRule(std::string& out, const IrSweep& sweep, const IrRule& rule) {
     }
     out += fmt::format("      symbol {}\n", symbol.empty() ? "(matches everywhere)" : symbol);
     out += fmt::format("      transform {}\n", transform.empty() ? "(writes nothing)" : transform);
+    for (const AggregateTest& test : rule.aggregates) out += fmt::format("      where {}\n", printAggregate(test));
     if (!rule.needs.empty()) out += fmt::format("      needs {}\n", needs.empty() ? "(nothing)" : needs);
 }
 
@@ -132,6 +144,22 @@ std::string printStage(const Stage& stage) {
 std::string printPredicate(const Predicate& p) {
     const SymbolOpInfo& info = symbolOpInfo(p.op);
     return info.takesValue ? fmt::format("{} {}", info.name, glslFloat(p.value)) : std::string(info.name);
+}
+
+std::string printAggregate(const AggregateTest& test) {
+    const std::string box = fmt::format("{}..{}", printVec(test.boxMin), printVec(test.boxMax));
+    switch (test.kind) {
+    case AggregateKind::Mean:
+        return fmt::format("mean over {}: sum in [{}, {}]", box, test.low, test.high);
+    case AggregateKind::Min:
+    case AggregateKind::Max:
+        return fmt::format("{} over {} in [{}, {}]", aggregateName(test.kind), box, test.low, test.high);
+    case AggregateKind::SolidFraction:
+        return fmt::format("solid cells over {}: {} to {}", box, test.minCount, test.maxCount);
+    case AggregateKind::MaterialFraction:
+        return fmt::format("cells of material {} over {}: {} to {}", test.material, box, test.minCount, test.maxCount);
+    }
+    return "?";
 }
 
 std::string printMaterialPredicate(const MaterialPredicate& p) {

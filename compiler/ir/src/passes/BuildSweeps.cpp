@@ -16,6 +16,7 @@ IrRule lowerRule(const Rule& rule, uint32_t ruleIndex) {
     out.probabilityUnits = rule.probabilityUnits;
     out.symbol = rule.symbol;
     out.transform = rule.transform;
+    out.aggregates = rule.aggregates;
     return out;
 }
 

@@ -48,6 +48,7 @@ struct IrRule {
     uint32_t probabilityUnits = kProbabilityOne;
     std::vector<SymbolCell> symbol;       // per window cell, cellIndex order
     std::vector<TransformCell> transform; // per window cell, cellIndex order
+    std::vector<AggregateTest> aggregates; // tested after the cells, in order (Aggregates.h)
     // Per window cell: bits of the cell's pass mask (IrCell::tests, then materialTests) that must all pass. Filled by the
     // predicate-bits pass (one entry per cell); empty before.
     std::vector<std::vector<uint32_t>> needs;
@@ -120,6 +121,7 @@ std::string printIr(const IrModule& module);
 // "GEQ 0.5", "MAT 2", "ADD -0.5 & MAT 2", "(1, 0, 2)", "[3, 3, 1]" (materials by id).
 std::string printPredicate(const Predicate& predicate);
 std::string printMaterialPredicate(const MaterialPredicate& predicate);
+std::string printAggregate(const AggregateTest& test); // "solid cells over [0, 0, 0]..[3, 1, 3]: 5 to 9"
 std::string printTransform(const TransformCell& transform);
 std::string printCell(glm::ivec3 offset);
 std::string printVec(glm::ivec3 v);

@@ -3,6 +3,7 @@
 // resolved, every value is in range and every array has its declared shape. The interpreter
 // and the IR lowering both start from here; neither ever sees the AST.
 #include "voxc/core/SourceLoc.h"
+#include "voxc/program/Aggregates.h"
 #include "voxc/program/Field.h"
 #include "voxc/program/SolveTable.h"
 #include "voxc/program/Speleothems.h"
@@ -68,6 +69,7 @@ struct Rule {
     float probability = 1.0f;
     uint32_t weightUnits = 1000;                 // round(weight * kWeightUnitsPerOne), >= 1
     uint32_t probabilityUnits = kProbabilityOne; // round(probability * kProbabilityOne)
+    std::vector<AggregateTest> aggregates;       // `where` blocks: all must pass, with the symbol
 };
 
 struct Grammar {

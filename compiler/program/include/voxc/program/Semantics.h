@@ -44,8 +44,7 @@ PhaseAnchors phaseAnchors(const Grammar& grammar, const Sweep& sweep, int phase)
 int chooseRule(const Grammar& grammar, const std::vector<uint32_t>& matched, uint32_t seed, uint32_t iteration,
                uint32_t sweepIndex, glm::ivec3 anchorWorld);
 
-// Densities at or above this are solid for the grammar's thresholds and for material writes.
-constexpr float kSolidDensity = 0.5f;
+// kSolidDensity (Aggregates.h): densities at or above it are solid for material writes too.
 
 // One voxel's channels.
 struct VoxelState {
