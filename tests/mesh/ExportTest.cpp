@@ -125,11 +125,20 @@ TEST(mesh_Export, plyCarriesVertexMaterialsAndColours) {
     EXPECT_NE(header.find("property list uchar int vertex_indices\nproperty uchar material\nend_header"),
               std::string::npos);
     EXPECT_EQ(bytes.size(), header.size() + mesh.positions.size() * 28 + mesh.triangles.size() / 3 * 14);
-    const Mesh back = readPly(path);
+    std::vector<Material> colours;
+    const Mesh back = readPly(path, &colours);
     EXPECT_EQ(back.positions, mesh.positions);
     EXPECT_EQ(back.triangles, mesh.triangles);
     EXPECT_EQ(back.vertexMaterials, mesh.vertexMaterials);
     EXPECT_EQ(back.triangleMaterials, mesh.triangleMaterials);
+    // The colours as bytes: rock and sand as declared, the undeclared id 7 neutral grey (153/255).
+    ASSERT_EQ(colours.size(), 3u);
+    EXPECT_EQ(colours[0].id, 1);
+    EXPECT_EQ(colours[0].color, glm::vec3(1.0f, 128.0f / 255.0f, 0.0f));
+    EXPECT_EQ(colours[1].id, 2);
+    EXPECT_EQ(colours[1].color, glm::vec3(51.0f / 255.0f, 102.0f / 255.0f, 153.0f / 255.0f));
+    EXPECT_EQ(colours[2].name, "material7");
+    EXPECT_EQ(colours[2].color, glm::vec3(153.0f / 255.0f));
     // Colours: rock (255,128,0), sand (51,102,153), undeclared id 7 grey (153,153,153).
     const std::map<uint8_t, std::array<uint8_t, 3>> colors = {{1, {255, 128, 0}}, {2, {51, 102, 153}}, {7, {153, 153, 153}}};
     std::set<uint8_t> seen;

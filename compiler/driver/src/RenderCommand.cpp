@@ -91,7 +91,7 @@ void renderFile(const RenderOptions& options) {
     VulkanContext context(ContextOptions{.device = options.device, .validation = options.validate});
     Scene scene;
     if (meshFile) {
-        scene.mesh = readPly(options.file);
+        scene.mesh = readPly(options.file, &scene.materials); // the colours the file carries
         scene.worldBox = meshBounds(scene.mesh);
     } else {
         scene = runProgram(context, options);

@@ -3,6 +3,7 @@
 #include "voxc/core/Errors.h"
 #include "voxc/mesh/Export.h"
 
+#include <array>
 #include <bit>
 #include <cstring>
 #include <fmt/format.h>
@@ -96,7 +97,7 @@ void writePly(const std::string& path, const Mesh& mesh, std::span<const Materia
     outputs.commit();
 }
 
-Mesh readPly(const std::string& path) {
+Mesh readPly(const std::string& path, std::vector<Material>* materials) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw UserError(fmt::format("cannot read '{}'", path));
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -132,12 +133,27 @@ Mesh readPly(const std::string& path) {
         mesh.triangleMaterials.resize(faceCount);
     }
     const char* at = bytes.data() + dataStart;
+    std::array<bool, 256> coloured{};
+    std::array<glm::vec3, 256> found{};
     for (size_t v = 0; v < vertexCount; ++v) {
         std::memcpy(&mesh.positions[v], at, 12);
         std::memcpy(&mesh.normals[v], at + 12, 12);
-        // The colour after the id is derived from it, so it is not read back.
+        // The colour after the id is derived from it, so it is read back only when asked for.
         if (withMaterials) mesh.vertexMaterials[v] = uint8_t(at[kVertexBytes]);
+        if (withMaterials && materials) {
+            const uint8_t id = mesh.vertexMaterials[v];
+            if (id != 0 && !coloured[id]) {
+                coloured[id] = true;
+                const auto channel = [&](int c) { return float(uint8_t(at[kVertexBytes + 1 + c])) / 255.0f; };
+                found[id] = glm::vec3(channel(0), channel(1), channel(2));
+            }
+        }
         at += vertexBytes;
+    }
+    if (materials) {
+        materials->clear();
+        for (int id = 1; id < 256; ++id)
+            if (coloured[id]) materials->push_back(Material{fmt::format("material{}", id), {}, uint8_t(id), found[id]});
     }
     mesh.triangles.reserve(faceCount * 3);
     for (size_t f = 0; f < faceCount; ++f) {

@@ -46,7 +46,9 @@ void writeMesh(OutputFiles& outputs, const std::string& path, const Mesh& mesh, 
 std::string objMaterialLibraryPath(const std::string& objPath);
 
 // Reads the PLY subset writePly produces (triangles only; vertex and triangle materials when the
-// file has them); UserError on anything else.
-Mesh readPly(const std::string& path);
+// file has them); UserError on anything else. `materials`, when given, receives each non-zero
+// material id the vertices carry, ascending, named `material<id>`, with the colour the file gives
+// it (bytes / 255: what `voxc render` draws a mesh file with).
+Mesh readPly(const std::string& path, std::vector<Material>* materials = nullptr);
 
 } // namespace voxc
