@@ -320,6 +320,16 @@ void Generator::grammars() {
                 }
                 out_ += "    }\n";
             }
+            if (random_.chance(0.25)) {
+                // A `where` test over the window or its bottom row (docs/language.md, "Aggregate tests").
+                static constexpr const char* kAggregates[] = {"mean", "min", "max", "solid_fraction"};
+                const double low = random_.real(-0.2, 0.8);
+                const bool fraction = random_.chance(0.25);
+                out_ += fmt::format("    where {{ {}{} = [{}, {}]; }}\n",
+                                    random_.chance(0.5) ? fmt::format("box = [[0, 0, 0], [{}, 1, {}]]; ", window[0], window[2]) : "",
+                                    fraction ? "solid_fraction" : kAggregates[random_.range(0, 2)],
+                                    number(fraction ? std::max(0.0, low) : low), number(fraction ? 1.0 : low + random_.real(0.0, 1.2)));
+            }
             out_ += "  }\n";
         }
         out_ += "}\n";
