@@ -7,7 +7,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 voxc=${1:-$root/build/compiler/driver/voxc}
-for example in overhang cave_grammar terrain fields arch cliff; do
+for example in overhang cave_grammar terrain ledges fields arch cliff; do
     "$voxc" render "$root/examples/$example.vox" -o "$root/docs/images/$example.png" --size 400x400 --device lavapipe
 done
 # The cave's mouth in the z = 0 face.
