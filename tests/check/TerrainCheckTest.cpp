@@ -65,3 +65,56 @@ TEST(check_Terrain, SameFileSameTable) {
 
 } // namespace
 } // namespace voxc
+
+namespace voxc {
+namespace {
+
+// The surface height of column (x, z): the lowest y whose density is below 0.5.
+int surfaceAt(const SolveTable& table, int x, int z) {
+    for (int y = 0; y < table.size.y; ++y)
+        if (table.density[size_t(x) + size_t(table.size.x) * (size_t(y) + size_t(table.size.y) * size_t(z))] < 0.5f)
+            return y;
+    return table.size.y;
+}
+
+TEST(check_Terrain, MetaPointsVaryASplineAlongIt) {
+    // The flat band is 12 wide at the spline's start and 0 at its end: 6 to 10 voxels off the
+    // axis the ground is held at the band's height near the start and sinks (diffused, the side
+    // gradients are soft; docs/terrain.md) near the end.
+    const std::string text = kWorld + R"(
+terrain land {
+  max_height = 32;
+  levels = [2, 6];
+  spline top {
+    points = [[0, 20, 32], [20, 20, 32], [44, 20, 32], [64, 20, 32]];
+    left = [16, -8]; right = [16, -8];
+    meta { at = 0; radius = 12; }
+    meta { at = 1; radius = 0; }
+  }
+}
+pipeline { start; set land; }
+)";
+    const CheckResult result = test::check(text);
+    const SolveTable& table = tableOf(result);
+    const CheckResult constant = test::check(kWorld + kPlateau); // radius 12 all along
+    for (int z : {38, 40, 42}) {
+        EXPECT_GT(surfaceAt(table, 6, z), surfaceAt(table, 58, z)) << z;
+        EXPECT_EQ(surfaceAt(tableOf(constant), 6, z), surfaceAt(tableOf(constant), 58, z)) << z;
+    }
+}
+
+TEST(check_Terrain, MetaPointErrorsAreLocated) {
+    const auto splineWith = [](const std::string& metas) {
+        return kWorld + "terrain land { max_height = 32; levels = [2, 5];\n"
+                        "  spline s { points = [[0, 20, 32], [20, 20, 32], [44, 20, 32], [64, 20, 32]];\n" +
+               metas + "\n  }\n}\npipeline { start; set land; }\n";
+    };
+    EXPECT_EQ(test::codes(test::check(splineWith("meta { at = 1; } meta { at = 0.5; }"))),
+              std::vector<std::string>{"E0007"}); // not ascending
+    EXPECT_EQ(test::codes(test::check(splineWith("meta { at = 2; }"))), std::vector<std::string>{"E0007"}); // past C
+    EXPECT_EQ(test::codes(test::check(splineWith("meta { radius = 3; }"))), std::vector<std::string>{"E0009"});
+    EXPECT_EQ(test::codes(test::check(splineWith("knot { at = 0; }"))), std::vector<std::string>{"E0008"});
+}
+
+} // namespace
+} // namespace voxc

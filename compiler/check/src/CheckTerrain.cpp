@@ -30,6 +30,9 @@ constexpr std::string_view kSplineKeys[] = {"points",          "levels",    "rad
                                             "right",           "hardness",  "noise_amplitude",
                                             "roughness",       "warp_low",  "warp_high", "rain",
                                             "capacity"};
+// A `meta { at = U; ... }` block: one meta point at U in [0, pieces], its other keys the spline's.
+constexpr std::string_view kMetaKeys[] = {"at",        "radius",   "left",     "right", "hardness", "noise_amplitude",
+                                          "roughness", "warp_low", "warp_high", "rain", "capacity"};
 
 // What a block asks for besides the generator's map.
 struct TerrainBlock {
@@ -114,25 +117,8 @@ bool readControlPoints(Context& context, const ast::Assignment& a, std::vector<g
     return true;
 }
 
-// One meta point, constant along the spline (the generator interpolates between meta points).
-std::optional<terrain::Spline> readSpline(Context& context, const ast::Block& block, const terrain::Domain& domain) {
-    const std::string where = fmt::format("spline '{}'", block.label.value_or(""));
-    rejectUnexpectedMembers(context, block, where, {});
-    BlockKeys keys(context, block, where, kSplineKeys);
-    terrain::Spline spline;
-    spline.minLevel = domain.minLevel;
-    spline.maxLevel = domain.maxLevel;
-    bool ok = true;
-    if (const ast::Assignment* a = keys.require("points"))
-        ok = readControlPoints(context, *a, spline.controlPoints) && ok;
-    else
-        ok = false;
-    if (const ast::Assignment* a = keys.find("levels")) {
-        const auto levels = readLevels(context, *a);
-        ok = ok && levels.has_value();
-        if (levels) spline.minLevel = (*levels)[0], spline.maxLevel = (*levels)[1];
-    }
-    terrain::MetaPoint meta;
+// Table 3.1's attributes of a meta point, over what `meta` already holds.
+void readMetaKeys(Context& context, const BlockKeys& keys, terrain::MetaPoint& meta, bool& ok) {
     number(context, keys, "radius", 0, 1e6, meta.radius, ok);
     for (auto [key, side] : {std::pair{"left", &meta.left}, std::pair{"right", &meta.right}})
         if (const ast::Assignment* a = keys.find(key)) {
@@ -147,8 +133,65 @@ std::optional<terrain::Spline> readSpline(Context& context, const ast::Block& bl
     number(context, keys, "warp_high", 0, 1e6, meta.warpHigh, ok);
     number(context, keys, "rain", 0, 1e6, meta.rain, ok);
     number(context, keys, "capacity", 0, 1e6, meta.capacity, ok);
+}
+
+// The spline's own keys are one meta point, constant along it; `meta` blocks instead place meta
+// points along it (ascending `at`), each starting from the spline's keys, and the generator
+// interpolates between them.
+std::optional<terrain::Spline> readSpline(Context& context, const ast::Block& block, const terrain::Domain& domain) {
+    const std::string where = fmt::format("spline '{}'", block.label.value_or(""));
+    rejectUnexpectedMembers(context, block, where, {.blocks = true});
+    BlockKeys keys(context, block, where, kSplineKeys);
+    terrain::Spline spline;
+    spline.minLevel = domain.minLevel;
+    spline.maxLevel = domain.maxLevel;
+    bool ok = true;
+    if (const ast::Assignment* a = keys.require("points"))
+        ok = readControlPoints(context, *a, spline.controlPoints) && ok;
+    else
+        ok = false;
+    if (const ast::Assignment* a = keys.find("levels")) {
+        const auto levels = readLevels(context, *a);
+        ok = ok && levels.has_value();
+        if (levels) spline.minLevel = (*levels)[0], spline.maxLevel = (*levels)[1];
+    }
+    terrain::MetaPoint base;
+    readMetaKeys(context, keys, base, ok);
+    const double pieces = spline.controlPoints.empty() ? 0.0 : double(spline.controlPoints.size() - 1) / 3.0;
+    for (const ast::Block& metaBlock : block.blocks) {
+        if (metaBlock.kind != "meta") {
+            context.diagnostics.error("E0008", metaBlock.loc,
+                                      fmt::format("unknown block '{}' in {}; a spline holds 'meta' blocks",
+                                                  metaBlock.kind, where));
+            ok = false;
+            continue;
+        }
+        const std::string metaWhere = fmt::format("a meta point of {}", where);
+        rejectUnexpectedMembers(context, metaBlock, metaWhere, {});
+        BlockKeys metaKeys(context, metaBlock, metaWhere, kMetaKeys);
+        terrain::MetaPoint meta = base;
+        const ast::Assignment* at = metaKeys.require("at");
+        const double lowest = spline.metaPoints.empty() ? 0.0 : spline.metaPoints.back().u;
+        if (at) {
+            const std::optional<double> u = readNumber(context, *at, 0.0, 1e9);
+            if (u && (*u > pieces || (!spline.metaPoints.empty() && *u <= lowest))) {
+                context.diagnostics.error(
+                    "E0007", at->value.loc,
+                    fmt::format("'at' places a meta point on the spline's pieces, in [0, {}] and after the previous "
+                                "one ({}); got {}",
+                                formatNumber(pieces), formatNumber(lowest), formatNumber(*u)));
+                ok = false;
+            }
+            if (u) meta.u = *u;
+            ok = ok && u.has_value();
+        } else {
+            ok = false;
+        }
+        readMetaKeys(context, metaKeys, meta, ok);
+        spline.metaPoints.push_back(meta);
+    }
     if (!ok) return std::nullopt;
-    spline.metaPoints = {meta};
+    if (spline.metaPoints.empty()) spline.metaPoints = {base};
     return spline;
 }
 
