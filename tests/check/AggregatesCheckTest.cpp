@@ -1,6 +1,7 @@
 // `where` blocks: what the checker makes of each key, the boxes, and its errors.
 #include "CheckTestUtil.h"
 
+#include <algorithm>
 #include <gtest/gtest.h>
 
 namespace voxc {
@@ -65,8 +66,12 @@ TEST(check_Aggregates, SymmetryTurnsTheBox) {
 }
 
 TEST(check_Aggregates, AnAllIgnSymbolWithATestIsNotW0201) {
-    EXPECT_EQ(codes(check(ruleWhere("where { mean = [0, 1]; }"))), Codes{});
-    EXPECT_EQ(codes(check(ruleWhere(""))), Codes{"W0201"});
+    const auto warnsW0201 = [](const CheckResult& result) {
+        const Codes found = codes(result);
+        return std::find(found.begin(), found.end(), "W0201") != found.end();
+    };
+    EXPECT_FALSE(warnsW0201(check(ruleWhere("where { mean = [0, 1]; }"))));
+    EXPECT_TRUE(warnsW0201(check(ruleWhere(""))));
 }
 
 TEST(check_Aggregates, BadBlocksAreLocatedErrors) {

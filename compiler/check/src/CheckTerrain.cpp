@@ -192,6 +192,21 @@ std::optional<terrain::Spline> readSpline(Context& context, const ast::Block& bl
     }
     if (!ok) return std::nullopt;
     if (spline.metaPoints.empty()) spline.metaPoints = {base};
+    // A side band's gradient is held with weight beta, which falls from the hardness h at the
+    // band's inner edge (B2.9): with h = 0 everywhere the bands constrain nothing.
+    bool bands = false, soft = true;
+    for (const terrain::MetaPoint& meta : spline.metaPoints) {
+        bands = bands || meta.left.x > 0.0 || meta.right.x > 0.0;
+        soft = soft && meta.hardness == 0.0;
+    }
+    if (bands && soft) {
+        const ast::Assignment* side = keys.find("left") ? keys.find("left") : keys.find("right");
+        context.diagnostics.warning("W0211", side ? side->value.loc : block.labelLoc,
+                                    fmt::format("{} has side gradient bands but hardness 0, so they hold nothing "
+                                                "(their weight falls from the hardness; docs/terrain.md); give "
+                                                "hardness in (0, 1]",
+                                                where));
+    }
     return spline;
 }
 
