@@ -7,34 +7,7 @@ src=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export VOXC_CACHE_DIR="$work/cache" # never the user's cache
-passed=0
-failed=0
-
-# expect NAME WANT_EXIT PATTERN -- COMMAND...: the exit code must be WANT_EXIT and the combined
-# output must match the extended regex PATTERN (empty: not checked).
-expect() {
-    local name=$1 want=$2 pattern=$3
-    shift 4
-    local out code
-    out=$("$@" 2>&1)
-    code=$?
-    if [ "$code" -ne "$want" ]; then
-        echo "FAIL $name: exit $code, want $want"; echo "$out" | head -20; failed=$((failed + 1)); return
-    fi
-    if [ -n "$pattern" ] && ! grep -Eq -- "$pattern" <<<"$out"; then
-        echo "FAIL $name: output does not match /$pattern/"; echo "$out" | head -20; failed=$((failed + 1)); return
-    fi
-    echo "ok   $name"; passed=$((passed + 1))
-}
-
-# expect_no_file NAME PATH: a failed command must not leave an output (or temp) file behind.
-expect_no_file() {
-    if compgen -G "$2*" >/dev/null; then
-        echo "FAIL $1: $2 exists after a failure"; failed=$((failed + 1))
-    else
-        echo "ok   $1"; passed=$((passed + 1))
-    fi
-}
+. "$(dirname "$0")/../support/expect.sh"
 
 # --help on every verb
 for verb in check compile run interp explore; do
@@ -155,15 +128,6 @@ expect_no_file mat_no_partial_npy "$work/no-dir"
 mkdir "$work/taken.obj"
 expect mat_unwritable_obj 1 "is a directory" -- "$voxc" run "$work/mat.vox" --device lavapipe -o "$work/taken.obj"
 expect_no_file mat_no_partial_mtl "$work/taken.mtl"
-
-# expect_same NAME A B: the files must be byte-identical (a refused or failed command kept the user's file).
-expect_same() {
-    if cmp -s "$2" "$3"; then
-        echo "ok   $1"; passed=$((passed + 1))
-    else
-        echo "FAIL $1: $2 differs from $3"; failed=$((failed + 1))
-    fi
-}
 
 # file safety: no output over the input or over another output, refused before any work
 cp "$work/mat.vox" "$work/self.ply"
@@ -343,5 +307,4 @@ expect_same evolve_input_untouched "$work/gen1/variant_1.vox" "$work/gen1_again/
 expect evolve_population_range 1 "--population must be 1..64" -- "$voxc" evolve "$src/examples/lsystem_macros.vox" macros --population 0 -o "$work/gen0"
 expect_no_file evolve_population_nothing_written "$work/gen0"
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

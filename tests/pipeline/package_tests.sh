@@ -10,23 +10,7 @@ src=$2
 with_libvoxc=$3
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-passed=0
-failed=0
-
-expect() {
-    local name=$1 want=$2 pattern=$3
-    shift 4
-    local out code
-    out=$("$@" 2>&1)
-    code=$?
-    if [ "$code" -ne "$want" ]; then
-        echo "FAIL $name: exit $code, want $want"; echo "$out" | tail -20; failed=$((failed + 1)); return
-    fi
-    if [ -n "$pattern" ] && ! grep -Eq -- "$pattern" <<<"$out"; then
-        echo "FAIL $name: output does not match /$pattern/"; echo "$out" | tail -20; failed=$((failed + 1)); return
-    fi
-    echo "ok   $name"; passed=$((passed + 1))
-}
+. "$(dirname "$0")/../support/expect.sh"
 
 prefix=$work/prefix
 expect install 0 "" -- cmake --install "$build" --prefix "$prefix"
@@ -99,5 +83,4 @@ PY
     expect embed_region_outside 1 "not inside the grid" -- "$work/embed/embed" "$src/examples/overhang.vox" vulkan 0,0,0:999,1,1
 fi
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

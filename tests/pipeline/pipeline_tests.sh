@@ -7,25 +7,7 @@ voxc=$1
 src=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-passed=0
-failed=0
-
-# expect NAME WANT_EXIT PATTERN -- COMMAND...: the exit code must be WANT_EXIT and the combined
-# output must match the extended regex PATTERN (empty: not checked).
-expect() {
-    local name=$1 want=$2 pattern=$3
-    shift 4
-    local out code
-    out=$("$@" 2>&1)
-    code=$?
-    if [ "$code" -ne "$want" ]; then
-        echo "FAIL $name: exit $code, want $want"; echo "$out" | head -20; failed=$((failed + 1)); return
-    fi
-    if [ -n "$pattern" ] && ! grep -Eq -- "$pattern" <<<"$out"; then
-        echo "FAIL $name: output does not match /$pattern/"; echo "$out" | head -20; failed=$((failed + 1)); return
-    fi
-    echo "ok   $name"; passed=$((passed + 1))
-}
+. "$(dirname "$0")/../support/expect.sh"
 
 cp -r "$src/tests/pipeline/project" "$work/proj"
 vox=$work/proj/world.vox
@@ -94,5 +76,4 @@ expect verbose_rule_file 0 "lsystem net imports the rule file .*tunnels.rules" -
 expect verbose_compile_time 0 "compiled [0-9]+ kernels in [0-9.]+ ms" -- "$voxc" compile -v "$vox" -o "$work/pkg7"
 expect quiet_and_verbose 1 "excludes" -- "$voxc" check -q -v "$vox"
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

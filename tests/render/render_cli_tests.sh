@@ -7,33 +7,7 @@ src=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export VOXC_CACHE_DIR="$work/cache"
-passed=0
-failed=0
-
-# expect NAME WANT_EXIT PATTERN -- COMMAND...: exit code and a regex over the combined output.
-expect() {
-    local name=$1 want=$2 pattern=$3
-    shift 4
-    local out code
-    out=$("$@" 2>&1)
-    code=$?
-    if [ "$code" -ne "$want" ]; then
-        echo "FAIL $name: exit $code, want $want"; echo "$out" | head -20; failed=$((failed + 1)); return
-    fi
-    if [ -n "$pattern" ] && ! grep -Eq -- "$pattern" <<<"$out"; then
-        echo "FAIL $name: output does not match /$pattern/"; echo "$out" | head -20; failed=$((failed + 1)); return
-    fi
-    echo "ok   $name"; passed=$((passed + 1))
-}
-
-# expect_no_file NAME PATH: a failed command leaves no output (or temp) file behind.
-expect_no_file() {
-    if compgen -G "$2*" >/dev/null; then
-        echo "FAIL $1: $2 exists after a failure"; failed=$((failed + 1))
-    else
-        echo "ok   $1"; passed=$((passed + 1))
-    fi
-}
+. "$(dirname "$0")/../support/expect.sh"
 
 # png_size PATH: "WIDTHxHEIGHT" from the IHDR chunk.
 png_size() {
@@ -111,5 +85,4 @@ expect mesh_file_in_its_colours 0 "^max difference [0-2]$" -- png_max_difference
 expect mesh_file_no_chunks 1 "--chunk-borders needs a .vox file" -- \
     "$voxc" render "$work/scene.ply" -o "$work/mesh2.png" --chunk-borders
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish
