@@ -116,6 +116,25 @@ client.notify("textDocument/didChange", {"textDocument": {"uri": uri(overhang), 
 check("did_change_clears", client.diagnostics_for(uri(overhang)) == [])
 
 
+# Edits typed while a slow check runs (valley.vox solves a terrain while checking) are not
+# checked one by one: only the newest waiting edit is, and what is published is its diagnostics.
+valley = os.path.join(src, "examples", "valley.vox")
+valley_text = open(valley).read()
+client.notify("textDocument/didOpen", {"textDocument": {"uri": uri(valley), "languageId": "vox", "version": 1,
+                                                        "text": valley_text}})
+for version in range(2, 8):
+    text = valley_text + "// edit %d\n" % version + ("pipeline { nope; }\n" if version == 7 else "")
+    client.notify("textDocument/didChange", {"textDocument": {"uri": uri(valley), "version": version},
+                                             "contentChanges": [{"text": text}]})
+client.request("textDocument/hover", {"textDocument": {"uri": uri(valley)}, "position": {"line": 0, "character": 0}})
+valley_published = [n["params"]["diagnostics"] for n in client.notifications
+                    if n["method"] == "textDocument/publishDiagnostics" and n["params"]["uri"] == uri(valley)]
+client.notifications = [n for n in client.notifications if n.get("params", {}).get("uri") != uri(valley)]
+check("waiting_edits_coalesced", 2 <= len(valley_published) <= 3, len(valley_published))
+check("newest_edit_published", valley_published and [d.get("code") for d in valley_published[-1]] == ["E0003"]
+      and valley_published[-1][0]["range"]["start"]["line"] == valley_text.count("\n") + 1, valley_published[-1:])
+
+
 def position_of(text, needle, offset=0):
     index = text.index(needle) + offset
     line = text.count("\n", 0, index)

@@ -1,6 +1,7 @@
 #include "voxc/lsp/Server.h"
 
 #include "Documents.h"
+#include "Inbox.h"
 #include "LanguageHelp.h"
 #include "voxc/lsp/Transport.h"
 
@@ -26,29 +27,6 @@ constexpr int kMethodNotFound = -32601;
 constexpr int kInvalidParams = -32602;
 constexpr int kInternalError = -32603;
 constexpr int kServerNotInitialized = -32002;
-
-// nlohmann's parser recurses per nesting level: deeper input is refused before parsing, so a
-// message of a million '[' cannot exhaust the stack.
-constexpr int kMaxJsonNesting = 256;
-
-bool nestingWithinLimit(std::string_view body) {
-    int depth = 0;
-    bool inString = false;
-    for (size_t i = 0; i < body.size(); ++i) {
-        const char c = body[i];
-        if (inString) {
-            if (c == '\\') ++i;
-            else if (c == '"') inString = false;
-        } else if (c == '"') {
-            inString = true;
-        } else if (c == '[' || c == '{') {
-            if (++depth > kMaxJsonNesting) return false;
-        } else if (c == ']' || c == '}') {
-            --depth;
-        }
-    }
-    return true;
-}
 
 std::string dump(const json& value) { return value.dump(-1, ' ', false, json::error_handler_t::replace); }
 
@@ -144,19 +122,10 @@ bool startsWithIgnoringCase(std::string_view text, std::string_view prefix) {
 
 class Server {
 public:
-    Server(std::ostream& out, std::ostream& log) : out_(out), log_(log) {}
+    Server(const Inbox& inbox, std::ostream& out, std::ostream& log) : inbox_(inbox), out_(out), log_(log) {}
 
     // Handles one message; false once `exit` has arrived.
-    bool handle(const std::string& body) {
-        if (!nestingWithinLimit(body)) {
-            sendError(nullptr, kParseError, fmt::format("JSON nested deeper than {} levels", kMaxJsonNesting));
-            return true;
-        }
-        const json message = json::parse(body, nullptr, false);
-        if (message.is_discarded()) {
-            sendError(nullptr, kParseError, "the message is not valid JSON");
-            return true;
-        }
+    bool handle(const json& message) {
         if (!message.is_object() || !message.contains("method") || !message["method"].is_string()) {
             // A response to a request of ours (we send none) is ignored; anything else is invalid.
             if (!(message.is_object() && message.contains("id") && (message.contains("result") || message.contains("error"))))
@@ -241,7 +210,8 @@ private:
             const auto found = documents_.find(uri);
             if (found == documents_.end()) return;
             for (const json& change : params.at("contentChanges")) applyChange(found->second.text, change);
-            publish(uri);
+            // A newer edit already waiting will be checked instead: typing stays ahead of slow checks.
+            if (!inbox_.changeWaiting(uri)) publish(uri);
         } else if (method == "textDocument/didSave") {
             // A saved rule file changes what the .vox files that import it say.
             for (const auto& [uri, document] : documents_) publish(uri);
@@ -390,6 +360,7 @@ private:
         std::set<std::string> otherUris; // rule files this document last published diagnostics to
     };
 
+    const Inbox& inbox_;
     std::ostream& out_;
     std::ostream& log_;
     std::map<std::string, Document> documents_;
@@ -400,15 +371,17 @@ private:
 } // namespace
 
 int serve(std::istream& in, std::ostream& out, std::ostream& log) {
-    Server server(out, log);
+    Inbox inbox(in);
+    Server server(inbox, out, log);
     for (;;) {
-        ReadResult read = readMessage(in);
-        if (read.kind == ReadResult::Kind::End) return 1; // the input ended without `exit`
-        if (read.kind == ReadResult::Kind::Malformed) {
-            server.malformed(read.error);
-            continue;
+        const Incoming incoming = inbox.next();
+        switch (incoming.kind) {
+        case Incoming::Kind::End: return 1; // the input ended without `exit`
+        case Incoming::Kind::Malformed: server.malformed(incoming.error); break;
+        case Incoming::Kind::Message:
+            if (!server.handle(incoming.message)) return server.exitCode();
+            break;
         }
-        if (!server.handle(read.body)) return server.exitCode();
     }
 }
 
