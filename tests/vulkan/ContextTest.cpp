@@ -103,18 +103,18 @@ TEST(vulkan_Context, ListsTheLavapipeDevice) {
 }
 
 TEST(vulkan_Context, LavapipeAndIndexChoicesOpenADevice) {
-    VulkanContext lavapipe(ContextOptions{"lavapipe"});
+    VulkanContext lavapipe(ContextOptions{.device = "lavapipe"});
     EXPECT_EQ(lavapipe.device().type, DeviceType::Cpu);
-    VulkanContext first(ContextOptions{"0"});
+    VulkanContext first(ContextOptions{.device = "0"});
     EXPECT_EQ(first.device().index, 0u);
     const size_t count = VulkanContext::listDevices().size();
-    EXPECT_NE(userErrorText([&] { VulkanContext c(ContextOptions{std::to_string(count)}); }).find("out of range"),
+    EXPECT_NE(userErrorText([&] { VulkanContext c(ContextOptions{.device = std::to_string(count)}); }).find("out of range"),
               std::string::npos);
 }
 
 TEST(vulkan_Context, GpuChoiceWithoutGpuIsUserError) {
     if (hasGpu(VulkanContext::listDevices())) GTEST_SKIP() << "this machine has a GPU";
-    const std::string text = userErrorText([] { VulkanContext c(ContextOptions{"gpu"}); });
+    const std::string text = userErrorText([] { VulkanContext c(ContextOptions{.device = "gpu"}); });
     EXPECT_NE(text.find("no GPU Vulkan device found; available: "), std::string::npos) << text;
     EXPECT_NE(text.find("(cpu)"), std::string::npos) << text;
 }

@@ -197,7 +197,7 @@ TEST(vulkan_Executor, RealGpuMatchesLavapipe) {
     for (const DeviceInfo& d : VulkanContext::listDevices()) gpu = gpu || (d.type != DeviceType::Cpu && d.hasCompute);
     if (!gpu) GTEST_SKIP() << "no GPU Vulkan device on this machine";
     const KernelPackage package = makePackage(makeWorld(kGridSize, {-37, -5, -100}, 16), true, mixedGrammars());
-    const RunResult onGpu = runPackage(package, {}, ContextOptions{"gpu"});
-    const RunResult onCpu = runPackage(package, {}, ContextOptions{"lavapipe"});
+    const RunResult onGpu = runPackage(package, {}, ContextOptions{.device = "gpu"});
+    const RunResult onCpu = runPackage(package, {}, ContextOptions{.device = "lavapipe"});
     EXPECT_EQ(onGpu.grid.data(), onCpu.grid.data());
 }

@@ -1,6 +1,7 @@
 #include "voxc/render/MeshRenderer.h"
 
 #include "DeviceBuffer.h" // voxc_vulkan's private buffers (runtime/vulkan/src)
+#include "CommandSlot.h"
 
 #include "voxc/codegen/Spirv.h"
 #include "voxc/core/Errors.h"
@@ -469,17 +470,10 @@ MeshRenderer::MeshRenderer(VulkanContext& context, rendering::ImageSize size)
     s.createPipelines();
     s.readback = createBuffer(s.ctx, VkDeviceSize(size.width) * size.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                               MemoryUse::HostAccess);
-    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-    poolInfo.queueFamilyIndex = s.ctx.queueFamily;
-    check(s.ctx.api.vkCreateCommandPool(s.ctx.device, &poolInfo, nullptr, &s.commandPool), "vkCreateCommandPool");
-    VkCommandBufferAllocateInfo allocation{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    allocation.commandPool = s.commandPool;
-    allocation.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    allocation.commandBufferCount = 1;
-    check(s.ctx.api.vkAllocateCommandBuffers(s.ctx.device, &allocation, &s.commands), "vkAllocateCommandBuffers");
-    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    check(s.ctx.api.vkCreateFence(s.ctx.device, &fenceInfo, nullptr, &s.fence), "vkCreateFence");
+    const CommandSlot slot = createCommandSlot(s.ctx);
+    s.commandPool = slot.pool;
+    s.commands = slot.commands;
+    s.fence = slot.fence;
 }
 
 MeshRenderer::~MeshRenderer() = default;

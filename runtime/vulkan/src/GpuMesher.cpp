@@ -1,6 +1,7 @@
 #include "voxc/vulkan/GpuMesher.h"
 
 #include "DeviceBuffer.h"
+#include "CommandSlot.h"
 #include "ExecutorVoxels.h"
 #include "GpuMesherPipelines.h"
 #include "voxc/core/Errors.h"
@@ -225,17 +226,10 @@ GpuMarchingCubes::GpuMarchingCubes(VulkanExecutor& executor) : impl_(std::make_u
     bindMcBuffers(s.ctx, s.pipelines,
                   {s.source.voxels, s.source.materials, s.caseTable.buffer, s.chunkFlags.buffer, s.cellInfo.buffer,
                    s.scanLevels.buffer, s.vertices.buffer, s.triangles.buffer, s.cellPlaces.buffer, s.activeCells.buffer});
-    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-    poolInfo.queueFamilyIndex = s.ctx.queueFamily;
-    check(s.ctx.api.vkCreateCommandPool(s.ctx.device, &poolInfo, nullptr, &s.commandPool), "vkCreateCommandPool");
-    VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    allocate.commandPool = s.commandPool;
-    allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    allocate.commandBufferCount = 1;
-    check(s.ctx.api.vkAllocateCommandBuffers(s.ctx.device, &allocate, &s.cmd), "vkAllocateCommandBuffers");
-    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    check(s.ctx.api.vkCreateFence(s.ctx.device, &fenceInfo, nullptr, &s.fence), "vkCreateFence");
+    const CommandSlot slot = createCommandSlot(s.ctx);
+    s.commandPool = slot.pool;
+    s.cmd = slot.commands;
+    s.fence = slot.fence;
 }
 
 GpuMarchingCubes::~GpuMarchingCubes() = default;

@@ -1,6 +1,7 @@
 #include "voxc/vulkan/SolveRunner.h"
 
 #include "DeviceBuffer.h"
+#include "CommandSlot.h"
 #include "StorageSet.h"
 #include "voxc/core/Errors.h"
 
@@ -163,17 +164,10 @@ VulkanSolveRunner::VulkanSolveRunner(VulkanContext& context, const SolveProgram&
                              MemoryUse::HostAccess);
     writeStorageBindings(s.ctx, s.set.set, bindings, handles);
 
-    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-    poolInfo.queueFamilyIndex = s.ctx.queueFamily;
-    check(s.ctx.api.vkCreateCommandPool(s.ctx.device, &poolInfo, nullptr, &s.pool), "vkCreateCommandPool");
-    VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    allocate.commandPool = s.pool;
-    allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    allocate.commandBufferCount = 1;
-    check(s.ctx.api.vkAllocateCommandBuffers(s.ctx.device, &allocate, &s.cmd), "vkAllocateCommandBuffers");
-    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    check(s.ctx.api.vkCreateFence(s.ctx.device, &fenceInfo, nullptr, &s.fence), "vkCreateFence");
+    const CommandSlot slot = createCommandSlot(s.ctx);
+    s.pool = slot.pool;
+    s.cmd = slot.commands;
+    s.fence = slot.fence;
 }
 
 VulkanSolveRunner::~VulkanSolveRunner() = default;

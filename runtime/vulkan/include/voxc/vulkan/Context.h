@@ -41,7 +41,7 @@ struct ContextOptions {
     std::string loaderLibrary = "libvulkan.so.1"; // the Vulkan loader to open
     // Where the device's VkPipelineCache is kept between runs (one file per device and driver
     // version); empty: pipelines are cached for the life of the context only.
-    std::string pipelineCacheDirectory;
+    std::string pipelineCacheDirectory = {};
 };
 
 // A warning or error reported by the validation layer.
