@@ -9,6 +9,7 @@ packages=(
   libglm-dev libfmt-dev libcli11-dev nlohmann-json3-dev libmeshoptimizer-dev
   libgtest-dev libbenchmark-dev libnoise-dev zlib1g-dev libpng-dev
   libopenvdb-dev libboost-dev # voxc-bench's meshing peer, OpenVDB's volumeToMesh
+  libopenmpi-dev openmpi-bin # voxc world under mpirun (tests/world)
   ccache python3-numpy
   clang libclang-rt-14-dev
 )

@@ -7,6 +7,7 @@
 #include "voxc/stages/Pipeline.h"
 #include "voxc/vulkan/Context.h"
 #include "voxc/vulkan/Executor.h"
+#include "voxc/world/MpiTiles.h"
 #include "voxc/world/Tiles.h"
 
 #include <cstdio>
@@ -75,7 +76,11 @@ void writeWorldTiles(const WorldCommandOptions& options) {
         return executor.run().grid.toDense();
     };
     if (isatty(STDERR_FILENO)) worldOptions.progress = drawProgress;
-    const world::WorldSummary summary = world::writeWorld(program, worldOptions);
+    // Under mpirun, rank 0 hands the tiles to the other ranks (MpiTiles.h); they report nothing.
+    const bool onRanks = world::startedByMpiWithRanks();
+    const world::WorldSummary summary =
+        onRanks ? world::writeWorldOnRanks(program, worldOptions) : world::writeWorld(program, worldOptions);
+    if (onRanks && summary.tiles == 0) return;
     std::cerr << fmt::format("wrote {} of {} tiles of {}^3 voxels to {} ({} up to date)", summary.tiles - summary.kept,
                              summary.tiles, options.tile, options.directory, summary.kept);
     if (summary.voxelsComputed > 0)
@@ -90,7 +95,7 @@ void addWorldCommand(CLI::App& app) {
     auto options = std::make_shared<WorldCommandOptions>();
     CLI::App* command = app.add_subcommand(
         "world", "Generate the world tile by tile into DIR: an OpenVDB file per tile (density and material grids) "
-                 "and index.json; a stopped run resumes");
+                 "and index.json; a stopped run resumes; under mpirun the tiles spread over the ranks");
     command->add_option("file", options->file, "The .vox file")->required();
     command->add_option("-o,--output", options->directory, "Directory of the tiles and index.json")->required();
     command->add_option("--tile", options->tile, "Tile edge in voxels (default 256)");

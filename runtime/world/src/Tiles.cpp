@@ -72,7 +72,40 @@ void removeStaleTempFiles(const fs::path& directory) {
 
 std::string tileFileName(glm::ivec3 tile) { return fmt::format("tile_{}_{}_{}.vdb", tile.x, tile.y, tile.z); }
 
-WorldSummary writeWorld(const Program& program, const WorldOptions& options) {
+namespace {
+
+// Tile `index` of the world's tiles (x fastest): its place and its box in the grid.
+struct TilePlace {
+    glm::ivec3 tile;
+    stages::GridBox box;
+};
+
+glm::ivec3 tileCounts(const Program& program, int32_t edge) { return (program.world.size + edge - 1) / edge; }
+
+TilePlace tilePlace(const Program& program, int32_t edge, int64_t index) {
+    const glm::ivec3 counts = tileCounts(program, edge);
+    const glm::ivec3 tile(int32_t(index % counts.x), int32_t(index / counts.x % counts.y),
+                          int32_t(index / (int64_t(counts.x) * counts.y)));
+    return {tile, {tile * edge, glm::min((tile + 1) * edge, program.world.size)}};
+}
+
+uint64_t volume(glm::ivec3 size) { return uint64_t(size.x) * uint64_t(size.y) * uint64_t(size.z); }
+
+} // namespace
+
+std::string writeTile(const Program& program, const WorldOptions& options, int64_t index) {
+    const TilePlace place = tilePlace(program, options.tile, index);
+    const glm::ivec3 halo = stages::pipelineHalo(program).radius;
+    const stages::GridBox computed = stages::haloBox(program, place.box, halo);
+    const DenseGrid grid = options.run(stages::regionProgram(program, computed));
+    const DenseGrid voxels =
+        stages::cropGrid(grid, {place.box.min - computed.min, place.box.max - computed.min});
+    const std::string bytes = tileVdbBytes(voxels, program.world.origin + place.box.min);
+    writeFileAtomically((fs::path(options.directory) / tileFileName(place.tile)).string(), bytes);
+    return sha256Hex(bytes);
+}
+
+WorldSummary writeWorld(const Program& program, const WorldOptions& options, const TileScheduler& scheduler) {
     const auto start = std::chrono::steady_clock::now();
     const fs::path directory(options.directory);
     if (fs::exists(directory) && !fs::is_directory(directory))
@@ -83,52 +116,51 @@ WorldSummary writeWorld(const Program& program, const WorldOptions& options) {
     const fs::path indexPath = directory / "index.json";
     const std::map<std::string, std::string> listed = listedTiles(indexPath, world);
 
-    const glm::ivec3 size = program.world.size;
-    const glm::ivec3 tiles = (size + options.tile - 1) / options.tile;
+    const glm::ivec3 tiles = tileCounts(program, options.tile);
     const glm::ivec3 halo = stages::pipelineHalo(program).radius;
     WorldSummary summary;
-    Json entries = Json::array();
     TileProgress progress;
     progress.total = int64_t(tiles.x) * tiles.y * tiles.z;
-    for (int32_t k = 0; k < tiles.z; ++k)
-        for (int32_t j = 0; j < tiles.y; ++j)
-            for (int32_t i = 0; i < tiles.x; ++i) {
-                const glm::ivec3 tile(i, j, k);
-                const stages::GridBox box{tile * options.tile, glm::min((tile + 1) * options.tile, size)};
-                const std::string name = tileFileName(tile);
-                const fs::path path = directory / name;
-                std::string digest;
-                const auto it = listed.find(name);
-                if (it != listed.end() && fs::exists(path) && sha256Hex(readBytes(path)) == it->second) {
-                    digest = it->second;
-                    ++progress.kept;
-                    const glm::ivec3 b = box.size();
-                    summary.voxelsKept += uint64_t(b.x) * uint64_t(b.y) * uint64_t(b.z);
-                } else {
-                    const stages::GridBox computed = stages::haloBox(program, box, halo);
-                    const DenseGrid grid = options.run(stages::regionProgram(program, computed));
-                    const DenseGrid voxels = stages::cropGrid(grid, {box.min - computed.min, box.max - computed.min});
-                    const std::string bytes = tileVdbBytes(voxels, program.world.origin + box.min);
-                    digest = sha256Hex(bytes);
-                    writeFileAtomically(path.string(), bytes);
-                    const glm::ivec3 c = computed.size();
-                    summary.voxelsComputed += uint64_t(c.x) * uint64_t(c.y) * uint64_t(c.z);
-                }
-                const glm::ivec3 b = box.size();
-                summary.voxelsWritten += uint64_t(b.x) * uint64_t(b.y) * uint64_t(b.z);
-                entries.push_back(Json{{"tile", vec(tile)},
-                                       {"min", vec(program.world.origin + box.min)},
-                                       {"max", vec(program.world.origin + box.max)},
-                                       {"file", name},
-                                       {"sha256", digest}});
-                // The index lists every tile written so far, so a run stopped after this one keeps it.
-                const Json index{{"format", kIndexFormat}, {"world", world}, {"halo", vec(halo)},
-                                 {"tile_count", vec(tiles)}, {"tiles", entries}};
-                writeFileAtomically(indexPath.string(), index.dump(2) + "\n");
-                ++progress.done;
-                progress.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-                if (options.progress) options.progress(progress);
-            }
+    std::map<int64_t, Json> entries; // finished tiles by index: the index lists them in tile order
+    const auto finish = [&](int64_t tile, const std::string& digest) {
+        const TilePlace place = tilePlace(program, options.tile, tile);
+        summary.voxelsWritten += volume(place.box.size());
+        entries[tile] = Json{{"tile", vec(place.tile)},
+                              {"min", vec(program.world.origin + place.box.min)},
+                              {"max", vec(program.world.origin + place.box.max)},
+                              {"file", tileFileName(place.tile)},
+                              {"sha256", digest}};
+        // The index lists every tile finished so far, so a run stopped after this one keeps it.
+        Json list = Json::array();
+        for (const auto& [i, entry] : entries) list.push_back(entry);
+        const Json index{{"format", kIndexFormat}, {"world", world}, {"halo", vec(halo)},
+                         {"tile_count", vec(tiles)}, {"tiles", list}};
+        writeFileAtomically(indexPath.string(), index.dump(2) + "\n");
+        ++progress.done;
+        progress.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (options.progress) options.progress(progress);
+    };
+
+    std::vector<int64_t> pending;
+    for (int64_t index = 0; index < progress.total; ++index) {
+        const TilePlace place = tilePlace(program, options.tile, index);
+        const fs::path path = directory / tileFileName(place.tile);
+        const auto it = listed.find(tileFileName(place.tile));
+        if (it != listed.end() && fs::exists(path) && sha256Hex(readBytes(path)) == it->second) {
+            ++progress.kept;
+            summary.voxelsKept += volume(place.box.size());
+            finish(index, it->second);
+            continue;
+        }
+        pending.push_back(index);
+        summary.voxelsComputed += volume(stages::haloBox(program, place.box, halo).size());
+    }
+    const ComputeTile compute = [&](int64_t index) { return writeTile(program, options, index); };
+    if (scheduler) {
+        scheduler(pending, compute, finish);
+    } else {
+        for (int64_t index : pending) finish(index, compute(index));
+    }
     summary.tiles = progress.total;
     summary.kept = progress.kept;
     return summary;

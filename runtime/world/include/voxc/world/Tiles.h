@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace voxc::world {
 
@@ -38,9 +39,23 @@ struct WorldSummary {
     uint64_t voxelsKept = 0;     // the kept tiles' voxels
 };
 
+// Who computes the tiles that are not up to date: the calling process in tile order (the
+// default), or other processes (MpiTiles.h). `compute(t)` computes and writes tile t of the
+// world's tile list and returns its file's SHA-256; `done(t, sha256)` must then be called here,
+// in the calling process, once per tile, in any order.
+using ComputeTile = std::function<std::string(int64_t tile)>;
+using TileDone = std::function<void(int64_t tile, const std::string& sha256)>;
+using TileScheduler =
+    std::function<void(const std::vector<int64_t>& pending, const ComputeTile& compute, const TileDone& done)>;
+
 // `program` is the whole world's (World::localBase 0). UserError when the directory holds
-// another world's index or is not a directory.
-WorldSummary writeWorld(const Program& program, const WorldOptions& options);
+// another world's index or is not a directory. The index lists the finished tiles in tile order,
+// so it ends the same bytes whatever order they finished in.
+WorldSummary writeWorld(const Program& program, const WorldOptions& options, const TileScheduler& scheduler = {});
+
+// Computes tile `index` (x fastest, then y, then z) and writes its file atomically; returns its
+// SHA-256. What `writeWorld` runs for each pending tile, and what another process runs for it.
+std::string writeTile(const Program& program, const WorldOptions& options, int64_t index);
 
 // The file name of tile (i, j, k) inside the directory.
 std::string tileFileName(glm::ivec3 tile);

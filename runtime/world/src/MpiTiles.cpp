@@ -1,0 +1,86 @@
+#include "voxc/world/MpiTiles.h"
+
+#include "voxc/core/Errors.h"
+
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <mpi.h>
+#include <string>
+
+namespace voxc::world {
+
+namespace {
+
+constexpr int kTag = 7;
+constexpr size_t kDigestSize = 64; // SHA-256 in hex
+
+// A worker's message to rank 0: the tile it finished (-1 on its first message) and its file's hash.
+struct Finished {
+    int64_t tile = -1;
+    char sha256[kDigestSize] = {};
+};
+
+// Rank 0: answers every worker's message with the next pending tile, or -1 when none is left.
+void coordinate(int ranks, const std::vector<int64_t>& pending, const TileDone& done) {
+    size_t next = 0;
+    int working = ranks - 1;
+    while (working > 0) {
+        Finished message;
+        MPI_Status status;
+        MPI_Recv(&message, int(sizeof message), MPI_BYTE, MPI_ANY_SOURCE, kTag, MPI_COMM_WORLD, &status);
+        if (message.tile >= 0) done(message.tile, std::string(message.sha256, kDigestSize));
+        const int64_t tile = next < pending.size() ? pending[next++] : -1;
+        if (tile < 0) --working;
+        MPI_Send(&tile, 1, MPI_INT64_T, status.MPI_SOURCE, kTag, MPI_COMM_WORLD);
+    }
+}
+
+// Ranks 1..N-1: ask for a tile, compute it, report it, until rank 0 says none is left.
+void work(const Program& program, const WorldOptions& options) {
+    Finished message;
+    while (true) {
+        MPI_Send(&message, int(sizeof message), MPI_BYTE, 0, kTag, MPI_COMM_WORLD);
+        int64_t tile = -1;
+        MPI_Recv(&tile, 1, MPI_INT64_T, 0, kTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        if (tile < 0) return;
+        const std::string digest = writeTile(program, options, tile);
+        message.tile = tile;
+        std::memcpy(message.sha256, digest.data(), kDigestSize);
+    }
+}
+
+} // namespace
+
+bool startedByMpiWithRanks() {
+    const char* size = std::getenv("OMPI_COMM_WORLD_SIZE");
+    return size && std::atoi(size) > 1;
+}
+
+WorldSummary writeWorldOnRanks(const Program& program, const WorldOptions& options) {
+    MPI_Init(nullptr, nullptr);
+    int rank = 0, ranks = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+    WorldSummary summary;
+    try {
+        if (rank == 0) {
+            summary = writeWorld(program, options, [&](const std::vector<int64_t>& pending, const ComputeTile&,
+                                                       const TileDone& done) { coordinate(ranks, pending, done); });
+        } else {
+            WorldOptions quiet = options;
+            quiet.progress = nullptr;
+            work(program, quiet);
+        }
+    } catch (const UserError& error) {
+        std::cerr << "voxc: error (rank " << rank << "): " << error.what() << "\n";
+        MPI_Abort(MPI_COMM_WORLD, 1);
+    } catch (const std::exception& error) {
+        std::cerr << "voxc: internal error (rank " << rank << "): " << error.what() << "\n";
+        MPI_Abort(MPI_COMM_WORLD, 2);
+    }
+    MPI_Finalize();
+    return summary;
+}
+
+} // namespace voxc::world
