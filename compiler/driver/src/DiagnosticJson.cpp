@@ -4,15 +4,6 @@ namespace voxc::driver {
 
 namespace {
 
-const char* severityName(Severity severity) {
-    switch (severity) {
-    case Severity::Error: return "error";
-    case Severity::Warning: return "warning";
-    case Severity::Note: return "note";
-    }
-    return "error";
-}
-
 nlohmann::ordered_json rangeJson(SourceLoc loc) {
     if (loc.line == 0) return nullptr;
     using nlohmann::ordered_json;

@@ -8,8 +8,6 @@
 
 namespace voxc {
 
-namespace {
-
 const char* severityName(Severity severity) {
     switch (severity) {
     case Severity::Error: return "error";
@@ -18,6 +16,8 @@ const char* severityName(Severity severity) {
     }
     return "error";
 }
+
+namespace {
 
 bool isContinuationByte(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
 

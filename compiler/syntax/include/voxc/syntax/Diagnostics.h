@@ -15,6 +15,8 @@ class SourceFile;
 
 enum class Severity : uint8_t { Error, Warning, Note };
 
+const char* severityName(Severity severity); // "error", "warning", "note"
+
 // A remark attached to a diagnostic, e.g. where the other half of a conflict is.
 // A note whose loc.line is 0 has no location.
 struct DiagnosticNote {
