@@ -55,19 +55,23 @@ std::optional<std::vector<Layer>> collectLayers(Context& context, const ast::Blo
     return ok ? std::optional(layers) : std::nullopt;
 }
 
-// E0005: every row of a layer has the same length and every layer the same row count.
+// E0005: every row of every layer has the length of the first row, and every layer the row
+// count of the first layer.
 bool checkRectangular(Context& context, const ast::Block& block, const std::vector<Layer>& layers) {
     bool ok = true;
+    const ast::Row* firstRow = nullptr;
+    for (const Layer& layer : layers)
+        if (!firstRow && !layer.empty()) firstRow = layer.front();
     for (size_t k = 0; k < layers.size(); ++k) {
         const Layer& layer = layers[k];
         for (const ast::Row* row : layer) {
-            if (row->cells.size() == layer.front()->cells.size()) continue;
+            if (row->cells.size() == firstRow->cells.size()) continue;
             context.diagnostics.error("E0005", row->loc,
                                       fmt::format("ragged rows: this row has {} but the first row{} has {}",
                                                   plural(row->cells.size(), "cell"),
-                                                  layers.size() > 1 ? " of its layer" : "",
-                                                  plural(layer.front()->cells.size(), "cell")),
-                                      {{layer.front()->loc, "first row"}});
+                                                  layers.size() > 1 ? " of the first layer" : "",
+                                                  plural(firstRow->cells.size(), "cell")),
+                                      {{firstRow->loc, "first row"}});
             ok = false;
             break;
         }
