@@ -8,6 +8,7 @@
 // is shared by more than the two triangles on either side of it.
 #include "voxc/mesh/MarchingCubes.h"
 
+#include "LoopTriangulation.h"
 #include "voxc/core/Errors.h"
 
 #include <algorithm>
@@ -98,46 +99,24 @@ bool shareFace(int a, int b) {
     return false;
 }
 
-// Triangulates a loop (optimal over all triangulations, a loop has at most 12 vertices): no chord
-// joins two vertices on one face, which the neighbouring cell could use as well; among the rest
-// the shortest total chord length between edge midpoints, so triangles stay well shaped.
+// Triangulates a loop: no chord joins two vertices on one face, which the neighbouring cell could
+// use as well; among the rest the shortest total chord length between edge midpoints, so
+// triangles stay well shaped.
 void triangulateLoop(const std::vector<int>& loop, CellCase& out) {
-    const size_t n = loop.size();
-    constexpr float kForbidden = std::numeric_limits<float>::infinity();
-    auto chordCost = [&](size_t i, size_t j) {
-        if (j == i + 1 || (i == 0 && j == n - 1)) return 0.0f; // a side of the loop
-        if (shareFace(loop[i], loop[j])) return kForbidden;
-        return glm::length(edgeMidpoint(loop[i]) - edgeMidpoint(loop[j]));
-    };
-    std::vector<float> cost(n * n, 0.0f);
-    std::vector<size_t> split(n * n, 0);
-    for (size_t len = 2; len < n; ++len)
-        for (size_t i = 0; i + len < n; ++i) {
-            const size_t j = i + len;
-            float best = kForbidden;
-            for (size_t k = i + 1; k < j; ++k) {
-                const float c = cost[i * n + k] + cost[k * n + j];
-                if (c < best) {
-                    best = c;
-                    split[i * n + j] = k;
-                }
-            }
-            cost[i * n + j] = best + chordCost(i, j);
-        }
-    if (!(cost[n - 1] < kForbidden)) throw InternalError("marching cubes: a loop has no triangulation without face chords");
-    auto emit = [&](auto&& self, size_t i, size_t j) -> void {
-        if (j < i + 2) return;
-        const size_t k = split[i * n + j];
-        self(self, i, k);
+    const auto triangles = mesh_tables::triangulateLoop(
+        loop.size(),
+        [&](size_t i, size_t j) {
+            if (shareFace(loop[i], loop[j])) return std::numeric_limits<float>::infinity();
+            return glm::length(edgeMidpoint(loop[i]) - edgeMidpoint(loop[j]));
+        },
+        [](size_t, size_t, size_t) { return true; });
+    if (!triangles) throw InternalError("marching cubes: a loop has no triangulation without face chords");
+    for (const auto& triangle : *triangles) {
         VOXC_ASSERT(out.triangleCount < kMaxTrianglesPerCell);
         const size_t base = size_t(out.triangleCount) * 3;
-        out.edges[base] = uint8_t(loop[i]);
-        out.edges[base + 1] = uint8_t(loop[k]);
-        out.edges[base + 2] = uint8_t(loop[j]);
+        for (size_t c = 0; c < 3; ++c) out.edges[base + c] = uint8_t(loop[triangle[c]]);
         ++out.triangleCount;
-        self(self, k, j);
-    };
-    emit(emit, 0, n - 1);
+    }
 }
 
 CellCase deriveCase(unsigned mask) {

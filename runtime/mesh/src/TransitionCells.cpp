@@ -1,6 +1,7 @@
 // Transition cells derived per case from the facet rule (voxc/mesh/TransitionCells.h).
 #include "voxc/mesh/TransitionCells.h"
 
+#include "LoopTriangulation.h"
 #include "voxc/core/Errors.h"
 
 #include <algorithm>
@@ -132,8 +133,6 @@ CellTriangles deriveCell(uint32_t points, uint32_t solid) {
         // (a chord inside the cell is this cell's alone), no triangle whose vertices are collinear at the
         // sub-edges' midpoints (where binary 0/1 samples put them: a loop along a refined face can
         // run straight through several), then the least total chord length.
-        const size_t n = loop.size();
-        constexpr float kForbidden = std::numeric_limits<float>::infinity();
         // A chord another cell can hold too: both vertices on one facet (the cell across it), on
         // one cube edge line (the cells around it, coarse ones holding the whole line), or in one
         // face that is not refined (the coarse cell across it). A refined face's other cells are
@@ -153,48 +152,28 @@ CellTriangles deriveCell(uint32_t points, uint32_t solid) {
             }
             return sharedBoundaryPlanes == 2; // one cube edge line
         };
-        auto collinear = [&](int a, int b, int c) {
-            const glm::vec3 pa = midpoint(subEdgeOf(a));
-            return glm::cross(midpoint(subEdgeOf(b)) - pa, midpoint(subEdgeOf(c)) - pa) == glm::vec3(0.0f);
-        };
-        auto chordCost = [&](size_t i, size_t j) {
-            if (j == i + 1 || (i == 0 && j == n - 1)) return 0.0f;
-            if (shared(loop[i], loop[j])) return kForbidden;
-            return glm::length(midpoint(subEdgeOf(loop[i])) - midpoint(subEdgeOf(loop[j])));
-        };
-        std::vector<float> cost(n * n, 0.0f);
-        std::vector<size_t> split(n * n, 0);
-        for (size_t len = 2; len < n; ++len)
-            for (size_t i = 0; i + len < n; ++i) {
-                const size_t j = i + len;
-                float best = kForbidden;
-                for (size_t k = i + 1; k < j; ++k) {
-                    if (collinear(loop[i], loop[k], loop[j])) continue;
-                    const float c = cost[i * n + k] + cost[k * n + j];
-                    if (c < best) {
-                        best = c;
-                        split[i * n + j] = k;
-                    }
-                }
-                cost[i * n + j] = best + chordCost(i, j);
-            }
-        if (!(cost[n - 1] < kForbidden)) {
+        const auto triangles = mesh_tables::triangulateLoop(
+            loop.size(),
+            [&](size_t i, size_t j) {
+                if (shared(loop[i], loop[j])) return std::numeric_limits<float>::infinity();
+                return glm::length(midpoint(subEdgeOf(loop[i])) - midpoint(subEdgeOf(loop[j])));
+            },
+            [&](size_t i, size_t k, size_t j) {
+                const glm::vec3 pi = midpoint(subEdgeOf(loop[i]));
+                return glm::cross(midpoint(subEdgeOf(loop[k])) - pi, midpoint(subEdgeOf(loop[j])) - pi) != glm::vec3(0.0f);
+            });
+        if (!triangles) {
+            // No triangulation keeps to this cell: fan the loop around a vertex at its centre.
             const int8_t centre = int8_t(result.centredLoops.size());
             std::vector<SubEdge>& members = result.centredLoops.emplace_back();
             for (int e : loop) members.push_back(subEdgeOf(e));
-            for (size_t i = 0; i < n; ++i)
-                for (CellVertex corner : {CellVertex{{}, centre}, CellVertex{members[i]}, CellVertex{members[(i + 1) % n]}})
+            for (size_t i = 0; i < members.size(); ++i)
+                for (CellVertex corner : {CellVertex{{}, centre}, CellVertex{members[i]}, CellVertex{members[(i + 1) % members.size()]}})
                     result.corners.push_back(corner);
             continue;
         }
-        auto emit = [&](auto&& self, size_t i, size_t j) -> void {
-            if (j < i + 2) return;
-            const size_t k = split[i * n + j];
-            self(self, i, k);
-            for (size_t corner : {i, k, j}) result.corners.push_back(CellVertex{subEdgeOf(loop[corner])});
-            self(self, k, j);
-        };
-        emit(emit, 0, n - 1);
+        for (const auto& triangle : *triangles)
+            for (size_t corner : triangle) result.corners.push_back(CellVertex{subEdgeOf(loop[corner])});
     }
     return result;
 }
