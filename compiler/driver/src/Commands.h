@@ -15,5 +15,6 @@ void addTerrainCommand(CLI::App& app);
 void addLspCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
 void addWorldCommand(CLI::App& app);
+void addViewCommand(CLI::App& app);
 
 } // namespace voxc::driver

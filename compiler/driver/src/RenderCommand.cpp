@@ -3,6 +3,7 @@
 #include "Commands.h"
 #include "Common.h"
 #include "Console.h"
+#include "EditsFile.h"
 #include "OutputPaths.h"
 
 #include "voxc/core/AtomicWrite.h"
@@ -30,6 +31,7 @@ constexpr glm::vec3 kChunkBorderColour{0.9f, 0.15f, 0.1f};
 struct RenderOptions {
     std::string file;
     std::string output;
+    std::string editsPath;
     std::string camera = "iso";
     std::string size = "1280x720";
     std::string device = "auto";
@@ -51,27 +53,22 @@ struct Scene {
 Scene runProgram(VulkanContext& context, const RenderOptions& options) {
     const Program program = loadProgram(options.file, options.overrides);
     VulkanExecutor executor(context, compileProgram(program, {}));
-    const RunResult result = executor.run();
+    RunResult result = executor.run();
     status() << fmt::format("device: {} ({}); grid {}x{}x{}, {:.1f} ms on device\n", context.device().name,
                              deviceTypeName(context.device().type), program.world.size.x, program.world.size.y,
                              program.world.size.z, result.timings.executeMs);
-    // The device's marching cubes and the host's give the same mesh bit for bit (`voxc run`).
+    const std::vector<Brush> edits =
+        options.editsPath.empty() ? std::vector<Brush>{} : loadEdits(options.editsPath, program.materials);
+    if (!edits.empty()) status() << describeEdits(edits.size(), applyEdits(result.grid, edits));
+    // The device's marching cubes and the host's give the same mesh bit for bit (`voxc run`); an
+    // edited grid is meshed on the host, as `voxc run --edits` does.
     const MeshOptions meshOptions{.iso = options.iso};
-    Scene scene{context.hasShaderFloat64() ? GpuMarchingCubes(executor).mesh(meshOptions)
-                                           : meshMarchingCubes(result.grid, meshOptions),
+    Scene scene{context.hasShaderFloat64() && edits.empty() ? GpuMarchingCubes(executor).mesh(meshOptions)
+                                                            : meshMarchingCubes(result.grid, meshOptions),
                 program.materials, result.grid.layout(), {}};
     const ChunkLayout& layout = result.grid.layout();
     scene.worldBox = {glm::vec3(layout.gridOrigin), glm::vec3(layout.gridOrigin + layout.gridSize - 1)};
     return scene;
-}
-
-rendering::Bounds meshBounds(const Mesh& mesh) {
-    rendering::Bounds bounds{glm::vec3(INFINITY), glm::vec3(-INFINITY)};
-    for (const glm::vec3& p : mesh.positions) {
-        bounds.min = glm::min(bounds.min, p);
-        bounds.max = glm::max(bounds.max, p);
-    }
-    return bounds;
 }
 
 void renderFile(const RenderOptions& options) {
@@ -84,7 +81,8 @@ void renderFile(const RenderOptions& options) {
     const rendering::ImageSize size = rendering::parseImageSize(options.size);
     const float aspect = float(size.width) / float(size.height);
     rendering::parseCamera(options.camera, {}, aspect); // the spelling, before the run
-    const RolePath inputs[] = {{"the input", options.file}};
+    if (meshFile && !options.editsPath.empty()) throw UserError("render: --edits needs a .vox file; a mesh file has no grid");
+    const RolePath inputs[] = {{"the input", options.file}, {"--edits", options.editsPath}};
     const RolePath outputs[] = {{"-o", options.output}};
     refuseClashingPaths(inputs, outputs);
 
@@ -92,12 +90,12 @@ void renderFile(const RenderOptions& options) {
     Scene scene;
     if (meshFile) {
         scene.mesh = readPly(options.file, &scene.materials); // the colours the file carries
-        scene.worldBox = meshBounds(scene.mesh);
+        scene.worldBox = rendering::meshBounds(scene.mesh);
     } else {
         scene = runProgram(context, options);
     }
     // Presets frame the surface; with no surface, the grid's box.
-    const rendering::Bounds frame = scene.mesh.positions.empty() ? scene.worldBox : meshBounds(scene.mesh);
+    const rendering::Bounds frame = scene.mesh.positions.empty() ? scene.worldBox : rendering::meshBounds(scene.mesh);
     if (scene.mesh.triangles.empty()) std::cerr << "voxc: warning: the mesh is empty; the picture shows the background\n";
     rendering::LineSet lines;
     if (options.wireframe) lines = rendering::wireframeLines(scene.mesh, kWireframeColour);
@@ -140,6 +138,7 @@ void addRenderCommand(CLI::App& app) {
     command->add_option("--camera", options->camera,
                         "iso (default), top, side, or X,Y,Z:TX,TY,TZ (eye and target in world voxels)");
     command->add_option("--size", options->size, "WIDTHxHEIGHT in pixels (default 1280x720)");
+    addEditsFlag(*command, options->editsPath);
     command->add_flag("--wireframe", options->wireframe, "Draw the mesh's edges over its faces");
     command->add_flag("--chunk-borders", options->chunkBorders, "Draw the boxes of the grid's chunks");
     command->add_option("--device", options->device, "auto (default: a GPU if present), lavapipe, gpu, or an index");

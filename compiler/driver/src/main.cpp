@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
     voxc::driver::addTerrainCommand(app);
     voxc::driver::addLspCommand(app);
     voxc::driver::addWorldCommand(app);
+    voxc::driver::addViewCommand(app);
     std::vector<std::string> arguments = voxc::driver::spellDepfileFlagsLong(argc, argv);
     std::vector<char*> argumentPointers;
     for (std::string& argument : arguments) argumentPointers.push_back(argument.data());

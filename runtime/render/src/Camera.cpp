@@ -40,7 +40,8 @@ bool parseVec3(std::string_view text, glm::vec3& value) {
     return true;
 }
 
-// Near and far planes around the sphere that holds `bounds`, seen from `camera.eye`.
+} // namespace
+
 void enclose(Camera& camera, const Bounds& bounds) {
     const glm::vec3 centre = 0.5f * (bounds.min + bounds.max);
     const float radius = std::max(0.5f * glm::length(bounds.max - bounds.min), 1.0f);
@@ -48,8 +49,6 @@ void enclose(Camera& camera, const Bounds& bounds) {
     camera.farPlane = distance + radius * 1.01f;
     camera.nearPlane = std::max(distance - radius * 1.01f, camera.farPlane * 1e-4f);
 }
-
-} // namespace
 
 Camera parseCamera(std::string_view spec, const Bounds& bounds, float aspect) {
     Camera camera;

@@ -27,6 +27,15 @@ void LineSet::add(glm::vec3 from, glm::vec3 to, glm::vec3 colour) {
     colours.push_back(colour);
 }
 
+Bounds meshBounds(const Mesh& mesh) {
+    Bounds bounds{glm::vec3(INFINITY), glm::vec3(-INFINITY)};
+    for (const glm::vec3& p : mesh.positions) {
+        bounds.min = glm::min(bounds.min, p);
+        bounds.max = glm::max(bounds.max, p);
+    }
+    return bounds;
+}
+
 LineSet wireframeLines(const Mesh& mesh, glm::vec3 colour) {
     LineSet lines;
     std::unordered_set<uint64_t> seen;

@@ -35,6 +35,10 @@ inline constexpr uint32_t kMaxImageSide = 8192;
 // the accepted forms otherwise (unknown preset, not six finite numbers, eye equal to target).
 Camera parseCamera(std::string_view spec, const Bounds& bounds, float aspect);
 
+// Near and far planes around the sphere that holds `bounds`, seen from `camera.eye` (the presets
+// and explicit cameras of parseCamera get them so; `voxc view` again after each edit or move).
+void enclose(Camera& camera, const Bounds& bounds);
+
 // "WIDTHxHEIGHT", e.g. "1280x720", each side 1..kMaxImageSide; UserError otherwise.
 ImageSize parseImageSize(std::string_view spec);
 

@@ -23,6 +23,9 @@ struct LineSet {
     void add(glm::vec3 from, glm::vec3 to, glm::vec3 colour);
 };
 
+// The box of the mesh's vertices (min > max when it has none), which presets frame.
+Bounds meshBounds(const Mesh& mesh);
+
 // Every edge of the mesh once, in `colour`.
 LineSet wireframeLines(const Mesh& mesh, glm::vec3 colour);
 // The edges of every chunk's box, clipped to the grid's voxel box (voxel centres, as the mesh).

@@ -1,0 +1,126 @@
+#pragma once
+// What `voxc view` shows, without the window: a .vox file checked and run on a Vulkan device, its
+// grid as an EditableWorld with the user's brush edits (undo, redo, saved as the JSON that
+// `voxc run --edits` replays), the file's parameters as slider values, and hot reload that keeps
+// the last good world when the file (or a slider) no longer checks. docs/viewer.md.
+//
+// Parameters: every `const` written as a plain number, the world's seed, and every number or
+// integer key of a feature (Dey's generators) within the generator's declared range. A constant
+// is overridden through CheckOptions::constOverrides; a feature key by rewriting the key's value in
+// the text given to the checker (the file on disk is never written), so both are checked exactly
+// as if the file said so.
+#include "voxc/edit/EditableWorld.h"
+#include "voxc/program/Program.h"
+#include "voxc/vulkan/Context.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace voxc::viewer {
+
+struct Parameter {
+    enum class Kind : uint8_t { Constant, FeatureKey, Seed };
+    Kind kind = Kind::Constant;
+    std::string name; // the constant's name, "feature.key", or "seed"
+    double value = 0.0;
+    double min = 0.0, max = 1.0;
+    bool integer = false;
+    bool overridden = false; // a slider replaced the file's value
+};
+
+struct SessionOptions {
+    std::string path;                  // the .vox file
+    std::optional<uint32_t> seed;      // --seed
+    std::optional<int32_t> chunk;      // --chunk
+    float iso = 0.5f;
+};
+
+// What the last successful run made, for the panel's statistics.
+struct WorldStats {
+    glm::ivec3 size{0};
+    int32_t chunkSize = 0;
+    glm::ivec3 chunkCount{0};
+    uint64_t dispatches = 0;
+    size_t triangles = 0;
+    double checkMs = 0.0, compileMs = 0.0, runMs = 0.0, meshMs = 0.0;
+};
+
+struct EditStats {
+    size_t chunksRemeshed = 0;
+    size_t voxelsInBox = 0; // of the changed box; 0 for a no-op
+    double ms = 0.0;        // brush and re-mesh
+};
+
+class Session {
+public:
+    // Loads the file (reload()); a file that does not check leaves the session without a world
+    // and the diagnostics in lastError(). `context` must outlive the session.
+    Session(VulkanContext& context, SessionOptions options, std::vector<Brush> edits = {});
+    ~Session();
+
+    // Re-reads, re-checks and re-runs the file with the current parameters, then replays the
+    // edits. On errors (diagnostics, or a run the device refuses) keeps the last good world and
+    // returns false; lastError() holds the rendered diagnostics.
+    bool reload();
+    // True when the file's modification time, size or text differ from what was last loaded.
+    bool fileChanged() const;
+
+    bool hasWorld() const;
+    const EditableWorld& world() const; // requires hasWorld()
+    const Program& program() const;     // the last good program
+    const std::string& lastError() const { return error_; }
+    const std::string& warnings() const { return warnings_; }
+    const WorldStats& stats() const { return stats_; }
+    const std::string& path() const { return options_.path; }
+    float iso() const { return options_.iso; }
+    // Counts reload() calls that made a new world (for scripts waiting on a reload).
+    uint64_t generation() const { return generation_; }
+
+    const std::vector<Parameter>& parameters() const { return parameters_; }
+    // Sets a parameter by name (constant, "feature.key" or "seed") and reloads. UserError for an
+    // unknown name or a value outside the parameter's range; false when the reload failed.
+    bool setParameter(const std::string& name, double value);
+    // Drops every slider override and reloads.
+    bool resetParameters();
+
+    // Applies the brush to the world (re-meshing only the chunks it can change) and records it.
+    EditStats edit(const Brush& brush);
+    bool undo(); // false when there is nothing to undo
+    bool redo();
+    const std::vector<Brush>& edits() const { return edits_; }
+    size_t redoCount() const { return redo_.size(); }
+    // Writes the edits as `voxc run --edits` reads them (temp file, then renamed).
+    void saveEdits(const std::filesystem::path& path) const;
+
+private:
+    struct Loaded;
+    std::string textWithOverrides(const std::string& text) const;
+    void rebuildWorld();
+    void listParameters(const std::string& text);
+
+    VulkanContext& context_;
+    SessionOptions options_;
+    std::map<std::string, double> constOverrides_;
+    std::map<std::string, double> featureOverrides_; // "feature.key" -> value
+    std::optional<uint32_t> seedOverride_;
+    std::vector<Parameter> parameters_;
+    std::vector<Brush> edits_, redo_;
+    std::unique_ptr<Loaded> loaded_;
+    std::string error_, warnings_;
+    WorldStats stats_;
+    uint64_t generation_ = 0;
+    // What the file looked like when last read, for fileChanged().
+    std::filesystem::file_time_type loadedTime_{};
+    std::string loadedText_;
+};
+
+// The edits as the JSON array `voxc run --edits` reads (docs/cli.md, "Edits files"): floats are
+// written in their shortest exact form, so a replay gives the same bits; an add's material by name.
+std::string formatEdits(const std::vector<Brush>& edits, const std::vector<Material>& materials);
+
+} // namespace voxc::viewer

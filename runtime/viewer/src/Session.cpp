@@ -1,0 +1,296 @@
+#include "voxc/viewer/Session.h"
+
+#include "voxc/check/Check.h"
+#include "voxc/core/AtomicWrite.h"
+#include "voxc/core/Errors.h"
+#include "voxc/generators/dey/Generators.h"
+#include "voxc/stages/Pipeline.h"
+#include "voxc/syntax/Parser.h"
+#include "voxc/vulkan/Executor.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+
+namespace voxc::viewer {
+
+namespace {
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// A value written as a plain number (or its negation): the only kind a slider can stand in for;
+// a value computed from other constants follows them instead.
+std::optional<double> literalNumber(const ast::Expr* expr) {
+    if (expr == nullptr) return std::nullopt;
+    if (expr->kind == ast::Expr::Kind::Number) return expr->number;
+    if (expr->kind == ast::Expr::Kind::Negate && expr->lhs && expr->lhs->kind == ast::Expr::Kind::Number)
+        return -expr->lhs->number;
+    return std::nullopt;
+}
+
+size_t offsetOf(const std::vector<size_t>& lineStarts, SourceLoc loc) {
+    return lineStarts[std::min<size_t>(loc.line - 1, lineStarts.size() - 1)] + loc.column - 1;
+}
+
+std::vector<size_t> lineStartsOf(const std::string& text) {
+    std::vector<size_t> starts{0};
+    for (size_t i = 0; i < text.size(); ++i)
+        if (text[i] == '\n') starts.push_back(i + 1);
+    return starts;
+}
+
+// A constant has no declared range: its slider spans from 0 to twice the file's value (or -1..1
+// for 0), integers when the file wrote an integer.
+Parameter constantParameter(const std::string& name, double written) {
+    Parameter p{Parameter::Kind::Constant, name, written, std::min(0.0, 2 * written), std::max(0.0, 2 * written)};
+    if (written == 0.0) p.min = -1.0, p.max = 1.0;
+    p.integer = written == std::floor(written) && std::abs(written) >= 1.0;
+    return p;
+}
+
+const ast::Assignment* findAssignment(const ast::Block& block, std::string_view key) {
+    for (const ast::Assignment& a : block.assignments)
+        if (a.key == key) return &a;
+    return nullptr;
+}
+
+std::string formatNumber(double value) { return fmt::format("{}", value); }
+
+} // namespace
+
+struct Session::Loaded {
+    Program program;
+    ChunkedGrid base; // as generated, before the edits
+    std::optional<EditableWorld> world;
+};
+
+Session::Session(VulkanContext& context, SessionOptions options, std::vector<Brush> edits)
+    : context_(context), options_(std::move(options)), edits_(std::move(edits)) {
+    seedOverride_ = options_.seed;
+    reload();
+}
+
+Session::~Session() = default;
+
+bool Session::hasWorld() const { return loaded_ && loaded_->world; }
+const EditableWorld& Session::world() const { return *loaded_->world; }
+const Program& Session::program() const { return loaded_->program; }
+
+bool Session::fileChanged() const {
+    std::error_code error;
+    const auto time = std::filesystem::last_write_time(options_.path, error);
+    if (error) return false; // mid-save (renamed away): look again on the next poll
+    const auto size = std::filesystem::file_size(options_.path, error);
+    return !error && (time != loadedTime_ || size != loadedText_.size());
+}
+
+std::string Session::textWithOverrides(const std::string& text) const {
+    if (featureOverrides_.empty()) return text;
+    Diagnostics ignored; // the checker reports the file's own errors
+    const ast::File file = parse(SourceFile(options_.path, text), ignored);
+    const std::vector<size_t> lineStarts = lineStartsOf(text);
+    struct Splice {
+        size_t offset, length;
+        std::string text;
+    };
+    std::vector<Splice> splices;
+    for (const auto& [name, value] : featureOverrides_) {
+        const size_t dot = name.find('.');
+        const std::string feature = name.substr(0, dot), key = name.substr(dot + 1);
+        for (const ast::FeatureDecl& decl : file.features) {
+            if (decl.name != feature) continue;
+            if (const ast::Assignment* a = findAssignment(decl.body, key)) {
+                if (a->value.scalar && a->value.loc.line > 0)
+                    splices.push_back({offsetOf(lineStarts, a->value.loc), a->value.loc.length, formatNumber(value)});
+            } else if (decl.body.end.line > 0) {
+                splices.push_back({offsetOf(lineStarts, decl.body.end), 0, fmt::format("{} = {}; ", key, formatNumber(value))});
+            }
+        }
+    }
+    // From the end backwards, so each splice's offset still holds.
+    std::sort(splices.begin(), splices.end(), [](const Splice& a, const Splice& b) { return a.offset > b.offset; });
+    std::string out = text;
+    for (const Splice& splice : splices)
+        if (splice.offset + splice.length <= out.size()) out.replace(splice.offset, splice.length, splice.text);
+    return out;
+}
+
+void Session::listParameters(const std::string& text) {
+    Diagnostics ignored;
+    const ast::File file = parse(SourceFile(options_.path, text), ignored);
+    std::vector<Parameter> parameters;
+    Parameter seed{Parameter::Kind::Seed, "seed", double(loaded_->program.world.seed), 0.0, 1000.0, true,
+                   seedOverride_.has_value()};
+    seed.max = std::max(seed.max, seed.value);
+    parameters.push_back(seed);
+    for (const ast::ConstDecl& decl : file.constants) {
+        const std::optional<double> written = literalNumber(decl.value.get());
+        if (!written) continue;
+        Parameter p = constantParameter(decl.name, *written);
+        if (auto it = constOverrides_.find(decl.name); it != constOverrides_.end()) p.value = it->second, p.overridden = true;
+        parameters.push_back(p);
+    }
+    for (const ast::FeatureDecl& decl : file.features) {
+        const dey::GeneratorInfo* info = dey::findGenerator(decl.body.kind);
+        if (info == nullptr) continue;
+        for (const dey::GeneratorKey& key : info->keys) {
+            if (key.type == dey::GeneratorKeyType::Vec3 || key.override) continue;
+            const ast::Assignment* a = findAssignment(decl.body, key.name);
+            const std::optional<double> written = a ? literalNumber(a->value.scalar.get()) : std::optional(key.value[0]);
+            if (!written) continue;
+            Parameter p{Parameter::Kind::FeatureKey, fmt::format("{}.{}", decl.name, key.name), *written, key.min, key.max,
+                        key.type == dey::GeneratorKeyType::Integer};
+            if (auto it = featureOverrides_.find(p.name); it != featureOverrides_.end()) p.value = it->second, p.overridden = true;
+            parameters.push_back(p);
+        }
+    }
+    parameters_ = std::move(parameters);
+}
+
+bool Session::reload() {
+    Diagnostics readErrors;
+    std::optional<SourceFile> source = loadSourceFile(options_.path, readErrors);
+    std::error_code ignored;
+    loadedTime_ = std::filesystem::last_write_time(options_.path, ignored);
+    if (!source) {
+        loadedText_.clear();
+        error_ = renderAll(readErrors.all(), SourceFile(options_.path, ""));
+        return false;
+    }
+    loadedText_ = source->text();
+    try {
+        auto start = std::chrono::steady_clock::now();
+        CheckOptions checkOptions;
+        checkOptions.constOverrides.insert(constOverrides_.begin(), constOverrides_.end());
+        checkOptions.seed = seedOverride_;
+        CheckResult checked = checkSource(SourceFile(options_.path, textWithOverrides(loadedText_)), checkOptions);
+        if (checked.hasErrors() || !checked.program) {
+            error_ = checked.rendered();
+            return false;
+        }
+        warnings_ = checked.rendered();
+        WorldStats stats;
+        stats.checkMs = millisecondsSince(start);
+        Program program = std::move(*checked.program);
+        if (options_.chunk) {
+            const int32_t c = *options_.chunk;
+            if (c < 8 || c > 64 || (c & (c - 1)) != 0)
+                throw UserError(fmt::format("--chunk {}: the chunk size must be a power of two from 8 to 64", c));
+            program.world.chunkSize = c;
+        }
+        start = std::chrono::steady_clock::now();
+        // Constants are folded into the kernels' text, so a changed constant is a changed kernel;
+        // unchanged kernels come from the SPIR-V cache (docs/architecture.md, "voxc_viewer").
+        const KernelPackage package = compileProgram(program, {});
+        stats.compileMs = millisecondsSince(start);
+        start = std::chrono::steady_clock::now();
+        VulkanExecutor executor(context_, package);
+        RunResult result = executor.run();
+        stats.runMs = millisecondsSince(start);
+        stats.dispatches = result.dispatches;
+        const ChunkLayout& layout = result.grid.layout();
+        stats.size = layout.gridSize;
+        stats.chunkSize = layout.chunkSize;
+        stats.chunkCount = layout.chunkCount;
+        loaded_ = std::make_unique<Loaded>(Loaded{std::move(program), std::move(result.grid), std::nullopt});
+        start = std::chrono::steady_clock::now();
+        rebuildWorld();
+        stats.meshMs = millisecondsSince(start);
+        stats.triangles = loaded_->world->mesh().triangles.size() / 3;
+        stats_ = stats;
+    } catch (const UserError& e) {
+        error_ = fmt::format("{}: {}\n", options_.path, e.what());
+        return false;
+    }
+    listParameters(loadedText_);
+    error_.clear();
+    ++generation_;
+    return true;
+}
+
+void Session::rebuildWorld() {
+    ChunkedGrid grid = loaded_->base;
+    for (const Brush& brush : edits_) applyBrush(grid, brush);
+    loaded_->world.emplace(std::move(grid), MeshOptions{.iso = options_.iso});
+}
+
+bool Session::setParameter(const std::string& name, double value) {
+    const auto it = std::find_if(parameters_.begin(), parameters_.end(), [&](const Parameter& p) { return p.name == name; });
+    if (it == parameters_.end()) throw UserError(fmt::format("no parameter named '{}'", name));
+    if (!(value >= it->min && value <= it->max) && it->kind != Parameter::Kind::Seed)
+        throw UserError(fmt::format("{} = {}: outside its range [{}, {}]", name, value, it->min, it->max));
+    if (it->integer) value = std::round(value);
+    switch (it->kind) {
+    case Parameter::Kind::Seed:
+        if (!(value >= 0 && value <= double(UINT32_MAX))) throw UserError(fmt::format("seed {}: expected 0 to {}", value, UINT32_MAX));
+        seedOverride_ = uint32_t(value);
+        break;
+    case Parameter::Kind::Constant: constOverrides_[name] = value; break;
+    case Parameter::Kind::FeatureKey: featureOverrides_[name] = value; break;
+    }
+    return reload();
+}
+
+bool Session::resetParameters() {
+    constOverrides_.clear();
+    featureOverrides_.clear();
+    seedOverride_ = options_.seed;
+    return reload();
+}
+
+EditStats Session::edit(const Brush& brush) {
+    VOXC_ASSERT(hasWorld());
+    const auto start = std::chrono::steady_clock::now();
+    const EditResult result = loaded_->world->edit(brush);
+    EditStats stats{result.chunksRemeshed.size(), 0, millisecondsSince(start)};
+    if (result.changed) {
+        const glm::ivec3 extent = result.changed->last - result.changed->first + 1;
+        stats.voxelsInBox = size_t(extent.x) * extent.y * extent.z;
+        edits_.push_back(brush); // only edits that changed something, so every undo shows
+        redo_.clear();
+    }
+    return stats;
+}
+
+bool Session::undo() {
+    if (edits_.empty() || !hasWorld()) return false;
+    redo_.push_back(edits_.back());
+    edits_.pop_back();
+    // A brush cannot be inverted (min and max forget), so the world is replayed from the base.
+    rebuildWorld();
+    return true;
+}
+
+bool Session::redo() {
+    if (redo_.empty() || !hasWorld()) return false;
+    const Brush brush = redo_.back();
+    redo_.pop_back();
+    loaded_->world->edit(brush);
+    edits_.push_back(brush);
+    return true;
+}
+
+void Session::saveEdits(const std::filesystem::path& path) const {
+    writeFileAtomically(path.string(), formatEdits(edits_, loaded_ ? loaded_->program.materials : std::vector<Material>{}));
+}
+
+std::string formatEdits(const std::vector<Brush>& edits, const std::vector<Material>& materials) {
+    std::string out = "[";
+    for (size_t i = 0; i < edits.size(); ++i) {
+        const Brush& b = edits[i];
+        out += fmt::format("{}\n  {{\"op\": \"{}\", \"center\": [{}, {}, {}], \"radius\": {}, \"softness\": {}", i ? "," : "",
+                           b.op == Brush::Op::Carve ? "carve" : "add", b.center.x, b.center.y, b.center.z, b.radius,
+                           b.softness);
+        if (b.op == Brush::Op::Add && b.material != 0)
+            for (const Material& m : materials)
+                if (m.id == b.material) out += fmt::format(", \"material\": \"{}\"", m.name);
+        out += "}";
+    }
+    out += edits.empty() ? "]\n" : "\n]\n";
+    return out;
+}
+
+} // namespace voxc::viewer

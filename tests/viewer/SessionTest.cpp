@@ -1,0 +1,161 @@
+// The viewer's session on lavapipe, without a window: parameters and their ranges, sliders that
+// re-run, a broken file that keeps the last world, edits with undo and redo, the saved edits format.
+#include "voxc/viewer/Session.h"
+
+#include "voxc/core/Errors.h"
+#include "voxc/mesh/MarchingCubes.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+
+namespace voxc::viewer {
+namespace {
+
+constexpr const char* kProgram = R"(const FLOOR = 12;
+const HALF = FLOOR / 2;
+world { size = [40, 32, 40]; chunk = 16; seed = 3; }
+material rock { id = 1; color = [0.5, 0.5, 0.5]; }
+start { box { min = [0, 0, 0]; max = [40, FLOOR, 40]; } }
+feature bridge = arch {
+  start = [8, 10, 20];
+  end = [32, 10, 20];
+  radius = 3;
+  peak = 6;
+}
+pipeline { start; union bridge; }
+)";
+
+class SessionTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        directory_ = std::filesystem::temp_directory_path() /
+                     ("voxc_session_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        std::filesystem::create_directories(directory_);
+        write(kProgram);
+    }
+    void TearDown() override { std::filesystem::remove_all(directory_); }
+    void write(const std::string& text) {
+        std::ofstream(path()) << text;
+        // A later write in the same clock tick must still look changed.
+        std::filesystem::last_write_time(path(), std::filesystem::file_time_type::clock::now() + std::chrono::seconds(++writes_));
+    }
+    std::string path() const { return (directory_ / "scene.vox").string(); }
+    static VulkanContext& context() {
+        static VulkanContext context(ContextOptions{.device = "lavapipe"});
+        return context;
+    }
+    const Parameter& parameter(const Session& session, const std::string& name) {
+        const auto& all = session.parameters();
+        const auto it = std::find_if(all.begin(), all.end(), [&](const Parameter& p) { return p.name == name; });
+        EXPECT_NE(it, all.end()) << name;
+        return *it;
+    }
+
+    std::filesystem::path directory_;
+    int writes_ = 0;
+};
+
+TEST_F(SessionTest, ListsLiteralConstantsFeatureKeysAndSeedWithTheirRanges) {
+    Session session(context(), {path()});
+    ASSERT_TRUE(session.hasWorld()) << session.lastError();
+    const Parameter& floor = parameter(session, "FLOOR");
+    EXPECT_EQ(floor.value, 12);
+    EXPECT_EQ(floor.min, 0);
+    EXPECT_EQ(floor.max, 24);
+    EXPECT_TRUE(floor.integer);
+    // HALF follows FLOOR: no slider of its own.
+    for (const Parameter& p : session.parameters()) EXPECT_NE(p.name, "HALF");
+    const Parameter& peak = parameter(session, "bridge.peak");
+    EXPECT_EQ(peak.value, 6);
+    EXPECT_EQ(peak.min, 0);
+    EXPECT_EQ(peak.max, 10); // the arch generator's declared range
+    const Parameter& exponent = parameter(session, "bridge.taper_exponent"); // not written: its default
+    EXPECT_EQ(exponent.value, 1);
+    EXPECT_EQ(parameter(session, "bridge.iterations").integer, true);
+    EXPECT_EQ(parameter(session, "seed").value, 3);
+}
+
+TEST_F(SessionTest, SlidersRerunAsIfTheFileSaidSo) {
+    Session session(context(), {path()});
+    ASSERT_TRUE(session.hasWorld());
+    const Mesh before = session.world().mesh();
+    ASSERT_TRUE(session.setParameter("bridge.peak", 2));
+    EXPECT_TRUE(session.world().mesh().positions != before.positions);
+    EXPECT_TRUE(parameter(session, "bridge.peak").overridden);
+    // The same world as a file that writes the value.
+    std::string text = kProgram;
+    text.replace(text.find("peak = 6;"), 9, "peak = 2;");
+    write(text);
+    Session written(context(), {path()});
+    EXPECT_TRUE(written.world().mesh().positions == session.world().mesh().positions);
+
+    // A key the file leaves at its default is written into the checked text.
+    ASSERT_TRUE(session.setParameter("bridge.taper_exponent", 3));
+    EXPECT_EQ(parameter(session, "bridge.taper_exponent").value, 3);
+    ASSERT_TRUE(session.setParameter("FLOOR", 4));
+    EXPECT_EQ(session.stats().size, glm::ivec3(40, 32, 40));
+    EXPECT_THROW(session.setParameter("bridge.peak", 11), UserError);
+    EXPECT_THROW(session.setParameter("HALF", 1), UserError);
+    ASSERT_TRUE(session.resetParameters()); // back to the file, which now says peak = 2
+    EXPECT_TRUE(session.world().mesh().positions == written.world().mesh().positions);
+}
+
+TEST_F(SessionTest, ABrokenFileKeepsTheLastWorldAndSaysWhy) {
+    Session session(context(), {path()});
+    ASSERT_TRUE(session.hasWorld());
+    const Mesh before = session.world().mesh();
+    const uint64_t generation = session.generation();
+    std::string text = kProgram;
+    text.replace(text.find("peak = 6;"), 9, "peak = 6");
+    write(text);
+    EXPECT_TRUE(session.fileChanged());
+    EXPECT_FALSE(session.reload());
+    EXPECT_FALSE(session.fileChanged()); // not reloaded again until the next save
+    EXPECT_NE(session.lastError().find("scene.vox:10:"), std::string::npos) << session.lastError();
+    EXPECT_NE(session.lastError().find("error E0001"), std::string::npos) << session.lastError();
+    EXPECT_EQ(session.generation(), generation);
+    EXPECT_TRUE(session.world().mesh().positions == before.positions);
+    write(kProgram);
+    EXPECT_TRUE(session.reload());
+    EXPECT_TRUE(session.lastError().empty());
+}
+
+TEST_F(SessionTest, EditsUndoAndRedoGiveTheMeshOfTheGrid) {
+    Session session(context(), {path()});
+    ASSERT_TRUE(session.hasWorld());
+    const Mesh original = session.world().mesh();
+    const Brush carve{Brush::Op::Carve, {20.0f, 12.0f, 20.0f}, 4.0f, 2.0f};
+    const EditStats stats = session.edit(carve);
+    EXPECT_GT(stats.chunksRemeshed, 0u);
+    const Mesh carved = session.world().mesh();
+    EXPECT_TRUE(carved.positions != original.positions);
+    EXPECT_TRUE(carved.positions == meshMarchingCubes(session.world().grid(), MeshOptions{}).positions);
+    // A carve in the air changes nothing and is not recorded.
+    session.edit({Brush::Op::Carve, {20.0f, 30.0f, 2.0f}, 1.0f, 1.0f});
+    EXPECT_EQ(session.edits().size(), 1u);
+    ASSERT_TRUE(session.undo());
+    EXPECT_TRUE(session.world().mesh().positions == original.positions);
+    EXPECT_FALSE(session.undo());
+    ASSERT_TRUE(session.redo());
+    EXPECT_TRUE(session.world().mesh().positions == carved.positions);
+    // Edits survive a reload: replayed on the new world.
+    ASSERT_TRUE(session.reload());
+    EXPECT_TRUE(session.world().mesh().positions == carved.positions);
+}
+
+TEST_F(SessionTest, SavedEditsAreTheRunEditsFormatWithShortestExactFloats) {
+    Session session(context(), {path()});
+    session.edit({Brush::Op::Carve, {20.1f, 12.0f, 20.0f}, 4.5f, 2.0f});
+    session.edit({Brush::Op::Add, {10.0f, 12.0f, 30.0f}, 3.0f, 1.0f, 1});
+    EXPECT_EQ(formatEdits(session.edits(), session.program().materials),
+              "[\n"
+              "  {\"op\": \"carve\", \"center\": [20.1, 12, 20], \"radius\": 4.5, \"softness\": 2},\n"
+              "  {\"op\": \"add\", \"center\": [10, 12, 30], \"radius\": 3, \"softness\": 1, \"material\": \"rock\"}\n"
+              "]\n");
+    EXPECT_EQ(formatEdits({}, {}), "[]\n");
+}
+
+} // namespace
+} // namespace voxc::viewer
