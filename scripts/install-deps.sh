@@ -10,6 +10,8 @@ packages=(
   libgtest-dev libbenchmark-dev libnoise-dev zlib1g-dev libpng-dev
   libopenvdb-dev libboost-dev # voxc-bench's meshing peer, OpenVDB's volumeToMesh
   libopenmpi-dev openmpi-bin # voxc world under mpirun (tests/world)
+  libglfw3-dev libimgui-dev libstb-dev # voxc view: the window and its panel (runtime/viewer)
+  xvfb xauth # xvfb-run: the viewer's test under a virtual display (tests/viewer)
   ccache python3-numpy
   clang libclang-rt-14-dev
 )
