@@ -10,9 +10,14 @@
 // bits in anchorStart.w) only the combine runs, in a loop of its own so no DAG code is near it.
 // Where the field's value is not finite the combine uses 0 instead (finiteDensity, counted);
 // a constant box's value is finite (interval analysis proves no NaN or infinity exact).
+// Noise calls the column shares work for (noise_column.glsl) fill noiseColumnValues a block of
+// COLUMN_BLOCK voxels at a time, before the voxels of the block read them.
 
 #include "common.glsl"
 #include "nonfinite.glsl"
+
+const int COLUMN_BLOCK = 64;
+// <<COLUMN_NOISE>>
 // <<LIBRARIES>>
 
 // <<DISPATCH_SHAPE>>
@@ -44,12 +49,16 @@ void main() {
             ivec3 columnWorld = push.gridOrigin.xyz + columnLocal;
             // <<COLUMN_VALUES>>
             int address = 0;
-            for (int y = first.y; y < last.y; ++y) {
-                ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
-                ivec3 world = push.gridOrigin.xyz + local;
-                address = nextColumnAddress(address, y == first.y, local);
-                // <<VOXEL_VALUES>>
-                // <<COMBINE>>
+            for (int blockY = first.y; blockY < last.y; blockY += COLUMN_BLOCK) {
+                int blockEnd = min(blockY + COLUMN_BLOCK, last.y);
+                // <<BLOCK_VALUES>>
+                for (int y = blockY; y < blockEnd; ++y) {
+                    ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                    ivec3 world = push.gridOrigin.xyz + local;
+                    address = nextColumnAddress(address, y == first.y, local);
+                    // <<VOXEL_VALUES>>
+                    // <<COMBINE>>
+                }
             }
         }
     }

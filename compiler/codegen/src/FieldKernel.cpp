@@ -61,13 +61,84 @@ struct FieldCode {
     std::vector<std::string> names;
     std::string column, voxel; // statements before and inside the y loop
     std::vector<std::string_view> libraries;
+    // Noise calls the column shares work for (noise_column.glsl): the kernel's declarations, and
+    // the fills at the start of each block of the column.
+    std::string columnNoise, block;
 };
+
+// A float or vec3 node's component `axis` as one GLSL expression, when the node is built from
+// vec3 constructors, constants, component reads, sums, differences, products and negations over
+// leaves that `leaf` names (scalar nodes it accepts). The operations are the ones the vector code
+// performs on that component, in the same order, so an expression assigned to a `precise`
+// variable has the same bits as the component of the node's value.
+template <class Leaf>
+std::optional<std::string> componentGlsl(const ir::IrField& field, uint32_t i, int axis, const Leaf& leaf) {
+    const FieldNode& node = field.nodes[i];
+    if (node.type != Type::Float && node.type != Type::Vec3) return std::nullopt;
+    if (node.kind == FieldNode::Kind::Constant) return glslFloat(node.type == Type::Float ? node.constant.x : node.constant[axis]);
+    if (std::optional<std::string> named = leaf(i, axis)) return named;
+    if (node.kind == FieldNode::Kind::Component)
+        return field.nodes[node.operands[0]].type == Type::Vec3 ? componentGlsl(field, node.operands[0], int(node.component), leaf)
+                                                                : std::nullopt;
+    if (node.kind != FieldNode::Kind::Call) return std::nullopt;
+    const std::string_view name = functions()[node.function].name;
+    if (name == "vec3") return componentGlsl(field, node.operands[axis], axis, leaf);
+    if (name == "neg") {
+        const std::optional<std::string> a = componentGlsl(field, node.operands[0], axis, leaf);
+        return a ? std::optional("(-" + *a + ")") : std::nullopt;
+    }
+    const char* op = name == "add" ? "+" : name == "sub" ? "-" : name == "mul" ? "*" : nullptr;
+    if (!op) return std::nullopt;
+    const std::optional<std::string> a = componentGlsl(field, node.operands[0], axis, leaf);
+    const std::optional<std::string> b = componentGlsl(field, node.operands[1], axis, leaf);
+    if (!a || !b) return std::nullopt;
+    return fmt::format("({} {} {})", *a, op, *b);
+}
+
+// Emits call `i` through noise_column.glsl when it is fbm, turbulence or perlin3 of a point whose
+// x and z are the same along the column and whose y depends on y alone, its other arguments the
+// same along the column; false otherwise (the call is then emitted per voxel).
+bool emitColumnNoise(const ir::IrModule& module, const ir::IrField& field, uint32_t i, int site, FieldCode& code) {
+    const FieldNode& node = field.nodes[i];
+    const std::string_view name = functions()[node.function].name;
+    const bool fractal = name == "fbm" || name == "turbulence";
+    if (!fractal && name != "perlin3") return false;
+    for (size_t k = 1; k < node.operands.size(); ++k)
+        if (!field.perColumn.at(node.operands[k])) return false;
+    const auto columnLeaf = [&](uint32_t n, int axis) -> std::optional<std::string> {
+        if (!field.perColumn.at(n)) return std::nullopt;
+        if (field.nodes[n].type == Type::Vec3) return fmt::format("{}.{}", code.names[n], "xyz"[axis]);
+        return code.names[n];
+    };
+    const auto alongYLeaf = [&](uint32_t n, int) -> std::optional<std::string> {
+        const FieldNode& leaf = field.nodes[n];
+        if (leaf.kind != FieldNode::Kind::Input || int(leaf.input) % 3 != 1) return std::nullopt;
+        if (leaf.input == FieldInput::WorldY) return "float(worldY)";
+        const int base = module.world.localBase.y;
+        return base == 0 ? "float(localY)" : fmt::format("float(localY + ({}))", base);
+    };
+    const uint32_t point = node.operands[0];
+    const std::optional<std::string> x = componentGlsl(field, point, 0, columnLeaf);
+    const std::optional<std::string> y = componentGlsl(field, point, 1, alongYLeaf);
+    const std::optional<std::string> z = componentGlsl(field, point, 2, columnLeaf);
+    if (!x || !y || !z) return false;
+    const std::vector<uint32_t>& a = node.operands;
+    const std::string arguments =
+        fractal ? fmt::format("{}, {}, {}, uint({}), {}", code.names[a[1]], code.names[a[2]], code.names[a[3]],
+                              code.names[a[4]], name == "fbm" ? 0 : 1)
+                : fmt::format("1, 1.0, 1.0, uint({}), 0", code.names[a[1]]); // one fbm octave is perlin3, bit for bit
+    code.column += fmt::format("precise float noiseColumnX{0} = {1};\nprecise float noiseColumnZ{0} = {2};\n", site, *x, *z);
+    code.block += fmt::format("noiseColumnFill({0}, blockY, blockEnd, noiseColumnX{0}, noiseColumnZ{0}, {1});\n", site, arguments);
+    code.columnNoise += fmt::format("    case {}: {{ precise float r = {}; return r; }}\n", site, *y);
+    return true;
+}
 
 FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::string_view sourceName) {
     const std::vector<std::shared_ptr<const PointSet>> pointSets = pointSetsOf(module);
     FieldCode code;
     code.names.resize(field.nodes.size());
     std::set<std::string_view> seenLibraries;
+    int columnNoiseSites = 0;
     for (size_t i = 0; i < field.nodes.size(); ++i) {
         const FieldNode& node = field.nodes[i];
         if (node.kind == FieldNode::Kind::Constant) {
@@ -105,6 +176,10 @@ FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::s
             what = info.name;
             for (std::string_view library : info.glslLibraries)
                 if (seenLibraries.insert(library).second) code.libraries.push_back(library);
+            if (!field.perColumn.at(i) && emitColumnNoise(module, field, uint32_t(i), columnNoiseSites, code)) {
+                value = fmt::format("noiseColumnValues[{}][y - blockY]", columnNoiseSites++);
+                what += " along the column";
+            }
             break;
         }
         }
@@ -113,6 +188,16 @@ FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::s
             fmt::format("{}{} {} = {}; // {} ({}:{}:{})\n", isFloatType(node.type) ? "precise " : "",
                         typeName(node.type), code.names[i], value, what, sourceName, node.loc.line, node.loc.column);
         (field.perColumn.at(i) ? code.column : code.voxel) += line;
+    }
+    if (columnNoiseSites > 0) {
+        code.libraries.push_back("noise_column.glsl");
+        code.columnNoise = fmt::format("float noiseColumnValues[{}][COLUMN_BLOCK];\n"
+                                       "// Each column noise call's argument: its y at the column's voxel y.\n"
+                                       "float noiseColumnArgY(int site, int y) {{\n"
+                                       "    int localY = push.anchorStart.y + y * push.anchorStep.y;\n"
+                                       "    int worldY = push.gridOrigin.y + localY;\n"
+                                       "    switch (site) {{\n{}    }}\n    return 0.0;\n}}\n",
+                                       columnNoiseSites, code.columnNoise);
     }
     return code;
 }
@@ -307,7 +392,9 @@ std::string fieldKernelSource(const ir::IrModule& module, const ir::IrField& fie
         {{"HEADER", prefixLines(header, "// ")},
          {"LIBRARIES", libraries},
          {"DISPATCH_SHAPE", dispatchShapeGlsl(fieldDispatchShape(module))},
+         {"COLUMN_NOISE", code.columnNoise.empty() ? "// No noise call shares work along the column.\n" : code.columnNoise},
          {"COLUMN_VALUES", code.column.empty() ? "// No value is the same along the column.\n" : code.column},
+         {"BLOCK_VALUES", code.block.empty() ? "// Nothing to fill per block.\n" : code.block},
          {"VOXEL_VALUES", code.voxel.empty() ? "// Every value is the same along the column.\n" : code.voxel},
          {"CONSTANT_COMBINE", combineGlsl(mode, material, "constantValue")},
          {"COMBINE", fmt::format("float fieldValue = finiteDensity({}, local);\n", code.names.at(field.root)) +

@@ -11,6 +11,8 @@
 // bits in anchorStart.w) only the combine runs, in a loop of its own so no DAG code is near it.
 // Where the field's value is not finite the combine uses 0 instead (finiteDensity, counted);
 // a constant box's value is finite (interval analysis proves no NaN or infinity exact).
+// Noise calls the column shares work for (noise_column.glsl) fill noiseColumnValues a block of
+// COLUMN_BLOCK voxels at a time, before the voxels of the block read them.
 
 // ---- begin common.glsl ----
 // Declarations every voxc kernel shares: the push block (voxc::PushBlock in
@@ -99,6 +101,9 @@ float finiteDensity(float value, ivec3 local) {
     return 0.0;
 }
 // ---- end nonfinite.glsl ----
+
+const int COLUMN_BLOCK = 64;
+// No noise call shares work along the column.
 // ---- begin random.glsl ----
 // Counter-based randomness: mirrors compiler/program/src/Random.cpp bit for bit.
 
@@ -471,16 +476,20 @@ void main() {
             precise float n12 = (10.0 * n10); // mul (fields.vox:28:21)
             precise float n14 = (24.0 + n12); // add (fields.vox:28:16)
             int address = 0;
-            for (int y = first.y; y < last.y; ++y) {
-                ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
-                ivec3 world = push.gridOrigin.xyz + local;
-                address = nextColumnAddress(address, y == first.y, local);
-                precise float n15 = float(local.y); // y (fields.vox:29:18)
-                precise float n16 = (n14 - n15); // sub (fields.vox:29:9)
-                precise float n18 = mathMin(mathMax(n16, 0.0), 1.0); // clamp (fields.vox:29:3)
-                float fieldValue = finiteDensity(n18, local);
-                // set: d = f
-                voxels.density[address] = fieldValue;
+            for (int blockY = first.y; blockY < last.y; blockY += COLUMN_BLOCK) {
+                int blockEnd = min(blockY + COLUMN_BLOCK, last.y);
+                // Nothing to fill per block.
+                for (int y = blockY; y < blockEnd; ++y) {
+                    ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                    ivec3 world = push.gridOrigin.xyz + local;
+                    address = nextColumnAddress(address, y == first.y, local);
+                    precise float n15 = float(local.y); // y (fields.vox:29:18)
+                    precise float n16 = (n14 - n15); // sub (fields.vox:29:9)
+                    precise float n18 = mathMin(mathMax(n16, 0.0), 1.0); // clamp (fields.vox:29:3)
+                    float fieldValue = finiteDensity(n18, local);
+                    // set: d = f
+                    voxels.density[address] = fieldValue;
+                }
             }
         }
     }

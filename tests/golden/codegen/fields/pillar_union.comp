@@ -11,6 +11,8 @@
 // bits in anchorStart.w) only the combine runs, in a loop of its own so no DAG code is near it.
 // Where the field's value is not finite the combine uses 0 instead (finiteDensity, counted);
 // a constant box's value is finite (interval analysis proves no NaN or infinity exact).
+// Noise calls the column shares work for (noise_column.glsl) fill noiseColumnValues a block of
+// COLUMN_BLOCK voxels at a time, before the voxels of the block read them.
 
 // ---- begin common.glsl ----
 // Declarations every voxc kernel shares: the push block (voxc::PushBlock in
@@ -99,6 +101,9 @@ float finiteDensity(float value, ivec3 local) {
     return 0.0;
 }
 // ---- end nonfinite.glsl ----
+
+const int COLUMN_BLOCK = 64;
+// No noise call shares work along the column.
 // ---- begin math_functions.glsl ----
 // Math builtins of field expressions whose GLSL built-in may be computed in another operation
 // order (or with a fused multiply-add), or leaves NaN operands undefined (min, max, clamp):
@@ -204,28 +209,32 @@ void main() {
             precise float n10 = float(columnLocal.x); // x (fields.vox:37:25)
             precise float n11 = float(columnLocal.z); // z (fields.vox:37:25)
             int address = 0;
-            for (int y = first.y; y < last.y; ++y) {
-                ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
-                ivec3 world = push.gridOrigin.xyz + local;
-                address = nextColumnAddress(address, y == first.y, local);
-                precise float n0 = float(local.y); // y (fields.vox:36:16)
-                bool n2 = (n0 > 40.0); // gt (fields.vox:36:16)
-                precise float n5 = (n2 ? 2.0 : 0.0); // select (fields.vox:36:16)
-                precise float n7 = (4.0 + n5); // add (fields.vox:36:11)
-                bool n9 = (n0 < 52.0); // lt (fields.vox:37:3)
-                precise vec3 n12 = vec3(n10, n0, n11); // vec3 (fields.vox:37:25)
-                precise float n13 = n12.x; // component (fields.vox:37:25)
-                precise float n14 = n12.z; // component (fields.vox:37:25)
-                precise vec2 n15 = vec2(n13, n14); // vec2 (fields.vox:37:25)
-                precise vec2 n17 = (n15 - vec2(44.0, 16.0)); // sub (fields.vox:37:25)
-                precise float n18 = mathLength(n17); // length (fields.vox:37:18)
-                precise float n19 = (n7 - n18); // sub (fields.vox:19:54)
-                precise float n21 = mathMin(mathMax(n19, 0.0), 1.0); // clamp (fields.vox:19:48)
-                precise float n22 = (n9 ? n21 : 0.0); // select (fields.vox:37:3)
-                float fieldValue = finiteDensity(n22, local);
-                // union: d = max(d, f)
-                float density = voxels.density[address];
-                voxels.density[address] = density < fieldValue ? fieldValue : density;
+            for (int blockY = first.y; blockY < last.y; blockY += COLUMN_BLOCK) {
+                int blockEnd = min(blockY + COLUMN_BLOCK, last.y);
+                // Nothing to fill per block.
+                for (int y = blockY; y < blockEnd; ++y) {
+                    ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                    ivec3 world = push.gridOrigin.xyz + local;
+                    address = nextColumnAddress(address, y == first.y, local);
+                    precise float n0 = float(local.y); // y (fields.vox:36:16)
+                    bool n2 = (n0 > 40.0); // gt (fields.vox:36:16)
+                    precise float n5 = (n2 ? 2.0 : 0.0); // select (fields.vox:36:16)
+                    precise float n7 = (4.0 + n5); // add (fields.vox:36:11)
+                    bool n9 = (n0 < 52.0); // lt (fields.vox:37:3)
+                    precise vec3 n12 = vec3(n10, n0, n11); // vec3 (fields.vox:37:25)
+                    precise float n13 = n12.x; // component (fields.vox:37:25)
+                    precise float n14 = n12.z; // component (fields.vox:37:25)
+                    precise vec2 n15 = vec2(n13, n14); // vec2 (fields.vox:37:25)
+                    precise vec2 n17 = (n15 - vec2(44.0, 16.0)); // sub (fields.vox:37:25)
+                    precise float n18 = mathLength(n17); // length (fields.vox:37:18)
+                    precise float n19 = (n7 - n18); // sub (fields.vox:19:54)
+                    precise float n21 = mathMin(mathMax(n19, 0.0), 1.0); // clamp (fields.vox:19:48)
+                    precise float n22 = (n9 ? n21 : 0.0); // select (fields.vox:37:3)
+                    float fieldValue = finiteDensity(n22, local);
+                    // union: d = max(d, f)
+                    float density = voxels.density[address];
+                    voxels.density[address] = density < fieldValue ? fieldValue : density;
+                }
             }
         }
     }

@@ -12,6 +12,8 @@
 // bits in anchorStart.w) only the combine runs, in a loop of its own so no DAG code is near it.
 // Where the field's value is not finite the combine uses 0 instead (finiteDensity, counted);
 // a constant box's value is finite (interval analysis proves no NaN or infinity exact).
+// Noise calls the column shares work for (noise_column.glsl) fill noiseColumnValues a block of
+// COLUMN_BLOCK voxels at a time, before the voxels of the block read them.
 
 // ---- begin common.glsl ----
 // Declarations every voxc kernel shares: the push block (voxc::PushBlock in
@@ -100,6 +102,9 @@ float finiteDensity(float value, ivec3 local) {
     return 0.0;
 }
 // ---- end nonfinite.glsl ----
+
+const int COLUMN_BLOCK = 64;
+// No noise call shares work along the column.
 // No function library needed.
 
 layout(local_size_x = 8, local_size_y = 1, local_size_z = 8) in;
@@ -137,14 +142,18 @@ void main() {
             bool n2 = (n0 < 20.0); // lt (materials.vox:20:1)
             precise float n5 = (n2 ? 0.800000012 : 0.200000003); // select (materials.vox:20:1)
             int address = 0;
-            for (int y = first.y; y < last.y; ++y) {
-                ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
-                ivec3 world = push.gridOrigin.xyz + local;
-                address = nextColumnAddress(address, y == first.y, local);
-                // Every value is the same along the column.
-                float fieldValue = finiteDensity(n5, local);
-                // paint: d unchanged; material 1 where f and d are solid
-                if (fieldValue >= 0.5 && voxels.density[address] >= 0.5) materials.material[address] = 1u;
+            for (int blockY = first.y; blockY < last.y; blockY += COLUMN_BLOCK) {
+                int blockEnd = min(blockY + COLUMN_BLOCK, last.y);
+                // Nothing to fill per block.
+                for (int y = blockY; y < blockEnd; ++y) {
+                    ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                    ivec3 world = push.gridOrigin.xyz + local;
+                    address = nextColumnAddress(address, y == first.y, local);
+                    // Every value is the same along the column.
+                    float fieldValue = finiteDensity(n5, local);
+                    // paint: d unchanged; material 1 where f and d are solid
+                    if (fieldValue >= 0.5 && voxels.density[address] >= 0.5) materials.material[address] = 1u;
+                }
             }
         }
     }

@@ -12,6 +12,8 @@
 // bits in anchorStart.w) only the combine runs, in a loop of its own so no DAG code is near it.
 // Where the field's value is not finite the combine uses 0 instead (finiteDensity, counted);
 // a constant box's value is finite (interval analysis proves no NaN or infinity exact).
+// Noise calls the column shares work for (noise_column.glsl) fill noiseColumnValues a block of
+// COLUMN_BLOCK voxels at a time, before the voxels of the block read them.
 
 // ---- begin common.glsl ----
 // Declarations every voxc kernel shares: the push block (voxc::PushBlock in
@@ -100,6 +102,9 @@ float finiteDensity(float value, ivec3 local) {
     return 0.0;
 }
 // ---- end nonfinite.glsl ----
+
+const int COLUMN_BLOCK = 64;
+// No noise call shares work along the column.
 // No function library needed.
 
 layout(local_size_x = 8, local_size_y = 1, local_size_z = 8) in;
@@ -141,19 +146,23 @@ void main() {
             precise float n0 = float(columnLocal.x); // x (materials.vox:21:1)
             precise float n2 = (n0 * 0.0399999991); // mul (materials.vox:21:1)
             int address = 0;
-            for (int y = first.y; y < last.y; ++y) {
-                ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
-                ivec3 world = push.gridOrigin.xyz + local;
-                address = nextColumnAddress(address, y == first.y, local);
-                // Every value is the same along the column.
-                float fieldValue = finiteDensity(n2, local);
-                // subtract: d = min(d, 1 - f); material 2 where 1 - f wins and is solid
-                float density = voxels.density[address];
-                precise float carved = 1.0 - fieldValue;
-                bool wins = carved < density;
-                float result = wins ? carved : density;
-                voxels.density[address] = result;
-                if (wins && result >= 0.5) materials.material[address] = 2u;
+            for (int blockY = first.y; blockY < last.y; blockY += COLUMN_BLOCK) {
+                int blockEnd = min(blockY + COLUMN_BLOCK, last.y);
+                // Nothing to fill per block.
+                for (int y = blockY; y < blockEnd; ++y) {
+                    ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                    ivec3 world = push.gridOrigin.xyz + local;
+                    address = nextColumnAddress(address, y == first.y, local);
+                    // Every value is the same along the column.
+                    float fieldValue = finiteDensity(n2, local);
+                    // subtract: d = min(d, 1 - f); material 2 where 1 - f wins and is solid
+                    float density = voxels.density[address];
+                    precise float carved = 1.0 - fieldValue;
+                    bool wins = carved < density;
+                    float result = wins ? carved : density;
+                    voxels.density[address] = result;
+                    if (wins && result >= 0.5) materials.material[address] = 2u;
+                }
             }
         }
     }
