@@ -261,6 +261,28 @@ expect curves_solve_on_device 0 "curves 'cliffs' \(64x32x64 cells, solved when c
 expect_same curves_solve_on_device_same_voxels "$work/curves_cliff.npy" "$work/curves_cliff_device.npy"
 expect curves_solve_on_bad 1 "--solve-on: gpu not in \{device,host\}" -- \
     "$voxc" run "$src/examples/curves_cliff.vox" --solve-on gpu --voxels "$work/curves_bad.npy"
+# --dump: solved channels as .npy that NumPy (Debian's python3-numpy) reads; the density channel
+# is the voxels (the example sets its whole grid), normals are unit, the raw distance is finite
+# (every cell is reached), rock (< 0) at the bottom and air (> 0) at the top
+expect curves_dump 0 "wrote .*curves_ny\.npy" -- "$voxc" interp "$src/examples/curves_cliff.vox" \
+    --voxels "$work/curves_dump_voxels.npy" --dump density="$work/curves_density.npy" \
+    --dump cliffs.normal_x="$work/curves_nx.npy" --dump normal_y="$work/curves_ny.npy" \
+    --dump normal_z="$work/curves_nz.npy" --dump distance="$work/curves_distance.npy"
+expect curves_dump_numpy 0 "^ok$" -- /usr/bin/python3 -c "
+import numpy as np, sys
+v, d, x, y, z, s = (np.load(p) for p in sys.argv[1:])
+assert d.dtype == np.float32 and d.shape == (64, 32, 64) == s.shape == y.shape, d.shape
+assert (d == v).all()
+n = np.sqrt(x * x + y * y + z * z)
+assert np.abs(n - 1).max() < 1e-5, np.abs(n - 1).max()
+assert np.isfinite(s).all() and (s[:, 0, :] < 0).all() and (s[:, -1, :] > 0).all()
+print('ok')" "$work/curves_dump_voxels.npy" "$work/curves_density.npy" "$work/curves_nx.npy" "$work/curves_ny.npy" \
+    "$work/curves_nz.npy" "$work/curves_distance.npy"
+expect curves_dump_unknown_channel 1 "--dump 'pressure=.*': unknown channel 'pressure'; the channels are density, normal_x" -- \
+    "$voxc" interp "$src/examples/curves_cliff.vox" --dump pressure="$work/curves_p.npy"
+expect curves_dump_unknown_block 1 "--dump rocks.density: the file has no curves block 'rocks'" -- \
+    "$voxc" run "$src/examples/curves_cliff.vox" --device lavapipe --dump rocks.density="$work/curves_rocks.npy"
+expect_no_file curves_dump_unknown_block_no_file "$work/curves_rocks.npy"
 printf 'world { size = [8, 8, 8]; }\ncurves c { box = [[0, 0, 0], [7, 7, 8]]; }\npipeline { start; union c; }\n' > "$work/curves_box.vox"
 expect curves_box_outside 1 "curves_box\.vox:2:18: error E0007: the box \[0, 0, 0\] to \[7, 7, 8\]" -- \
     "$voxc" run "$work/curves_box.vox" -o "$work/curves_box.ply"

@@ -14,7 +14,9 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstring>
 
 namespace voxc {
 namespace {
@@ -159,6 +161,39 @@ TEST(curvestage_Example, CliffMeshesWatertightWithTheCurvesMaterials) {
         for (size_t c = 3; c < solve.residuals.size(); ++c)
             EXPECT_LE(solve.residuals[c], 0.5f * solve.residuals[c - 1]) << solve.name << " cycle " << c;
     }
+}
+
+// The noise displacement runs only where it can change the density (Scene.cpp, DisplacementBand);
+// a check keeping the channels evaluates it at every cell. The densities and materials must be the
+// same bits, the band must have left cells out (displacement != 0 where the density saturated),
+// and the kept channels must give the density by its formula.
+TEST(curvestage_Example, DisplacementBandGivesTheFullEvaluationsBits) {
+    const std::string path = std::string(VOXC_SOURCE_DIR) + "/examples/curves_cliff.vox";
+    CheckOptions full;
+    full.keepSolveChannels = true;
+    const CheckResult banded = checkFile(path, CheckOptions{}), everywhere = checkFile(path, full);
+    ASSERT_TRUE(banded.program && everywhere.program) << banded.rendered() << everywhere.rendered();
+    const SolveTable& a = *banded.program->curves.at(0).table;
+    const SolveTable& b = *everywhere.program->curves.at(0).table;
+    EXPECT_TRUE(a.channels.empty());
+    ASSERT_EQ(a.density.size(), b.density.size());
+    EXPECT_EQ(0, std::memcmp(a.density.data(), b.density.data(), a.density.size() * sizeof(float)));
+    EXPECT_EQ(a.material, b.material);
+    const auto channel = [&](const char* name) -> const std::vector<float>& {
+        for (const auto& [key, values] : b.channels)
+            if (key == name) return values;
+        throw std::runtime_error(std::string("no channel ") + name);
+    };
+    const std::vector<float>& smoothed = channel("smoothed");
+    const std::vector<float>& displacement = channel("displacement");
+    size_t saturatedAndDisplaced = 0;
+    for (size_t i = 0; i < b.density.size(); ++i) {
+        const float d = smoothed[i] - displacement[i];
+        const float density = d < INFINITY ? std::clamp(0.5f - d / 2.0f, 0.0f, 1.0f) : 0.0f;
+        ASSERT_EQ(std::bit_cast<uint32_t>(density), std::bit_cast<uint32_t>(b.density[i])) << i;
+        if ((density == 0.0f || density == 1.0f) && displacement[i] != 0.0f) ++saturatedAndDisplaced;
+    }
+    EXPECT_GT(saturatedAndDisplaced, b.density.size() / 4);
 }
 
 } // namespace

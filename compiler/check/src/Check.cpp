@@ -166,6 +166,7 @@ CheckResult checkSource(const SourceFile& source, const CheckOptions& options) {
             check::Context context{diagnostics, options.limits, check::Constants(diagnostics, options.constOverrides), {}};
             context.seed = options.seed;
             context.curvesSolver = options.curvesSolver;
+            context.keepSolveChannels = options.keepSolveChannels;
             context.region = options.region;
             std::vector<CheckedLsystem> lsystems;
             Program program = check::checkProgram(context, file, source.path(), lsystems);

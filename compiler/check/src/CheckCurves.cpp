@@ -332,7 +332,8 @@ std::vector<CurvesBlock> checkCurves(Context& context, const ast::File& file, co
         }
         if (std::optional<curves::Scene> scene = readScene(context, block, world, cellBudget, limits)) {
             try {
-                out.table = std::make_shared<const SolveTable>(curves::solveScene(*scene, limits, context.curvesSolver));
+                out.table = std::make_shared<const SolveTable>(
+                    curves::solveScene(*scene, limits, context.curvesSolver, context.keepSolveChannels));
                 warnAllAir(context, block, *out.table);
             } catch (const curves::ParameterError& e) {
                 context.diagnostics.error("E0007", block.loc, e.what());

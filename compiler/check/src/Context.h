@@ -20,6 +20,7 @@ struct Context {
     uint64_t pointSetListEntries = 0;
     std::optional<uint32_t> seed; // CheckOptions::seed
     curves::LinearSolver curvesSolver; // CheckOptions::curvesSolver
+    bool keepSolveChannels = false;    // CheckOptions::keepSolveChannels
     std::optional<std::pair<glm::ivec3, glm::ivec3>> region; // CheckOptions::region
 };
 

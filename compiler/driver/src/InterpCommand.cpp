@@ -30,6 +30,7 @@ struct InterpOptions {
     std::string slice;
     std::string region;
     std::string editsPath;
+    std::vector<std::string> dumps; // --dump [BLOCK.]CHANNEL=FILE.npy
     WorldOverrides overrides;
 };
 
@@ -57,11 +58,11 @@ SliceSpec parseSlice(const std::string& text, glm::ivec3 size) {
     return spec;
 }
 
-void interpretFile(const InterpOptions& options) {
+void interpretFile(const InterpOptions& options, std::span<const SolveDump> dumps) {
     std::vector<CheckedLsystem> lsystems;
-    const RegionRun run = planRegionRun(
-        loadProgram(options.file, withRegion(options.overrides, options.region), false, nullptr, &lsystems),
-        options.region);
+    WorldOverrides overrides = withRegion(options.overrides, options.region);
+    overrides.keepSolveChannels = !dumps.empty();
+    const RegionRun run = planRegionRun(loadProgram(options.file, overrides, false, nullptr, &lsystems), options.region);
     const Program& program = run.program;
     const std::vector<Brush> edits =
         options.editsPath.empty() ? std::vector<Brush>{} : loadEdits(options.editsPath, program.materials);
@@ -107,9 +108,11 @@ void interpretFile(const InterpOptions& options) {
     // Solid as the mesh of `voxc run` sees it at its default --iso.
     if (program.usesMaterials()) std::cerr << formatMaterialCounts(program, grid, 0.5f);
     OutputFiles files;
+    writeSolveDumps(files, program, dumps);
     writeGridFiles(files, options.voxelsPath, options.materialsPath, grid);
     files.commit();
     reportWritten({options.voxelsPath, options.materialsPath});
+    for (const SolveDump& dump : dumps) reportWritten({dump.path});
 }
 
 } // namespace
@@ -121,6 +124,7 @@ void addInterpCommand(CLI::App& app) {
     command->add_option("file", options->file, "The .vox file")->required();
     command->add_option("--voxels", options->voxelsPath, "Write the densities as a NumPy .npy file (float32)");
     command->add_option("--materials", options->materialsPath, "Write the material ids as a NumPy .npy file (uint8)");
+    addDumpFlag(*command, options->dumps);
     command->add_flag("--trace", options->trace, "Print every rule firing (iteration, sweep, phase, anchor, rule)");
     command->add_option("--trace-rule", options->filter.rule, "Trace only this rule");
     command->add_option("--trace-grammar", options->filter.grammar, "Trace only this grammar");
@@ -140,9 +144,11 @@ void addInterpCommand(CLI::App& app) {
         if (!options->voxelsPath.empty()) requireExtension(options->voxelsPath, {".npy"}, "voxel file");
         if (!options->materialsPath.empty()) requireExtension(options->materialsPath, {".npy"}, "material file");
         const RolePath inputs[] = {{"the input", options->file}, {"--edits", options->editsPath}};
-        const RolePath outputs[] = {{"--voxels", options->voxelsPath}, {"--materials", options->materialsPath}};
+        const std::vector<SolveDump> dumps = parseSolveDumps(options->dumps);
+        std::vector<RolePath> outputs = dumpOutputs(dumps);
+        outputs.insert(outputs.begin(), {{"--voxels", options->voxelsPath}, {"--materials", options->materialsPath}});
         refuseClashingPaths(inputs, outputs);
-        interpretFile(*options);
+        interpretFile(*options, dumps);
     });
 }
 

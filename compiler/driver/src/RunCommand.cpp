@@ -50,6 +50,7 @@ struct RunOptions {
     std::string editsPath; // --edits: brushes replayed on the host after generation
     std::vector<int> lod;         // levels: one mesh each beside -o
     std::vector<float> lodLayout; // with --lod: -o is the mixed-level mesh around this point
+    std::vector<std::string> dumps; // --dump [BLOCK.]CHANNEL=FILE.npy
     WorldOverrides overrides;
 };
 
@@ -59,8 +60,10 @@ void run(const RunOptions& options) {
         return;
     }
     if (options.file.empty()) throw UserError("run: a .vox file is required");
-    if (options.meshPath.empty() && options.voxelsPath.empty() && options.materialsPath.empty())
-        throw UserError("run: nothing to write; give -o MESH.ply|.obj|.glb, --voxels FILE.npy and/or --materials FILE.npy");
+    const std::vector<SolveDump> dumps = parseSolveDumps(options.dumps);
+    if (options.meshPath.empty() && options.voxelsPath.empty() && options.materialsPath.empty() && dumps.empty())
+        throw UserError("run: nothing to write; give -o MESH.ply|.obj|.glb, --voxels FILE.npy, --materials FILE.npy "
+                        "and/or --dump CHANNEL=FILE.npy");
     if (!options.meshPath.empty()) requireExtension(options.meshPath, {".ply", ".obj", ".glb"}, "mesh file");
     if (!std::isfinite(options.iso)) throw UserError(fmt::format("--iso {}: the surface level must be a finite number", options.iso));
     if (options.meshOn == "device" && !options.region.empty())
@@ -77,10 +80,11 @@ void run(const RunOptions& options) {
     if (!options.materialsPath.empty()) requireExtension(options.materialsPath, {".npy"}, "material file");
     const std::string libraryPath = options.meshPath.ends_with(".obj") ? objMaterialLibraryPath(options.meshPath) : "";
     const RolePath inputs[] = {{"the input", options.file}, {"--edits", options.editsPath}};
-    const RolePath outputs[] = {{"-o", options.meshPath},
-                                {"the material library of -o", libraryPath},
-                                {"--voxels", options.voxelsPath},
-                                {"--materials", options.materialsPath}};
+    std::vector<RolePath> outputs = dumpOutputs(dumps);
+    outputs.insert(outputs.begin(), {{"-o", options.meshPath},
+                                     {"the material library of -o", libraryPath},
+                                     {"--voxels", options.voxelsPath},
+                                     {"--materials", options.materialsPath}});
     refuseClashingPaths(inputs, outputs);
 
     // Kernels compiled by earlier runs (SPIR-V, and the device's pipeline cache) are reused.
@@ -105,6 +109,7 @@ void run(const RunOptions& options) {
         return *device;
     };
     WorldOverrides overrides = options.overrides;
+    overrides.keepSolveChannels = !dumps.empty();
     std::string multigridDevice; // the device's name once a multigrid ran there
     if (options.solveOn != "host")
         overrides.curvesSolver = [&](const std::string& name, const std::vector<uint8_t>& fixed,
@@ -160,6 +165,7 @@ void run(const RunOptions& options) {
 
     // Every file is written in full before any of them replaces what the user had.
     OutputFiles files;
+    writeSolveDumps(files, program, dumps);
     if (!options.voxelsPath.empty() || !options.materialsPath.empty() || program.usesMaterials()) {
         const DenseGrid dense = voxels.toDense();
         if (program.usesMaterials()) status() << formatMaterialCounts(program, dense, options.iso);
@@ -206,6 +212,7 @@ void run(const RunOptions& options) {
     }
     times.time("write", [&] { files.commit(); });
     reportWritten({options.voxelsPath, options.materialsPath});
+    for (const SolveDump& dump : dumps) reportWritten({dump.path});
     status() << meshReport;
     if (options.validate) {
         const std::vector<ValidationMessage> messages = context.validationMessages();
@@ -228,6 +235,7 @@ void addRunCommand(CLI::App& app) {
     command->add_option("-o,--output", options->meshPath, "Mesh to write (.ply binary, .obj or .glb)");
     command->add_option("--voxels", options->voxelsPath, "Also write the densities as a NumPy .npy file (float32)");
     command->add_option("--materials", options->materialsPath, "Also write the material ids as a NumPy .npy file (uint8)");
+    addDumpFlag(*command, options->dumps);
     command->add_option("--device", options->device, "auto (default: a GPU if present), lavapipe, gpu, or an index");
     command->add_option("--iso", options->iso, "Surface level for meshing (default 0.5)");
     command->add_option("--mesher", options->mesher, "mc (marching cubes, manifold; the default) or surface-nets")

@@ -117,13 +117,18 @@ void writeArray(OutputFiles& outputs, const std::string& path, glm::ivec3 shape,
 
 } // namespace
 
-void writeNpy(OutputFiles& outputs, const std::string& path, const DenseGrid& grid) {
-    // C order puts z fastest, the transpose of DenseGrid's x-fastest storage.
-    std::vector<float> values(size_t(grid.size().z));
-    writeArray(outputs, path, grid.size(), "<f4", [&](int x, int y, std::ostream& out) {
-        for (int z = 0; z < grid.size().z; ++z) values[size_t(z)] = grid.at({x, y, z});
-        out.write(reinterpret_cast<const char*>(values.data()), std::streamsize(values.size() * sizeof(float)));
+void writeFloatNpy(OutputFiles& outputs, const std::string& path, glm::ivec3 size, std::span<const float> values) {
+    VOXC_ASSERT(values.size() == size_t(size.x) * size_t(size.y) * size_t(size.z));
+    // C order puts z fastest, the transpose of the x-fastest storage.
+    std::vector<float> row(size_t(size.z));
+    writeArray(outputs, path, size, "<f4", [&](int x, int y, std::ostream& out) {
+        for (int z = 0; z < size.z; ++z) row[size_t(z)] = values[size_t(x) + size_t(size.x) * (size_t(y) + size_t(size.y) * size_t(z))];
+        out.write(reinterpret_cast<const char*>(row.data()), std::streamsize(row.size() * sizeof(float)));
     });
+}
+
+void writeNpy(OutputFiles& outputs, const std::string& path, const DenseGrid& grid) {
+    writeFloatNpy(outputs, path, grid.size(), grid.data());
 }
 
 void writeNpy(const std::string& path, const DenseGrid& grid) {

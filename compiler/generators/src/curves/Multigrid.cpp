@@ -1,5 +1,7 @@
 #include "voxc/generators/curves/Multigrid.h"
 
+#include "Parallel.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -32,30 +34,91 @@ void forNeighbours(const Box& b, int32_t x, int32_t y, int32_t z, Visit&& visit)
     if (z + 1 < b.size.z) visit(i + slice, 2);
 }
 
-// Red-black Gauss-Seidel half sweep: u_i = (sum_j w_j u_j - f_i) / sum_j w_j, both sums from 0
-// in neighbour order (on the finest level w = 1: the plain neighbour sum over the count).
-void smoothColour(Level& level, int32_t colour) {
-    const Box& b = level.box;
-    for (size_t c = 0; c < level.u.size(); ++c) {
-        std::vector<float>& u = level.u[c];
-        const std::vector<float>& f = level.f[c];
-        for (int32_t z = 0; z < b.size.z; ++z)
-            for (int32_t y = 0; y < b.size.y; ++y)
-                for (int32_t x = (y + z + colour) & 1; x < b.size.x; x += 2) {
-                    const size_t i = b.index(x, y, z);
-                    if (level.fixed[i]) continue;
-                    float sum = 0.0f, weights = 0.0f;
-                    forNeighbours(b, x, y, z, [&](size_t j, int32_t axis) {
-                        sum += level.weight[axis] * u[j];
-                        weights += level.weight[axis];
-                    });
-                    if (weights > 0.0f) u[i] = (sum - f[i]) / weights;
-                }
+// The row loops below compute, for the cells 1..n-2 of a row (both x neighbours inside), the
+// same float expression as the per-cell loop, term by term in neighbour order, into a scratch row
+// the compiler vectorises; the two end cells take the per-cell path. A neighbour row outside the
+// box contributes an exact +0 instead of being skipped: a sum that starts at +0 is never -0 (x + y
+// is -0 only when both are), and s + (+0) = s for every s that is not -0, so the sums, and with
+// them every bit, equal those of the loop that skips it.
+
+// Slices of at least this many cells are split between two threads (order-free passes only).
+constexpr int32_t kMinSlicesForThreads = 16;
+
+// A row's own values and its four y/z neighbour rows (`absent` where outside the box).
+struct RowNeighbours {
+    const float *ym, *yp, *zm, *zp;
+};
+RowNeighbours rowNeighbours(const Box& b, const float* u, int32_t y, int32_t z, const float* absent) {
+    const size_t row = size_t(b.size.x), slice = row * size_t(b.size.y), i = b.index(0, y, z);
+    return {y > 0 ? u + i - row : absent, y + 1 < b.size.y ? u + i + row : absent, z > 0 ? u + i - slice : absent,
+            z + 1 < b.size.z ? u + i + slice : absent};
+}
+
+// out[x] = (sum_j w_j u_j - rhs[x]) / weights for x in [1, n - 1), the sum from 0 in neighbour
+// order. Plain arguments and restrict pointers let the compiler vectorise it (elementwise only:
+// no operation is reordered).
+void relaxRow(const float* __restrict centre, const float* __restrict ym, const float* __restrict yp,
+              const float* __restrict zm, const float* __restrict zp, const float* __restrict rhs, float wx, float wy,
+              float wz, float weights, int32_t n, float* __restrict out) {
+    for (int32_t x = 1; x + 1 < n; ++x) {
+        float sum = 0.0f;
+        sum += wx * centre[x - 1];
+        sum += wx * centre[x + 1];
+        sum += wy * ym[x];
+        sum += wy * yp[x];
+        sum += wz * zm[x];
+        sum += wz * zp[x];
+        out[x] = (sum - rhs[x]) / weights;
     }
 }
 
-void smooth(Level& level, int32_t sweeps) {
-    for (int32_t s = 0; s < sweeps; ++s) smoothColour(level, 0), smoothColour(level, 1);
+// Red-black Gauss-Seidel half sweep: u_i = (sum_j w_j u_j - f_i) / sum_j w_j, both sums from 0
+// in neighbour order (on the finest level w = 1: the plain neighbour sum over the count). A
+// colour's cells read only the other colour, so slices may run in any order.
+void smoothColour(Level& level, int32_t colour, bool zeroRhs) {
+    const Box& b = level.box;
+    const int32_t n = b.size.x;
+    const float wx = level.weight.x, wy = level.weight.y, wz = level.weight.z;
+    const std::vector<float> zeros(size_t(n), 0.0f);
+    for (size_t c = 0; c < level.u.size(); ++c) {
+        float* u = level.u[c].data();
+        const float* f = zeroRhs ? zeros.data() : level.f[c].data();
+        forTwoSlabs(b.size.z, kMinSlicesForThreads, [&](int32_t z0, int32_t z1) {
+            std::vector<float> relaxed(size_t(n), 0.0f);
+            for (int32_t z = z0; z < z1; ++z)
+                for (int32_t y = 0; y < b.size.y; ++y) {
+                    const size_t i0 = b.index(0, y, z);
+                    const float* rhs = zeroRhs ? zeros.data() : f + i0;
+                    const RowNeighbours r = rowNeighbours(b, u, y, z, zeros.data());
+                    // Weights of the present neighbours, in neighbour order.
+                    float weights = 0.0f;
+                    weights += wx, weights += wx;
+                    if (y > 0) weights += wy;
+                    if (y + 1 < b.size.y) weights += wy;
+                    if (z > 0) weights += wz;
+                    if (z + 1 < b.size.z) weights += wz;
+                    relaxRow(u + i0, r.ym, r.yp, r.zm, r.zp, rhs, wx, wy, wz, weights, n, relaxed.data());
+                    const uint8_t* fixed = level.fixed.data() + i0;
+                    for (int32_t x = (y + z + colour) & 1; x < n; x += 2) {
+                        if (fixed[x]) continue;
+                        if (x > 0 && x + 1 < n) {
+                            u[i0 + size_t(x)] = relaxed[size_t(x)];
+                            continue;
+                        }
+                        float sum = 0.0f, total = 0.0f;
+                        forNeighbours(b, x, y, z, [&](size_t j, int32_t axis) {
+                            sum += level.weight[axis] * u[j];
+                            total += level.weight[axis];
+                        });
+                        if (total > 0.0f) u[i0 + size_t(x)] = (sum - rhs[x]) / total;
+                    }
+                }
+        });
+    }
+}
+
+void smooth(Level& level, int32_t sweeps, bool zeroRhs) {
+    for (int32_t s = 0; s < sweeps; ++s) smoothColour(level, 0, zeroRhs), smoothColour(level, 1, zeroRhs);
 }
 
 // r = f - sum_j w_j (u_j - u_i) on free cells (the caller skips fixed ones).
@@ -64,6 +127,42 @@ float residualAt(const Level& level, const std::vector<float>& u, float f, int32
     float lap = 0.0f;
     forNeighbours(level.box, x, y, z, [&](size_t j, int32_t axis) { lap += level.weight[axis] * (u[j] - u[i]); });
     return f - lap;
+}
+
+// out[x] = rhs[x] - sum_j w_j (u_j - u_i) for x in [1, n - 1) (rhs null: 0), the sum from 0 in
+// neighbour order; vectorisable like relaxRow.
+void laplaceResidualRow(const float* __restrict u, const float* __restrict ym, const float* __restrict yp,
+                        const float* __restrict zm, const float* __restrict zp, const float* __restrict rhs, float wx,
+                        float wy, float wz, int32_t n, float* __restrict out) {
+    for (int32_t x = 1; x + 1 < n; ++x) {
+        const float centre = u[x];
+        float lap = 0.0f;
+        lap += wx * (u[x - 1] - centre);
+        lap += wx * (u[x + 1] - centre);
+        lap += wy * (ym[x] - centre);
+        lap += wy * (yp[x] - centre);
+        lap += wz * (zm[x] - centre);
+        lap += wz * (zp[x] - centre);
+        out[x] = (rhs ? rhs[x] : 0.0f) - lap;
+    }
+}
+
+// The residuals of row (y, z) into out[0..n): f - sum_j w_j (u_j - u_i) at free cells, 0 at fixed
+// ones; f is 0 where `rhs` is null. An absent neighbour row is the row itself (u_j - u_i = +0).
+void residualRow(const Level& level, const std::vector<float>& values, const float* rhs, int32_t y, int32_t z,
+                 float* out) {
+    const Box& b = level.box;
+    const int32_t n = b.size.x;
+    const size_t i0 = b.index(0, y, z);
+    const float* u = values.data() + i0;
+    const RowNeighbours r = rowNeighbours(b, values.data(), y, z, u);
+    laplaceResidualRow(u, r.ym, r.yp, r.zm, r.zp, rhs ? rhs + i0 : nullptr, level.weight.x, level.weight.y,
+                       level.weight.z, n, out);
+    out[0] = residualAt(level, values, rhs ? rhs[i0] : 0.0f, 0, y, z);
+    if (n > 1) out[n - 1] = residualAt(level, values, rhs ? rhs[i0 + size_t(n - 1)] : 0.0f, n - 1, y, z);
+    const uint8_t* fixed = level.fixed.data() + i0;
+    for (int32_t x = 0; x < n; ++x)
+        if (fixed[x]) out[x] = 0.0f;
 }
 
 // Which axes the next level halves (ceil): every axis of >= 2 cells while the longest has >= 8;
@@ -101,9 +200,51 @@ void restrictMean(const Level& fine, const Box& coarse, bool onlyFixed, Value&& 
         if (count[p] > 0) out[p] = sum[p] / float(count[p]);
 }
 
+// The child cells of coarse index p along an axis of n fine cells: {2p, 2p + 1} (the second
+// only inside) where the axis is halved, {p} where it is kept.
+struct Children {
+    int32_t first, count;
+};
+Children childrenOf(int32_t p, int32_t n, int32_t halved) {
+    return halved ? Children{2 * p, std::min(2, n - 2 * p)} : Children{p, 1};
+}
+
+// The coarse right-hand side: per coarse cell the mean of its children's residuals (0 at fixed
+// children), summed in z, y, x order like restrictMean, with the coarse correction reset to 0.
+// Coarse slices are independent, so two threads give the same bits.
+void restrictResidual(const Level& fine, size_t c, bool zeroRhs, Level& coarse) {
+    const Box& b = fine.box;
+    const glm::ivec3 halved = halvedAxes(b);
+    const Box& cb = coarse.box;
+    const float* rhs = zeroRhs ? nullptr : fine.f[c].data();
+    std::vector<float>& out = coarse.f[c];
+    forTwoSlabs(cb.size.z, kMinSlicesForThreads, [&](int32_t z0, int32_t z1) {
+        std::vector<float> residual(size_t(b.size.x)), sum(size_t(cb.size.x));
+        std::vector<int32_t> count(size_t(cb.size.x));
+        for (int32_t pz = z0; pz < z1; ++pz)
+            for (int32_t py = 0; py < cb.size.y; ++py) {
+                std::fill(sum.begin(), sum.end(), 0.0f);
+                std::fill(count.begin(), count.end(), 0);
+                const Children cz = childrenOf(pz, b.size.z, halved.z), cy = childrenOf(py, b.size.y, halved.y);
+                for (int32_t z = cz.first; z < cz.first + cz.count; ++z)
+                    for (int32_t y = cy.first; y < cy.first + cy.count; ++y) {
+                        residualRow(fine, fine.u[c], rhs, y, z, residual.data());
+                        for (int32_t px = 0; px < cb.size.x; ++px) {
+                            const Children cx = childrenOf(px, b.size.x, halved.x);
+                            for (int32_t x = cx.first; x < cx.first + cx.count; ++x) sum[size_t(px)] += residual[size_t(x)];
+                            count[size_t(px)] += cx.count;
+                        }
+                    }
+                const size_t p0 = cb.index(0, py, pz);
+                for (int32_t px = 0; px < cb.size.x; ++px) out[p0 + size_t(px)] = sum[size_t(px)] / float(count[size_t(px)]);
+            }
+    });
+}
+
 // Trilinear cell-centred interpolation of coarse values at every free fine cell, along x, then
 // y, then z: on a halved axis weights 3/4 (own parent) and 1/4 (the next parent towards the
-// child, clamped at the box), on a kept axis 1 and 0; added to or written into u.
+// child, clamped at the box), on a kept axis 1 and 0; added to or written into u. Pointwise, so
+// two threads give the same bits.
 void prolong(const Box& coarse, const std::vector<float>& e, const Level& fine, std::vector<float>& u, bool add) {
     const Box& b = fine.box;
     const glm::ivec3 halved = halvedAxes(b);
@@ -112,53 +253,68 @@ void prolong(const Box& coarse, const std::vector<float>& e, const Level& fine, 
     };
     const float near[3] = {halved.x ? 0.75f : 1.0f, halved.y ? 0.75f : 1.0f, halved.z ? 0.75f : 1.0f};
     const float far[3] = {1.0f - near[0], 1.0f - near[1], 1.0f - near[2]};
-    for (int32_t z = 0; z < b.size.z; ++z)
-        for (int32_t y = 0; y < b.size.y; ++y)
-            for (int32_t x = 0; x < b.size.x; ++x) {
-                const size_t i = b.index(x, y, z);
-                if (fine.fixed[i]) continue;
-                const glm::ivec3 p = parentOf(halved, x, y, z);
-                const int32_t xs[2] = {p.x, other(x, coarse.size.x, halved.x)}, ys[2] = {p.y, other(y, coarse.size.y, halved.y)},
-                              zs[2] = {p.z, other(z, coarse.size.z, halved.z)};
-                float alongY[2];
-                for (int32_t k = 0; k < 2; ++k) {
-                    float alongX[2];
-                    for (int32_t j = 0; j < 2; ++j)
-                        alongX[j] = near[0] * e[coarse.index(xs[0], ys[j], zs[k])] + far[0] * e[coarse.index(xs[1], ys[j], zs[k])];
-                    alongY[k] = near[1] * alongX[0] + far[1] * alongX[1];
+    // Per fine x: the own and the other parent column.
+    std::vector<int32_t> xs0(size_t(b.size.x)), xs1(size_t(b.size.x));
+    for (int32_t x = 0; x < b.size.x; ++x) xs0[size_t(x)] = x >> halved.x, xs1[size_t(x)] = other(x, coarse.size.x, halved.x);
+    forTwoSlabs(b.size.z, kMinSlicesForThreads, [&](int32_t z0, int32_t z1) {
+        for (int32_t z = z0; z < z1; ++z)
+            for (int32_t y = 0; y < b.size.y; ++y) {
+                const int32_t ys[2] = {y >> halved.y, other(y, coarse.size.y, halved.y)};
+                const int32_t zs[2] = {z >> halved.z, other(z, coarse.size.z, halved.z)};
+                const float* rows[2][2]; // [k][j]: coarse row (ys[j], zs[k])
+                for (int32_t k = 0; k < 2; ++k)
+                    for (int32_t j = 0; j < 2; ++j) rows[k][j] = e.data() + coarse.index(0, ys[j], zs[k]);
+                const size_t i0 = b.index(0, y, z);
+                const uint8_t* fixed = fine.fixed.data() + i0;
+                float* out = u.data() + i0;
+                for (int32_t x = 0; x < b.size.x; ++x) {
+                    if (fixed[x]) continue;
+                    const int32_t x0 = xs0[size_t(x)], x1 = xs1[size_t(x)];
+                    float alongY[2];
+                    for (int32_t k = 0; k < 2; ++k) {
+                        const float alongX0 = near[0] * rows[k][0][x0] + far[0] * rows[k][0][x1];
+                        const float alongX1 = near[0] * rows[k][1][x0] + far[0] * rows[k][1][x1];
+                        alongY[k] = near[1] * alongX0 + far[1] * alongX1;
+                    }
+                    const float v = near[2] * alongY[0] + far[2] * alongY[1];
+                    out[x] = add ? out[x] + v : v;
                 }
-                const float v = near[2] * alongY[0] + far[2] * alongY[1];
-                u[i] = add ? u[i] + v : v;
             }
+    });
 }
 
+// One V(3,3) cycle from level l down; the finest level's right-hand side is 0 (zeroRhs).
 void vCycle(std::vector<Level>& levels, size_t l) {
     Level& level = levels[l];
-    if (l + 1 == levels.size()) return smooth(level, kCoarsestSweeps);
-    smooth(level, kPreSmooth);
+    const bool zeroRhs = l == 0;
+    if (l + 1 == levels.size()) return smooth(level, kCoarsestSweeps, zeroRhs);
+    smooth(level, kPreSmooth, zeroRhs);
     Level& coarse = levels[l + 1];
     for (size_t c = 0; c < level.u.size(); ++c) {
-        restrictMean(level, coarse.box, false,
-                     [&](int32_t x, int32_t y, int32_t z, size_t i) {
-                         return level.fixed[i] ? 0.0f : residualAt(level, level.u[c], level.f[c][i], x, y, z);
-                     },
-                     coarse.f[c]);
+        restrictResidual(level, c, zeroRhs, coarse);
         std::fill(coarse.u[c].begin(), coarse.u[c].end(), 0.0f);
     }
     vCycle(levels, l + 1);
     for (size_t c = 0; c < level.u.size(); ++c) prolong(coarse.box, coarse.u[c], level, level.u[c], true);
-    smooth(level, kPostSmooth);
+    smooth(level, kPostSmooth, zeroRhs);
 }
 
+// max over free cells and components of |r| with f = 0 (a max is order-free: two threads give
+// the same value).
 float maxResidualOf(const Level& level) {
-    float worst = 0.0f;
     const Box& b = level.box;
-    for (const std::vector<float>& u : level.u)
-        for (int32_t z = 0; z < b.size.z; ++z)
-            for (int32_t y = 0; y < b.size.y; ++y)
-                for (int32_t x = 0; x < b.size.x; ++x)
-                    if (!level.fixed[b.index(x, y, z)]) worst = std::max(worst, std::abs(residualAt(level, u, 0.0f, x, y, z)));
-    return worst;
+    float worst[2] = {0.0f, 0.0f};
+    forTwoSlabs(b.size.z, kMinSlicesForThreads, [&](int32_t z0, int32_t z1) {
+        std::vector<float> residual(size_t(b.size.x));
+        float& w = worst[z0 == 0 ? 0 : 1];
+        for (const std::vector<float>& u : level.u)
+            for (int32_t z = z0; z < z1; ++z)
+                for (int32_t y = 0; y < b.size.y; ++y) {
+                    residualRow(level, u, nullptr, y, z, residual.data());
+                    for (float r : residual) w = std::max(w, std::abs(r));
+                }
+    });
+    return std::max(worst[0], worst[1]);
 }
 
 } // namespace
@@ -231,7 +387,7 @@ SolveReport solveLaplace(const std::string& name, const std::vector<uint8_t>& fi
             levels[l].f.emplace_back(levels[l].box.cellCount(), 0.0f);
         }
     }
-    smooth(levels.back(), kCoarsestSweeps);
+    smooth(levels.back(), kCoarsestSweeps, levels.size() == 1);
     for (size_t l = levels.size() - 1; l-- > 0;) {
         for (size_t c = 0; c < components.size(); ++c) prolong(levels[l + 1].box, levels[l + 1].u[c], levels[l], levels[l].u[c], false);
         vCycle(levels, l);

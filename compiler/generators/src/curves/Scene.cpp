@@ -1,10 +1,14 @@
 #include "voxc/generators/curves/Scene.h"
 
+#include "Parallel.h"
+
 #include "voxc/builtins/Functions.h"
+#include "voxc/builtins/Intervals.h"
 #include "voxc/core/Errors.h"
 
 #include <algorithm>
 #include <array>
+#include <glm/common.hpp>
 #include <chrono>
 #include <cmath>
 
@@ -19,41 +23,106 @@ bool namesMaterial(const std::vector<FeatureCurve>& curves) {
     return false;
 }
 
+// Where the noise displacement cannot change the density. The density clamp(0.5 - (S' - D) / 2,
+// 0, 1) is 0 whenever the float d = S' - D is >= 1 and 1 whenever d <= -1 (d / 2 is exact and
+// 0.5 - 0.5 rounds to +0, so the clamp returns the same bits as for any d past the bound). The
+// float D = fl(alpha * w) has |D| <= |alpha| * |w| * (1 + 2^-24), and warped_fbm's range rule
+// (voxc/builtins/Intervals.h: it bounds the interpreter's float result, rounding included) bounds
+// |w| by W(r) for every roughness <= r. So with bound = |alpha| * W(r) * (1 + 2^-23) (the extra
+// 2^-24 covers the double arithmetic here, which is exact to 1e-16), S' >= 1 + bound gives
+// d >= 1 (rounding is monotone and 1 is a float) and S' <= -1 - bound gives d <= -1: such cells
+// take the saturated value without evaluating the noise. W is tabulated for roughness up to
+// b / kBuckets; a cell uses the bucket at or above its roughness.
+class DisplacementBand {
+public:
+    static constexpr int32_t kBuckets = 64;
+
+    DisplacementBand(const Box& box, float frequency, uint32_t seed) {
+        const RangeRule rule = rangeRule("warped_fbm");
+        VOXC_ASSERT(rule != nullptr);
+        Interval args[5];
+        // p = float(voxel) * f0 lies between the rounded products at the box corners (f0 >= 0).
+        const glm::dvec3 lo = glm::dvec3(glm::vec3(box.min) * frequency);
+        const glm::dvec3 hi = glm::dvec3(glm::vec3(box.min + box.size - 1) * frequency);
+        args[0] = Interval{Type::Vec3, glm::min(lo, hi), glm::max(lo, hi), false};
+        args[2] = args[3] = Interval::point(Type::Float, glm::dvec3(0.0));
+        args[4] = Interval::point(Type::Int, glm::dvec3(double(seed)));
+        for (int32_t b = 0; b <= kBuckets; ++b) {
+            args[1] = Interval{Type::Float, glm::dvec3(-1.0), glm::dvec3(double(b) / kBuckets), false};
+            const Interval w = rule(std::span<const Interval>(args));
+            const double bound = std::max(std::fabs(w.lo.x), std::fabs(w.hi.x));
+            bound_[size_t(b)] = std::isfinite(bound) ? bound * (1.0 + 0x1p-23) : INFINITY;
+        }
+    }
+
+    // The saturated density of a cell, or -1 where the noise must be evaluated.
+    float saturated(float smoothed, float alpha, float roughness) const {
+        if (!(roughness >= -1.0f && roughness <= 1.0f)) return -1.0f;
+        const double bound = std::fabs(double(alpha)) * bound_[size_t(std::ceil(std::max(0.0, double(roughness) * kBuckets)))];
+        if (double(smoothed) >= 1.0 + bound) return 0.0f;
+        if (double(smoothed) <= -1.0 - bound) return 1.0f;
+        return -1.0f;
+    }
+
+private:
+    std::array<double, kBuckets + 1> bound_{};
+};
+
 } // namespace
 
-SolveTable solveScene(const Scene& scene, const Limits& limits, const LinearSolver& solver) {
-    const Result solved = runCurves(scene.curves, scene.box, scene.options, limits, solver);
+SolveTable solveScene(const Scene& scene, const Limits& limits, const LinearSolver& solver, bool keepChannels) {
+    Result solved = runCurves(scene.curves, scene.box, scene.options, limits, solver);
     const auto densityStart = std::chrono::steady_clock::now();
     // The builtin's own evaluation, so the displacement is the function a field would call.
     const FunctionInfo* warped = findFunction("warped_fbm");
     VOXC_ASSERT(warped != nullptr);
     const Box& box = scene.box;
+    const DisplacementBand band(box, scene.noiseFrequency, scene.noiseSeed);
     SolveTable table;
     table.min = box.min;
     table.size = box.size;
     table.density.resize(box.cellCount());
     const bool materials = namesMaterial(scene.curves);
     if (materials) table.material.resize(box.cellCount());
-    for (int32_t z = 0; z < box.size.z; ++z)
-        for (int32_t y = 0; y < box.size.y; ++y)
-            for (int32_t x = 0; x < box.size.x; ++x) {
-                const size_t i = box.index(x, y, z);
-                const float s = solved.smoothed.values[i];
-                const float alpha = solved.amplitude.values[i];
-                float displacement = 0.0f;
-                if (alpha != 0.0f) {
-                    const glm::vec3 p = glm::vec3(box.min + glm::ivec3(x, y, z)) * scene.noiseFrequency;
-                    const std::array<Value, 5> args{Value::makeVec3(p), Value::makeFloat(solved.roughness.values[i]),
-                                                    Value::makeFloat(0.0f), Value::makeFloat(0.0f),
-                                                    Value::makeInt(int32_t(scene.noiseSeed))};
-                    displacement = alpha * warped->eval(args).v.x;
+    std::vector<float> displacements(keepChannels ? box.cellCount() : 0, 0.0f);
+    // Pointwise: each cell's value depends on that cell alone, so two threads give the same bits.
+    forTwoSlabs(box.size.z, 8, [&](int32_t z0, int32_t z1) {
+        for (int32_t z = z0; z < z1; ++z)
+            for (int32_t y = 0; y < box.size.y; ++y)
+                for (int32_t x = 0; x < box.size.x; ++x) {
+                    const size_t i = box.index(x, y, z);
+                    const float s = solved.smoothed.values[i];
+                    const float alpha = solved.amplitude.values[i];
+                    // With keepChannels every cell's displacement is evaluated (the dump shows it), and
+                    // the densities are the same bits (DisplacementBand).
+                    float density = keepChannels ? -1.0f : band.saturated(s, alpha, solved.roughness.values[i]);
+                    if (density < 0.0f) {
+                        float displacement = 0.0f;
+                        if (alpha != 0.0f) {
+                            const glm::vec3 p = glm::vec3(box.min + glm::ivec3(x, y, z)) * scene.noiseFrequency;
+                            const std::array<Value, 5> args{Value::makeVec3(p), Value::makeFloat(solved.roughness.values[i]),
+                                                            Value::makeFloat(0.0f), Value::makeFloat(0.0f),
+                                                            Value::makeInt(int32_t(scene.noiseSeed))};
+                            displacement = alpha * warped->eval(args).v.x;
+                        }
+                        if (keepChannels) displacements[i] = displacement;
+                        const float d = s - displacement;
+                        // +infinity: no seed reaches the cell, so it is air.
+                        density = d < INFINITY ? std::clamp(0.5f - d / 2.0f, 0.0f, 1.0f) : 0.0f;
+                    }
+                    table.density[i] = density;
+                    if (materials && density >= 0.5f) table.material[i] = uint8_t(solved.material.material[i]);
                 }
-                const float d = s - displacement;
-                // +infinity: no seed reaches the cell, so it is air.
-                const float density = d < INFINITY ? std::clamp(0.5f - d / 2.0f, 0.0f, 1.0f) : 0.0f;
-                table.density[i] = density;
-                if (materials && density >= 0.5f) table.material[i] = uint8_t(solved.material.material[i]);
-            }
+    });
+    if (keepChannels) {
+        std::vector<float> material(box.cellCount()), confidence = std::move(solved.material.confidence.values);
+        for (size_t i = 0; i < material.size(); ++i) material[i] = float(solved.material.material[i]);
+        table.channels = {{"normal_x", std::move(solved.normalX.values)},  {"normal_y", std::move(solved.normalY.values)},
+                          {"normal_z", std::move(solved.normalZ.values)},  {"amplitude", std::move(solved.amplitude.values)},
+                          {"roughness", std::move(solved.roughness.values)}, {"material", std::move(material)},
+                          {"confidence", std::move(confidence)},         {"distance", std::move(solved.surface.distance.values)},
+                          {"smoothed", std::move(solved.smoothed.values)}, {"displacement", std::move(displacements)}};
+    }
     table.phaseMs = solved.phaseMs;
     table.phaseMs.emplace_back(
         "density", std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - densityStart).count());

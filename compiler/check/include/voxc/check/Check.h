@@ -63,6 +63,8 @@ struct CheckOptions {
     // How curves blocks run their linear solves (normals, noise parameters): empty, the host's
     // multigrid; `voxc run` passes the same schedule on its Vulkan device (voxc/vulkan/GpuMultigrid.h).
     curves::LinearSolver curvesSolver;
+    // Keep each curves block's intermediate channels in its table (SolveTable::channels; `--dump`).
+    bool keepSolveChannels = false;
     // `--region`: the box of the world (world voxels, min and max with max excluded) a run will
     // compute. The world may then exceed Limits::maxVoxels: what must fit is the box grown by the
     // pipeline's halo (voxc/stages/Region.h), clipped to the world (E0014 otherwise), and the work

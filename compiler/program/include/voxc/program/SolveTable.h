@@ -40,6 +40,9 @@ struct SolveTable {
     std::string source = "curves"; // the block kind that made it: "curves" or "terrain"
     std::string notes;             // what the solve did besides `solves`, for reports (may be empty)
     std::shared_ptr<const TerrainMaps> terrainMaps; // terrain blocks only
+    // The solve's intermediate channels by name (curves: docs/curves.md "Dumping channels"), each
+    // in `density`'s order, kept only when the check asks (CheckOptions::keepSolveChannels).
+    std::vector<std::pair<std::string, std::vector<float>>> channels;
     // Wall time of the solve's parts in order (curves: voxelize, normals, parameters, material,
     // surface, smoothing, density), for benchmarks; never printed, nothing depends on it.
     std::vector<std::pair<std::string, double>> phaseMs;

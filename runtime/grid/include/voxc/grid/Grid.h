@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <string>
+#include <span>
 #include <vector>
 
 namespace voxc {
@@ -80,6 +81,8 @@ private:
 void writeNpy(const std::string& path, const DenseGrid& grid);
 void writeNpy(OutputFiles& outputs, const std::string& path, const DenseGrid& grid);
 DenseGrid readNpy(const std::string& path); // materials all kMaterialNone
+// Any float32 box in DenseGrid's order (x fastest; values.size() = sx*sy*sz), written the same way.
+void writeFloatNpy(OutputFiles& outputs, const std::string& path, glm::ivec3 size, std::span<const float> values);
 
 // The material channel as NumPy .npy, uint8 ('|u1'), same shape and order. Written atomically.
 void writeMaterialNpy(const std::string& path, const DenseGrid& grid);

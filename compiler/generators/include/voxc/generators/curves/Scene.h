@@ -21,6 +21,13 @@ struct Scene {
 // propagated one where the density is >= 0.5, else 0, and is left empty when no constraint
 // point names a material. Throws ParameterError, LimitError and ConvergenceError. The linear
 // solves run through `solver` (empty: the host's solveLaplace).
-SolveTable solveScene(const Scene& scene, const Limits& limits, const LinearSolver& solver = {});
+// With keepChannels, the table also holds the solve's channels (SolveTable::channels):
+// normal_x, normal_y, normal_z (normalised), amplitude, roughness, material (the propagated id,
+// every cell), confidence, distance (raw S, +infinity where no seed reaches), smoothed (S') and
+// displacement (D). The noise displacement is then evaluated at every cell; otherwise only where
+// it can change the density (a band around S' = 0 bounded by warped_fbm's range), with the same
+// densities bit for bit.
+SolveTable solveScene(const Scene& scene, const Limits& limits, const LinearSolver& solver = {},
+                      bool keepChannels = false);
 
 } // namespace voxc::curves

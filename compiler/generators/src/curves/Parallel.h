@@ -1,0 +1,21 @@
+#pragma once
+// Splits the z slices of a box between two threads for passes whose per-cell results do not
+// depend on the order cells are visited (pointwise maps, one red-black colour), so the result is
+// the same bits as one thread's loop.
+#include <cstdint>
+#include <thread>
+
+namespace voxc::curves {
+
+// Calls slab(z0, z1) for [0, mid) on a second thread and [mid, count) on this one; small counts
+// (under `minimum`) run on this thread alone. `slab` must only write cells of its own slices.
+template <typename Slab>
+void forTwoSlabs(int32_t count, int32_t minimum, Slab&& slab) {
+    if (count < minimum || count < 2) return slab(0, count);
+    const int32_t mid = count / 2;
+    std::thread other([&] { slab(0, mid); });
+    slab(mid, count);
+    other.join();
+}
+
+} // namespace voxc::curves
