@@ -101,17 +101,18 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
     std::vector<std::string> lsystemNames;
     for (const ast::Block& block : file.blocks)
         if (block.kind == "lsystem" && block.label) lsystemNames.push_back(*block.label);
-    program.fields = checkFields(context, file, grammarNames);
-    CheckedFeatures features = checkFeatures(context, file, grammarNames, program.world, lsystems);
-    for (Field& feature : features.fields) program.fields.push_back(std::move(feature));
     std::vector<std::string> stageNames = grammarNames;
     for (const ast::FieldDecl& field : file.fields) stageNames.push_back(field.name);
     for (const ast::FeatureDecl& feature : file.features) stageNames.push_back(feature.name);
     program.curves = checkCurves(context, file, program.world, stageNames);
-    // Terrain blocks are solve blocks too: their tables run on the curves stage kind.
+    // Terrain blocks are solve blocks too: their tables run on the curves stage kind. They are
+    // generated before the fields are lowered, which may sample their maps (context.maps).
     for (const CurvesBlock& block : program.curves) stageNames.push_back(block.name);
     for (CurvesBlock& block : checkTerrains(context, file, program.world, stageNames))
         program.curves.push_back(std::move(block));
+    program.fields = checkFields(context, file, grammarNames);
+    CheckedFeatures features = checkFeatures(context, file, grammarNames, program.world, lsystems);
+    for (Field& feature : features.fields) program.fields.push_back(std::move(feature));
     for (const CurvesBlock& block : program.curves) {
         context.curvesNames.push_back(block.name);
         context.curvesKinds.push_back(block.table ? block.table->source : "solve");

@@ -291,11 +291,13 @@ Lowered FieldLowering::lowerCall(const ast::Expr& expr, Scope& scope) {
     std::vector<Lowered> args;
     for (const auto& operand : expr.operands) args.push_back(lower(*operand, scope));
     if (auto it = functions_.find(expr.name); it != functions_.end()) return callUser(*it->second, expr, std::move(args));
+    if (auto it = context_.maps.find(expr.name); it != context_.maps.end()) return sampleMap(it->second, expr, std::move(args));
     if (findFunction(expr.name)) return callBuiltin(expr.name, std::move(args), expr.loc, expr.name);
     std::vector<std::string_view> known;
     if (errorsStillShown(context_.diagnostics)) {
         for (const FunctionInfo& f : functions()) known.push_back(f.name);
         for (const auto& entry : functions_) known.push_back(entry.first);
+        for (const auto& entry : context_.maps) known.push_back(entry.first);
     }
     context_.diagnostics.error("E0002", expr.nameLoc,
                                fmt::format("unknown function '{}'{}", expr.name, didYouMean(expr.name, known)));
@@ -348,6 +350,39 @@ Lowered FieldLowering::callUser(const ast::FunctionDecl& function, const ast::Ex
     // A body cut short by the step limit is not memoised: it was not really lowered.
     if (!exhausted()) inlined_.emplace(std::move(key), result);
     return result;
+}
+
+Lowered FieldLowering::sampleMap(const std::shared_ptr<const SampledMap>& map, const ast::Expr& at,
+                                 std::vector<Lowered> args) {
+    if (args.size() != 2) {
+        context_.diagnostics.error("E0006", at.nameLoc,
+                                   fmt::format("'{}' samples the terrain's height map at world (x, z): it takes 2 "
+                                               "arguments but {} {} given",
+                                               at.name, args.size(), args.size() == 1 ? "was" : "were"));
+        return Lowered::failed();
+    }
+    bool ok = true;
+    for (size_t i = 0; i < args.size(); ++i) {
+        if (!args[i].ok) {
+            ok = false;
+        } else if (args[i].number) {
+            args[i] = materialize(args[i], Type::Float, at.operands[i]->loc);
+            ok = ok && args[i].ok;
+        } else if (args[i].type != Type::Float) {
+            context_.diagnostics.error("E0010", at.operands[i]->loc,
+                                       fmt::format("argument {} of '{}' is {} but a world coordinate is float", i + 1,
+                                                   at.name, typeName(args[i].type)));
+            ok = false;
+        }
+    }
+    if (!ok || !map) return Lowered::failed(); // a map with errors: reported at its block
+    FieldNode node;
+    node.kind = FieldNode::Kind::Map;
+    node.type = Type::Float;
+    node.loc = at.loc;
+    node.map = map;
+    node.operands = {args[0].node, args[1].node};
+    return Lowered::ofNode(dag_.add(node), Type::Float);
 }
 
 Lowered FieldLowering::callBuiltin(std::string_view name, std::vector<Lowered> args, SourceLoc loc,

@@ -70,6 +70,8 @@ private:
     Lowered lowerMember(const ast::Expr& expr, Scope& scope);
     Lowered lowerCall(const ast::Expr& expr, Scope& scope);
     Lowered callUser(const ast::FunctionDecl& function, const ast::Expr& at, std::vector<Lowered> args);
+    // NAME(wx, wz) of a terrain block's map (null: the block had errors).
+    Lowered sampleMap(const std::shared_ptr<const SampledMap>& map, const ast::Expr& at, std::vector<Lowered> args);
     // A call of builtin `name` on `args`; `surface` is how the user wrote it, for messages.
     Lowered callBuiltin(std::string_view name, std::vector<Lowered> args, SourceLoc loc, std::string_view surface);
     Lowered input(FieldInput which, SourceLoc loc);

@@ -39,6 +39,11 @@ void warnUnused(Context& context, const ast::File& file, const Program& program,
         if (stage.kind == Stage::Kind::Grammar) grammarRuns[stage.index] = true;
         if (stage.kind == Stage::Kind::Field) fieldRuns[stage.index] = true;
     }
+    // A field a running grammar stamps runs too.
+    for (size_t g = 0; g < program.grammars.size(); ++g)
+        for (const Rule& rule : program.grammars[g].rules)
+            for (const Stamp& stamp : rule.stamps)
+                if (grammarRuns[g]) fieldRuns[stamp.field] = true;
     const std::string why = hasPipelineBlock ? "the pipeline does not name it"
                                              : "there is no 'pipeline' block, so only the grammars run";
     // program.fields holds the declared fields, then the features, as the pipeline indexes them.
@@ -60,10 +65,18 @@ void warnUnused(Context& context, const ast::File& file, const Program& program,
             }))
             context.diagnostics.warning("W0206", program.speleothems[i].loc,
                                         fmt::format("feature '{}' is never used: {}", program.speleothems[i].name, why));
+    // A terrain whose map a field samples is used, whether or not the pipeline names it.
+    const auto sampled = [&](const std::string& name) {
+        return std::any_of(program.fields.begin(), program.fields.end(), [&](const Field& field) {
+            return std::any_of(field.nodes.begin(), field.nodes.end(), [&](const FieldNode& node) {
+                return node.kind == FieldNode::Kind::Map && node.map->name == name;
+            });
+        });
+    };
     for (size_t i = 0; i < program.curves.size(); ++i)
-        if (std::none_of(program.pipeline.begin(), program.pipeline.end(), [&](const Stage& stage) {
-                return stage.kind == Stage::Kind::Curves && stage.index == i;
-            }))
+        if (std::none_of(program.pipeline.begin(), program.pipeline.end(),
+                         [&](const Stage& stage) { return stage.kind == Stage::Kind::Curves && stage.index == i; }) &&
+            !sampled(program.curves[i].name))
             context.diagnostics.warning("W0206", program.curves[i].loc,
                                         fmt::format("curves '{}' is never used: {}", program.curves[i].name, why));
     const std::vector<bool> used = usedMaterials(program);

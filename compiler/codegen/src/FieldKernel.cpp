@@ -7,6 +7,7 @@
 #include "voxc/builtins/Functions.h"
 #include "voxc/builtins/Ops.h"
 #include "voxc/codegen/PointSets.h"
+#include "voxc/codegen/SampledMaps.h"
 #include "voxc/core/Errors.h"
 #include "voxc/ir/passes/ClassifyFieldChunks.h"
 #include "voxc/program/Semantics.h"
@@ -55,6 +56,8 @@ std::string inputGlsl(FieldInput input, glm::ivec3 localBase) {
 
 // Declares binding kBindingPointSets and pointSetDistances.
 constexpr std::string_view kPointSetLibrary = "lsystem_carve.glsl";
+// mapSample over binding kBindingSolveTables (solve_tables.glsl), NaN tested as math_functions.glsl does.
+constexpr std::string_view kMapLibraries[] = {"math_functions.glsl", "solve_tables.glsl", "map_sample.glsl"};
 
 // Each node's GLSL: a variable name, or the literal of a constant.
 struct FieldCode {
@@ -135,6 +138,7 @@ bool emitColumnNoise(const ir::IrModule& module, const ir::IrField& field, uint3
 
 FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::string_view sourceName) {
     const std::vector<std::shared_ptr<const PointSet>> pointSets = pointSetsOf(module);
+    const std::vector<std::shared_ptr<const SampledMap>> maps = mapsOf(module);
     FieldCode code;
     code.names.resize(field.nodes.size());
     std::set<std::string_view> seenLibraries;
@@ -162,6 +166,18 @@ FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::s
             value = fmt::format("pointSetDistances({}, {})", it - pointSets.begin(), code.names[node.operands[0]]);
             what = "point set distances";
             if (seenLibraries.insert(kPointSetLibrary).second) code.libraries.push_back(kPointSetLibrary);
+            break;
+        }
+        case FieldNode::Kind::Map: {
+            const auto it = std::find(maps.begin(), maps.end(), node.map);
+            VOXC_ASSERT(it != maps.end());
+            const SampledMap& map = *node.map;
+            value = fmt::format("mapSample({}, {}, {}, {}, {}, {})", it - maps.begin(), glslFloat(map.originX),
+                                glslFloat(map.originZ), glslFloat(map.cellsPerVoxel), code.names[node.operands[0]],
+                                code.names[node.operands[1]]);
+            what = "map " + map.name;
+            for (std::string_view library : kMapLibraries)
+                if (seenLibraries.insert(library).second) code.libraries.push_back(library);
             break;
         }
         case FieldNode::Kind::Call: {

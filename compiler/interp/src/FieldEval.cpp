@@ -48,6 +48,9 @@ const std::vector<Value>& FieldEvaluator::evaluate(glm::ivec3 local) {
         case FieldNode::Kind::PointSet: // the lists binned at check time; any lists give the same floats
             out = Value::makeVec2(pointSetDistances(*node.pointSet, node.pointSet->bins, values_[node.operands[0]].v));
             break;
+        case FieldNode::Kind::Map:
+            out = Value::makeFloat(sampleMap(*node.map, values_[node.operands[0]].v.x, values_[node.operands[1]].v.x));
+            break;
         case FieldNode::Kind::Call:
             arguments_.clear();
             for (uint32_t operand : node.operands) arguments_.push_back(values_[operand]);

@@ -112,6 +112,10 @@ void printField(std::string& out, const IrField& field) {
             value = fmt::format("point_set_distances(%{}) {} centres, {} segments", node.operands[0],
                                 node.pointSet->centres.size(), node.pointSet->segments.size());
             break;
+        case FieldNode::Kind::Map:
+            value = fmt::format("map {}(%{}, %{}) {}^2 cells", node.map->name, node.operands[0], node.operands[1],
+                                node.map->side);
+            break;
         case FieldNode::Kind::Call: {
             std::vector<std::string> operands;
             for (uint32_t o : node.operands) operands.push_back(fmt::format("%{}", o));

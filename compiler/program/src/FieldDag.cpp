@@ -17,7 +17,8 @@ uint32_t FieldDag::add(FieldNode node) {
             node.function,
             node.component,
             node.operands,
-            node.pointSet.get()};
+            node.pointSet.get(),
+            node.map.get()};
     auto [it, inserted] = index_.emplace(std::move(key), uint32_t(nodes_.size()));
     if (inserted) nodes_.push_back(std::move(node));
     return it->second;

@@ -1,4 +1,5 @@
 #include "voxc/codegen/PointSets.h"
+#include "voxc/codegen/SampledMaps.h"
 #include "voxc/ir/Lower.h"
 #include "voxc/stages/Pipeline.h"
 #include "voxc/stages/StageKind.h"
@@ -15,6 +16,8 @@ KernelPackage compileProgram(const Program& program, const CompileOptions& optio
     package.usesMaterials = program.usesMaterials();
     package.materials = program.materials;
     package.pointSets = codegen::pointSetsOf(module);
+    // The sampled maps first: field kernels name map i as solve table i; stages add theirs after.
+    for (const auto& map : codegen::mapsOf(module)) package.solveTables.push_back(codegen::mapTable(*map));
     stages::PlanContext context{
         program, module,
         program.sourcePath.empty() ? "<program>" : std::filesystem::path(program.sourcePath).filename().string(),

@@ -51,6 +51,13 @@ Interval rootInterval(const World& world, const IrField& field, glm::ivec3 local
                          !reaches.x && !reaches.y};
             break;
         }
+        case FieldNode::Kind::Map: {
+            const Interval& x = values[node.operands[0]];
+            const Interval& z = values[node.operands[1]];
+            const MapRange range = mapRange(*node.map, x.lo.x, x.hi.x, z.lo.x, z.hi.x);
+            values[i] = {Type::Float, {range.lo, 0, 0}, {range.hi, 0, 0}, false};
+            break;
+        }
         case FieldNode::Kind::Call: {
             const RangeRule rule = rangeRule(functions()[node.function].name);
             if (!rule) {

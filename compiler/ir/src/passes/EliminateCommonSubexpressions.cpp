@@ -11,7 +11,7 @@ namespace {
 
 // What makes two nodes equal; floats compare by bit pattern so 0 and -0 stay apart.
 using NodeKey = std::tuple<FieldNode::Kind, Type, uint32_t, uint32_t, uint32_t, int32_t, bool, FieldInput, uint32_t,
-                           uint32_t, std::vector<uint32_t>, const PointSet*>;
+                           uint32_t, std::vector<uint32_t>, const PointSet*, const SampledMap*>;
 
 uint32_t bits(float f) {
     uint32_t b;
@@ -32,7 +32,8 @@ NodeKey keyOf(const FieldNode& n) {
             n.kind == FieldNode::Kind::Call ? n.function : 0u,
             n.kind == FieldNode::Kind::Component ? n.component : 0u,
             n.operands,
-            n.pointSet.get()};
+            n.pointSet.get(),
+            n.map.get()};
 }
 
 void eliminate(IrField& field) {

@@ -6,6 +6,7 @@
 // function is inlined. Nodes are in topological order: every operand precedes its user.
 #include "voxc/core/SourceLoc.h"
 #include "voxc/program/PointSet.h"
+#include "voxc/program/SampledMap.h"
 
 #include <cstdint>
 #include <glm/vec3.hpp>
@@ -24,7 +25,8 @@ enum class FieldInput : uint8_t { LocalX, LocalY, LocalZ, WorldX, WorldY, WorldZ
 struct FieldNode {
     // PointSet: vec2 of the capped distances from the operand (a vec3 world position) to the
     // nearest centre and segment of `pointSet` (voxc/program/PointSet.h); features build it.
-    enum class Kind : uint8_t { Constant, Input, Call, Component, PointSet };
+    // Map: the float `map` holds at world (x, z) = its two float operands (voxc/program/SampledMap.h).
+    enum class Kind : uint8_t { Constant, Input, Call, Component, PointSet, Map };
     Kind kind = Kind::Constant;
     Type type = Type::Float;
     SourceLoc loc;
@@ -34,8 +36,9 @@ struct FieldNode {
     FieldInput input = FieldInput::LocalX;
     uint32_t function = 0;          // Call: index into voxc::functions()
     uint32_t component = 0;         // Component: 0..2 of a vector operand (swizzles build vec2/vec3 via calls)
-    std::vector<uint32_t> operands; // Call arguments / Component's vector / PointSet's position
+    std::vector<uint32_t> operands; // Call arguments / Component's vector / PointSet's position / Map's x, z
     std::shared_ptr<const PointSet> pointSet; // PointSet only; shared, never changed after checking
+    std::shared_ptr<const SampledMap> map;    // Map only; shared, never changed after checking
 };
 
 struct Field {

@@ -22,7 +22,7 @@ public:
 
 private:
     using Key = std::tuple<uint8_t, uint8_t, uint32_t, uint32_t, uint32_t, int32_t, bool, uint8_t, uint32_t, uint32_t,
-                           std::vector<uint32_t>, const PointSet*>;
+                           std::vector<uint32_t>, const PointSet*, const SampledMap*>;
     std::vector<FieldNode> nodes_;
     std::map<Key, uint32_t> index_;
 };

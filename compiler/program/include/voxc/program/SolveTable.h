@@ -34,10 +34,12 @@ struct TerrainMaps {
 struct SolveTable {
     glm::ivec3 min{0};  // grid-local voxel of cell (0,0,0)
     glm::ivec3 size{0}; // cells per axis, each >= 1
-    std::vector<float> density;     // x fastest, then y, then z; every value in [0, 1]
+    // x fastest, then y, then z; densities in [0, 1], but heights in world voxels for a map that
+    // fields sample (source "map", size (side, 1, side): codegen::mapTable).
+    std::vector<float> density;
     std::vector<uint8_t> material;  // same order; empty when the solve writes no material
     std::vector<SolveSummary> solves;
-    std::string source = "curves"; // the block kind that made it: "curves" or "terrain"
+    std::string source = "curves"; // the block kind that made it: "curves", "terrain" or "map"
     std::string notes;             // what the solve did besides `solves`, for reports (may be empty)
     std::shared_ptr<const TerrainMaps> terrainMaps; // terrain blocks only
     // The solve's intermediate channels by name (curves: docs/curves.md "Dumping channels"), each
