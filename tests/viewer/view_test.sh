@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Usage: view_test.sh VOXC SOURCE_DIR. `voxc view` under Xvfb on lavapipe, driven by a script as a
 # user would drive it: load scene.vox, carve two holes by clicking, save the edits, reload after the
-# file changes, keep the last world after a typo. Its screenshots must equal `voxc render` of the
+# file changes, keep the last world after a typo and show its diagnostics in the panel. Its screenshots must equal `voxc render` of the
 # replayed edits with the same camera (max channel difference <= 2, docs/viewer.md). Fails, never
 # skips, when xvfb-run is missing. Prints "N passed, N failed" last.
 set -u
@@ -40,8 +40,10 @@ save-edits $work/edits.json
 screenshot $work/carved.png
 wait-change 300
 screenshot $work/reloaded.png
+screenshot-window $work/reloaded_window.png
 wait-change 300
 screenshot $work/typo.png
+screenshot-window $work/typo_window.png
 undo
 screenshot $work/undone.png
 ACTIONS
@@ -74,6 +76,8 @@ expect typo_shown 0 "scene\.vox does not check \(the file changed\); keeping the
 expect typo_located 0 "scene\.vox:[0-9]+:[0-9]+: error E0001" -- cat "$work/log"
 expect carve_visible 0 "differing [1-9]" -- $compare "$work/before.png" "$work/carved.png"
 expect last_world_kept 0 "max 0, " -- $compare "$work/reloaded.png" "$work/typo.png"
+# The panel shows the diagnostics: the window changes (thousands of pixels of red text) though the world does not.
+expect typo_in_window 0 "differing [0-9]{4,} " -- $compare "$work/reloaded_window.png" "$work/typo_window.png" 8
 expect undo_visible 0 "differing [1-9]" -- $compare "$work/typo.png" "$work/undone.png"
 
 # The same pictures from `voxc render` of the replayed edits, same camera and size.

@@ -26,6 +26,14 @@ void check(VkResult result, const char* what) {
 // ImGui's backend reports its own Vulkan failures through this.
 void checkFromImGui(VkResult result) { check(result, "ImGui's Vulkan backend"); }
 
+// A host-visible, coherent buffer, mapped for its whole life.
+struct HostBuffer {
+    VkBuffer buffer = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    void* mapped = nullptr;
+    VkDeviceSize bytes = 0;
+};
+
 } // namespace
 
 struct Presenter::Impl {
@@ -50,10 +58,9 @@ struct Presenter::Impl {
     VkCommandBuffer commands = VK_NULL_HANDLE;
     VkFence frameDone = VK_NULL_HANDLE;
     VkSemaphore imageAcquired = VK_NULL_HANDLE, renderDone = VK_NULL_HANDLE;
-    VkBuffer staging = VK_NULL_HANDLE;
-    VkDeviceMemory stagingMemory = VK_NULL_HANDLE;
-    void* stagingMapped = nullptr;
-    VkDeviceSize stagingBytes = 0;
+    HostBuffer staging;  // the picture on its way in
+    HostBuffer readback; // the window on its way out (capture)
+    bool canCapture = false; // the swapchain's images can be copied from
     bool imguiVulkan = false, imguiGlfw = false;
 
     void createInstance();
@@ -62,7 +69,8 @@ struct Presenter::Impl {
     void createRenderPass();
     void createSwapchain();
     void destroySwapchain();
-    void ensureStaging(VkDeviceSize bytes);
+    void ensure(HostBuffer& host, VkDeviceSize bytes, VkBufferUsageFlags usage);
+    void destroy(HostBuffer& host);
     void initImGui();
     void runOnce(const std::function<void(VkCommandBuffer)>& record);
     ~Impl();
@@ -213,7 +221,9 @@ void Presenter::Impl::createSwapchain() {
     info.imageColorSpace = format.colorSpace;
     info.imageExtent = extent;
     info.imageArrayLayers = 1;
-    info.imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    canCapture = capabilities.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    info.imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                      (canCapture ? VK_IMAGE_USAGE_TRANSFER_SRC_BIT : 0);
     info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
     info.preTransform = capabilities.currentTransform;
     info.compositeAlpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
@@ -255,17 +265,22 @@ void Presenter::Impl::destroySwapchain() {
     swapchain = VK_NULL_HANDLE;
 }
 
-void Presenter::Impl::ensureStaging(VkDeviceSize bytes) {
-    if (bytes <= stagingBytes) return;
+void Presenter::Impl::destroy(HostBuffer& host) {
+    if (host.buffer) vkDestroyBuffer(device, host.buffer, nullptr);
+    if (host.memory) vkFreeMemory(device, host.memory, nullptr);
+    host = HostBuffer{};
+}
+
+void Presenter::Impl::ensure(HostBuffer& host, VkDeviceSize bytes, VkBufferUsageFlags usage) {
+    if (bytes <= host.bytes) return;
     vkDeviceWaitIdle(device);
-    if (staging) vkDestroyBuffer(device, staging, nullptr);
-    if (stagingMemory) vkFreeMemory(device, stagingMemory, nullptr);
+    destroy(host);
     VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
     info.size = bytes;
-    info.usage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
-    check(vkCreateBuffer(device, &info, nullptr, &staging), "vkCreateBuffer");
+    info.usage = usage;
+    check(vkCreateBuffer(device, &info, nullptr, &host.buffer), "vkCreateBuffer");
     VkMemoryRequirements requirements;
-    vkGetBufferMemoryRequirements(device, staging, &requirements);
+    vkGetBufferMemoryRequirements(device, host.buffer, &requirements);
     VkPhysicalDeviceMemoryProperties memory;
     vkGetPhysicalDeviceMemoryProperties(physicalDevice, &memory);
     const VkMemoryPropertyFlags wanted = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
@@ -277,10 +292,10 @@ void Presenter::Impl::ensureStaging(VkDeviceSize bytes) {
     VkMemoryAllocateInfo allocation{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     allocation.allocationSize = requirements.size;
     allocation.memoryTypeIndex = type;
-    check(vkAllocateMemory(device, &allocation, nullptr, &stagingMemory), "vkAllocateMemory");
-    check(vkBindBufferMemory(device, staging, stagingMemory, 0), "vkBindBufferMemory");
-    check(vkMapMemory(device, stagingMemory, 0, VK_WHOLE_SIZE, 0, &stagingMapped), "vkMapMemory");
-    stagingBytes = bytes;
+    check(vkAllocateMemory(device, &allocation, nullptr, &host.memory), "vkAllocateMemory");
+    check(vkBindBufferMemory(device, host.buffer, host.memory, 0), "vkBindBufferMemory");
+    check(vkMapMemory(device, host.memory, 0, VK_WHOLE_SIZE, 0, &host.mapped), "vkMapMemory");
+    host.bytes = bytes;
 }
 
 void Presenter::Impl::runOnce(const std::function<void(VkCommandBuffer)>& record) {
@@ -337,8 +352,8 @@ Presenter::Impl::~Impl() {
     if (ImGui::GetCurrentContext()) ImGui::DestroyContext();
     if (device) {
         destroySwapchain();
-        if (staging) vkDestroyBuffer(device, staging, nullptr);
-        if (stagingMemory) vkFreeMemory(device, stagingMemory, nullptr);
+        destroy(staging);
+        destroy(readback);
         if (descriptorPool) vkDestroyDescriptorPool(device, descriptorPool, nullptr);
         if (renderPass) vkDestroyRenderPass(device, renderPass, nullptr);
         for (VkSemaphore semaphore : {imageAcquired, renderDone})
@@ -373,31 +388,33 @@ void Presenter::beginFrame() {
     ImGui::NewFrame();
 }
 
-void Presenter::present(const rendering::Picture& picture) {
+bool Presenter::present(const rendering::Picture& picture, rendering::Picture* window) {
     Impl& s = *impl_;
     ImGui::Render();
     int width = 0, height = 0;
     glfwGetFramebufferSize(s.window, &width, &height);
-    if (width == 0 || height == 0) return; // minimised: nothing to show
+    if (width == 0 || height == 0) return false; // minimised: nothing to show
     if (uint32_t(width) != s.extent.width || uint32_t(height) != s.extent.height) {
         s.destroySwapchain();
         s.createSwapchain();
-        return;
+        return false;
     }
-    if (picture.width != s.extent.width || picture.height != s.extent.height) return;
+    if (picture.width != s.extent.width || picture.height != s.extent.height) return false;
+    if (window && !s.canCapture) throw UserError("voxc view: this window's images cannot be read back");
     uint32_t index = 0;
     const VkResult acquired = vkAcquireNextImageKHR(s.device, s.swapchain, UINT64_MAX, s.imageAcquired, VK_NULL_HANDLE, &index);
     if (acquired == VK_ERROR_OUT_OF_DATE_KHR) {
         s.destroySwapchain();
         s.createSwapchain();
-        return;
+        return false;
     }
     if (acquired != VK_SUBOPTIMAL_KHR) check(acquired, "vkAcquireNextImageKHR");
 
     check(vkWaitForFences(s.device, 1, &s.frameDone, VK_TRUE, UINT64_MAX), "vkWaitForFences");
     const size_t pixels = size_t(picture.width) * picture.height;
-    s.ensureStaging(pixels * 4);
-    auto* out = static_cast<uint8_t*>(s.stagingMapped);
+    s.ensure(s.staging, pixels * 4, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    if (window) s.ensure(s.readback, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    auto* out = static_cast<uint8_t*>(s.staging.mapped);
     for (size_t p = 0; p < pixels; ++p) {
         const uint8_t* rgb = &picture.rgb[p * 3];
         out[p * 4 + 0] = s.bgra ? rgb[2] : rgb[0];
@@ -423,7 +440,7 @@ void Presenter::present(const rendering::Picture& picture) {
     VkBufferImageCopy copy{};
     copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     copy.imageExtent = {picture.width, picture.height, 1};
-    vkCmdCopyBufferToImage(s.commands, s.staging, s.images[index], VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+    vkCmdCopyBufferToImage(s.commands, s.staging.buffer, s.images[index], VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
     VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
     pass.renderPass = s.renderPass;
     pass.framebuffer = s.framebuffers[index];
@@ -431,6 +448,31 @@ void Presenter::present(const rendering::Picture& picture) {
     vkCmdBeginRenderPass(s.commands, &pass, VK_SUBPASS_CONTENTS_INLINE);
     ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), s.commands);
     vkCmdEndRenderPass(s.commands);
+    if (window) {
+        // The finished image (panel included) to the host, then back to where presenting wants it.
+        VkImageMemoryBarrier toRead = toCopy;
+        toRead.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+        toRead.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+        toRead.oldLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+        toRead.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+        vkCmdPipelineBarrier(s.commands, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0,
+                             nullptr, 0, nullptr, 1, &toRead);
+        vkCmdCopyImageToBuffer(s.commands, s.images[index], VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, s.readback.buffer, 1, &copy);
+        VkImageMemoryBarrier toPresent = toRead;
+        toPresent.srcAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+        toPresent.dstAccessMask = 0;
+        toPresent.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+        toPresent.newLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+        VkBufferMemoryBarrier toHost{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
+        toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+        toHost.srcQueueFamilyIndex = toHost.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        toHost.buffer = s.readback.buffer;
+        toHost.size = VK_WHOLE_SIZE;
+        vkCmdPipelineBarrier(s.commands, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                             VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT | VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &toHost, 1,
+                             &toPresent);
+    }
     check(vkEndCommandBuffer(s.commands), "vkEndCommandBuffer");
     // The acquire semaphore guards the copy, the first use of the image.
     const VkPipelineStageFlags waitStage = VK_PIPELINE_STAGE_TRANSFER_BIT;
@@ -456,6 +498,17 @@ void Presenter::present(const rendering::Picture& picture) {
     } else {
         check(presented, "vkQueuePresentKHR");
     }
+    if (window) {
+        check(vkWaitForFences(s.device, 1, &s.frameDone, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+        *window = {picture.width, picture.height, std::vector<uint8_t>(pixels * 3)};
+        const auto* in = static_cast<const uint8_t*>(s.readback.mapped);
+        for (size_t p = 0; p < pixels; ++p) {
+            window->rgb[p * 3 + 0] = in[p * 4 + (s.bgra ? 2 : 0)];
+            window->rgb[p * 3 + 1] = in[p * 4 + 1];
+            window->rgb[p * 3 + 2] = in[p * 4 + (s.bgra ? 0 : 2)];
+        }
+    }
+    return true;
 }
 
 } // namespace voxc::viewer

@@ -26,9 +26,10 @@ public:
     rendering::ImageSize extent() const;
     // ImGui::NewFrame with both backends.
     void beginFrame();
-    // ImGui::Render, then shows `picture` (of extent()) with the panel over it. A picture of another
-    // size (the window was resized meanwhile) is skipped; the swapchain follows the window.
-    void present(const rendering::Picture& picture);
+    // ImGui::Render, then shows `picture` (of extent()) with the panel over it, and with `window`
+    // reads the shown image back into it. False when nothing was shown: a picture of another size
+    // (the window was resized meanwhile; the swapchain follows it) or a minimised window.
+    bool present(const rendering::Picture& picture, rendering::Picture* window = nullptr);
     const std::string& deviceName() const;
 
     struct Impl;

@@ -65,7 +65,7 @@ constexpr Spec kSpecs[] = {
     {"undo", Action::Kind::Undo, 0},            {"redo", Action::Kind::Redo, 0},
     {"reload", Action::Kind::Reload, 0},        {"save-edits", Action::Kind::SaveEdits, 1},
     {"wait", Action::Kind::Wait, 1},            {"wait-change", Action::Kind::WaitChange, 1},
-    {"screenshot", Action::Kind::Screenshot, 1},
+    {"screenshot", Action::Kind::Screenshot, 1}, {"screenshot-window", Action::Kind::ScreenshotWindow, 1},
 };
 
 } // namespace
@@ -102,7 +102,8 @@ std::vector<Action> parseScript(const SourceFile& source, Diagnostics& diagnosti
         switch (spec->kind) {
         case Action::Kind::Camera:
         case Action::Kind::SaveEdits:
-        case Action::Kind::Screenshot: action.text = words[1].text; break;
+        case Action::Kind::Screenshot:
+        case Action::Kind::ScreenshotWindow: action.text = words[1].text; break;
         case Action::Kind::Set:
             action.text = words[1].text;
             ok = needNumber(words[2], action.value);

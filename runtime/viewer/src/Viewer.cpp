@@ -136,6 +136,14 @@ private:
             break;
         }
         case Action::Kind::Screenshot: screenshot(action.text); break;
+        case Action::Kind::ScreenshotWindow: {
+            rendering::Picture window;
+            // A frame may be skipped while the swapchain follows a resize; the next one shows.
+            for (int attempt = 0; attempt < 10 && window.rgb.empty(); ++attempt) frame(&window);
+            if (window.rgb.empty()) fail(action, "the window showed no frame to capture");
+            writePicture(action.text, window);
+            break;
+        }
         }
     }
 
@@ -212,8 +220,9 @@ private:
         log(fmt::format("wrote {} ({} edits)", path, session_.edits().size()));
     }
 
-    void screenshot(const std::string& path) {
-        const rendering::Picture& shown = picture();
+    void screenshot(const std::string& path) { writePicture(path, picture()); }
+
+    void writePicture(const std::string& path, const rendering::Picture& shown) {
         explore::Image image(int(shown.width), int(shown.height), {});
         image.rgb = shown.rgb;
         explore::writePng(path, image);
@@ -252,11 +261,11 @@ private:
         return picture_;
     }
 
-    void frame() {
+    void frame(rendering::Picture* window = nullptr) {
         presenter_.beginFrame();
         handleInput();
         panel();
-        presenter_.present(picture());
+        presenter_.present(picture(), window);
     }
 
     void handleInput();
@@ -351,6 +360,7 @@ void App::panel() {
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(kPanelWidth, 0), ImGuiCond_FirstUseEver);
     ImGui::Begin("voxc view");
+    ImGui::PushItemWidth(kPanelWidth * 0.5f); // room for the labels
     ImGui::TextWrapped("%s on %s", session_.path().c_str(), context_.device().name.c_str());
     if (!session_.lastError().empty()) {
         ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.35f, 1.0f), session_.hasWorld() ? "Does not check; the last good world stays:"
@@ -362,35 +372,44 @@ void App::panel() {
         ImGui::TextUnformatted(session_.warnings().c_str());
     }
     if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
+        // Constants and the seed first, then one folded node per feature with its keys.
+        std::optional<std::pair<std::string, double>> released;
+        std::string feature;
+        bool featureOpen = false;
         for (const Parameter& p : session_.parameters()) {
+            std::string label = p.name;
+            if (p.kind == Parameter::Kind::FeatureKey) {
+                const size_t dot = p.name.find('.');
+                if (p.name.compare(0, dot, feature) != 0 || feature.size() != dot) {
+                    if (featureOpen) ImGui::TreePop();
+                    feature = p.name.substr(0, dot);
+                    featureOpen = ImGui::TreeNode(feature.c_str());
+                }
+                if (!featureOpen) continue;
+                label = p.name.substr(dot + 1);
+            }
             ImGui::PushID(p.name.c_str());
-            bool released = false;
             double value = p.value;
             if (p.kind == Parameter::Kind::Seed) {
                 int seed = int(p.value);
-                ImGui::InputInt("seed", &seed);
+                ImGui::InputInt(label.c_str(), &seed);
                 value = std::max(seed, 0);
-                released = ImGui::IsItemDeactivatedAfterEdit();
             } else if (p.integer) {
                 int v = int(p.value);
-                ImGui::SliderInt(p.name.c_str(), &v, int(p.min), int(p.max));
+                ImGui::SliderInt(label.c_str(), &v, int(p.min), int(p.max));
                 value = v;
-                released = ImGui::IsItemDeactivatedAfterEdit();
             } else {
                 float v = float(p.value);
-                ImGui::SliderFloat(p.name.c_str(), &v, float(p.min), float(p.max));
+                ImGui::SliderFloat(label.c_str(), &v, float(p.min), float(p.max));
                 value = v;
-                released = ImGui::IsItemDeactivatedAfterEdit();
             }
-            ImGui::PopID();
             // Re-run when the slider is let go, not at every step of the drag.
-            if (released) {
-                const std::string name = p.name; // setParameter replaces the list
-                reported(session_.setParameter(name, value), fmt::format("{} = {}", name, value));
-                break;
-            }
+            if (ImGui::IsItemDeactivatedAfterEdit()) released = {p.name, value};
+            ImGui::PopID();
         }
+        if (featureOpen) ImGui::TreePop();
         if (ImGui::Button("Reset to the file")) reported(session_.resetParameters(), "parameters reset");
+        if (released) reported(session_.setParameter(released->first, released->second), fmt::format("{} = {}", released->first, released->second));
     }
     if (ImGui::CollapsingHeader("Brush", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::SliderFloat("radius", &radius_, 0.5f, 32.0f);
@@ -430,6 +449,7 @@ void App::panel() {
         if (ImGui::Checkbox("chunk borders", &chunkBorders_)) sceneChanged();
         if (ImGui::Button("Frame (iso)")) setCamera("iso");
     }
+    ImGui::PopItemWidth();
     ImGui::End();
 }
 

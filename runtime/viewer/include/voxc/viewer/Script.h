@@ -10,6 +10,7 @@
 //   wait SECONDS                         keep drawing (and watching the file)
 //   wait-change SECONDS                  until the file changes and is reloaded; an error after SECONDS
 //   screenshot PATH                      the 3D view as PNG (no panel), as `voxc render` draws it
+//   screenshot-window PATH               the whole window as shown, panel included
 // A malformed line is a located error: E0008 unknown action, E0006 wrong number of operands,
 // E0010 an operand that is not a number or point, E0007 a value out of range.
 #include "voxc/syntax/Diagnostics.h"
@@ -23,10 +24,11 @@
 namespace voxc::viewer {
 
 struct Action {
-    enum class Kind : uint8_t { Camera, Carve, Add, Set, Undo, Redo, Reload, SaveEdits, Wait, WaitChange, Screenshot };
+    enum class Kind : uint8_t { Camera, Carve, Add, Set, Undo, Redo, Reload, SaveEdits, Wait, WaitChange, Screenshot,
+                                ScreenshotWindow };
     Kind kind = Kind::Wait;
     SourceLoc loc;      // the action's word
-    std::string text;   // Camera: the spec; Set: the name; SaveEdits, Screenshot: the path
+    std::string text;   // Camera: the spec; Set: the name; SaveEdits, Screenshot, ScreenshotWindow: the path
     double value = 0.0; // Set: the value; Wait, WaitChange: seconds
     bool alongRay = false;       // Carve, Add: a ray (origin, direction) rather than a pixel
     glm::vec2 pixel{0.0f};
