@@ -14,20 +14,9 @@ import subprocess
 import sys
 import tempfile
 
-from lsp_client import Client, uri
+from lsp_client import Client, check, finish, uri
 
 voxc, src = sys.argv[1], sys.argv[2]
-passed = failed = 0
-
-
-def check(name, condition, detail=""):
-    global passed, failed
-    if condition:
-        passed += 1
-        print("ok   " + name)
-    else:
-        failed += 1
-        print("FAIL " + name + (": " + str(detail)[:2000] if detail else ""))
 
 
 extension = os.path.join(src, "editors", "vscode")
@@ -94,5 +83,4 @@ if pack.returncode == 0:
 check("package_points_at_grammar", manifest["contributes"]["grammars"][0]["path"] == "./syntaxes/vox.tmLanguage.json"
       and manifest["contributes"]["languages"][0]["extensions"] == [".vox"])
 
-print("%d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+finish()

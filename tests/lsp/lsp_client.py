@@ -1,7 +1,21 @@
 """A minimal LSP client over a `voxc lsp` process's pipes, for the tests in this folder."""
 import json
 import subprocess
+import sys
 import urllib.parse
+
+counts = {"passed": 0, "failed": 0}
+
+
+def check(name, condition, detail=""):
+    counts["passed" if condition else "failed"] += 1
+    print(("ok   " if condition else "FAIL ") + name + (": " + str(detail)[:2000] if detail and not condition else ""))
+
+
+def finish():
+    """Prints "N passed, N failed" and exits non-zero on any failure."""
+    print("%d passed, %d failed" % (counts["passed"], counts["failed"]))
+    sys.exit(1 if counts["failed"] else 0)
 
 
 def uri(path):

@@ -12,20 +12,9 @@ import subprocess
 import sys
 import tempfile
 
-from lsp_client import Client, uri
+from lsp_client import Client, check, finish, uri
 
 voxc, src = sys.argv[1], sys.argv[2]
-passed = failed = 0
-
-
-def check(name, condition, detail=""):
-    global passed, failed
-    if condition:
-        passed += 1
-        print("ok   " + name)
-    else:
-        failed += 1
-        print("FAIL " + name + (": " + str(detail)[:2000] if detail else ""))
 
 
 def check_json(path):
@@ -213,5 +202,4 @@ client.request("initialize", {"capabilities": {}})
 client.process.stdin.close()
 check("end_without_exit_is_1", client.process.wait(timeout=30) == 1)
 
-print("%d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+finish()

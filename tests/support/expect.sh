@@ -1,5 +1,5 @@
 # Sourced by the shell tests that run voxc as a user would (tests/cli, tests/render,
-# tests/pipeline): checks that count into `passed` and `failed`, and the summary line.
+# tests/pipeline, tests/edit, tests/mesh): checks that count into `passed` and `failed`, and the summary line.
 passed=0
 failed=0
 
@@ -38,6 +38,10 @@ expect_same() {
         echo "FAIL $1: $2 differs from $3"; failed=$((failed + 1))
     fi
 }
+
+# pass NAME / fail NAME: record a check the script made itself.
+pass() { echo "ok   $*"; passed=$((passed + 1)); }
+fail() { echo "FAIL $*"; failed=$((failed + 1)); }
 
 # finish: prints "N passed, N failed" and exits non-zero after any failure.
 finish() {

@@ -19,6 +19,24 @@ int hexValue(char c) {
     return -1;
 }
 
+// Where a walk over a line's UTF-8 characters stopped: LSP counts UTF-16 units, the checker characters.
+struct LineCursor {
+    size_t byte = 0;
+    uint32_t characters = 0;
+    uint32_t units = 0;
+};
+
+template <typename Done> LineCursor walkLine(std::string_view line, Done done) {
+    LineCursor cursor;
+    while (cursor.byte < line.size() && !done(cursor)) {
+        cursor.units += utf16Units(line[cursor.byte]);
+        ++cursor.characters;
+        ++cursor.byte;
+        while (cursor.byte < line.size() && isContinuation(line[cursor.byte])) ++cursor.byte;
+    }
+    return cursor;
+}
+
 } // namespace
 
 std::string uriToPath(std::string_view uri) {
@@ -62,25 +80,12 @@ std::string_view lineOf(std::string_view text, uint32_t line) {
 }
 
 uint32_t utf16Offset(std::string_view line, uint32_t column) {
-    uint32_t units = 0;
-    uint32_t characters = 0;
-    for (size_t i = 0; i < line.size() && characters < column; ++i) {
-        if (isContinuation(line[i])) continue;
-        units += utf16Units(line[i]);
-        ++characters;
-    }
-    return units + (column - characters); // columns past the end count one unit each
+    const LineCursor cursor = walkLine(line, [&](const LineCursor& c) { return c.characters >= column; });
+    return cursor.units + (column - cursor.characters); // columns past the end count one unit each
 }
 
 uint32_t characterColumn(std::string_view line, uint32_t utf16) {
-    uint32_t units = 0;
-    uint32_t characters = 0;
-    for (size_t i = 0; i < line.size() && units < utf16; ++i) {
-        if (isContinuation(line[i])) continue;
-        units += utf16Units(line[i]);
-        ++characters;
-    }
-    return characters;
+    return walkLine(line, [&](const LineCursor& c) { return c.units >= utf16; }).characters;
 }
 
 Position startOf(SourceLoc loc, std::string_view lineText) {
@@ -101,14 +106,7 @@ size_t byteOffset(std::string_view text, Position position) {
         start = newline + 1;
     }
     const std::string_view line = lineOf(text.substr(start), 0);
-    uint32_t units = 0;
-    size_t i = 0;
-    while (i < line.size() && units < position.character) {
-        units += utf16Units(line[i]);
-        ++i;
-        while (i < line.size() && isContinuation(line[i])) ++i;
-    }
-    return start + i;
+    return start + walkLine(line, [&](const LineCursor& c) { return c.units >= position.character; }).byte;
 }
 
 } // namespace voxc::lsp

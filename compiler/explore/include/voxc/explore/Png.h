@@ -1,12 +1,12 @@
 #pragma once
-// A minimal PNG encoder (8-bit truecolour, no interlace, filter 0 on every row, zlib-compressed).
+// PNG output through libpng's simplified API: 8-bit RGB, libpng's own choice of filters and compression.
 #include "voxc/explore/Image.h"
 
 #include <string>
 
 namespace voxc::explore {
 
-// The whole file: signature, IHDR, one IDAT, IEND.
+// The whole file, as libpng writes it.
 std::string encodePng(const Image& image);
 
 // Writes encodePng(image) atomically; UserError when the file cannot be written.
