@@ -24,12 +24,7 @@ void registerViewFrame(JsonReporter& reporter, VulkanContext& context) {
             const Program program = loadExampleProgram("examples/scene.vox");
             VulkanExecutor executor(context, compileProgram(program, {}));
             const Mesh mesh = meshMarchingCubes(executor.run().grid, {});
-            rendering::Bounds bounds{glm::vec3(INFINITY), glm::vec3(-INFINITY)};
-            for (const glm::vec3& p : mesh.positions) {
-                bounds.min = glm::min(bounds.min, p);
-                bounds.max = glm::max(bounds.max, p);
-            }
-            *camera = rendering::parseCamera("iso", bounds, float(kSize.width) / float(kSize.height));
+            *camera = rendering::parseCamera("iso", rendering::meshBounds(mesh), float(kSize.width) / float(kSize.height));
             *renderer = std::make_unique<MeshRenderer>(context, kSize);
             (*renderer)->setScene(mesh, program.materials);
             (*renderer)->draw(*camera); // warm-up: first-use costs of the pipelines and targets
