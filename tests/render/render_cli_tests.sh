@@ -14,40 +14,8 @@ png_size() {
     python3 -c 'import struct,sys; d=open(sys.argv[1],"rb").read(24); print("%dx%d" % struct.unpack(">II", d[16:24]))' "$1"
 }
 
-# png_max_difference A B: the largest channel difference of two same-size 8-bit RGB PNGs.
-png_max_difference() {
-    python3 - "$1" "$2" <<'PY'
-import struct, sys, zlib
-def pixels(path):
-    data, at, idat = open(path, "rb").read(), 8, b""
-    while at < len(data):
-        length, kind = struct.unpack(">I4s", data[at:at + 8])
-        if kind == b"IHDR":
-            width, height = struct.unpack(">II", data[at + 8:at + 16])
-        if kind == b"IDAT":
-            idat += data[at + 8:at + 8 + length]
-        at += 12 + length
-    raw, stride, out = zlib.decompress(idat), width * 3, bytearray()
-    previous = bytearray(stride)
-    for y in range(height):
-        kind, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for i in range(stride):  # PNG row filters: none, sub, up, average, Paeth
-            a = line[i - 3] if i >= 3 else 0
-            b, c = previous[i], previous[i - 3] if i >= 3 else 0
-            if kind == 1: line[i] = (line[i] + a) & 255
-            elif kind == 2: line[i] = (line[i] + b) & 255
-            elif kind == 3: line[i] = (line[i] + (a + b) // 2) & 255
-            elif kind == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        out += line
-        previous = line
-    return out
-a, b = pixels(sys.argv[1]), pixels(sys.argv[2])
-print("max difference", max(abs(x - y) for x, y in zip(a, b)) if len(a) == len(b) else "sizes differ")
-PY
-}
+# png_compare A B: "max M, differing D of N" for two same-size 8-bit RGB PNGs (tests/support/png_compare.py).
+png_compare() { python3 "$(dirname "$0")/../support/png_compare.py" "$@"; }
 
 scene=$src/examples/scene.vox
 expect help 0 "--camera" -- "$voxc" render --help
@@ -81,8 +49,10 @@ expect mesh_run 0 "" -- "$voxc" run "$scene" -o "$work/scene.ply" --device lavap
 expect mesh_file 0 "wrote .*mesh.png" -- "$voxc" render "$work/scene.ply" -o "$work/mesh.png" --size 64x48 --device lavapipe
 expect program_same_size 0 "" -- "$voxc" render "$scene" -o "$work/program.png" --size 64x48 --device lavapipe
 # The PLY's colours are its materials' as bytes: the two pictures differ by rounding at most.
-expect mesh_file_in_its_colours 0 "^max difference [0-2]$" -- png_max_difference "$work/mesh.png" "$work/program.png"
+expect mesh_file_in_its_colours 0 "^max [0-2], " -- png_compare "$work/mesh.png" "$work/program.png"
 expect mesh_file_no_chunks 1 "--chunk-borders needs a .vox file" -- \
     "$voxc" render "$work/scene.ply" -o "$work/mesh2.png" --chunk-borders
+expect mesh_file_no_edits 1 "--edits needs a .vox file" -- \
+    "$voxc" render "$work/scene.ply" --edits "$src/examples/scene.edits.json" -o "$work/edits.png"
 
 finish
