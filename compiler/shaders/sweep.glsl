@@ -7,8 +7,8 @@
 // (voxc::chooseRule), then apply its transform.
 //
 // Two ways to dispatch it (push.anchorCount.w): 0, directly over every anchor of the phase;
-// 1, indirectly over the tiles the sweep's active-tiles kernel found (tiles.glsl), where
-// workgroup y picks the tile and workgroup x with the local index picks its anchor.
+// 1, indirectly over the tiles the sweep's active-tiles kernel found (tiles.glsl), their
+// anchors packed one after another over the dispatch's lanes (activeAnchorIndex).
 
 #include "common.glsl"
 #include "random.glsl"
@@ -69,10 +69,15 @@ void writeDensity(int address, float value) {
 
 // The anchor of this invocation in an indirect dispatch: false when it has none.
 bool activeTileAnchor(out ivec3 anchor) {
-    TileAnchors anchors = tileAnchors(tileOfId(activeTiles.id[gl_WorkGroupID.y]));
+    uint workgroup = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+    uint slot;
+    int t;
+    anchor = ivec3(0);
+    if (!activeAnchorIndex(uint(push.anchorStart.w), workgroup * (gl_WorkGroupSize.x * gl_WorkGroupSize.y * gl_WorkGroupSize.z) +
+                           gl_LocalInvocationIndex, slot, t))
+        return false;
+    TileAnchors anchors = tileAnchors(tileOfId(activeTiles.id[slot]));
     ivec3 n = anchorsPerTile();
-    int t = int(gl_WorkGroupID.x * (gl_WorkGroupSize.x * gl_WorkGroupSize.y * gl_WorkGroupSize.z) +
-                gl_LocalInvocationIndex);
     ivec3 i = anchors.first + ivec3(t % n.x, t / n.x % n.y, t / (n.x * n.y));
     anchor = push.anchorStart.xyz + i * push.anchorStep.xyz;
     return all(lessThanEqual(i, anchors.last));

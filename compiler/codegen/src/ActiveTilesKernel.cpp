@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -71,16 +72,27 @@ bool testsMaterial(const IrRule& rule) {
     return false;
 }
 
+// Tiles are never smaller than this (voxc::skipTileShift).
+constexpr int kMinTileSize = 8;
+
 // `mayMatch`: some live rule has every tested cell's value set meeting its cell's range.
 std::string mayMatch(const IrSweep& sweep) {
     std::string s = "// The density range each tested cell can read (keys), over this tile's anchors.\n";
     std::vector<bool> tested(sweep.cells.size(), false);
     for (const IrRule& rule : sweep.rules)
         for (uint32_t c = 0; c < sweep.cells.size(); ++c) tested[c] = tested[c] || testsCell(rule.symbol[c]);
+    // Offsets below the smallest tile size read only the anchors' tile and its next neighbours.
+    bool near = true;
+    for (uint32_t c = 0; c < sweep.cells.size(); ++c) {
+        const glm::ivec3 o = sweep.cells[c].offset;
+        if (tested[c]) near = near && std::min({o.x, o.y, o.z}) >= 0 && std::max({o.x, o.y, o.z}) < kMinTileSize;
+    }
+    if (near) s += "TileNeighbourhood neighbourhood = tileNeighbourhood(tileOfId(id));\n";
     for (uint32_t c = 0; c < sweep.cells.size(); ++c) {
         if (!tested[c]) continue;
         const glm::ivec3 o = sweep.cells[c].offset;
-        s += fmt::format("uvec2 range{} = cellRange(anchors, ivec3({}, {}, {}));\n", c, o.x, o.y, o.z);
+        s += near ? fmt::format("uvec2 range{} = nearCellRange(neighbourhood, anchors, ivec3({}, {}, {}));\n", c, o.x, o.y, o.z)
+                  : fmt::format("uvec2 range{} = cellRange(anchors, ivec3({}, {}, {}));\n", c, o.x, o.y, o.z);
     }
     s += "\n// A rule may match when each of its tested cells' value sets meets that cell's range.\n";
     s += "bool mayMatch = false;\n";

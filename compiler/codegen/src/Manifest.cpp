@@ -65,7 +65,7 @@ BufferInfo bufferInfo(uint32_t binding) {
     case kBindingTileDirty: return {"tileDirty", "uint", "tiles", "per tile: 1 when written since its range was computed"};
     case kBindingActiveTiles: return {"activeTiles", "uint", "tiles", "tile ids the current phase runs on"};
     case kBindingActiveDispatch:
-        return {"activeDispatch", "uint", "8", "two VkDispatchIndirectCommand records (x, y, z, padding), written by the active-tiles kernels"};
+        return {"activeDispatch", "uint", "8", "two VkDispatchIndirectCommand records (x, y, z) and each one's active tile count, written by the active-tiles kernels"};
     case kBindingSkipStats:
         return {"skipStats", "uint", "2", "active and candidate (tile, phase) pairs of a run (statistics only)"};
     case kBindingMaterials:

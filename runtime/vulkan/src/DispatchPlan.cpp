@@ -90,8 +90,9 @@ int32_t skipTileShift(const KernelPackage& package, std::array<uint32_t, 3> maxG
     if (package.tileRangesKernel == kNoKernel) return -1;
     const World& world = package.world;
     const ChunkLayout layout = ChunkLayout::make(world.origin, world.size, world.chunkSize);
-    // Tiles of 8^3 voxels: a finer grid costs more in the active-tiles kernels than it saves.
-    for (int32_t shift = std::min(3, layout.chunkShift); shift <= layout.chunkShift; ++shift) {
+    // Tiles of 8^3 voxels: a finer grid costs more in the active-tiles kernels than it saves, and
+    // the active-tiles kernels rely on tiles of at least 8 (ActiveTilesKernel.cpp, kMinTileSize).
+    for (int32_t shift = 3; shift <= layout.chunkShift; ++shift) {
         const uint64_t tiles = tileCount(package, shift);
         // Workgroups of 64 invocations: the tile kernels' one per tile, the sweep's one per anchor
         // (a tile holds at most 8^shift anchors).

@@ -13,8 +13,8 @@
 // (voxc::chooseRule), then apply its transform.
 //
 // Two ways to dispatch it (push.anchorCount.w): 0, directly over every anchor of the phase;
-// 1, indirectly over the tiles the sweep's active-tiles kernel found (tiles.glsl), where
-// workgroup y picks the tile and workgroup x with the local index picks its anchor.
+// 1, indirectly over the tiles the sweep's active-tiles kernel found (tiles.glsl), their
+// anchors packed one after another over the dispatch's lanes (activeAnchorIndex).
 
 // ---- begin common.glsl ----
 // Declarations every voxc kernel shares: the push block (voxc::PushBlock in
@@ -162,7 +162,7 @@ layout(std430, set = 0, binding = 5) buffer ActiveTiles {
 } activeTiles;
 
 layout(std430, set = 0, binding = 6) buffer ActiveDispatch {
-    uint args[]; // two VkDispatchIndirectCommand records (x, y, z, padding); y counts active tiles
+    uint args[]; // two VkDispatchIndirectCommand records (x, y, z) and each one's active tile count
 } activeDispatch;
 
 layout(std430, set = 0, binding = 7) buffer SkipStats {
@@ -223,6 +223,25 @@ TileAnchors tileAnchors(ivec3 tile) {
 ivec3 anchorsPerTile() {
     ivec3 step = push.anchorStep.xyz;
     return min((ivec3(tileSize()) + step - 1) / step, push.anchorCount.xyz);
+}
+int anchorsPerTileCount() {
+    ivec3 n = anchorsPerTile();
+    return n.x * n.y * n.z;
+}
+
+// Workgroups per row of an indirect sweep dispatch: enough for one tile's anchors, so the rows
+// (workgroup y) never outnumber the active tiles (voxc::skipTileShift checks them against the limit).
+uint activeDispatchGroupsX(int workgroupInvocations) {
+    return uint(anchorsPerTileCount() + workgroupInvocations - 1) / uint(workgroupInvocations);
+}
+
+// An indirect sweep's lanes take the active tiles' anchors one after another: lane `lane` of
+// the dispatch is anchor `anchor` of active tile `slot`; false past the last active tile.
+bool activeAnchorIndex(uint record, uint lane, out uint slot, out int anchor) {
+    uint perTile = uint(anchorsPerTileCount());
+    slot = lane / perTile;
+    anchor = int(lane % perTile);
+    return slot < activeDispatch.args[4u * record + 3u];
 }
 // ---- end tiles.glsl ----
 
@@ -286,10 +305,15 @@ void writeDensity(int address, float value) {
 
 // The anchor of this invocation in an indirect dispatch: false when it has none.
 bool activeTileAnchor(out ivec3 anchor) {
-    TileAnchors anchors = tileAnchors(tileOfId(activeTiles.id[gl_WorkGroupID.y]));
+    uint workgroup = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+    uint slot;
+    int t;
+    anchor = ivec3(0);
+    if (!activeAnchorIndex(uint(push.anchorStart.w), workgroup * (gl_WorkGroupSize.x * gl_WorkGroupSize.y * gl_WorkGroupSize.z) +
+                           gl_LocalInvocationIndex, slot, t))
+        return false;
+    TileAnchors anchors = tileAnchors(tileOfId(activeTiles.id[slot]));
     ivec3 n = anchorsPerTile();
-    int t = int(gl_WorkGroupID.x * (gl_WorkGroupSize.x * gl_WorkGroupSize.y * gl_WorkGroupSize.z) +
-                gl_LocalInvocationIndex);
     ivec3 i = anchors.first + ivec3(t % n.x, t / n.x % n.y, t / (n.x * n.y));
     anchor = push.anchorStart.xyz + i * push.anchorStep.xyz;
     return all(lessThanEqual(i, anchors.last));

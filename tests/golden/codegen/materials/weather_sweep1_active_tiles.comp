@@ -7,7 +7,10 @@
 // when, for some live rule, every tested cell's value set meets the density range of the
 // tiles that cell can read from the tile's anchors of this phase. Ranges are supersets of
 // the densities, so a skipped tile holds no anchor where any rule matches. Active tiles are
-// appended to ActiveTiles and counted into the phase's indirect dispatch record.
+// appended to ActiveTiles, counted in the record's fourth word, and the record's workgroups
+// grow to cover their anchors packed one after another (tiles.glsl, activeAnchorIndex): llvmpipe
+// runs every lane of a workgroup through the whole sweep, so a tile's anchors must not leave
+// lanes empty (a 4 x 4 x 1 window's phase has 32 anchors per tile, its workgroup 64 lanes).
 
 // ---- begin common.glsl ----
 // Declarations every voxc kernel shares: the push block (voxc::PushBlock in
@@ -106,7 +109,7 @@ layout(std430, set = 0, binding = 5) buffer ActiveTiles {
 } activeTiles;
 
 layout(std430, set = 0, binding = 6) buffer ActiveDispatch {
-    uint args[]; // two VkDispatchIndirectCommand records (x, y, z, padding); y counts active tiles
+    uint args[]; // two VkDispatchIndirectCommand records (x, y, z) and each one's active tile count
 } activeDispatch;
 
 layout(std430, set = 0, binding = 7) buffer SkipStats {
@@ -168,6 +171,25 @@ ivec3 anchorsPerTile() {
     ivec3 step = push.anchorStep.xyz;
     return min((ivec3(tileSize()) + step - 1) / step, push.anchorCount.xyz);
 }
+int anchorsPerTileCount() {
+    ivec3 n = anchorsPerTile();
+    return n.x * n.y * n.z;
+}
+
+// Workgroups per row of an indirect sweep dispatch: enough for one tile's anchors, so the rows
+// (workgroup y) never outnumber the active tiles (voxc::skipTileShift checks them against the limit).
+uint activeDispatchGroupsX(int workgroupInvocations) {
+    return uint(anchorsPerTileCount() + workgroupInvocations - 1) / uint(workgroupInvocations);
+}
+
+// An indirect sweep's lanes take the active tiles' anchors one after another: lane `lane` of
+// the dispatch is anchor `anchor` of active tile `slot`; false past the last active tile.
+bool activeAnchorIndex(uint record, uint lane, out uint slot, out int anchor) {
+    uint perTile = uint(anchorsPerTileCount());
+    slot = lane / perTile;
+    anchor = int(lane % perTile);
+    return slot < activeDispatch.args[4u * record + 3u];
+}
 // ---- end tiles.glsl ----
 
 // Invocations in one workgroup of the sweep kernel.
@@ -191,6 +213,62 @@ uvec2 cellRange(TileAnchors anchors, ivec3 offset) {
     return range;
 }
 
+// The ranges of a tile and of its next tiles along x, y and z (rxyz: x, y, z steps of 0 or 1),
+// each read once per invocation instead of once per tested cell; a tile outside the chunk table
+// has the empty range, as cellRange leaves it out. Every cell of a window whose offsets are
+// below 8, the smallest tile size (skipTileShift), reads from the anchors of a tile only that
+// tile and the next ones (nearCellRange).
+struct TileNeighbourhood {
+    ivec3 tile;
+    uvec2 r000, r100, r010, r110, r001, r101, r011, r111;
+};
+
+uvec2 tileRangeOrEmpty(ivec3 tile) {
+    ivec3 tableLow = push.chunkBase.xyz * tilesPerAxis();
+    ivec3 tableHigh = tableLow + push.chunkCount.xyz * tilesPerAxis() - 1;
+    if (any(greaterThan(tile, tableHigh))) return uvec2(0xffffffffu, 0u);
+    int index = tileIndex(tile);
+    return uvec2(tileRanges.key[2 * index], tileRanges.key[2 * index + 1]);
+}
+
+TileNeighbourhood tileNeighbourhood(ivec3 tile) {
+    TileNeighbourhood n;
+    n.tile = tile;
+    n.r000 = tileRangeOrEmpty(tile);
+    n.r100 = tileRangeOrEmpty(tile + ivec3(1, 0, 0));
+    n.r010 = tileRangeOrEmpty(tile + ivec3(0, 1, 0));
+    n.r110 = tileRangeOrEmpty(tile + ivec3(1, 1, 0));
+    n.r001 = tileRangeOrEmpty(tile + ivec3(0, 0, 1));
+    n.r101 = tileRangeOrEmpty(tile + ivec3(1, 0, 1));
+    n.r011 = tileRangeOrEmpty(tile + ivec3(0, 1, 1));
+    n.r111 = tileRangeOrEmpty(tile + ivec3(1, 1, 1));
+    return n;
+}
+
+// `range` widened by `other` when `use`.
+uvec2 uniteIf(uvec2 range, bool use, uvec2 other) {
+    return use ? uvec2(min(range.x, other.x), max(range.y, other.y)) : range;
+}
+
+// cellRange for an offset below 8 on every axis, from the neighbourhood of the anchors' tile:
+// the same tiles, so the same range.
+uvec2 nearCellRange(TileNeighbourhood n, TileAnchors anchors, ivec3 offset) {
+    ivec3 from = push.gridOrigin.xyz + push.anchorStart.xyz + anchors.first * push.anchorStep.xyz + offset;
+    ivec3 to = push.gridOrigin.xyz + push.anchorStart.xyz + anchors.last * push.anchorStep.xyz + offset;
+    bvec3 here = equal(from >> tileShift(), n.tile);       // the reads start in this tile, else in the next
+    bvec3 next = greaterThan(to >> tileShift(), n.tile);  // the reads reach the next tile
+    uvec2 range = uvec2(0xffffffffu, 0u);
+    range = uniteIf(range, here.x && here.y && here.z, n.r000);
+    range = uniteIf(range, next.x && here.y && here.z, n.r100);
+    range = uniteIf(range, here.x && next.y && here.z, n.r010);
+    range = uniteIf(range, next.x && next.y && here.z, n.r110);
+    range = uniteIf(range, here.x && here.y && next.z, n.r001);
+    range = uniteIf(range, next.x && here.y && next.z, n.r101);
+    range = uniteIf(range, here.x && next.y && next.z, n.r011);
+    range = uniteIf(range, next.x && next.y && next.z, n.r111);
+    return range;
+}
+
 // Whether a density range (keys) meets the key interval [lo, hi].
 bool meets(uvec2 range, uint lo, uint hi) {
     return range.x <= hi && lo <= range.y;
@@ -199,12 +277,13 @@ bool meets(uvec2 range, uint lo, uint hi) {
 void main() {
     uint id = gl_GlobalInvocationID.x;
     uint record = uint(push.anchorStart.w);
+    uint groupsX = activeDispatchGroupsX(SWEEP_WORKGROUP_INVOCATIONS);
     if (id == 0u) {
-        ivec3 n = anchorsPerTile();
-        activeDispatch.args[4u * record] = uint(n.x * n.y * n.z + SWEEP_WORKGROUP_INVOCATIONS - 1) /
-                                           uint(SWEEP_WORKGROUP_INVOCATIONS);
+        activeDispatch.args[4u * record] = groupsX;
         activeDispatch.args[4u * record + 2u] = 1u;
-        activeDispatch.args[4u * (1u - record) + 1u] = 0u; // the next phase's record starts with no tile
+        // the next phase's record starts with no tile
+        activeDispatch.args[4u * (1u - record) + 1u] = 0u;
+        activeDispatch.args[4u * (1u - record) + 3u] = 0u;
     }
     if (id >= uint(push.chunkCount.x * push.chunkCount.y * push.chunkCount.z * tilesPerChunk())) return;
     TileAnchors anchors = tileAnchors(tileOfId(id));
@@ -212,8 +291,9 @@ void main() {
     atomicAdd(skipStats.candidateTilePhases, 1u);
 
     // The density range each tested cell can read (keys), over this tile's anchors.
-    uvec2 range0 = cellRange(anchors, ivec3(0, 0, 0));
-    uvec2 range1 = cellRange(anchors, ivec3(0, 1, 0));
+    TileNeighbourhood neighbourhood = tileNeighbourhood(tileOfId(id));
+    uvec2 range0 = nearCellRange(neighbourhood, anchors, ivec3(0, 0, 0));
+    uvec2 range1 = nearCellRange(neighbourhood, anchors, ivec3(0, 1, 0));
 
     // A rule may match when each of its tested cells' value sets meets that cell's range.
     bool mayMatch = false;
@@ -228,5 +308,10 @@ void main() {
 
     if (!mayMatch) return;
     atomicAdd(skipStats.activeTilePhases, 1u);
-    activeTiles.id[atomicAdd(activeDispatch.args[4u * record + 1u], 1u)] = id;
+    uint slot = atomicAdd(activeDispatch.args[4u * record + 3u], 1u);
+    activeTiles.id[slot] = id;
+    // Rows of groupsX workgroups enough for the anchors of the tiles up to this one.
+    uint lanes = (slot + 1u) * uint(anchorsPerTileCount());
+    uint rowLanes = groupsX * uint(SWEEP_WORKGROUP_INVOCATIONS);
+    atomicMax(activeDispatch.args[4u * record + 1u], (lanes + rowLanes - 1u) / rowLanes);
 }

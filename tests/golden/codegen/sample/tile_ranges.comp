@@ -99,7 +99,7 @@ layout(std430, set = 0, binding = 5) buffer ActiveTiles {
 } activeTiles;
 
 layout(std430, set = 0, binding = 6) buffer ActiveDispatch {
-    uint args[]; // two VkDispatchIndirectCommand records (x, y, z, padding); y counts active tiles
+    uint args[]; // two VkDispatchIndirectCommand records (x, y, z) and each one's active tile count
 } activeDispatch;
 
 layout(std430, set = 0, binding = 7) buffer SkipStats {
@@ -160,6 +160,25 @@ TileAnchors tileAnchors(ivec3 tile) {
 ivec3 anchorsPerTile() {
     ivec3 step = push.anchorStep.xyz;
     return min((ivec3(tileSize()) + step - 1) / step, push.anchorCount.xyz);
+}
+int anchorsPerTileCount() {
+    ivec3 n = anchorsPerTile();
+    return n.x * n.y * n.z;
+}
+
+// Workgroups per row of an indirect sweep dispatch: enough for one tile's anchors, so the rows
+// (workgroup y) never outnumber the active tiles (voxc::skipTileShift checks them against the limit).
+uint activeDispatchGroupsX(int workgroupInvocations) {
+    return uint(anchorsPerTileCount() + workgroupInvocations - 1) / uint(workgroupInvocations);
+}
+
+// An indirect sweep's lanes take the active tiles' anchors one after another: lane `lane` of
+// the dispatch is anchor `anchor` of active tile `slot`; false past the last active tile.
+bool activeAnchorIndex(uint record, uint lane, out uint slot, out int anchor) {
+    uint perTile = uint(anchorsPerTileCount());
+    slot = lane / perTile;
+    anchor = int(lane % perTile);
+    return slot < activeDispatch.args[4u * record + 3u];
 }
 // ---- end tiles.glsl ----
 

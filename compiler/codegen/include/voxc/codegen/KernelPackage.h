@@ -40,7 +40,7 @@ constexpr uint32_t kBindingNoiseTables = 2; // buffer of int: Perlin's 256-entry
 constexpr uint32_t kBindingTileRanges = 3;     // uint[2 per tile]: lowest, highest density key
 constexpr uint32_t kBindingTileDirty = 4;      // uint per tile: range stale (written since computed)
 constexpr uint32_t kBindingActiveTiles = 5;    // uint per tile: ids of the current phase's active tiles
-constexpr uint32_t kBindingActiveDispatch = 6; // uint[8]: two VkDispatchIndirectCommand records (+ padding)
+constexpr uint32_t kBindingActiveDispatch = 6; // uint[8]: two VkDispatchIndirectCommand records (+ active tile count)
 constexpr uint32_t kBindingSkipStats = 7;      // uint[2]: active and candidate (tile, phase) pairs of a run
 // uint per voxel, same chunk-major addresses as kBindingVoxels: the voxel's material id (0..255).
 // Allocated at grid size only when KernelPackage::usesMaterials; otherwise a one-element buffer
