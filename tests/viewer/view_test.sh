@@ -40,7 +40,9 @@ save-edits $work/edits.json
 screenshot $work/carved.png
 wait-change 300
 screenshot $work/reloaded.png
-screenshot-window $work/reloaded_window.png
+set bridge.peak 2
+screenshot $work/slider.png
+screenshot-window $work/slider_window.png
 wait-change 300
 screenshot $work/typo.png
 screenshot-window $work/typo_window.png
@@ -64,6 +66,7 @@ if wait_for "waiting for" 1; then
     # The arch's peak drops from 10 to 4: a change the reload must show.
     sed -i 's/  peak = 10;/  peak = 4;/' "$work/scene.vox"
     cp "$work/scene.vox" "$work/changed.vox"
+    sed 's/  peak = 4;/  peak = 2;/' "$work/scene.vox" >"$work/slider.vox" # what the slider makes of it
     wait_for "waiting for" 2 && sed -i 's/  radius = 4;/  radius = 4/' "$work/scene.vox" # a missing ';'
 fi
 wait "$viewer_pid"
@@ -75,18 +78,23 @@ expect reloaded 0 "view: reloaded .*scene\.vox" -- cat "$work/log"
 expect typo_shown 0 "scene\.vox does not check \(the file changed\); keeping the last good world:" -- cat "$work/log"
 expect typo_located 0 "scene\.vox:[0-9]+:[0-9]+: error E0001" -- cat "$work/log"
 expect carve_visible 0 "differing [1-9]" -- $compare "$work/before.png" "$work/carved.png"
-expect last_world_kept 0 "max 0, " -- $compare "$work/reloaded.png" "$work/typo.png"
+expect last_world_kept 0 "max 0, " -- $compare "$work/slider.png" "$work/typo.png"
 # The panel shows the diagnostics: the window changes (thousands of pixels of red text) though the world does not.
-expect typo_in_window 0 "differing [0-9]{4,} " -- $compare "$work/reloaded_window.png" "$work/typo_window.png" 8
+expect typo_in_window 0 "differing [0-9]{4,} " -- $compare "$work/slider_window.png" "$work/typo_window.png" 8
 expect undo_visible 0 "differing [1-9]" -- $compare "$work/typo.png" "$work/undone.png"
+expect slider_reran 0 "view: reloaded .*\(bridge\.peak = 2; " -- cat "$work/log"
+expect slider_visible 0 "differing [1-9]" -- $compare "$work/reloaded.png" "$work/slider.png"
 
 # The same pictures from `voxc render` of the replayed edits, same camera and size.
 "$voxc" render "$work/original.vox" --edits "$work/edits.json" -o "$work/render_carved.png" --camera $camera \
     --size $size --device lavapipe >/dev/null 2>&1
 "$voxc" render "$work/changed.vox" --edits "$work/edits.json" -o "$work/render_reloaded.png" --camera $camera \
     --size $size --device lavapipe >/dev/null 2>&1
+"$voxc" render "$work/slider.vox" --edits "$work/edits.json" -o "$work/render_slider.png" --camera $camera \
+    --size $size --device lavapipe >/dev/null 2>&1
 expect carved_equals_render 0 "max [0-2], " -- $compare "$work/carved.png" "$work/render_carved.png"
 expect reloaded_equals_render 0 "max [0-2], " -- $compare "$work/reloaded.png" "$work/render_reloaded.png"
+expect slider_equals_render 0 "max [0-2], " -- $compare "$work/slider.png" "$work/render_slider.png"
 expect reload_visible 0 "differing [1-9]" -- $compare "$work/carved.png" "$work/reloaded.png"
 expect edits_replay 0 "2 applied on the host, 2 of them changed voxels" -- \
     "$voxc" run "$work/original.vox" --edits "$work/edits.json" -o "$work/replayed.ply" --device lavapipe
