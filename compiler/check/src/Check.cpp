@@ -167,6 +167,7 @@ CheckResult checkSource(const SourceFile& source, const CheckOptions& options) {
             check::Context context{diagnostics, options.limits, check::Constants(diagnostics, options.constOverrides), {}};
             context.seed = options.seed;
             context.curvesSolver = options.curvesSolver;
+            context.erosionRunner = options.erosionRunner;
             context.keepSolveChannels = options.keepSolveChannels;
             context.region = options.region;
             std::vector<CheckedLsystem> lsystems;

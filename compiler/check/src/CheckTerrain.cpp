@@ -305,6 +305,7 @@ std::optional<TerrainBlock> readTerrain(Context& context, const ast::Block& bloc
         } else if (ok && expr->name != "none") {
             out.erosion = shiftedPreset(expr->name, domain.minLevel, domain.maxLevel, stepsScale);
             out.erosion->params.seed = world.seed;
+            out.erosion->runner = context.erosionRunner;
         }
     }
     if (!ok) return std::nullopt;

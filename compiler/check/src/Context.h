@@ -3,6 +3,7 @@
 #include "Constants.h"
 #include "Materials.h"
 #include "voxc/generators/curves/Multigrid.h"
+#include "voxc/generators/terrain/Terrain.h"
 
 #include "voxc/program/Program.h"
 #include "voxc/syntax/Diagnostics.h"
@@ -23,6 +24,7 @@ struct Context {
     // Each terrain block's height map, which fields sample as NAME(wx, wz); null for a block with
     // errors (reported), so its uses report nothing more.
     std::map<std::string, std::shared_ptr<const SampledMap>, std::less<>> maps;
+    terrain::ErosionRunner erosionRunner; // CheckOptions::erosionRunner
     // List entries of the lsystem_cave point sets checked so far: the runtime bounds their sum.
     uint64_t pointSetListEntries = 0;
     std::optional<uint32_t> seed; // CheckOptions::seed

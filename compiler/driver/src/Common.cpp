@@ -43,6 +43,7 @@ Program loadProgram(const std::string& path, const WorldOverrides& overrides, bo
     options.seed = overrides.seed;
     options.region = overrides.region;
     options.curvesSolver = overrides.curvesSolver;
+    options.erosionRunner = overrides.erosionRunner;
     options.keepSolveChannels = overrides.keepSolveChannels;
     const auto start = std::chrono::steady_clock::now();
     CheckResult result = checkFile(path, options);

@@ -19,6 +19,7 @@
 #include "voxc/mesh/SurfaceNets.h"
 #include "voxc/vulkan/Context.h"
 #include "voxc/vulkan/Executor.h"
+#include "voxc/vulkan/GpuErosion.h"
 #include "voxc/vulkan/GpuMultigrid.h"
 #include "voxc/vulkan/GpuMesher.h"
 
@@ -121,6 +122,16 @@ void run(const RunOptions& options) {
             multigridDevice = solver.device().name;
             return vulkanLinearSolver(solver)(name, fixed, std::move(components), tolerance, limits);
         };
+    std::string erosionDevice; // the device's name once erosion steps ran there
+    if (options.solveOn != "host")
+        overrides.erosionRunner = [&](terrain::ErosionGrid& grid, const terrain::ErosionParams& params, int32_t level,
+                                      uint32_t firstStep, uint32_t steps, bool drain) {
+            VulkanContext& solver = openDevice();
+            if (options.solveOn.empty() && solver.device().type == DeviceType::Cpu)
+                return terrain::runErosionSteps(grid, params, level, firstStep, steps, drain);
+            erosionDevice = solver.device().name;
+            vulkanErosionRunner(solver)(grid, params, level, firstStep, steps, drain);
+        };
     const auto checkStart = std::chrono::steady_clock::now();
     const RegionRun run =
         planRegionRun(loadProgram(options.file, withRegion(overrides, options.region)), options.region);
@@ -137,6 +148,7 @@ void run(const RunOptions& options) {
                             spirvAfter.hits - spirvBefore.hits, spirvAfter.compiled - spirvBefore.compiled,
                             cache ? "" : " (--no-cache)"));
     status() << formatSolveReport(program, false, multigridDevice);
+    if (!erosionDevice.empty()) status() << fmt::format("terrain erosion steps ran on {}\n", erosionDevice);
     VulkanContext& context = openDevice();
     times.add("device", deviceMs, "instance, device, pipeline cache");
     VulkanExecutor executor(context, package);
@@ -245,8 +257,9 @@ void addRunCommand(CLI::App& app) {
                         "host (the CPU mesher; always for surface-nets)")
         ->check(CLI::IsMember({"device", "host"}));
     command->add_option("--solve-on", options->solveOn,
-                        "device or host: where curves blocks run their multigrid solves (the same values bit for bit "
-                        "on lavapipe; default: the device unless it is a CPU device such as lavapipe)")
+                        "device or host: where curves blocks run their multigrid solves and terrain blocks their "
+                        "erosion steps (the same values bit for bit on lavapipe; default: the device unless it is a "
+                        "CPU device such as lavapipe)")
         ->check(CLI::IsMember({"device", "host"}));
     command->add_option("--lod", options->lod,
                         "LEVELS, e.g. 0,1,2: write one marching-cubes mesh per level beside -o (x.lod1.glb), "

@@ -14,6 +14,11 @@ ErosionSettings presetSettings(std::string_view name) {
     return settings;
 }
 
+void runErosionSteps(ErosionGrid& grid, const ErosionParams& params, int32_t level, uint32_t firstStep,
+                     uint32_t steps, bool drain) {
+    for (uint32_t step = firstStep; step < firstStep + steps; ++step) erosionStep(grid, params, level, step, drain);
+}
+
 Field2 gaussian5(const Field2& field) {
     static constexpr std::array<float, 25> kTaps{1, 4, 7, 4, 1, 4, 16, 26, 16, 4, 7, 26, 41, 26, 7, 4, 16, 26, 16, 4, 1, 4, 7, 4, 1};
     Field2 out(field.width, field.height);
@@ -82,7 +87,7 @@ public:
         next.rain = fields.params[size_t(Param::Rain)];
         next.capacity = fields.params[size_t(Param::Capacity)];
         grid_.emplace(std::move(next));
-        for (uint32_t step = 0; step < steps; ++step) erosionStep(*grid_, settings_.params, fields.level, step);
+        if (steps > 0) runner()(*grid_, settings_.params, fields.level, 0, steps, false);
         result_.erosionSteps += steps;
         result_.erosionCellSteps += uint64_t(steps) * uint64_t(n) * uint64_t(n);
     }
@@ -90,7 +95,7 @@ public:
     // The drain, the final deposit (S_h += s, s = 0; B2.5) and the Gaussian x4 on S_h.
     void finish() {
         if (!grid_) return;
-        for (uint32_t step = 0; step < settings_.drainSteps; ++step) erosionStep(*grid_, settings_.params, 0, step, true);
+        if (settings_.drainSteps > 0) runner()(*grid_, settings_.params, 0, 0, settings_.drainSteps, true);
         const uint64_t cells = grid_->base.values.size();
         result_.erosionSteps += settings_.drainSteps;
         result_.erosionCellSteps += uint64_t(settings_.drainSteps) * cells;
@@ -104,6 +109,8 @@ public:
     const std::optional<ErosionGrid>& grid() const { return grid_; }
 
 private:
+    ErosionRunner runner() const { return settings_.runner ? settings_.runner : ErosionRunner(runErosionSteps); }
+
     const TerrainMap& map_;
     const ErosionSettings& settings_;
     TerrainResult& result_;

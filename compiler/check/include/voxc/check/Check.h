@@ -8,6 +8,7 @@
 #include "voxc/generators/curves/Multigrid.h"
 #include "voxc/generators/lsystem/Connect.h"
 #include "voxc/generators/lsystem/Definition.h"
+#include "voxc/generators/terrain/Terrain.h"
 #include "voxc/program/Program.h"
 #include "voxc/syntax/Diagnostics.h"
 #include "voxc/syntax/SourceFile.h"
@@ -63,6 +64,9 @@ struct CheckOptions {
     // How curves blocks run their linear solves (normals, noise parameters): empty, the host's
     // multigrid; `voxc run` passes the same schedule on its Vulkan device (voxc/vulkan/GpuMultigrid.h).
     curves::LinearSolver curvesSolver;
+    // Where terrain blocks run their erosion steps: empty, the host's loop; `voxc run --solve-on`
+    // passes the same steps on its Vulkan device (voxc/vulkan/GpuErosion.h).
+    terrain::ErosionRunner erosionRunner;
     // Keep each curves block's intermediate channels in its table (SolveTable::channels; `--dump`).
     bool keepSolveChannels = false;
     // `--region`: the box of the world (world voxels, min and max with max excluded) a run will

@@ -5,15 +5,25 @@
 #include "voxc/generators/terrain/Cascade.h"
 #include "voxc/generators/terrain/Erosion.h"
 
+#include <functional>
 #include <optional>
 
 namespace voxc::terrain {
+
+// Runs `steps` erosion steps numbered firstStep.. of `level` on the grid in place (drain: drain
+// steps), exactly as that many erosionStep calls would: the host loop (runErosionSteps) or a
+// device's (voxc/vulkan/GpuErosion.h).
+using ErosionRunner = std::function<void(ErosionGrid& grid, const ErosionParams& params, int32_t level,
+                                         uint32_t firstStep, uint32_t steps, bool drain)>;
+void runErosionSteps(ErosionGrid& grid, const ErosionParams& params, int32_t level, uint32_t firstStep,
+                     uint32_t steps, bool drain);
 
 struct ErosionSettings {
     ErosionParams params;
     std::map<int32_t, uint32_t> levelSteps; // level -> steps; levels outside the map's range are rejected
     uint32_t drainSteps = 100;
     bool thesisProlongation = false;        // Alg. 4 instead of bilinear between erosion levels
+    ErosionRunner runner;                   // where each level's steps run; empty: runErosionSteps
 };
 
 // ErosionSettings from a Table 5.2/5.3 preset; throws ParameterError for an unknown name.
