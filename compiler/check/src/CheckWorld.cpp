@@ -6,6 +6,7 @@
 
 #include "voxc/builtins/Shapes.h"
 
+#include <algorithm>
 #include <fmt/format.h>
 #include <limits>
 
@@ -17,6 +18,38 @@ constexpr int64_t kMaxAxisVoxels = 1 << 20;
 constexpr int64_t kMaxOrigin = 1 << 30;
 
 bool isPowerOfTwo(int64_t v) { return v > 0 && (v & (v - 1)) == 0; }
+
+constexpr std::string_view kUnbounded = "unbounded";
+
+bool isUnbounded(const ast::Value& value) {
+    return !value.isList() && value.scalar->kind == ast::Expr::Kind::Name && value.scalar->name == kUnbounded;
+}
+
+// `size = [X, Y, Z]` where X and Z may be `unbounded` (docs/language.md, "world"): such an axis
+// gets the largest size, kMaxAxisVoxels voxels from the origin, and World::unbounded says so.
+std::optional<glm::ivec3> readWorldSize(Context& context, const ast::Assignment& a, World& world) {
+    const bool mentionsUnbounded = a.value.isList() && a.value.elements.size() == 3 &&
+                                   std::ranges::any_of(a.value.elements, isUnbounded);
+    if (!mentionsUnbounded) return readIntegerVec3(context, a, 1, kMaxAxisVoxels);
+    glm::ivec3 size(0);
+    bool ok = true;
+    for (int axis = 0; axis < 3; ++axis) {
+        const ast::Value& element = a.value.elements[size_t(axis)];
+        if (!isUnbounded(element)) {
+            const std::optional<int64_t> v = readIntegerElement(context, a, element, 1, kMaxAxisVoxels);
+            ok = ok && v.has_value();
+            if (v) size[axis] = int32_t(*v);
+        } else if (axis == 1) {
+            context.diagnostics.error("E0007", element.loc,
+                                      "only x and z may be unbounded: the world's height (y) needs a size");
+            ok = false;
+        } else {
+            world.unbounded[axis] = true;
+            size[axis] = int32_t(kMaxAxisVoxels);
+        }
+    }
+    return ok ? std::optional(size) : std::nullopt;
+}
 
 } // namespace
 
@@ -30,12 +63,16 @@ std::optional<World> checkWorld(Context& context, const ast::Block& block) {
     World world;
     bool sizeOk = false;
     if (const ast::Assignment* a = keys.require("size")) {
-        if (auto size = readIntegerVec3(context, *a, 1, kMaxAxisVoxels)) {
+        if (auto size = readWorldSize(context, *a, world)) {
             world.size = *size;
             sizeOk = true;
             int64_t voxels = int64_t(size->x) * size->y * size->z;
             // A run of a region runs the region's grid, which checkWork bounds.
-            if (voxels > context.limits.maxVoxels && !context.region)
+            if ((world.unbounded.x || world.unbounded.z) && !context.region)
+                context.diagnostics.error("E0012", a->value.loc,
+                                          "the world is unbounded, so it cannot run as one grid: give a box of it "
+                                          "with --region (voxc run, interp, check, world)");
+            else if (voxels > context.limits.maxVoxels && !context.region)
                 context.diagnostics.error("E0012", a->value.loc,
                                           fmt::format("a {} grid has {} voxels, more than the limit of {}",
                                                       formatVec(*size), voxels, context.limits.maxVoxels));

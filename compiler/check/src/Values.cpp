@@ -167,6 +167,14 @@ std::optional<std::array<double, 3>> readNumberVec3(Context& context, const ast:
     return vec3(context, a, a.value, false, min, max);
 }
 
+std::optional<int64_t> readIntegerElement(Context& context, const ast::Assignment& a, const ast::Value& element,
+                                          int64_t min, int64_t max) {
+    auto v = scalar(context, a, element, "an integer");
+    if (!v || !isInteger(context, a, element.loc, *v) || !inRange(context, a, element.loc, *v, double(min), double(max)))
+        return std::nullopt;
+    return int64_t(*v);
+}
+
 std::optional<glm::ivec3> readIntegerVec3(Context& context, const ast::Assignment& a, int64_t min, int64_t max) {
     auto v = vec3(context, a, a.value, true, double(min), double(max));
     if (!v) return std::nullopt;

@@ -62,6 +62,9 @@ std::optional<int64_t> readInteger(Context& context, const ast::Assignment& a, i
 std::optional<std::array<double, 3>> readNumberVec3(Context& context, const ast::Assignment& a, double min,
                                                     double max);
 std::optional<glm::ivec3> readIntegerVec3(Context& context, const ast::Assignment& a, int64_t min, int64_t max);
+// One element of a's list value as an integer in [min, max] (E0010, E0007 at the element).
+std::optional<int64_t> readIntegerElement(Context& context, const ast::Assignment& a, const ast::Value& element,
+                                          int64_t min, int64_t max);
 // `[lo, hi]` of numbers with lo <= hi, each within the float range.
 std::optional<std::array<double, 2>> readRange(Context& context, const ast::Assignment& a);
 // `[[x, y, z], [x, y, z]]` of integers.

@@ -128,6 +128,9 @@ struct World {
     glm::ivec3 localBase{0, 0, 0};
     int32_t chunkSize = 32;     // power of two, 8..64
     uint32_t seed = 0;
+    // `size = [unbounded, Y, unbounded]`: x and/or z declared without end. Such an axis has the
+    // largest size (2^20 voxels from the origin); only a box of the world can run (--region).
+    glm::bvec3 unbounded{false};
 };
 
 // How a field stage combines the field's value f with the grid's density d at each voxel.
