@@ -305,6 +305,7 @@ std::optional<TerrainBlock> readTerrain(Context& context, const ast::Block& bloc
         } else if (ok && expr->name != "none") {
             out.erosion = shiftedPreset(expr->name, domain.minLevel, domain.maxLevel, stepsScale);
             out.erosion->params.seed = world.seed;
+            out.erosion->runner = context.erosionRunner;
         }
     }
     if (!ok) return std::nullopt;
@@ -360,6 +361,23 @@ SolveTable voxelise(const TerrainBlock& block, const terrain::TerrainResult& res
     return table;
 }
 
+// The finest level's height in world voxels, as fields sample it (NAME(wx, wz)).
+std::shared_ptr<const SampledMap> sampledMap(const std::string& name, const TerrainBlock& block,
+                                             const terrain::TerrainResult& result) {
+    const terrain::Domain& domain = block.map.domain;
+    auto map = std::make_shared<SampledMap>();
+    map->name = name;
+    map->side = result.height.width;
+    map->originX = float(domain.origin.x);
+    map->originZ = float(domain.origin.y);
+    map->cellsPerVoxel = float(1.0 / domain.cellSize(domain.maxLevel));
+    map->height.reserve(result.height.values.size());
+    for (float h : result.height.values) map->height.push_back(float(block.base + double(h) * domain.maxHeight));
+    const auto [lowest, highest] = std::minmax_element(map->height.begin(), map->height.end());
+    map->lowest = *lowest, map->highest = *highest;
+    return map;
+}
+
 } // namespace
 
 std::vector<CurvesBlock> checkTerrains(Context& context, const ast::File& file, const World& world,
@@ -379,6 +397,7 @@ std::vector<CurvesBlock> checkTerrains(Context& context, const ast::File& file, 
             blocks.push_back(std::move(out));
             continue;
         }
+        context.maps[*block.label] = nullptr; // until its map is made
         const uint64_t cells = uint64_t(world.size.x) * uint64_t(world.size.y) * uint64_t(world.size.z);
         if (world.unbounded.x || world.unbounded.z) {
             context.diagnostics.error("E0012", block.labelLoc,
@@ -400,6 +419,7 @@ std::vector<CurvesBlock> checkTerrains(Context& context, const ast::File& file, 
             try {
                 const terrain::TerrainResult result = terrain::generateTerrain(terrainBlock->map, terrainBlock->erosion, limits);
                 out.table = std::make_shared<const SolveTable>(voxelise(*terrainBlock, result, world));
+                context.maps[*block.label] = sampledMap(*block.label, *terrainBlock, result);
                 cellBudget -= cells;
             } catch (const terrain::LimitError& e) {
                 context.diagnostics.error("E0012", block.labelLoc, fmt::format("terrain '{}': {}", *block.label, e.what()));
