@@ -9,6 +9,7 @@ packages=(
   libglm-dev libfmt-dev libcli11-dev nlohmann-json3-dev libmeshoptimizer-dev
   libgtest-dev libbenchmark-dev libnoise-dev zlib1g-dev libpng-dev
   libopenvdb-dev libboost-dev # voxc-bench's meshing peer, OpenVDB's volumeToMesh
+  libopenvdb-tools python3-openvdb # OpenVDB's own vdb_print and Python module open a voxc world tile (tests/world)
   libopenmpi-dev openmpi-bin # voxc world under mpirun (tests/world)
   libglfw3-dev libimgui-dev libstb-dev # voxc view: the window and its panel (runtime/viewer)
   xvfb xauth # xvfb-run: the viewer's test under a virtual display (tests/viewer)

@@ -94,16 +94,14 @@ uint8_t majorityMaterial(const Samples& samples, glm::ivec3 cell, unsigned solid
     return best;
 }
 
-} // namespace
-
-ChunkMesh extractChunk(const ChunkedGrid& grid, float iso, glm::ivec3 worldChunk) {
+// The share of the cells `cells` (grid-local, inside the cell domain): what extractChunk does for
+// one chunk's cells, and the mesh of a box of cells for one chunk's part of the box.
+ChunkMesh extractCells(const ChunkedGrid& grid, float iso, const CellRange& cells, float margin) {
     const ChunkLayout& layout = grid.layout();
     const CellDomain domain{layout.gridSize};
-    const CellRange cells = surface_nets::chunkCells(layout, worldChunk);
     ChunkMesh mesh;
     if (cells.empty()) return mesh;
     const Samples samples(grid, cells.begin - 1, cells.end - cells.begin + 3);
-    const float margin = crossingMargin(layout);
 
     // Every crossed edge of the chunk's cells: lower corners in [begin, end] (the high faces
     // included), but along its own axis an edge starting at `end` belongs to no cell here.
@@ -156,6 +154,12 @@ ChunkMesh extractChunk(const ChunkedGrid& grid, float iso, glm::ivec3 worldChunk
     return mesh;
 }
 
+} // namespace
+
+ChunkMesh extractChunk(const ChunkedGrid& grid, float iso, glm::ivec3 worldChunk) {
+    return extractCells(grid, iso, surface_nets::chunkCells(grid.layout(), worldChunk), crossingMargin(grid.layout()));
+}
+
 } // namespace voxc::marching_cubes
 
 namespace voxc {
@@ -173,13 +177,21 @@ bool sameBits(const EdgeVertex& a, const EdgeVertex& b) {
 } // namespace
 
 Mesh meshMarchingCubes(const ChunkedGrid& grid, const MeshOptions& options, MeshStats* stats) {
+    const ChunkLayout& layout = grid.layout();
+    return meshMarchingCubesCells(grid, {glm::ivec3(-1), layout.gridSize}, marching_cubes::crossingMargin(layout), options,
+                                  stats);
+}
+
+Mesh meshMarchingCubesCells(const ChunkedGrid& grid, const CellBox& cells, float margin, const MeshOptions& options,
+                            MeshStats* stats) {
     const std::vector<glm::ivec3> chunks = cellChunks(grid.layout());
     std::vector<ChunkMesh> parts(chunks.size());
     const size_t skipped = forEachChunk(chunks.size(), [&](size_t i) {
-        if (options.skipUniformChunks &&
-            surface_nets::cellsAreUniform(grid, options.iso, surface_nets::chunkCells(grid.layout(), chunks[i])))
+        const surface_nets::CellRange chunk = surface_nets::chunkCells(grid.layout(), chunks[i]);
+        const surface_nets::CellRange share{glm::max(chunk.begin, cells.begin), glm::min(chunk.end, cells.end)};
+        if (share.empty() || (options.skipUniformChunks && surface_nets::cellsAreUniform(grid, options.iso, share)))
             return false;
-        parts[i] = marching_cubes::extractChunk(grid, options.iso, chunks[i]);
+        parts[i] = marching_cubes::extractCells(grid, options.iso, share, margin);
         return true;
     });
     if (stats) *stats = MeshStats{chunks.size(), skipped};

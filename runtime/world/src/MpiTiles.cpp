@@ -15,10 +15,12 @@ namespace {
 constexpr int kTag = 7;
 constexpr size_t kDigestSize = 64; // SHA-256 in hex
 
-// A worker's message to rank 0: the tile it finished (-1 on its first message) and its file's hash.
+// A worker's message to rank 0: the tile it finished (-1 on its first message) and its files'
+// hashes (the mesh's all zero bytes when the tile has no mesh file).
 struct Finished {
     int64_t tile = -1;
-    char sha256[kDigestSize] = {};
+    char voxels[kDigestSize] = {};
+    char mesh[kDigestSize] = {};
 };
 
 // Rank 0: answers every worker's message with the next pending tile, or -1 when none is left.
@@ -29,7 +31,9 @@ void coordinate(int ranks, const std::vector<int64_t>& pending, const TileDone& 
         Finished message;
         MPI_Status status;
         MPI_Recv(&message, int(sizeof message), MPI_BYTE, MPI_ANY_SOURCE, kTag, MPI_COMM_WORLD, &status);
-        if (message.tile >= 0) done(message.tile, std::string(message.sha256, kDigestSize));
+        if (message.tile >= 0)
+            done(message.tile, {std::string(message.voxels, kDigestSize),
+                                message.mesh[0] ? std::string(message.mesh, kDigestSize) : std::string()});
         const int64_t tile = next < pending.size() ? pending[next++] : -1;
         if (tile < 0) --working;
         MPI_Send(&tile, 1, MPI_INT64_T, status.MPI_SOURCE, kTag, MPI_COMM_WORLD);
@@ -44,9 +48,10 @@ void work(const Program& program, const WorldOptions& options) {
         int64_t tile = -1;
         MPI_Recv(&tile, 1, MPI_INT64_T, 0, kTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
         if (tile < 0) return;
-        const std::string digest = writeTile(program, options, tile);
-        message.tile = tile;
-        std::memcpy(message.sha256, digest.data(), kDigestSize);
+        const TileDigests digests = writeTile(program, options, tile);
+        message = Finished{tile};
+        std::memcpy(message.voxels, digests.voxels.data(), kDigestSize);
+        std::memcpy(message.mesh, digests.mesh.data(), digests.mesh.size());
     }
 }
 

@@ -31,6 +31,19 @@ inline constexpr float kCrossingMargin = 1.0f / 1024.0f;
 
 Mesh meshMarchingCubes(const ChunkedGrid& grid, const MeshOptions& options, MeshStats* stats = nullptr);
 
+// Cells named by their minimum corner, grid-local, begin <= cell < end; the grid's cells run from
+// -1 to its size - 1 (the air outside closes the surface).
+struct CellBox {
+    glm::ivec3 begin, end;
+};
+// The part of a mesh that the cells `cells` make, with `margin` in place of the grid's own
+// crossingMargin: a tile of a world cut into tiles, from a grid holding the tile's cells' corners
+// and their neighbours for the gradients (voxc/world/Tiles.h). Two tiles meshed with the world's
+// margin compute each vertex on their common face from the same samples, so they carry the same
+// bits, and the tiles' meshes welded by position are the world's mesh.
+Mesh meshMarchingCubesCells(const ChunkedGrid& grid, const CellBox& cells, float margin, const MeshOptions& options,
+                            MeshStats* stats = nullptr);
+
 namespace marching_cubes {
 
 // Corner c of a cell is at offset (c&1, (c>>1)&1, (c>>2)&1); case bit c is set when corner c is
