@@ -27,8 +27,8 @@ struct Action {
     enum class Kind : uint8_t { Camera, Carve, Add, Set, Undo, Redo, Reload, SaveEdits, Wait, WaitChange, Screenshot,
                                 ScreenshotWindow };
     Kind kind = Kind::Wait;
-    SourceLoc loc;      // the action's word
-    std::string text;   // Camera: the spec; Set: the name; SaveEdits, Screenshot, ScreenshotWindow: the path
+    SourceLoc loc = {};       // the action's word
+    std::string text = {};    // Camera: the spec; Set: the name; SaveEdits, Screenshot, ScreenshotWindow: the path
     double value = 0.0; // Set: the value; Wait, WaitChange: seconds
     bool alongRay = false;       // Carve, Add: a ray (origin, direction) rather than a pixel
     glm::vec2 pixel{0.0f};

@@ -26,7 +26,7 @@ namespace voxc::viewer {
 struct Parameter {
     enum class Kind : uint8_t { Constant, FeatureKey, Seed };
     Kind kind = Kind::Constant;
-    std::string name; // the constant's name, "feature.key", or "seed"
+    std::string name = {}; // the constant's name, "feature.key", or "seed"
     double value = 0.0;
     double min = 0.0, max = 1.0;
     bool integer = false;
@@ -34,9 +34,9 @@ struct Parameter {
 };
 
 struct SessionOptions {
-    std::string path;                  // the .vox file
-    std::optional<uint32_t> seed;      // --seed
-    std::optional<int32_t> chunk;      // --chunk
+    std::string path = {};             // the .vox file
+    std::optional<uint32_t> seed = {}; // --seed
+    std::optional<int32_t> chunk = {}; // --chunk
     float iso = 0.5f;
 };
 
