@@ -59,7 +59,7 @@ public:
         glfwSetWindowUserPointer(window_.handle, this);
         if (!session_.lastError().empty()) log("the file does not check; fix it and save:\n" + session_.lastError());
         if (session_.hasWorld()) setCamera(options.camera);
-        else camera_ = {glm::vec3(100.0f), glm::vec3(0.0f)};
+        else camera_ = {glm::vec3(100.0f), glm::vec3(0.0f)}; // until the file checks
         editsPath_ = options.editsPath.empty() ? options.session.path + ".edits.json" : options.editsPath;
     }
 
@@ -156,6 +156,7 @@ private:
     // Says how a reload went (the panel shows the same), after `why` (a save, a slider).
     void reported(bool reloaded, const std::string& why) {
         if (reloaded) {
+            if (!framed_) setCamera(options_.camera); // the first world after a start with a broken file
             const WorldStats& s = session_.stats();
             log(fmt::format("reloaded {} ({}; {} triangles; check {:.0f} ms, compile {:.0f} ms, run {:.0f} ms, mesh {:.0f} ms)",
                             session_.path(), why, s.triangles, s.checkMs, s.compileMs, s.runMs, s.meshMs));
@@ -173,8 +174,10 @@ private:
     }
 
     void setCamera(const std::string& spec) {
+        refreshMesh(); // presets frame the mesh as it now stands, as `voxc render` frames its mesh
         const rendering::ImageSize size = presenter_.extent();
         camera_ = rendering::parseCamera(spec, frameBounds(), float(size.width) / float(size.height));
+        framed_ = true;
         pictureStale_ = true;
     }
 
@@ -186,8 +189,16 @@ private:
     }
 
     void sceneChanged() {
+        meshStale_ = true;
         sceneStale_ = true;
         pictureStale_ = true;
+    }
+
+    void refreshMesh() {
+        if (!meshStale_) return;
+        mesh_ = session_.hasWorld() ? session_.world().mesh() : Mesh{};
+        meshStale_ = false;
+        sceneStale_ = true;
     }
 
     // The ray through the centre of pixel (x, y) of the view, from the near plane to the far one.
@@ -238,8 +249,8 @@ private:
             rendererSize_ = size;
             sceneStale_ = true;
         }
+        refreshMesh();
         if (sceneStale_) {
-            mesh_ = session_.hasWorld() ? session_.world().mesh() : Mesh{};
             rendering::LineSet lines;
             if (wireframe_) lines = rendering::wireframeLines(mesh_, kWireframeColour);
             if (chunkBorders_ && session_.hasWorld()) {
@@ -283,7 +294,8 @@ private:
     rendering::Camera camera_;
     Mesh mesh_;
     rendering::Picture picture_;
-    bool sceneStale_ = true, pictureStale_ = true;
+    bool meshStale_ = true, sceneStale_ = true, pictureStale_ = true;
+    bool framed_ = false; // a camera was set on a world (else the first world that checks gets one)
     bool wireframe_ = false, chunkBorders_ = false;
     float radius_ = 4.0f, softness_ = 2.0f;
     uint8_t addMaterial_ = 0;
@@ -391,9 +403,10 @@ void App::panel() {
             ImGui::PushID(p.name.c_str());
             double value = p.value;
             if (p.kind == Parameter::Kind::Seed) {
+                // Enter or a step button: a typed number is not a new seed until it is finished.
                 int seed = int(p.value);
-                ImGui::InputInt(label.c_str(), &seed);
-                value = std::max(seed, 0);
+                if (ImGui::InputInt(label.c_str(), &seed, 1, 10, ImGuiInputTextFlags_EnterReturnsTrue))
+                    released = {p.name, double(std::max(seed, 0))};
             } else if (p.integer) {
                 int v = int(p.value);
                 ImGui::SliderInt(label.c_str(), &v, int(p.min), int(p.max));
@@ -404,7 +417,7 @@ void App::panel() {
                 value = v;
             }
             // Re-run when the slider is let go, not at every step of the drag.
-            if (ImGui::IsItemDeactivatedAfterEdit()) released = {p.name, value};
+            if (p.kind != Parameter::Kind::Seed && ImGui::IsItemDeactivatedAfterEdit()) released = {p.name, value};
             ImGui::PopID();
         }
         if (featureOpen) ImGui::TreePop();
@@ -444,9 +457,9 @@ void App::panel() {
         if (lastEdit_)
             ImGui::Text("last edit: %zu chunks re-meshed in %.1f ms", lastEdit_->chunksRemeshed, lastEdit_->ms);
         ImGui::Text("draw %.1f ms", drawMs_);
-        if (ImGui::Checkbox("wireframe", &wireframe_)) sceneChanged();
+        if (ImGui::Checkbox("wireframe", &wireframe_)) sceneStale_ = pictureStale_ = true;
         ImGui::SameLine();
-        if (ImGui::Checkbox("chunk borders", &chunkBorders_)) sceneChanged();
+        if (ImGui::Checkbox("chunk borders", &chunkBorders_)) sceneStale_ = pictureStale_ = true;
         if (ImGui::Button("Frame (iso)")) setCamera("iso");
     }
     ImGui::PopItemWidth();
