@@ -96,7 +96,7 @@ void registerSolve(JsonReporter& reporter, int32_t scale, const std::string& bac
 void registerCurves(JsonReporter& reporter, VulkanContext* context, bool interp, bool host) {
     for (int32_t scale : {1, 2}) {
         const int n = 128 * scale;
-        if (host) registerSolve(reporter, scale, "host", "cpu (1 thread)", [] { return curves::LinearSolver{}; });
+        if (host) registerSolve(reporter, scale, "host", "cpu (2 threads)", [] { return curves::LinearSolver{}; });
         if (context)
             registerSolve(reporter, scale, "vulkan", context->device().name,
                           [context] { return vulkanLinearSolver(*context); });

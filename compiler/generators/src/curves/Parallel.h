@@ -3,6 +3,7 @@
 // depend on the order cells are visited (pointwise maps, one red-black colour), so the result is
 // the same bits as one thread's loop.
 #include <cstdint>
+#include <exception>
 #include <thread>
 
 namespace voxc::curves {
@@ -13,9 +14,22 @@ template <typename Slab>
 void forTwoSlabs(int32_t count, int32_t minimum, Slab&& slab) {
     if (count < minimum || count < 2) return slab(0, count);
     const int32_t mid = count / 2;
-    std::thread other([&] { slab(0, mid); });
-    slab(mid, count);
+    std::exception_ptr failed; // what the second thread threw (std::bad_alloc), rethrown here
+    std::thread other([&] {
+        try {
+            slab(0, mid);
+        } catch (...) {
+            failed = std::current_exception();
+        }
+    });
+    try {
+        slab(mid, count);
+    } catch (...) {
+        other.join();
+        throw;
+    }
     other.join();
+    if (failed) std::rethrow_exception(failed);
 }
 
 } // namespace voxc::curves
