@@ -41,6 +41,7 @@ struct BenchOptions {
     std::vector<int> sizes{64, 128, 256};
     std::vector<int> fieldSizes{256};
     std::vector<int> meshSizes{32, 256};
+    std::vector<int> terrainSides{512};
     std::vector<std::string> backends{"vulkan", "interp", "libnoise", "host", "openvdb"};
     std::string device = "auto";
     int repetitions = 3;
@@ -98,6 +99,10 @@ int main(int argc, char** argv) {
     app.add_option("--sizes", options.sizes, "Grid sizes n (n^3 voxels)")->delimiter(',');
     app.add_option("--field-sizes", options.fieldSizes, "Grid sizes n of the fbm5 and feature cases")->delimiter(',');
     app.add_option("--mesh-sizes", options.meshSizes, "Grid sizes n of the meshing cases")->delimiter(',');
+    app.add_option("--terrain-sides", options.terrainSides,
+                   "Map sides of terrain_mountain_river (powers of two up to 4096; bench/terrain-2048.sh: 2048)")
+        ->delimiter(',')
+        ->check(CLI::Range(8, 4096));
     app.add_option("--backends", options.backends,
                    "vulkan, interp, libnoise, host (L-system expansion, CPU meshers), openvdb (meshing peer)")
         ->delimiter(',');
@@ -162,6 +167,9 @@ int main(int argc, char** argv) {
             bench::registerCurves(reporter, context.get(), uses("interp"), uses("host"));
         if (uses("host")) bench::registerLsystemExpand(reporter);
         if (uses("host")) bench::registerErosion(reporter);
+        // The erosion steps on a CPU device (lavapipe) take about four times the host's loop: GPUs only.
+        bench::registerTerrainSchedule(reporter, options.terrainSides, uses("host"),
+                                       context && context->device().type != DeviceType::Cpu ? context.get() : nullptr);
         if (uses("host")) bench::registerCompileCases(reporter);
         // The meshing cases' grids come from the Vulkan pipeline, so they need the device.
         if (context) bench::registerMeshCases(reporter, *context, options.meshSizes, uses("host"), uses("vulkan"), uses("openvdb"));
