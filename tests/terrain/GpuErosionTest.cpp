@@ -36,18 +36,13 @@ size_t differences(const terrain::ErosionGrid& a, const terrain::ErosionGrid& b)
         EXPECT_EQ(differing, 0u) << name;
         count += differing;
     };
-    compare(a.difference, b.difference, "S_h");
-    compare(a.differenceNext, b.differenceNext, "S_h (other half)");
-    compare(a.water, b.water, "water");
-    compare(a.sediment, b.sediment, "sediment");
-    compare(a.suspended, b.suspended, "suspended");
-    compare(a.fluxL, b.fluxL, "flux L");
-    compare(a.fluxR, b.fluxR, "flux R");
-    compare(a.fluxT, b.fluxT, "flux T");
-    compare(a.fluxB, b.fluxB, "flux B");
-    compare(a.velocityU, b.velocityU, "u");
-    compare(a.velocityV, b.velocityV, "v");
-    compare(a.surface, b.surface, "surface");
+    using G = terrain::ErosionGrid;
+    for (const auto& [field, name] :
+         {std::pair(&G::difference, "S_h"), {&G::differenceNext, "S_h (other half)"}, {&G::water, "water"},
+          {&G::sediment, "sediment"}, {&G::suspended, "suspended"}, {&G::fluxL, "flux L"}, {&G::fluxR, "flux R"},
+          {&G::fluxT, "flux T"}, {&G::fluxB, "flux B"}, {&G::velocityU, "u"}, {&G::velocityV, "v"},
+          {&G::surface, "surface"}})
+        compare(a.*field, b.*field, name);
     return count;
 }
 
