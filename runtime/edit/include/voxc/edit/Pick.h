@@ -6,10 +6,11 @@
 // not finite, read 0 as for the meshers); solid is > iso. The ray is marched in steps of 1/8 voxel
 // from where it enters the grid's box grown by one voxel (beyond it everything is air), and the
 // first step that lands in solid is refined by bisection on the ray parameter, in double, to the
-// iso crossing. Along a grid edge the trilinear field is the meshers' linear interpolation, so a
-// hit on a cell edge is the mesh vertex there; inside a cell it lies within the cell, off the
-// mesh's flat triangles by at most their chord error. A solid feature thinner than the step along
-// the ray can be stepped over.
+// iso crossing. Inside a cell the trilinear field bends a curved surface by up to h^2 tr(H) / 8, so
+// the hit is then moved onto a quadratic height field fitted to the grid-edge crossings around it
+// (the meshers' vertices, each off by one axis' h^2 / (8 R)) where the ray meets it, unless the
+// fit is undetermined or would move it by 0.25 voxel or more (src/Pick.cpp). A solid feature
+// thinner than the step along the ray can be stepped over.
 #include "voxc/grid/Grid.h"
 
 #include <glm/vec3.hpp>
