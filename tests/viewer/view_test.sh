@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Usage: view_test.sh VOXC SOURCE_DIR. `voxc view` under Xvfb on lavapipe, driven by a script as a
-# user would drive it: load scene.vox, carve two holes by clicking, save the edits, reload after the
+# user would drive it: load scene.vox, carve two holes and add a bump by clicking, save the edits, reload after the
 # file changes, keep the last world after a typo and show its diagnostics in the panel. Its screenshots must equal `voxc render` of the
 # replayed edits with the same camera (max channel difference <= 2, docs/viewer.md). Fails, never
 # skips, when xvfb-run is missing. Prints "N passed, N failed" last.
@@ -36,6 +36,7 @@ screenshot $work/before.png
 set radius 5
 carve 240 135
 carve 200 150
+add 300 190
 save-edits $work/edits.json
 screenshot $work/carved.png
 wait-change 300
@@ -96,6 +97,7 @@ expect carved_equals_render 0 "max [0-2], " -- $compare "$work/carved.png" "$wor
 expect reloaded_equals_render 0 "max [0-2], " -- $compare "$work/reloaded.png" "$work/render_reloaded.png"
 expect slider_equals_render 0 "max [0-2], " -- $compare "$work/slider.png" "$work/render_slider.png"
 expect reload_visible 0 "differing [1-9]" -- $compare "$work/carved.png" "$work/reloaded.png"
-expect edits_replay 0 "2 applied on the host, 2 of them changed voxels" -- \
+expect add_takes_the_surface_material 0 '"op": "add".*"material": "grass"' -- cat "$work/edits.json"
+expect edits_replay 0 "3 applied on the host, 3 of them changed voxels" -- \
     "$voxc" run "$work/original.vox" --edits "$work/edits.json" -o "$work/replayed.ply" --device lavapipe
 finish

@@ -29,6 +29,24 @@ constexpr float kPanelWidth = 360.0f;
 
 using Clock = std::chrono::steady_clock;
 
+// The add brush's material choice: the surface's where it is clicked, or the voxels' own (0), or an id.
+constexpr int kSurfaceMaterial = -1;
+
+// The material of the densest solid sample at the corners of the cell that holds `point` (a hit
+// on the surface): what "the surface's material" gives an add. 0 when no corner is solid.
+uint8_t surfaceMaterial(const ChunkedGrid& grid, float iso, glm::vec3 point) {
+    const ChunkLayout& layout = grid.layout();
+    const glm::ivec3 cell = glm::ivec3(glm::floor(point)) - layout.gridOrigin;
+    float densest = iso;
+    uint8_t material = 0;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::ivec3 at = cell + glm::ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
+        if (glm::any(glm::lessThan(at, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(at, layout.gridSize))) continue;
+        if (grid.at(at) > densest) densest = grid.at(at), material = grid.materialAt(at);
+    }
+    return material;
+}
+
 void log(const std::string& line) { std::cerr << "view: " << line << (line.ends_with('\n') ? "" : "\n"); }
 
 struct GlfwLibrary {
@@ -220,7 +238,11 @@ private:
     bool brushAlong(Brush::Op op, glm::vec3 origin, glm::vec3 direction) {
         const std::optional<PickHit> hit = session_.world().pick(origin, direction);
         if (!hit) return false;
-        Brush brush{op, hit->point, radius_, softness_, op == Brush::Op::Add ? addMaterial_ : uint8_t(0)};
+        uint8_t material = 0;
+        if (op == Brush::Op::Add)
+            material = addMaterial_ == kSurfaceMaterial ? surfaceMaterial(session_.world().grid(), session_.iso(), hit->point)
+                                                        : uint8_t(addMaterial_);
+        Brush brush{op, hit->point, radius_, softness_, material};
         lastEdit_ = session_.edit(brush);
         sceneChanged();
         return true;
@@ -298,7 +320,7 @@ private:
     bool framed_ = false; // a camera was set on a world (else the first world that checks gets one)
     bool wireframe_ = false, chunkBorders_ = false;
     float radius_ = 4.0f, softness_ = 2.0f;
-    uint8_t addMaterial_ = 0;
+    int addMaterial_ = kSurfaceMaterial;
     std::optional<EditStats> lastEdit_;
     double drawMs_ = 0.0;
     std::string editsPath_;
@@ -429,11 +451,14 @@ void App::panel() {
         ImGui::SliderFloat("softness", &softness_, 0.25f, 16.0f);
         if (session_.hasWorld()) {
             const std::vector<Material>& materials = session_.program().materials;
-            std::string current = "keep the voxels' own";
+            constexpr const char* kSurface = "the surface's";
+            constexpr const char* kKeep = "keep the voxels' own";
+            std::string current = addMaterial_ == kSurfaceMaterial ? kSurface : kKeep;
             for (const Material& m : materials)
                 if (m.id == addMaterial_) current = m.name;
             if (ImGui::BeginCombo("add material", current.c_str())) {
-                if (ImGui::Selectable("keep the voxels' own", addMaterial_ == 0)) addMaterial_ = 0;
+                if (ImGui::Selectable(kSurface, addMaterial_ == kSurfaceMaterial)) addMaterial_ = kSurfaceMaterial;
+                if (ImGui::Selectable(kKeep, addMaterial_ == 0)) addMaterial_ = 0;
                 for (const Material& m : materials)
                     if (ImGui::Selectable(m.name.c_str(), addMaterial_ == m.id)) addMaterial_ = m.id;
                 ImGui::EndCombo();
