@@ -16,6 +16,12 @@ done
 # The cliff face from the floor's side.
 "$voxc" render "$root/examples/curves_cliff.vox" -o "$root/docs/images/curves_cliff.png" --size 400x400 \
     --camera -60,60,120:32,12,32 --device lavapipe
+# Down the canyon, where the stamped arches span it.
+"$voxc" render "$root/examples/arches_between_cliffs.vox" -o "$root/docs/images/arches_between_cliffs.png" \
+    --size 400x400 --camera 64,120,-50:64,14,64 --device lavapipe
+# The island's cliffs at the water line, where the caves open.
+"$voxc" render "$root/examples/sea_caves.vox" -o "$root/docs/images/sea_caves.png" --size 400x400 \
+    --camera -50,60,-50:64,18,64 --device lavapipe
 for example in scene valley; do
     "$voxc" render "$root/examples/$example.vox" -o "$root/docs/images/$example.png" --size 640x400 --device lavapipe
 done

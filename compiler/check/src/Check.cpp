@@ -3,6 +3,7 @@
 #include "CheckCurves.h"
 #include "CheckTerrain.h"
 #include "Materials.h"
+#include "CheckStamps.h"
 #include "Sections.h"
 #include "voxc/stages/StageKind.h"
 #include "Suggest.h"
@@ -113,6 +114,7 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
     program.fields = checkFields(context, file, grammarNames);
     CheckedFeatures features = checkFeatures(context, file, grammarNames, program.world, lsystems);
     for (Field& feature : features.fields) program.fields.push_back(std::move(feature));
+    resolveStampFields(context, program.grammars, program.fields);
     for (const CurvesBlock& block : program.curves) {
         context.curvesNames.push_back(block.name);
         context.curvesKinds.push_back(block.table ? block.table->source : "solve");

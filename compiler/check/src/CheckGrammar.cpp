@@ -1,11 +1,13 @@
 // `grammar NAME { ... }` blocks and their rules.
 #include "CheckAggregates.h"
+#include "CheckStamps.h"
 #include "Layout.h"
 #include "Sections.h"
 #include "Suggest.h"
 #include "Symmetry.h"
 #include "Values.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
@@ -82,13 +84,13 @@ void readWeight(Context& context, const ast::Assignment& a, Rule& rule) {
 
 std::optional<DeclaredRule> checkRule(Context& context, const ast::Block& block) {
     static constexpr std::string_view kKeys[] = {"size", "priority", "weight", "probability", "symmetry"};
-    static constexpr std::string_view kParts[] = {"symbol", "transform", "where"};
+    static constexpr std::string_view kParts[] = {"symbol", "transform", "where", "stamp"};
     if (!checkLabel(context, block, true)) return std::nullopt;
     const std::string where = fmt::format("rule '{}'", *block.label);
     rejectUnexpectedMembers(context, block, where, {.blocks = true});
     BlockKeys keys(context, block, where, kKeys);
     for (const ast::Block& part : block.blocks)
-        if (part.kind != "symbol" && part.kind != "transform" && part.kind != "where")
+        if (std::find(std::begin(kParts), std::end(kParts), part.kind) == std::end(kParts))
             context.diagnostics.error("E0008", part.loc,
                                       fmt::format("unknown block '{}' in {}{}", part.kind, where,
                                                   didYouMean(part.kind, kParts)));
@@ -132,6 +134,14 @@ std::optional<DeclaredRule> checkRule(Context& context, const ast::Block& block)
         if (part.kind == "where" && sizeOk)
             for (const AggregateTest& test : checkWhereBlock(context, part, out.rule.size, where))
                 out.rule.aggregates.push_back(test);
+    for (const ast::Block& part : block.blocks) {
+        if (part.kind != "stamp" || !sizeOk) continue;
+        SourceLoc reachLoc;
+        if (auto stamp = checkStampBlock(context, part, out.rule.size, where, reachLoc)) {
+            out.rule.stamps.push_back(std::move(*stamp));
+            out.syntax.stampReachLocs.push_back(reachLoc);
+        }
+    }
 
     if (context.diagnostics.errorCount() != errorsBefore) return std::nullopt;
     return declared;
@@ -252,6 +262,7 @@ std::optional<CheckedGrammar> checkGrammar(Context& context, const ast::Block& b
     if (block.blocks.empty())
         context.diagnostics.error("E0009", block.labelLoc, fmt::format("{} has no rules", where));
     checkSweepSizes(context, block, grammar);
+    checkStampOverlap(context, grammar, out.rules);
 
     if (context.diagnostics.errorCount() != errorsBefore) return std::nullopt;
     return out;

@@ -17,6 +17,7 @@ struct RuleSyntax {
     SourceLoc sizeLoc;
     SourceLoc symbolLoc;
     std::vector<SourceLoc> symbolCells; // in Program's cell order (cellIndex)
+    std::vector<SourceLoc> stampReachLocs; // per Rule::stamps entry: its `reach` value
     // The declared rule this one is (index among the grammar's declared rules); a symmetry
     // variant shares it with its original, so warnings are reported once per declared rule.
     size_t declaredIndex = 0;

@@ -104,7 +104,10 @@ bool sameAggregate(const AggregateTest& a, const AggregateTest& b) {
 }
 
 bool sameWindow(const Rule& a, const Rule& b) {
+    // A stamp turns with its variant even where the window does not, so such variants differ.
+    const auto sameStamp = [](const Stamp& x, const Stamp& y) { return x.from == y.from && x.negate == y.negate; };
     return a.size == b.size &&
+           std::equal(a.stamps.begin(), a.stamps.end(), b.stamps.begin(), b.stamps.end(), sameStamp) &&
            std::equal(a.aggregates.begin(), a.aggregates.end(), b.aggregates.begin(), b.aggregates.end(),
                       sameAggregate) &&
            std::equal(a.symbol.begin(), a.symbol.end(), b.symbol.begin(), b.symbol.end(), sameSymbol) &&
@@ -225,6 +228,15 @@ CheckedRule applySymmetry(const CheckedRule& original, const SymmetryElement& el
             const int from = element.from[axis];
             test.boxMin[axis] = element.negate[axis] ? size[from] - before.boxMax[from] : before.boxMin[from];
             test.boxMax[axis] = element.negate[axis] ? size[from] - before.boxMin[from] : before.boxMax[from];
+        }
+    }
+    // A stamp keeps the written rule's frame and reach, read through the element (voxc::stampLocal).
+    for (Stamp& stamp : out.rule.stamps) {
+        const glm::ivec3 reach = stamp.reach;
+        for (int axis = 0; axis < 3; ++axis) {
+            stamp.from[axis] = element.from[axis];
+            stamp.negate[axis] = element.negate[axis];
+            stamp.reach[axis] = reach[element.from[axis]];
         }
     }
     return out;

@@ -21,6 +21,7 @@ std::vector<bool> usedMaterials(const Program& program) {
             for (const SymbolCell& cell : rule.symbol)
                 for (const MaterialPredicate& predicate : cell.materialPredicates) use(predicate.material);
             for (const TransformCell& cell : rule.transform) use(cell.material);
+            for (const Stamp& stamp : rule.stamps) use(stamp.material);
         }
     for (const Stage& stage : program.pipeline) use(stage.material);
     // A curves stage writes the materials its table holds (those of its constraint points that win somewhere).

@@ -136,7 +136,16 @@ bool emitColumnNoise(const ir::IrModule& module, const ir::IrField& field, uint3
     return true;
 }
 
-FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::string_view sourceName) {
+// x, y, z in a stamp's frame (`stampPosition`, voxc::stampLocal); wx, wy, wz the voxel's world place.
+std::string stampInputGlsl(FieldInput input) {
+    const int axis = int(input) % 3;
+    return input >= FieldInput::WorldX ? fmt::format("float(world.{})", "xyz"[axis])
+                                       : fmt::format("stampPosition.{}", "xyz"[axis]);
+}
+
+// `stampFrame`: the inputs of a stamp, every node in `voxel` (no column walk).
+FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::string_view sourceName,
+                    bool stampFrame = false) {
     const std::vector<std::shared_ptr<const PointSet>> pointSets = pointSetsOf(module);
     const std::vector<std::shared_ptr<const SampledMap>> maps = mapsOf(module);
     FieldCode code;
@@ -153,7 +162,7 @@ FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::s
         switch (node.kind) {
         case FieldNode::Kind::Constant: break;
         case FieldNode::Kind::Input:
-            value = inputGlsl(node.input, module.world.localBase);
+            value = stampFrame ? stampInputGlsl(node.input) : inputGlsl(node.input, module.world.localBase);
             what = std::array{"x", "y", "z", "wx", "wy", "wz"}[int(node.input)];
             break;
         case FieldNode::Kind::Component:
@@ -192,7 +201,7 @@ FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::s
             what = info.name;
             for (std::string_view library : info.glslLibraries)
                 if (seenLibraries.insert(library).second) code.libraries.push_back(library);
-            if (!field.perColumn.at(i) && emitColumnNoise(module, field, uint32_t(i), columnNoiseSites, code)) {
+            if (!stampFrame && !field.perColumn.at(i) && emitColumnNoise(module, field, uint32_t(i), columnNoiseSites, code)) {
                 value = fmt::format("noiseColumnValues[{}][y - blockY]", columnNoiseSites++);
                 what += " along the column";
             }
@@ -203,7 +212,7 @@ FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::s
         const std::string line =
             fmt::format("{}{} {} = {}; // {} ({}:{}:{})\n", isFloatType(node.type) ? "precise " : "",
                         typeName(node.type), code.names[i], value, what, sourceName, node.loc.line, node.loc.column);
-        (field.perColumn.at(i) ? code.column : code.voxel) += line;
+        (field.perColumn.at(i) && !stampFrame ? code.column : code.voxel) += line;
     }
     if (columnNoiseSites > 0) {
         code.libraries.push_back("noise_column.glsl");
@@ -280,6 +289,15 @@ std::string combineGlsl(FieldMode mode, std::optional<uint8_t> material, const s
 }
 
 } // namespace
+
+StampFieldCode stampFieldGlsl(const ir::IrModule& module, const ir::IrField& field, std::string_view sourceName) {
+    FieldCode code = emitField(module, field, sourceName, true);
+    return {std::move(code.voxel), code.names.at(field.root), std::move(code.libraries)};
+}
+
+std::string combineFieldGlsl(FieldMode mode, std::optional<uint8_t> material, const std::string& f) {
+    return combineGlsl(mode, material, f);
+}
 
 std::vector<std::shared_ptr<const PointSet>> pointSetsOf(const ir::IrModule& module) {
     std::vector<std::shared_ptr<const PointSet>> sets;

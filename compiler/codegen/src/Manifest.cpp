@@ -188,6 +188,8 @@ Json sweepJson(const KernelPackage& package, const SweepPlan& sweep) {
                               {"count", vec(sweep.phaseCount3[p])}});
     return Json{{"kernel", package.kernels.at(sweep.kernel).name},
                 {"active_tiles_kernel", kernelName(package, sweep.activeTilesKernel)},
+                {"stamp_kernel", kernelName(package, sweep.stampKernel)},
+                {"stamp_reach", vec(sweep.stampReach)},
                 {"window", vec(sweep.window)},
                 {"phase_count", vec(sweep.phaseCount)},
                 {"phases", phases}};

@@ -354,12 +354,20 @@ std::string sweepKernelSource(const IrGrammar& grammar, const IrSweep& sweep, st
     const std::string shape = dispatchShapeGlsl(sweepDispatchShape(sweep));
     if (sweep.rules.empty())
         return instantiateTemplate("noop_sweep.glsl", {{"HEADER", headerComment}, {"DISPATCH_SHAPE", shape}});
+    // A sweep with stamps records every anchor's choice for its stamp pass (StampKernel.cpp).
+    const bool stamps = sweepHasStamps(sweep);
+    std::string rules = ruleTable(grammar, sweep, sourceName);
+    std::string apply = applyRule(grammar, sweep, sourceName);
+    if (stamps) {
+        rules += "\n" + firedRecordGlsl(grammar, sweep);
+        apply += "firedRule.rule[firedIndex(anchor)] = uint(chosen + 1);\n";
+    }
     return instantiateTemplate("sweep.glsl", {{"HEADER", headerComment},
                                               {"DISPATCH_SHAPE", shape},
-                                              {"RULE_TABLE", ruleTable(grammar, sweep, sourceName)},
+                                              {"RULE_TABLE", rules},
                                               {"MATCH_WINDOW", matchWindow(sweep, sourceName)},
                                               {"CHOOSE_RULE", chooseRule(sweep)},
-                                              {"APPLY_RULE", applyRule(grammar, sweep, sourceName)}});
+                                              {"APPLY_RULE", apply}});
 }
 
 } // namespace voxc::codegen

@@ -25,7 +25,10 @@ FieldEvaluator::FieldEvaluator(const Field& field, glm::ivec3 origin, glm::ivec3
 }
 
 const std::vector<Value>& FieldEvaluator::evaluate(glm::ivec3 local) {
-    const glm::ivec3 world = origin_ + local;
+    return evaluateAt(glm::vec3(localBase_ + local), origin_ + local);
+}
+
+const std::vector<Value>& FieldEvaluator::evaluateAt(glm::vec3 position, glm::ivec3 world) {
     for (size_t i = 0; i < field_.nodes.size(); ++i) {
         const FieldNode& node = field_.nodes[i];
         Value& out = values_[i];
@@ -39,7 +42,7 @@ const std::vector<Value>& FieldEvaluator::evaluate(glm::ivec3 local) {
         case FieldNode::Kind::Input: {
             const int axis = int(node.input) % 3;
             const bool isWorld = node.input >= FieldInput::WorldX;
-            out = Value::makeFloat(float(isWorld ? world[axis] : localBase_[axis] + local[axis]));
+            out = Value::makeFloat(isWorld ? float(world[axis]) : position[axis]);
             break;
         }
         case FieldNode::Kind::Component:

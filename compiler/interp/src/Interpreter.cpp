@@ -7,7 +7,9 @@
 #include "voxc/program/Semantics.h"
 
 #include <algorithm>
+#include <glm/common.hpp>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace voxc {
@@ -63,6 +65,40 @@ void applyRule(const Rule& rule, const Grammar& grammar, WindowView anchor, size
     }
 }
 
+// The stamps of one phase (Semantics.h): after every window of the phase was matched and
+// transformed, each firing's stamps in anchor order (z, then y, then x), each over its window
+// grown by its reach and clipped to the grid, combined as voxc::combineField does. So a voxel's
+// result is the same whichever device or chunk size folds the stamps covering it.
+struct StampFiring {
+    glm::ivec3 anchor;
+    const Rule* rule;
+};
+
+void applyStamps(const Program& program, glm::ivec3 window, const std::vector<StampFiring>& firings, DenseGrid& grid,
+                 std::vector<std::unique_ptr<FieldEvaluator>>& evaluators, NonFiniteCount& nonFinite) {
+    for (const StampFiring& firing : firings)
+        for (const Stamp& stamp : firing.rule->stamps) {
+            std::unique_ptr<FieldEvaluator>& evaluator = evaluators.at(stamp.field);
+            if (!evaluator)
+                evaluator = std::make_unique<FieldEvaluator>(program.fields[stamp.field], program.world.origin);
+            const uint32_t root = program.fields[stamp.field].root;
+            const glm::ivec3 lo = glm::max(firing.anchor - stamp.reach, glm::ivec3(0));
+            const glm::ivec3 hi = glm::min(firing.anchor + window + stamp.reach, grid.size());
+            for (int z = lo.z; z < hi.z; ++z)
+                for (int y = lo.y; y < hi.y; ++y)
+                    for (int x = lo.x; x < hi.x; ++x) {
+                        const glm::ivec3 v(x, y, z);
+                        const float value =
+                            evaluator->evaluateAt(stampLocal(stamp, v - firing.anchor), program.world.origin + v)[root].v.x;
+                        const float f = nonFinite.replace(value, grid.index(v));
+                        const VoxelState voxel =
+                            combineField(stamp.mode, stamp.material, f, {grid.at(v), grid.materialAt(v)});
+                        grid.at(v) = voxel.density;
+                        grid.materialAt(v) = voxel.material;
+                    }
+        }
+}
+
 void checkFits(const Grammar& grammar, const DenseGrid& grid) {
     const glm::ivec3 size = grid.size();
     for (int axis = 0; axis < 3; ++axis) {
@@ -112,6 +148,8 @@ void runGrammar(const Program& program, uint32_t grammarIndex, DenseGrid& grid, 
 
     std::vector<uint32_t> matched;
     matched.reserve(maxRules);
+    std::vector<StampFiring> stampFirings;
+    std::vector<std::unique_ptr<FieldEvaluator>> stampEvaluators(program.fields.size());
     float* data = grid.data().data();
     uint8_t* materials = grid.materials().data();
     const uint32_t seed = program.world.seed;
@@ -124,6 +162,7 @@ void runGrammar(const Program& program, uint32_t grammarIndex, DenseGrid& grid, 
             const PreparedSweep& sweep = prepared[s];
             for (uint32_t phase = 0; phase < sweep.phases.size(); ++phase) {
                 const PhaseAnchors& anchors = sweep.phases[phase];
+                stampFirings.clear();
                 if (options.stats)
                     options.stats->anchors[grammarIndex] +=
                         uint64_t(anchors.count.x) * uint64_t(anchors.count.y) * uint64_t(anchors.count.z);
@@ -140,13 +179,16 @@ void runGrammar(const Program& program, uint32_t grammarIndex, DenseGrid& grid, 
                             const int chosen = chooseRule(grammar, matched, seed, iteration, s, anchor + origin);
                             if (chosen < 0) continue;
                             // Windows of one phase never overlap, so writing in place is safe.
-                            applyRule(grammar.rules[size_t(chosen)], grammar, base, index, sweep.cellOffsets, replaced);
+                            const Rule& rule = grammar.rules[size_t(chosen)];
+                            applyRule(rule, grammar, base, index, sweep.cellOffsets, replaced);
+                            if (!rule.stamps.empty()) stampFirings.push_back({anchor, &rule});
                             if (options.stats) ++options.stats->firings[grammarIndex][size_t(chosen)];
                             if (options.onFire)
                                 options.onFire(TraceEvent{grammarIndex, iteration, s, phase, anchor, uint32_t(chosen)});
                         }
                     }
                 }
+                applyStamps(program, sweep.sweep->window, stampFirings, grid, stampEvaluators, replaced);
             }
         }
     }

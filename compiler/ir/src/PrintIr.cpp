@@ -54,6 +54,8 @@ void printRule(std::string& out, const IrSweep& sweep, const IrRule& rule) {
     out += fmt::format("      symbol {}\n", symbol.empty() ? "(matches everywhere)" : symbol);
     out += fmt::format("      transform {}\n", transform.empty() ? "(writes nothing)" : transform);
     for (const AggregateTest& test : rule.aggregates) out += fmt::format("      where {}\n", printAggregate(test));
+    for (const Stamp& stamp : rule.stamps)
+        out += fmt::format("      stamp {} {} reach {}\n", fieldModeName(stamp.mode), stamp.fieldName, printVec(stamp.reach));
     if (!rule.needs.empty()) out += fmt::format("      needs {}\n", needs.empty() ? "(nothing)" : needs);
 }
 

@@ -13,7 +13,9 @@ bool Program::usesMaterials() const {
                                            [](const SymbolCell& c) { return !c.materialPredicates.empty(); });
             const bool writes = std::any_of(rule.transform.begin(), rule.transform.end(),
                                             [](const TransformCell& c) { return c.material.has_value(); });
-            return tests || writes;
+            const bool stamps = std::any_of(rule.stamps.begin(), rule.stamps.end(),
+                                            [](const Stamp& s) { return s.material.has_value(); });
+            return tests || writes || stamps;
         });
     });
     // A curves stage writes the materials of its constraint points (SolveTable::material).

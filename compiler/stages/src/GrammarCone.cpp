@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <fmt/format.h>
+#include <glm/common.hpp>
 #include <numeric>
 #include <vector>
 
@@ -18,19 +19,26 @@ constexpr int64_t kMaxPeriod = 4096;
 
 int64_t floorDiv(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
-// One phase along one axis: windows of `window` cells start at residue * stride + k * period.
-struct AxisPhase {
-    int64_t window, stride, period, residue;
+int64_t ceilDiv(int64_t a, int64_t b) { return -floorDiv(-a, b); }
 
-    // The first cell of the window holding x, or x when none does.
+// One phase along one axis: windows of `window` cells start at residue * stride + k * period;
+// a window's stamps write `reach` cells beyond it on each side, and what they write depends on
+// the whole window (whether its rule fired) and on the voxel itself.
+struct AxisPhase {
+    int64_t window, stride, period, residue, reach;
+
+    // The lowest cell x depends on after the phase: the first cell of the lowest window whose
+    // grown box holds x, or x itself.
     int64_t startHolding(int64_t x) const {
-        const int64_t start = residue * stride + floorDiv(x - residue * stride, period) * period;
-        return x - start < window ? start : x;
+        const int64_t base = residue * stride;
+        const int64_t start = base + ceilDiv(x - window - reach + 1 - base, period) * period;
+        return start <= x + reach ? std::min(x, start) : x;
     }
-    // The last cell of the window holding x, or x when none does.
+    // The highest: the last cell of the highest window whose grown box holds x, or x itself.
     int64_t endHolding(int64_t x) const {
-        const int64_t start = residue * stride + floorDiv(x - residue * stride, period) * period;
-        return x - start < window ? start + window - 1 : x;
+        const int64_t base = residue * stride;
+        const int64_t start = base + floorDiv(x + reach - base, period) * period;
+        return start > x - window - reach ? std::max(x, start + window - 1) : x;
     }
 };
 
@@ -44,9 +52,9 @@ struct IterationMoves {
 IterationMoves iterationMoves(const std::vector<AxisPhase>& phases, int64_t period) {
     IterationMoves moves;
     if (period > kMaxPeriod) {
-        // Every phase may move an end by its window less one cell.
+        // Every phase may move an end by its window and reach less one cell.
         int64_t most = 0;
-        for (const AxisPhase& phase : phases) most += phase.window - 1;
+        for (const AxisPhase& phase : phases) most += phase.window + phase.reach - 1;
         moves.down = moves.up = {most};
         return moves;
     }
@@ -90,8 +98,11 @@ glm::ivec3 grammarConeRadius(const Grammar& grammar, glm::ivec3 cap) {
             if (sweep.anchorCount.x == 0 || sweep.anchorCount.y == 0 || sweep.anchorCount.z == 0) continue;
             const int64_t m = sweep.phaseCount[axis];
             lcm = std::min(std::lcm(lcm, m), kMaxPeriod + 1);
+            int64_t reach = 0;
+            for (uint32_t r : sweep.rules)
+                for (const Stamp& stamp : grammar.rules[r].stamps) reach = std::max<int64_t>(reach, stamp.reach[axis]);
             for (int p = 0; p < sweep.phases(); ++p)
-                phases.push_back({sweep.window[axis], stride, m * stride, phaseResidue(sweep, p)[axis]});
+                phases.push_back({sweep.window[axis], stride, m * stride, phaseResidue(sweep, p)[axis], reach});
         }
         if (phases.empty() || cap[axis] <= 0) continue;
         const IterationMoves moves = iterationMoves(phases, std::min(lcm * stride, kMaxPeriod + 1));
@@ -104,9 +115,18 @@ glm::ivec3 grammarConeRadius(const Grammar& grammar, glm::ivec3 cap) {
 
 std::string describeSweeps(const Grammar& grammar) {
     std::string text;
-    for (const Sweep& sweep : orderSweeps(grammar))
+    for (const Sweep& sweep : orderSweeps(grammar)) {
         text += fmt::format("{}[{}, {}, {}] in {} phase{}", text.empty() ? "sweeps " : ", ", sweep.window.x,
                             sweep.window.y, sweep.window.z, sweep.phases(), sweep.phases() == 1 ? "" : "s");
+        glm::ivec3 reach(0);
+        bool stamps = false;
+        for (uint32_t r : sweep.rules)
+            for (const Stamp& stamp : grammar.rules[r].stamps) {
+                reach = glm::max(reach, stamp.reach);
+                stamps = true;
+            }
+        if (stamps) text += fmt::format(" with stamps reaching [{}, {}, {}]", reach.x, reach.y, reach.z);
+    }
     return text + fmt::format(" at stride [{}, {}, {}]", grammar.stride.x, grammar.stride.y, grammar.stride.z);
 }
 

@@ -11,7 +11,8 @@ namespace voxc::stages {
 // value after the grammar can depend on, over every position of the voxel, capped at `cap`.
 //
 // Backwards from the last phase: a voxel's value after a phase depends on the window of that
-// phase that holds it (if any). So per axis the cone [lo, hi] of a voxel grows, phase by phase
+// phase that holds it (if any) and on every window whose stamps reach it (the window grown by
+// the sweep's largest stamp reach). So per axis the cone [lo, hi] of a voxel grows, phase by phase
 // from the last, to the start of the window holding lo and the end of the one holding hi. The
 // anchor lattice is taken without its bounds (fewer windows only shrink a cone), so the map is
 // periodic in the position with period stride * lcm(phase counts), which bounds the positions
@@ -19,7 +20,8 @@ namespace voxc::stages {
 // exact along an axis whenever a rule can carry a value across a whole window along it.
 glm::ivec3 grammarConeRadius(const Grammar& grammar, glm::ivec3 cap);
 
-// The grammar's sweeps as --explain-halo prints them: "sweeps [3, 3, 1] in 9 phases, [2, 1, 1] in 2 phases".
+// The grammar's sweeps as --explain-halo prints them: "sweeps [3, 3, 1] in 9 phases, [2, 1, 1] in 2
+// phases" and a sweep's stamp reach ("stamps reaching [2, 8, 2]").
 std::string describeSweeps(const Grammar& grammar);
 
 } // namespace voxc::stages

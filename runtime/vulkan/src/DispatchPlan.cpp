@@ -73,6 +73,7 @@ void validatePackage(const KernelPackage& package) {
         if (!stage.grammar) continue;
         for (const SweepPlan& sweep : stage.grammar->sweeps) {
             checkKernel(sweep.kernel);
+            if (sweep.stampKernel != kNoKernel) checkKernel(sweep.stampKernel);
             if (sweep.phaseStep.size() != sweep.phaseStart.size() || sweep.phaseCount3.size() != sweep.phaseStart.size())
                 packageError(fmt::format("grammar '{}': phase arrays differ in length", stage.grammar->name));
         }
@@ -148,6 +149,10 @@ bool DispatchCursor::expandNextStep() {
         const int32_t iteration = int32_t(iteration_++);
         for (size_t s = 0; s < stage.grammar->sweeps.size(); ++s) {
             const SweepPlan& sweep = stage.grammar->sweeps[s];
+            if (sweep.stampKernel != kNoKernel) {
+                appendStampingSweep(sweep, iteration, int32_t(s));
+                continue;
+            }
             if (skipping()) {
                 appendSkippingSweep(sweep, iteration, int32_t(s));
                 continue;
@@ -214,6 +219,27 @@ void DispatchCursor::appendPhase(uint32_t kernel, int32_t iteration, int32_t swe
                 for (int a = 0; a < 3; ++a) d.groups[a] = uint32_t((uint64_t(n[a]) + perGroup[a] - 1) / perGroup[a]);
                 step_.push_back(d);
             }
+}
+
+// Per phase: the sweep kernel over every anchor, then its stamp pass over the phase's windows
+// grown by the reach, clipped to the grid (anchorStep.xyz carries the phase's first anchor).
+// The stamps write outside the tiles the ranges track, so a skipping run invalidates them after.
+void DispatchCursor::appendStampingSweep(const SweepPlan& sweep, int32_t iteration, int32_t sweepIndex) {
+    for (size_t p = 0; p < sweep.phaseStart.size(); ++p) {
+        const glm::ivec3 start = sweep.phaseStart[p], step = sweep.phaseStep[p], count = sweep.phaseCount3[p];
+        if (count.x <= 0 || count.y <= 0 || count.z <= 0) continue;
+        appendPhase(sweep.kernel, iteration, sweepIndex, start, step, count);
+        const glm::ivec3 lo = glm::max(start - sweep.stampReach, glm::ivec3(0));
+        const glm::ivec3 hi = glm::min(start + (count - 1) * step + sweep.window + sweep.stampReach, package_.world.size);
+        const size_t first = step_.size();
+        appendPhase(sweep.stampKernel, iteration, sweepIndex, lo, glm::ivec3(1), hi - lo);
+        for (size_t i = first; i < step_.size(); ++i) setXyz(step_[i].push.anchorStep, start, 0);
+    }
+    if (skipping()) {
+        Dispatch invalidate;
+        invalidate.kind = DispatchKind::InvalidateRanges;
+        step_.push_back(invalidate);
+    }
 }
 
 void DispatchCursor::appendSkippingSweep(const SweepPlan& sweep, int32_t iteration, int32_t sweepIndex) {

@@ -17,6 +17,7 @@ IrRule lowerRule(const Rule& rule, uint32_t ruleIndex) {
     out.symbol = rule.symbol;
     out.transform = rule.transform;
     out.aggregates = rule.aggregates;
+    out.stamps = rule.stamps;
     return out;
 }
 

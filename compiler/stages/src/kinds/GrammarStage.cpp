@@ -3,7 +3,9 @@
 #include "GrammarCone.h"
 #include "Kinds.h"
 
+#include <algorithm>
 #include <fmt/format.h>
+#include <glm/vec3.hpp>
 
 namespace voxc::stages {
 
@@ -14,26 +16,42 @@ std::string label(const Program& program, const Stage& stage) { return program.g
 bool readsDensities(const Stage&) { return true; }
 
 bool writesMaterials(const Program& program, const Stage& stage) {
-    for (const Rule& rule : program.grammars.at(stage.index).rules)
+    for (const Rule& rule : program.grammars.at(stage.index).rules) {
         for (const TransformCell& cell : rule.transform)
             if (cell.material) return true;
+        for (const Stamp& stamp : rule.stamps)
+            if (stamp.material) return true;
+    }
     return false;
 }
 
-// One iteration: every sweep tests each rule's cells at each anchor.
-double iterationWork(const Grammar& grammar) {
+// A rule's stamps where it fires: each field's nodes at every voxel of its grown window.
+double stampWork(const Program& program, const Rule& rule) {
+    double work = 0.0;
+    for (const Stamp& stamp : rule.stamps) {
+        const glm::dvec3 grown = glm::dvec3(rule.size + 2 * stamp.reach);
+        work += grown.x * grown.y * grown.z * double(program.fields.at(stamp.field).nodes.size());
+    }
+    return work;
+}
+
+// One iteration: every sweep tests each rule's cells at each anchor, and stamps as if every
+// anchor fired the rule with the costliest stamps.
+double iterationWork(const Program& program, const Grammar& grammar) {
     double work = 0.0;
     for (const Sweep& sweep : orderSweeps(grammar)) {
         const double anchors = double(sweep.anchorCount.x) * sweep.anchorCount.y * sweep.anchorCount.z;
         const double cells = double(sweep.window.x) * sweep.window.y * sweep.window.z;
-        work += anchors * double(sweep.rules.size()) * cells;
+        double stamps = 0.0;
+        for (uint32_t r : sweep.rules) stamps = std::max(stamps, stampWork(program, grammar.rules[r]));
+        work += anchors * (double(sweep.rules.size()) * cells + stamps);
     }
     return work;
 }
 
 StageWork estimateWork(const Program& program, const Stage& stage, double) {
     const Grammar& grammar = program.grammars[stage.index];
-    const double perIteration = iterationWork(grammar);
+    const double perIteration = iterationWork(program, grammar);
     return {perIteration * grammar.iterations, stage.loc.line ? stage.loc : grammar.loc,
             fmt::format("grammar '{}' ({} iterations x {} window cells tested per iteration: anchors x rules x "
                         "cells over its sweeps)",
@@ -43,7 +61,15 @@ StageWork estimateWork(const Program& program, const Stage& stage, double) {
 // One kernel per window size (sweep) of a grammar not run before.
 int64_t newKernels(const Program& program, const Stage& stage, std::set<std::string>& seen) {
     if (!seen.insert(fmt::format("grammar {}", stage.index)).second) return 0;
-    return int64_t(orderSweeps(program.grammars[stage.index]).size());
+    // A sweep kernel per window size, and a stamp pass per sweep with stamps.
+    const Grammar& grammar = program.grammars[stage.index];
+    int64_t kernels = 0;
+    for (const Sweep& sweep : orderSweeps(grammar)) {
+        const bool stamps = std::any_of(sweep.rules.begin(), sweep.rules.end(),
+                                        [&](uint32_t r) { return !grammar.rules[r].stamps.empty(); });
+        kernels += stamps ? 2 : 1;
+    }
+    return kernels;
 }
 
 StageRadius dependencyRadius(const Program& program, const Stage& stage) {
@@ -64,7 +90,8 @@ std::string sweepKey(const ir::IrGrammar& grammar, const ir::IrSweep& sweep) {
 }
 
 // Kernels of every grammar are built once, even if the pipeline runs it more than once; the
-// tile-skipping kernels follow the sweep kernels (a sweep without live rules needs none).
+// stamp passes follow the sweep kernels, then the tile-skipping kernels (a sweep without live
+// rules needs none).
 void addKernels(PlanContext& context) {
     for (const ir::IrGrammar& grammar : context.module.grammars)
         for (const ir::IrSweep& sweep : grammar.sweeps) {
@@ -78,7 +105,17 @@ void addKernels(PlanContext& context) {
         }
     for (const ir::IrGrammar& grammar : context.module.grammars)
         for (const ir::IrSweep& sweep : grammar.sweeps) {
-            if (sweep.rules.empty()) continue;
+            if (!codegen::sweepHasStamps(sweep)) continue;
+            const std::string name = sweepKey(grammar, sweep) + "_stamps";
+            const std::string origin = context.package.kernels[context.kernels.at(sweepKey(grammar, sweep))].origin;
+            context.kernels[name] = context.addKernel(
+                name, origin, codegen::stampDispatchShape(),
+                codegen::stampKernelSource(context.module, grammar, sweep, name, context.sourceName));
+        }
+    // A sweep with stamps runs over every anchor (its stamp pass reads each anchor's choice).
+    for (const ir::IrGrammar& grammar : context.module.grammars)
+        for (const ir::IrSweep& sweep : grammar.sweeps) {
+            if (sweep.rules.empty() || codegen::sweepHasStamps(sweep)) continue;
             const std::string name = sweepKey(grammar, sweep) + "_active_tiles";
             const std::string origin = context.package.kernels[context.kernels.at(sweepKey(grammar, sweep))].origin;
             context.kernels[name] =
@@ -107,6 +144,12 @@ void plan(PlanContext& context, const Stage& stage, StagePlan& plan) {
         sweepPlan.kernel = context.kernels.at(sweepKey(grammar, irSweep));
         const auto activeTiles = context.kernels.find(sweepKey(grammar, irSweep) + "_active_tiles");
         if (activeTiles != context.kernels.end()) sweepPlan.activeTilesKernel = activeTiles->second;
+        const auto stamps = context.kernels.find(sweepKey(grammar, irSweep) + "_stamps");
+        if (stamps != context.kernels.end()) {
+            sweepPlan.stampKernel = stamps->second;
+            sweepPlan.stampReach = codegen::sweepStampReach(irSweep);
+            plan.scratchWords = std::max(plan.scratchWords, codegen::sweepFiredWords(irSweep));
+        }
         sweepPlan.window = irSweep.window;
         sweepPlan.phaseCount = irSweep.phaseCount;
         fillPhaseAnchors(sweepPlan, checked, sweep);

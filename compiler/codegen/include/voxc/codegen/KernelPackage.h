@@ -24,7 +24,8 @@ struct PushBlock {
     int32_t chunkCount[4];  // xyz: chunk-table extents; w: sweep index within its grammar
     int32_t anchorStart[4]; // xyz: grid-local first anchor (start kernel: 0); w: active-dispatch record
                             // (field kernel: the constant box's float bits)
-    int32_t anchorStep[4];  // xyz: distance between anchors of one phase (start kernel: 1); w: log2 tile size
+    int32_t anchorStep[4];  // xyz: distance between anchors of one phase (start kernel: 1; stamp kernel: the
+                            // phase's first anchor); w: log2 tile size
     int32_t anchorCount[4]; // xyz: anchors per axis in this dispatch (start kernel: grid size);
                             // w: 1 when the sweep runs indirectly over the active tiles, else 0
                             // (field kernel: 1 in a constant box)
@@ -58,7 +59,8 @@ constexpr uint32_t kBindingPointSets = 10;
 // compiler/shaders/solve_tables.glsl), declared only by curves kernels; otherwise a one-element buffer.
 constexpr uint32_t kBindingSolveTables = 12;
 // uint words a stage's passes hand to each other (StagePlan::scratchWords, the largest over the
-// stages; one word when none needs any): a speleothem stage's air mask (speleothems.glsl).
+// stages; one word when none needs any): a speleothem stage's air mask (speleothems.glsl), the
+// rule each anchor of a sweep with stamps fired (StampKernel.cpp).
 constexpr uint32_t kBindingScratch = 11;
 
 constexpr uint32_t kNoKernel = UINT32_MAX;
@@ -84,6 +86,13 @@ struct SweepPlan {
     uint32_t activeTilesKernel = kNoKernel;
     glm::ivec3 window{1};
     glm::ivec3 phaseCount{1};  // as Sweep::phaseCount
+    // Run after each phase when the sweep's rules stamp fields (stamp.glsl): one invocation per
+    // voxel of the phase's windows grown by stampReach, clipped to the grid; its push block's
+    // anchorStep.xyz is the phase's first anchor. Such a sweep runs over every anchor (no tile
+    // skipping: the sweep kernel records each anchor's rule in kBindingScratch), and the tile
+    // ranges are stale after it. kNoKernel: no stamps.
+    uint32_t stampKernel = kNoKernel;
+    glm::ivec3 stampReach{0};
     // Per phase p (x fastest): anchors start + i*step, i < count, as voxc::phaseAnchors computes.
     std::vector<glm::ivec3> phaseStart, phaseStep, phaseCount3;
 };

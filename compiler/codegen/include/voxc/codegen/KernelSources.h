@@ -72,6 +72,30 @@ DispatchShape sweepDispatchShape(const ir::IrSweep& sweep);
 std::string sweepKernelSource(const ir::IrGrammar& grammar, const ir::IrSweep& sweep, std::string_view kernelName,
                               std::string_view sourceName);
 
+// A field evaluated in a stamp's frame (x, y, z = `stampPosition`, a vec3; wx, wy, wz from
+// `world`, an ivec3): straight-line statements, the root's name and the libraries they call.
+struct StampFieldCode {
+    std::string statements;
+    std::string value;
+    std::vector<std::string_view> libraries;
+};
+StampFieldCode stampFieldGlsl(const ir::IrModule& module, const ir::IrField& field, std::string_view sourceName);
+// voxc::combineField of the density at `address` with the float expression `f` (a field stage's combine).
+std::string combineFieldGlsl(FieldMode mode, std::optional<uint8_t> material, const std::string& f);
+
+// The stamp pass of a sweep with stamps (stamp.glsl): after each phase, one invocation per voxel
+// the phase's grown windows cover folds their stamps in anchor order. Sweeps with stamps record
+// the rule each anchor fired in kBindingScratch (sweepFiredWords words).
+DispatchShape stampDispatchShape();
+std::string stampKernelSource(const ir::IrModule& module, const ir::IrGrammar& grammar, const ir::IrSweep& sweep,
+                              std::string_view kernelName, std::string_view sourceName);
+bool sweepHasStamps(const ir::IrSweep& sweep);
+// The FiredRule buffer (kBindingScratch) and firedIndex(anchor), shared by the sweep and stamp kernels.
+std::string firedRecordGlsl(const ir::IrGrammar& grammar, const ir::IrSweep& sweep);
+uint64_t sweepFiredWords(const ir::IrSweep& sweep);
+// The largest reach of the sweep's stamps per axis: how far the stamp pass reaches past the windows.
+glm::ivec3 sweepStampReach(const ir::IrSweep& sweep);
+
 // Tile skipping: the per-sweep kernel that lists the tiles where a live rule may match
 // (active_tiles.glsl), and the kernel that recomputes stale tile ranges (tile_ranges.glsl).
 DispatchShape activeTilesDispatchShape();

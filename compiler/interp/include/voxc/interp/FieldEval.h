@@ -21,6 +21,9 @@ public:
     // wx = float(origin.x + local.x), ...); the root's value is `values()[field.root]`.
     const std::vector<Value>& evaluate(glm::ivec3 local);
     float density(glm::ivec3 local) { return evaluate(local)[field_.root].v.x; }
+    // The field with inputs x, y, z = `position` and wx, wy, wz = float(`world`): a stamp's frame
+    // (voxc::stampLocal) at the world voxel it writes.
+    const std::vector<Value>& evaluateAt(glm::vec3 position, glm::ivec3 world);
 
 private:
     const Field& field_;

@@ -49,6 +49,7 @@ struct IrRule {
     std::vector<SymbolCell> symbol;       // per window cell, cellIndex order
     std::vector<TransformCell> transform; // per window cell, cellIndex order
     std::vector<AggregateTest> aggregates; // tested after the cells, in order (Aggregates.h)
+    std::vector<Stamp> stamps;             // applied by the sweep's stamp kernel after each phase
     // Per window cell: bits of the cell's pass mask (IrCell::tests, then materialTests) that must all pass. Filled by the
     // predicate-bits pass (one entry per cell); empty before.
     std::vector<std::vector<uint32_t>> needs;

@@ -58,6 +58,46 @@ inline int cellIndex(glm::ivec3 size, int x, int y, int z) { return x + size.x *
 constexpr float kWeightUnitsPerOne = 1000.0f;   // weight 1.0 == 1000 units; range (0, 1000]
 constexpr uint32_t kProbabilityOne = 1u << 24;  // probability 1.0 == 2^24
 
+// How a field stage combines the field's value f with the grid's density d at each voxel.
+// Densities follow the grammar's convention (1 rock, 0 air). The material rule is
+// voxc::combineField (Semantics.h).
+enum class FieldMode : uint8_t {
+    Set,       // d = f
+    Union,     // d = max(d, f): add rock
+    Subtract,  // d = min(d, 1 - f): carve rock away
+    Intersect, // d = min(d, f)
+    Paint      // d unchanged; only writes the stage's material (which it requires)
+};
+
+// A rule's stamp (Dey §5.3.2, feature transforms): where the rule fires, the field its block
+// names (`stamp NAME { ... }`) is combined into the grid like a field stage, evaluated in the stamp's own frame and
+// written only inside the window grown by `reach` (docs/language.md, "Stamps"). A variant made
+// by `symmetry` keeps the written rule's frame: its variant axis i reads written axis from[i],
+// mirrored when negate[i], so the stamp turns with the window.
+struct Stamp {
+    std::string fieldName;        // as written, for traces and generated code
+    uint32_t field = 0;           // index into Program::fields
+    SourceLoc loc;                // the field's name in the stamp block
+    FieldMode mode = FieldMode::Union;
+    std::optional<uint8_t> material; // written where the field wins (combineField)
+    glm::vec3 offset{0.0f};       // the stamp's origin, in the written rule's window cells
+    glm::ivec3 reach{0};          // per variant axis: writes anchor - reach <= v < anchor + window + reach
+    glm::ivec3 writtenSize{1};    // the written rule's window
+    glm::ivec3 from{0, 1, 2};
+    glm::bvec3 negate{false};
+};
+
+// The stamp's field inputs x, y, z at a voxel `fromAnchor` cells from the variant's anchor: the
+// voxel's cell in the written window's axes, as an integer, converted once, minus the offset.
+inline glm::vec3 stampLocal(const Stamp& stamp, glm::ivec3 fromAnchor) {
+    glm::ivec3 written(0);
+    for (int axis = 0; axis < 3; ++axis) {
+        const int from = stamp.from[axis];
+        written[from] = stamp.negate[axis] ? stamp.writtenSize[from] - 1 - fromAnchor[axis] : fromAnchor[axis];
+    }
+    return glm::vec3(written) - stamp.offset;
+}
+
 struct Rule {
     std::string name;
     SourceLoc loc;
@@ -70,6 +110,7 @@ struct Rule {
     uint32_t weightUnits = 1000;                 // round(weight * kWeightUnitsPerOne), >= 1
     uint32_t probabilityUnits = kProbabilityOne; // round(probability * kProbabilityOne)
     std::vector<AggregateTest> aggregates;       // `where` blocks: all must pass, with the symbol
+    std::vector<Stamp> stamps;                   // applied after the phase's transforms, in order
 };
 
 struct Grammar {
@@ -133,17 +174,6 @@ struct World {
     glm::bvec3 unbounded{false};
 };
 
-// How a field stage combines the field's value f with the grid's density d at each voxel.
-// Densities follow the grammar's convention (1 rock, 0 air). The material rule is
-// voxc::combineField (Semantics.h).
-enum class FieldMode : uint8_t {
-    Set,       // d = f
-    Union,     // d = max(d, f): add rock
-    Subtract,  // d = min(d, 1 - f): carve rock away
-    Intersect, // d = min(d, f)
-    Paint      // d unchanged; only writes the stage's material (which it requires)
-};
-
 // One step of the pipeline. Each kind is one record in compiler/stages (StageKind.h) holding
 // its checks, interpretation and lowering; passes read the facts below instead of the kind.
 struct Stage {
@@ -197,6 +227,10 @@ struct Limits {
     // Rules x window cells of one sweep: the size of its generated kernel; tests per symbol cell.
     int64_t maxSweepRuleCells = 4096;
     int32_t maxCellTerms = 32;
+    // A stamp's reach per axis, and the windows of one phase whose grown boxes may cover one voxel
+    // (each voxel of a stamp pass folds over that many anchors).
+    int32_t maxStampReach = 64;
+    int64_t maxStampOverlap = 512;
     int32_t maxStartShapes = 256;
     int64_t maxSourceBytes = int64_t(4) << 20;
     // Depth of the parse tree: brackets, blocks, unary operators, `let`, `?:` and operator chains.

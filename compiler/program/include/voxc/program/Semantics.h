@@ -10,6 +10,10 @@
 //   region grid runs the declared grid's phases. Phases run x fastest, then y, then z; each reads the previous result.
 // - Among matching rules the highest priority wins; ties are drawn by weight with
 //   anchorHash(RuleChoice); the chosen rule then fires with its probability (anchorHash(Probability)).
+// - Stamps: once every window of a phase was matched and transformed, the stamps of the phase's
+//   firings are applied one firing after another in anchor order (z, then y, then x), each over
+//   its window grown by its reach, clipped to the grid, combined like a field stage
+//   (combineField; a non-finite field value is 0). Grown windows of one phase may overlap.
 #include "voxc/program/Program.h"
 
 #include <cstdint>

@@ -55,7 +55,8 @@ public:
     // invocation per tile), then per phase its active-tiles kernel (one invocation per tile,
     // records alternating 0, 1, 0, ... over the run) and the sweep kernel indirectly; both
     // carry the phase's push block with anchorStart.w = record and anchorCount.w = 1. Every
-    // push block then has anchorStep.w = tileShift.
+    // push block then has anchorStep.w = tileShift. A sweep with a stamp kernel runs each phase
+    // directly, then its stamp pass, skipping or not (then InvalidateRanges when skipping).
     // Returns false when the plan is exhausted.
     bool next(Dispatch& out);
 
@@ -66,6 +67,7 @@ private:
     void appendPhase(uint32_t kernel, int32_t iteration, int32_t sweep, glm::ivec3 start, glm::ivec3 step,
                      glm::ivec3 count);
     void appendSkippingSweep(const SweepPlan& sweep, int32_t iteration, int32_t sweepIndex);
+    void appendStampingSweep(const SweepPlan& sweep, int32_t iteration, int32_t sweepIndex);
     bool skipping() const { return tileShift_ >= 0; }
 
     const KernelPackage& package_;
