@@ -18,6 +18,7 @@
 #include "MeshCases.h"
 #include "TerrainCases.h"
 #include "ViewCases.h"
+#include "WorldCases.h"
 
 #include "voxc/stages/Pipeline.h"
 #include "voxc/core/Errors.h"
@@ -174,6 +175,7 @@ int main(int argc, char** argv) {
         // The meshing cases' grids come from the Vulkan pipeline, so they need the device.
         if (context) bench::registerMeshCases(reporter, *context, options.meshSizes, uses("host"), uses("vulkan"), uses("openvdb"));
         if (context) bench::registerViewFrame(reporter, *context);
+        if (context) bench::registerWorldCases(reporter, *context);
         if (options.json) {
             benchmark::RunSpecifiedBenchmarks(&reporter);
         } else {
