@@ -74,7 +74,6 @@ public:
         : options_(options), glfw_(), context_(options.context),
           session_(context_, options.session, options.edits), window_(options.size, "voxc view " + options.session.path),
           presenter_(window_.handle, context_.device().name) {
-        glfwSetWindowUserPointer(window_.handle, this);
         if (!session_.lastError().empty()) log("the file does not check; fix it and save:\n" + session_.lastError());
         if (session_.hasWorld()) setCamera(options.camera);
         else camera_ = {glm::vec3(100.0f), glm::vec3(0.0f)}; // until the file checks
@@ -250,7 +249,18 @@ private:
 
     void saveEdits(const std::string& path) {
         session_.saveEdits(path);
-        log(fmt::format("wrote {} ({} edits)", path, session_.edits().size()));
+        saved_ = fmt::format("wrote {} ({} edits)", path, session_.edits().size());
+        log(saved_);
+    }
+
+    // Ctrl+S and the button: a file that cannot be written is said in the panel, the window stays.
+    void saveEditsInteractively() {
+        try {
+            saveEdits(editsPath_);
+        } catch (const UserError& e) {
+            saved_ = e.what();
+            log(saved_);
+        }
     }
 
     void screenshot(const std::string& path) { writePicture(path, picture()); }
@@ -324,6 +334,7 @@ private:
     std::optional<EditStats> lastEdit_;
     double drawMs_ = 0.0;
     std::string editsPath_;
+    std::string saved_; // how the last save went
     Clock::time_point lastWatch_ = Clock::now();
     glm::dvec2 lastCursor_{0.0};
 };
@@ -387,7 +398,7 @@ void App::handleInput() {
     if (fly != glm::vec3(0.0f)) camera_.eye += fly * step, camera_.target += fly * step, pictureStale_ = true;
     if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Z)) session_.undo(), sceneChanged();
     if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Y)) session_.redo(), sceneChanged();
-    if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_S)) saveEdits(editsPath_);
+    if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_S)) saveEditsInteractively();
 }
 
 void App::panel() {
@@ -470,8 +481,9 @@ void App::panel() {
         ImGui::SameLine();
         if (ImGui::Button("Redo")) session_.redo(), sceneChanged();
         ImGui::SameLine();
-        if (ImGui::Button("Save edits")) saveEdits(editsPath_);
+        if (ImGui::Button("Save edits")) saveEditsInteractively();
         ImGui::TextWrapped("to %s", editsPath_.c_str());
+        if (!saved_.empty()) ImGui::TextWrapped("%s", saved_.c_str());
     }
     if (ImGui::CollapsingHeader("World", ImGuiTreeNodeFlags_DefaultOpen)) {
         const WorldStats& s = session_.stats();
