@@ -16,7 +16,7 @@
 #include "common.glsl"
 #include "nonfinite.glsl"
 
-const int COLUMN_BLOCK = 64;
+const int COLUMN_BLOCK = 256;
 // <<COLUMN_NOISE>>
 // <<LIBRARIES>>
 

@@ -102,7 +102,7 @@ float finiteDensity(float value, ivec3 local) {
 }
 // ---- end nonfinite.glsl ----
 
-const int COLUMN_BLOCK = 64;
+const int COLUMN_BLOCK = 256;
 // No noise call shares work along the column.
 // ---- begin math_functions.glsl ----
 // Math builtins of field expressions whose GLSL built-in may be computed in another operation

@@ -102,7 +102,7 @@ float finiteDensity(float value, ivec3 local) {
 }
 // ---- end nonfinite.glsl ----
 
-const int COLUMN_BLOCK = 64;
+const int COLUMN_BLOCK = 256;
 float noiseColumnValues[1][COLUMN_BLOCK];
 // Each column noise call's argument: its y at the column's voxel y.
 float noiseColumnArgY(int site, int y) {

@@ -103,7 +103,7 @@ float finiteDensity(float value, ivec3 local) {
 }
 // ---- end nonfinite.glsl ----
 
-const int COLUMN_BLOCK = 64;
+const int COLUMN_BLOCK = 256;
 // No noise call shares work along the column.
 // No function library needed.
 
