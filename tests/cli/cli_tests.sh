@@ -283,6 +283,8 @@ expect curves_dump_unknown_channel 1 "--dump 'pressure=.*': unknown channel 'pre
 expect curves_dump_unknown_block 1 "--dump rocks.density: the file has no curves block 'rocks'" -- \
     "$voxc" run "$src/examples/curves_cliff.vox" --device lavapipe --dump rocks.density="$work/curves_rocks.npy"
 expect_no_file curves_dump_unknown_block_no_file "$work/curves_rocks.npy"
+expect curves_dump_region 1 "interp: --dump writes a curves block's whole box, which a --region run does not keep" -- \
+    "$voxc" interp "$src/examples/curves_cliff.vox" --region 0,0,0:8,8,8 --dump density="$work/curves_region.npy"
 printf 'world { size = [8, 8, 8]; }\ncurves c { box = [[0, 0, 0], [7, 7, 8]]; }\npipeline { start; union c; }\n' > "$work/curves_box.vox"
 expect curves_box_outside 1 "curves_box\.vox:2:18: error E0007: the box \[0, 0, 0\] to \[7, 7, 8\]" -- \
     "$voxc" run "$work/curves_box.vox" -o "$work/curves_box.ply"

@@ -145,6 +145,9 @@ void addInterpCommand(CLI::App& app) {
         if (!options->materialsPath.empty()) requireExtension(options->materialsPath, {".npy"}, "material file");
         const RolePath inputs[] = {{"the input", options->file}, {"--edits", options->editsPath}};
         const std::vector<SolveDump> dumps = parseSolveDumps(options->dumps);
+        if (!dumps.empty() && !options->region.empty())
+            throw UserError("interp: --dump writes a curves block's whole box, which a --region run does not keep; leave "
+                            "out --region");
         std::vector<RolePath> outputs = dumpOutputs(dumps);
         outputs.insert(outputs.begin(), {{"--voxels", options->voxelsPath}, {"--materials", options->materialsPath}});
         refuseClashingPaths(inputs, outputs);

@@ -62,6 +62,8 @@ void run(const RunOptions& options) {
     }
     if (options.file.empty()) throw UserError("run: a .vox file is required");
     const std::vector<SolveDump> dumps = parseSolveDumps(options.dumps);
+    if (!dumps.empty() && !options.region.empty())
+        throw UserError("run: --dump writes a curves block's whole box, which a --region run does not keep; leave out --region");
     if (options.meshPath.empty() && options.voxelsPath.empty() && options.materialsPath.empty() && dumps.empty())
         throw UserError("run: nothing to write; give -o MESH.ply|.obj|.glb, --voxels FILE.npy, --materials FILE.npy "
                         "and/or --dump CHANNEL=FILE.npy");
