@@ -25,18 +25,19 @@ bool writesMaterials(const Program& program, const Stage& stage) {
     return false;
 }
 
-// A rule's stamps where it fires: each field's nodes at every voxel of its grown window.
+// A rule's stamps at an anchor where its window matched: each field's nodes at every voxel of
+// its grown window, times the rule's probability of firing.
 double stampWork(const Program& program, const Rule& rule) {
     double work = 0.0;
     for (const Stamp& stamp : rule.stamps) {
         const glm::dvec3 grown = glm::dvec3(rule.size + 2 * stamp.reach);
         work += grown.x * grown.y * grown.z * double(program.fields.at(stamp.field).nodes.size());
     }
-    return work;
+    return work * double(rule.probability);
 }
 
 // One iteration: every sweep tests each rule's cells at each anchor, and stamps as if every
-// anchor fired the rule with the costliest stamps.
+// window matched the rule with the costliest stamps.
 double iterationWork(const Program& program, const Grammar& grammar) {
     double work = 0.0;
     for (const Sweep& sweep : orderSweeps(grammar)) {
