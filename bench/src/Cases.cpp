@@ -24,6 +24,22 @@ const std::vector<Case>& featureCases() {
     return cases;
 }
 
+const std::vector<Case>& symmetryCases() {
+    static const std::vector<Case> cases = {
+        {"symmetry_square", "bench/grammars/ledge_square.vox"},
+        {"symmetry_expanded", "bench/grammars/ledge_expanded.vox"},
+    };
+    return cases;
+}
+
+const std::vector<Case>& stampCases() {
+    static const std::vector<Case> cases = {
+        {"arches_between_cliffs", "examples/arches_between_cliffs.vox"},
+        {"sea_caves", "examples/sea_caves.vox"},
+    };
+    return cases;
+}
+
 namespace {
 
 Program loadResized(const Case& benchCase, int n) {

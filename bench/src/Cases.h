@@ -26,6 +26,12 @@ Program loadExampleProgram(const std::string& example);
 
 Program loadFeatureProgram(const Case& benchCase, int n);
 
+// Grammar power (issue 15), run as written at 128^3: a rule under `symmetry = square` (8
+// variants) and the same 8 variants written out by hand (bench/grammars/expand.py), then the
+// stamping examples arches_between_cliffs and sea_caves resized to 128^3.
+const std::vector<Case>& symmetryCases();
+const std::vector<Case>& stampCases();
+
 // The "fbm5" case: a 5-octave Perlin fBm density over n^3 voxels (frequency 0.02 per voxel,
 // lacunarity 2, gain 0.5, seed 0), written by a `set` field stage.
 Program fbm5Program(int n);
