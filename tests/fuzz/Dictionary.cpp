@@ -21,7 +21,7 @@ constexpr std::string_view kLanguageWords[] = {
     "bounds", "color", "id", "set", "union", "subtract", "intersect", "paint", "arch", "cave", "overhang",
     "float", "int", "bool", "vec2", "vec3", "x", "y", "z", "xy", "xz", "xyz", "density", "none",
     "symmetry", "rot_y", "square", "all", "rot90y", "rot180y", "mirror_x", "mirror_y", "mirror_diag",
-    "where", "box", "mean", "min", "max", "solid_fraction", "material_fraction",
+    "where", "box", "mean", "min", "max", "solid_fraction", "material_fraction", "stamp", "reach", "offset", "mode",
 };
 
 std::string quoted(std::string_view word) {
