@@ -119,5 +119,31 @@ TEST(e2e_Aggregates, MaterialFractionOverABox) {
                      });
 }
 
+// Tile skipping reads a `min` test as a bound on every cell of its box: an all-IGN rule that asks
+// for solid rock everywhere in its window runs only in tiles holding rock, and gives the same
+// grid as running every tile.
+TEST(e2e_Aggregates, TileSkippingReadsMinAsACellBound) {
+    const Program program = checked(R"(
+world { size = [48, 40, 48]; origin = [3, -5, 0]; chunk = 16; seed = 4; }
+start { fill { value = 0; } heightfield { base = 10; amplitude = 4; frequency = 0.1; } }
+grammar g {
+  rule roof {
+    size = [2, 2, 2];
+    symbol { layer { [IGN, IGN] [IGN, IGN] } layer { [IGN, IGN] [IGN, IGN] } }
+    transform { layer { [NOP, NOP] [SET 0.75, NOP] } layer { [NOP, NOP] [NOP, NOP] } }
+    where { min = [0.5, 1]; }
+  }
+}
+)");
+    VulkanExecutor skipping(test::lavapipe(), compileProgram(program, {}), {});
+    const RunResult skipped = skipping.run();
+    ASSERT_TRUE(skipped.skip.enabled);
+    // Air fills the upper part of the grid, so most tiles cannot hold a window of rock.
+    EXPECT_LT(skipped.skip.activeTilePhases * 2, skipped.skip.tilePhases);
+    const DenseGrid all = test::runOnLavapipe(program, {.skipInactiveTiles = false});
+    EXPECT_EQ(test::countBitDifferences(skipped.grid.toDense(), all), 0u);
+    EXPECT_EQ(test::countBitDifferences(interpret(program), all), 0u);
+}
+
 } // namespace
 } // namespace voxc

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <glm/vector_relational.hpp>
 
 #include <algorithm>
 #include <bit>
@@ -50,18 +51,36 @@ KeyInterval keyInterval(const ValueInterval& interval) {
     return k;
 }
 
-// The densities for which every predicate of a symbol cell passes.
-ValueSet cellValues(const SymbolCell& cell) {
+bool inBox(const AggregateTest& test, glm::ivec3 cell) {
+    return glm::all(glm::greaterThanEqual(cell, test.boxMin)) && glm::all(glm::lessThan(cell, test.boxMax));
+}
+
+// An aggregate test that bounds every cell of its box: a `min` in [low, high] passes only when no
+// cell but a NaN is below low (voxc::aggregatePasses skips later NaNs, and a NaN fails at the
+// first cell), a `max` only when none is above high. The other kinds bound no single cell.
+bool boundsCells(const AggregateTest& test) {
+    return test.kind == AggregateKind::Min || test.kind == AggregateKind::Max;
+}
+
+// The densities window cell c can hold when the rule matches: every predicate of its symbol cell
+// passes, and every `min` (`max`) test whose box holds it has it at least low (at most high).
+// NaN keys lie beyond both infinities' (keyInterval), so those ranges stay open to them.
+ValueSet cellValues(const IrRule& rule, uint32_t c, glm::ivec3 offset) {
     ValueSet set = ValueSet::all();
-    for (const Predicate& p : cell.predicates)
+    for (const Predicate& p : rule.symbol[c].predicates)
         if (p.op != SymbolOp::IGN) set = set.intersect(symbolOpInfo(p.op).accepts(p.value));
+    for (const AggregateTest& test : rule.aggregates)
+        if (boundsCells(test) && inBox(test, offset))
+            set = set.intersect(test.kind == AggregateKind::Min ? ValueSet::above(test.low, true)
+                                                                : ValueSet::below(test.high, true));
     return set;
 }
 
-bool testsCell(const SymbolCell& cell) {
-    for (const Predicate& p : cell.predicates)
+bool testsCell(const IrRule& rule, uint32_t c, glm::ivec3 offset) {
+    for (const Predicate& p : rule.symbol[c].predicates)
         if (p.op != SymbolOp::IGN) return true;
-    return false;
+    return std::any_of(rule.aggregates.begin(), rule.aggregates.end(),
+                       [&](const AggregateTest& test) { return boundsCells(test) && inBox(test, offset); });
 }
 
 // Tiles track density ranges only: a material test is taken to pass, so skipping stays
@@ -80,7 +99,8 @@ std::string mayMatch(const IrSweep& sweep) {
     std::string s = "// The density range each tested cell can read (keys), over this tile's anchors.\n";
     std::vector<bool> tested(sweep.cells.size(), false);
     for (const IrRule& rule : sweep.rules)
-        for (uint32_t c = 0; c < sweep.cells.size(); ++c) tested[c] = tested[c] || testsCell(rule.symbol[c]);
+        for (uint32_t c = 0; c < sweep.cells.size(); ++c)
+            tested[c] = tested[c] || testsCell(rule, c, sweep.cells[c].offset);
     // Offsets below the smallest tile size read only the anchors' tile and its next neighbours.
     bool near = true;
     for (uint32_t c = 0; c < sweep.cells.size(); ++c) {
@@ -100,9 +120,14 @@ std::string mayMatch(const IrSweep& sweep) {
         const IrRule& rule = sweep.rules[r];
         std::vector<std::string> cells;
         for (uint32_t c = 0; c < sweep.cells.size(); ++c) {
-            if (!testsCell(rule.symbol[c])) continue;
-            const ValueSet set = cellValues(rule.symbol[c]);
-            VOXC_ASSERT(!set.empty()); // a live rule's cells can all pass
+            if (!testsCell(rule, c, sweep.cells[c].offset)) continue;
+            const ValueSet set = cellValues(rule, c, sweep.cells[c].offset);
+            if (set.empty()) {
+                // A `min`/`max` box no density passes with the cell's predicates: never matches.
+                cells.push_back(fmt::format("false // {} no density passes its predicates and tests",
+                                            printCell(sweep.cells[c].offset)));
+                continue;
+            }
             std::vector<std::string> meets;
             for (const ValueInterval& interval : set.intervals()) {
                 const KeyInterval k = keyInterval(interval);
@@ -112,6 +137,9 @@ std::string mayMatch(const IrSweep& sweep) {
             for (const Predicate& p : rule.symbol[c].predicates)
                 if (p.op != SymbolOp::IGN) predicates.push_back(printPredicate(p));
             if (!rule.symbol[c].materialPredicates.empty()) predicates.push_back("(material tests may pass)");
+            for (const AggregateTest& test : rule.aggregates)
+                if (boundsCells(test) && inBox(test, sweep.cells[c].offset))
+                    predicates.push_back(fmt::format("(where {})", ir::printAggregate(test)));
             cells.push_back(fmt::format("{} // {} {}", meets.size() == 1 ? meets[0] : fmt::format("({})", fmt::join(meets, " || ")),
                                         printCell(sweep.cells[c].offset), fmt::join(predicates, " & ")));
         }
