@@ -98,6 +98,10 @@ std::optional<std::string> componentGlsl(const ir::IrField& field, uint32_t i, i
     return fmt::format("({} {} {})", *a, op, *b);
 }
 
+// Each column noise call holds a block of COLUMN_BLOCK floats per invocation (1 KiB); past this
+// many in one kernel the calls are evaluated per voxel, so private memory stays small on a GPU.
+constexpr int kMaxColumnNoiseSites = 4;
+
 // Emits call `i` through noise_column.glsl when it is fbm, turbulence or perlin3 of a point whose
 // x and z are the same along the column and whose y depends on y alone, its other arguments the
 // same along the column; false otherwise (the call is then emitted per voxel).
@@ -105,7 +109,7 @@ bool emitColumnNoise(const ir::IrModule& module, const ir::IrField& field, uint3
     const FieldNode& node = field.nodes[i];
     const std::string_view name = functions()[node.function].name;
     const bool fractal = name == "fbm" || name == "turbulence";
-    if (!fractal && name != "perlin3") return false;
+    if ((!fractal && name != "perlin3") || site >= kMaxColumnNoiseSites) return false;
     for (size_t k = 1; k < node.operands.size(); ++k)
         if (!field.perColumn.at(node.operands[k])) return false;
     const auto columnLeaf = [&](uint32_t n, int axis) -> std::optional<std::string> {
