@@ -83,7 +83,7 @@ constexpr std::string_view kGroupNames[] = {"none", "x", "z", "xz", "xyz", "rot_
 
 bool sameSymbol(const SymbolCell& a, const SymbolCell& b) {
     const auto samePredicate = [](const Predicate& p, const Predicate& q) {
-        return p.op == q.op && (p.value == q.value || std::isnan(p.value) && std::isnan(q.value));
+        return p.op == q.op && (p.value == q.value || (std::isnan(p.value) && std::isnan(q.value)));
     };
     const auto sameMaterial = [](const MaterialPredicate& p, const MaterialPredicate& q) {
         return p.op == q.op && p.material == q.material;
