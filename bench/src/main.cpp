@@ -31,6 +31,7 @@
 #include <iostream>
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <memory>
 
 namespace {
@@ -48,6 +49,14 @@ struct BenchOptions {
     int repetitions = 3;
 };
 
+// CPU time of the whole process, every thread (lavapipe runs a dispatch on worker threads of its
+// own): on a shared machine the load stretches wall times, much less the CPU a run takes.
+double processCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) / 1e6;
+}
+
 void registerVulkan(bench::JsonReporter& reporter, VulkanContext& context, const std::string& caseName, int n,
                     std::shared_ptr<const Program> program) {
     const std::string name = fmt::format("{}/{}/vulkan", caseName, n);
@@ -62,10 +71,14 @@ void registerVulkan(bench::JsonReporter& reporter, VulkanContext& context, const
                                              std::chrono::steady_clock::now() - start).count());
             (*executor)->run(); // warm-up
         }
+        double cpuMs = 0;
         for (auto _ : state) {
+            const double cpuStart = processCpuMs();
             const RunTimings t = (*executor)->run().timings;
+            cpuMs += processCpuMs() - cpuStart;
             state.SetIterationTime((t.recordMs + t.executeMs + t.readbackMs) / 1000.0);
         }
+        state.counters["cpu_ms"] = benchmark::Counter(cpuMs, benchmark::Counter::kAvgIterations);
     })->UseManualTime()->Unit(benchmark::kMillisecond);
     reporter.describe(name + "/manual_time", {caseName, n, "vulkan", context.device().name});
 }
@@ -77,7 +90,13 @@ void registerInterp(bench::JsonReporter& reporter, const std::string& caseName, 
     benchmark::RegisterBenchmark(name.c_str(), [program, warmedUp](benchmark::State& state) {
         if (!*warmedUp) benchmark::DoNotOptimize(interpret(*program).data().data()); // warm-up
         *warmedUp = true;
-        for (auto _ : state) benchmark::DoNotOptimize(interpret(*program).data().data());
+        double cpuMs = 0;
+        for (auto _ : state) {
+            const double cpuStart = processCpuMs();
+            benchmark::DoNotOptimize(interpret(*program).data().data());
+            cpuMs += processCpuMs() - cpuStart;
+        }
+        state.counters["cpu_ms"] = benchmark::Counter(cpuMs, benchmark::Counter::kAvgIterations);
     })->Unit(benchmark::kMillisecond);
     reporter.describe(name, {caseName, n, "interp", "cpu (1 thread)"});
 }
