@@ -156,6 +156,8 @@ float segmentDistanceSquared(glm::vec3 p, const PointSetSegment& s) {
 
 PointBins binPointSet(const PointSet& set, glm::ivec3 firstCell, glm::ivec3 cellCount, int32_t cellSize,
                       uint64_t maxEntries, uint32_t maxPerCell) {
+    const uint64_t cells = uint64_t(cellCount.x) * uint64_t(cellCount.y) * uint64_t(cellCount.z);
+    if (cells > kMaxPointSetCells) throw PointSetLimitError{"cells", cells, kMaxPointSetCells};
     PointBins bins;
     bins.firstCell = firstCell;
     bins.cellCount = cellCount;

@@ -150,6 +150,11 @@ PointBins binCarveCells(const PointSet& set, glm::ivec3 worldOrigin, glm::ivec3 
                              fmt::format("binning the carve's points would test this many (point, {}^3 cell) pairs "
                                          "(their bounding boxes; long segments or a large radius make many) at least",
                                          kPointSetCellSize), "CarveLimits");
+        if (std::string_view(e.limit) == "cells")
+            throw LimitError("kMaxPointSetCells", e.amount, e.cap,
+                             fmt::format("the carve's lists cover the checked world in {}^3 cells (a world unbounded "
+                                         "in x or z is as wide as 2^20 voxels); this many cells",
+                                         kPointSetCellSize), "voxc/program/PointSet.h");
         if (std::string_view(e.limit) == "perCell")
             throw LimitError("maxPerCell", e.amount, e.cap,
                              fmt::format("one {}^3 cell would list this many centres or skeleton segments of the carve "

@@ -67,8 +67,9 @@ float centreDistanceSquared(glm::vec3 p, glm::vec3 centre, float scale);
 float segmentDistanceSquared(glm::vec3 p, const PointSetSegment& segment);
 
 // The bins of `set` over cells firstCell .. firstCell + cellCount - 1. Throws
-// PointSetLimitError before testing more than kMaxPointSetCellTests (item, cell) pairs of a kind,
-// or storing more than maxEntries list entries in all or more than maxPerCell in one cell's list.
+// PointSetLimitError before covering more than kMaxPointSetCells cells, testing more than
+// kMaxPointSetCellTests (item, cell) pairs of a kind, or storing more than maxEntries list
+// entries in all or more than maxPerCell in one cell's list.
 PointBins binPointSet(const PointSet& set, glm::ivec3 firstCell, glm::ivec3 cellCount, int32_t cellSize,
                       uint64_t maxEntries, uint32_t maxPerCell);
 // The bins every backend uses: kPointSetCellSize cells covering the grid gridOrigin ..
@@ -77,7 +78,7 @@ PointBins binPointSetOverGrid(const PointSet& set, glm::ivec3 gridOrigin, glm::i
                               uint32_t maxPerCell);
 
 struct PointSetLimitError {
-    const char* limit; // "cellTests", "entries", "perCell" or "words"
+    const char* limit; // "cells", "cellTests", "entries", "perCell" or "words"
     uint64_t amount;   // how many were about to be stored (at least limit + 1)
     uint64_t cap;
 };
@@ -99,6 +100,8 @@ constexpr uint64_t kMaxPointSetListEntries = uint64_t(1) << 24;
 constexpr uint32_t kMaxPointSetPerCell = uint32_t(1) << 13;
 // (item, cell) pairs one binning tests for each kind (its items' bounding boxes in cells).
 constexpr uint64_t kMaxPointSetCellTests = uint64_t(1) << 26;
+// Cells one binning covers (each holds a list start per kind): a 4096x512x4096 grid in 8^3 cells.
+constexpr uint64_t kMaxPointSetCells = uint64_t(1) << 24;
 
 // The storage buffer of kBindingPointSets (layout in compiler/shaders/lsystem_carve.glsl): every
 // set binned over the grid (binPointSetOverGrid). Throws PointSetLimitError past the bounds above
