@@ -20,6 +20,10 @@ void addWorldOverrideFlags(CLI::App& command, WorldOverrides& overrides) {
     addMaxWorkFlag(command, overrides);
 }
 
+void addDeviceFlag(CLI::App& command, std::string& device) {
+    command.add_option("--device", device, "auto (default: a GPU if present), lavapipe, gpu, or an index");
+}
+
 void addMaxWorkFlag(CLI::App& command, WorldOverrides& overrides) {
     // Limits::maxWork is an int64; larger budgets mean "no budget" and are clamped to its range.
     auto atLeastOne = [](const std::string& text) -> std::string {

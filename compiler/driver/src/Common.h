@@ -24,6 +24,8 @@ struct WorldOverrides {
 
 // --seed, --chunk and --max-work.
 void addWorldOverrideFlags(CLI::App& command, WorldOverrides& overrides);
+// --device: the Vulkan device that runs the kernels (parsed by vulkan::selectDevice's rules).
+void addDeviceFlag(CLI::App& command, std::string& device);
 // --max-work alone (for `check`, which runs nothing).
 void addMaxWorkFlag(CLI::App& command, WorldOverrides& overrides);
 

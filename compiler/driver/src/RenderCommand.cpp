@@ -141,7 +141,7 @@ void addRenderCommand(CLI::App& app) {
     addEditsFlag(*command, options->editsPath);
     command->add_flag("--wireframe", options->wireframe, "Draw the mesh's edges over its faces");
     command->add_flag("--chunk-borders", options->chunkBorders, "Draw the boxes of the grid's chunks");
-    command->add_option("--device", options->device, "auto (default: a GPU if present), lavapipe, gpu, or an index");
+    addDeviceFlag(*command, options->device);
     command->add_option("--iso", options->iso, "Surface level for meshing (default 0.5)");
     command->add_flag("--validate", options->validate, "Enable the Khronos validation layer; fail on any message");
     addWorldOverrideFlags(*command, options->overrides);

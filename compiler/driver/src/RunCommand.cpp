@@ -250,7 +250,7 @@ void addRunCommand(CLI::App& app) {
     command->add_option("--voxels", options->voxelsPath, "Also write the densities as a NumPy .npy file (float32)");
     command->add_option("--materials", options->materialsPath, "Also write the material ids as a NumPy .npy file (uint8)");
     addDumpFlag(*command, options->dumps);
-    command->add_option("--device", options->device, "auto (default: a GPU if present), lavapipe, gpu, or an index");
+    addDeviceFlag(*command, options->device);
     command->add_option("--iso", options->iso, "Surface level for meshing (default 0.5)");
     command->add_option("--mesher", options->mesher, "mc (marching cubes, manifold; the default) or surface-nets")
         ->check(CLI::IsMember({"mc", "surface-nets"}));

@@ -88,7 +88,7 @@ void addViewCommand(CLI::App& app) {
     command->add_option("--screenshot", options->screenshot, "Write the 3D view as PNG when the script ends or the window closes");
     command->add_option("--camera", options->camera, "The first view: iso (default), top, side, or X,Y,Z:TX,TY,TZ");
     command->add_option("--size", options->size, "The window's WIDTHxHEIGHT in pixels (default 1280x720)");
-    command->add_option("--device", options->device, "auto (default: a GPU if present), lavapipe, gpu, or an index");
+    addDeviceFlag(*command, options->device);
     command->add_option("--iso", options->iso, "Surface level for meshing and picking (default 0.5)");
     addWorldOverrideFlags(*command, options->overrides);
     addConsoleFlags(*command);

@@ -136,7 +136,7 @@ void addWorldCommand(CLI::App& app) {
     command->add_option("--mesh", options->mesh,
                         "Each tile's share of the world's marching-cubes mesh beside its .vdb: glb (default), ply or none");
     command->add_option("--iso", options->iso, "Surface level for the meshes (default 0.5)");
-    command->add_option("--device", options->device, "auto (default: a GPU if present), lavapipe, gpu, or an index");
+    addDeviceFlag(*command, options->device);
     command->add_flag("--interpreter", options->interpreter,
                       "Compute the tiles with the CPU interpreter (the reference) instead of Vulkan");
     command->add_flag("--no-cache", options->noCache,
