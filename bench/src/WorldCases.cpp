@@ -40,7 +40,7 @@ Program sceneWorld(int n, int32_t tile) {
 } // namespace
 
 void registerWorldCases(JsonReporter& reporter, VulkanContext& context) {
-    for (const auto [n, tile] : {std::pair(256, 64), std::pair(512, 256)}) {
+    for (const auto& [n, tile] : {std::pair(256, 64), std::pair(512, 256)}) {
         auto program = std::make_shared<const Program>(sceneWorld(n, tile));
         const std::string caseName = fmt::format("world_tile{}", tile);
         const std::string name = fmt::format("{}/{}", caseName, n);

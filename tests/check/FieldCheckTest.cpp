@@ -33,6 +33,9 @@ std::string written(const Field& f, uint32_t index) {
     case FieldNode::Kind::Input: return "in" + std::to_string(int(node.input));
     case FieldNode::Kind::Component: return written(f, node.operands[0]) + "." + std::to_string(node.component);
     case FieldNode::Kind::Call: break;
+    case FieldNode::Kind::PointSet: return "point_set(" + written(f, node.operands[0]) + ")";
+    case FieldNode::Kind::Map:
+        return node.map->name + "(" + written(f, node.operands[0]) + ", " + written(f, node.operands[1]) + ")";
     }
     std::string text = functionName(node) + "(";
     for (size_t i = 0; i < node.operands.size(); ++i) text += (i ? ", " : "") + written(f, node.operands[i]);

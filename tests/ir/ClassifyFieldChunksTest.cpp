@@ -64,7 +64,7 @@ TEST(ir_ClassifyFieldChunks, MostArchChunksAreConstantAir) {
 }
 
 TEST(ir_ClassifyFieldChunks, ConstantChunksMatchTheInterpreterAtOddOrigins) {
-    for (const std::string& example : {"arch.vox", "cave.vox", "cliff.vox", "scene.vox", "fields.vox"})
+    for (const std::string example : {"arch.vox", "cave.vox", "cliff.vox", "scene.vox", "fields.vox"})
         for (const std::string& world :
              {std::string("world { size = [40, 36, 44]; origin = [-13, -70, 5]; chunk = 8; }"),
               std::string("world { size = [48, 40, 40]; origin = [1000003, 7, -2000001]; chunk = 16; }")}) {

@@ -19,18 +19,18 @@ struct Context {
     const Limits& limits;
     Constants constants;
     MaterialNames materials; // filled by checkMaterials before any other block is checked
-    std::vector<std::string> curvesNames; // the solve blocks (curves, then terrain), declaration order, for the pipeline
-    std::vector<std::string> curvesKinds; // per solve block: "curves" or "terrain", for messages
+    std::vector<std::string> curvesNames{}; // the solve blocks (curves, then terrain), declaration order, for the pipeline
+    std::vector<std::string> curvesKinds{}; // per solve block: "curves" or "terrain", for messages
     // Each terrain block's height map, which fields sample as NAME(wx, wz); null for a block with
     // errors (reported), so its uses report nothing more.
-    std::map<std::string, std::shared_ptr<const SampledMap>, std::less<>> maps;
-    terrain::ErosionRunner erosionRunner; // CheckOptions::erosionRunner
+    std::map<std::string, std::shared_ptr<const SampledMap>, std::less<>> maps{};
+    terrain::ErosionRunner erosionRunner{}; // CheckOptions::erosionRunner
     // List entries of the lsystem_cave point sets checked so far: the runtime bounds their sum.
     uint64_t pointSetListEntries = 0;
-    std::optional<uint32_t> seed; // CheckOptions::seed
-    curves::LinearSolver curvesSolver; // CheckOptions::curvesSolver
+    std::optional<uint32_t> seed{}; // CheckOptions::seed
+    curves::LinearSolver curvesSolver{}; // CheckOptions::curvesSolver
     bool keepSolveChannels = false;    // CheckOptions::keepSolveChannels
-    std::optional<std::pair<glm::ivec3, glm::ivec3>> region; // CheckOptions::region
+    std::optional<std::pair<glm::ivec3, glm::ivec3>> region{}; // CheckOptions::region
 };
 
 } // namespace voxc::check

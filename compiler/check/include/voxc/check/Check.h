@@ -60,20 +60,20 @@ struct CheckOptions {
     std::map<std::string, double, std::less<>> constOverrides;
     // Replaces the world's seed before anything reads it (`--seed`), so the features, carves and
     // solves made while checking draw from it too, as if the file said `seed = S;`.
-    std::optional<uint32_t> seed;
+    std::optional<uint32_t> seed{};
     // How curves blocks run their linear solves (normals, noise parameters): empty, the host's
     // multigrid; `voxc run` passes the same schedule on its Vulkan device (voxc/vulkan/GpuMultigrid.h).
-    curves::LinearSolver curvesSolver;
+    curves::LinearSolver curvesSolver{};
     // Where terrain blocks run their erosion steps: empty, the host's loop; `voxc run --solve-on`
     // passes the same steps on its Vulkan device (voxc/vulkan/GpuErosion.h).
-    terrain::ErosionRunner erosionRunner;
+    terrain::ErosionRunner erosionRunner{};
     // Keep each curves block's intermediate channels in its table (SolveTable::channels; `--dump`).
     bool keepSolveChannels = false;
     // `--region`: the box of the world (world voxels, min and max with max excluded) a run will
     // compute. The world may then exceed Limits::maxVoxels: what must fit is the box grown by the
     // pipeline's halo (voxc/stages/Region.h), clipped to the world (E0014 otherwise), and the work
     // estimate counts that grid.
-    std::optional<std::pair<glm::ivec3, glm::ivec3>> region;
+    std::optional<std::pair<glm::ivec3, glm::ivec3>> region{};
 };
 
 CheckResult checkSource(const SourceFile& source, const Limits& limits = {});

@@ -186,7 +186,7 @@ struct Stage {
     // `material NAME` clause, else the feature's `material` key; absent: materials untouched.
     std::optional<uint8_t> material;
     // Filled from the kind's record (stages::makeStage, stages::describePipeline):
-    std::string label;           // the pipeline entry as written: "start", "erode", "subtract tunnel"
+    std::string label{};         // the pipeline entry as written: "start", "erode", "subtract tunnel"
     bool readsDensities = true;  // the result depends on the densities before the stage
     bool writesMaterials = true; // the stage may write a material id
 };
