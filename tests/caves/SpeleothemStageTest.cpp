@@ -1,6 +1,7 @@
 // Speleothem stages from .vox source: the interpreter and Vulkan (lavapipe) agree bit for bit at
 // chunk sizes 8/16/32/64 and odd origins (spec test 17 included: columns join across chunk
 // borders), every kind, materials, and keep_clear never writes the carve's clearance.
+#include "CheckedProgram.h"
 #include "Lavapipe.h"
 #include "voxc/check/Check.h"
 #include "voxc/codegen/PackageWriter.h"
@@ -20,11 +21,7 @@
 namespace voxc {
 namespace {
 
-Program checked(const std::string& text) {
-    CheckResult result = checkSource(SourceFile("speleothems.vox", text));
-    EXPECT_FALSE(result.hasErrors()) << result.rendered();
-    return std::move(*result.program);
-}
+Program checked(const std::string& text) { return test::checkedProgram("speleothems.vox", text); }
 
 // The interpreter's grid, after checking Vulkan gives the same bits at every chunk size.
 DenseGrid agreeAtEveryChunkSize(Program program) {

@@ -1,6 +1,7 @@
 // The curves stage on the CPU (docs/curves.md, "The stage"): the spec's planes test (A4.5)
 // through the whole pipeline and the mesher, the stage acting on its box only by its mode, and
 // the example's cliff meshing watertight with the materials of its curves.
+#include "CheckedProgram.h"
 #include "Programs.h"
 
 #include "voxc/check/Check.h"
@@ -21,12 +22,7 @@
 namespace voxc {
 namespace {
 
-Program checked(const std::string& text) {
-    CheckResult result = checkSource(SourceFile("curves.vox", text));
-    EXPECT_TRUE(result.diagnostics.empty()) << result.rendered();
-    if (!result.program) throw std::runtime_error("the program did not check");
-    return *result.program;
-}
+Program checked(const std::string& text) { return test::checkedProgram("curves.vox", text, test::Allowed::None); }
 
 Mesh meshOf(const Program& program, const DenseGrid& grid) {
     const World& w = program.world;

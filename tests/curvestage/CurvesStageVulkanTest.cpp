@@ -1,6 +1,7 @@
 // The curves stage on lavapipe against the interpreter: densities and materials bit-identical
 // for every mode at chunk sizes 8, 16 and 32, at the origin and at an odd negative one, and the
 // planes program likewise.
+#include "CheckedProgram.h"
 #include "Lavapipe.h"
 #include "GridCompare.h"
 #include "Programs.h"
@@ -15,12 +16,7 @@
 namespace voxc {
 namespace {
 
-Program checked(const std::string& text) {
-    CheckResult result = checkSource(SourceFile("curves.vox", text));
-    EXPECT_TRUE(result.diagnostics.empty()) << result.rendered();
-    if (!result.program) throw std::runtime_error("the program did not check");
-    return *result.program;
-}
+Program checked(const std::string& text) { return test::checkedProgram("curves.vox", text, test::Allowed::None); }
 
 void expectDeviceMatches(Program program) {
     const DenseGrid expected = interpret(program);

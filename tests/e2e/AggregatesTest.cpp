@@ -1,6 +1,7 @@
 // Aggregate tests against a brute-force evaluation: a rule whose symbol is all IGN marks its
 // anchor where its `where` test holds; windows tile the grid (stride = window), so every window
 // reads the start state, which the test evaluates on its own. Then the same on Vulkan.
+#include "CheckedProgram.h"
 #include "GridCompare.h"
 #include "Lavapipe.h"
 #include "voxc/check/Check.h"
@@ -42,11 +43,7 @@ grammar mark {{
                        where);
 }
 
-Program checked(const std::string& text) {
-    CheckResult result = checkSource(SourceFile("aggregates.vox", text));
-    EXPECT_FALSE(result.hasErrors()) << result.rendered();
-    return std::move(*result.program);
-}
+Program checked(const std::string& text) { return test::checkedProgram("aggregates.vox", text); }
 
 // Whether the test holds for the window anchored at `anchor` (grid-local) of the start state.
 using WindowTest = std::function<bool(const DenseGrid&, glm::ivec3 anchor)>;

@@ -3,6 +3,7 @@
 // overlapping stamps of one phase crossing chunk borders on Vulkan at chunk sizes 8, 16 and 32
 // and odd origins (bit for bit the interpreter's), for a turned variant, and for a region, whose
 // halo must hold the reach.
+#include "CheckedProgram.h"
 #include "GridCompare.h"
 #include "Lavapipe.h"
 #include "voxc/check/Check.h"
@@ -19,11 +20,7 @@
 namespace voxc {
 namespace {
 
-Program checked(const std::string& text) {
-    CheckResult result = checkSource(SourceFile("stamps.vox", text));
-    EXPECT_FALSE(result.hasErrors()) << result.rendered();
-    return std::move(*result.program);
-}
+Program checked(const std::string& text) { return test::checkedProgram("stamps.vox", text); }
 
 // Boulders (union, sandstone) and pits (subtract) stamped on a noisy ground by rules of one
 // [2, 1, 1] sweep at stride 1: a phase's anchors are 2 voxels apart along x, so the grown

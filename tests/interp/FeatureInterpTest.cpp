@@ -1,5 +1,6 @@
 // Dey's generators (`feature` blocks) through the interpreter: the shapes they promise and that
 // every key of every generator changes the voxels.
+#include "CheckedProgram.h"
 #include "voxc/check/Check.h"
 #include "voxc/interp/FieldEval.h"
 #include "voxc/interp/Interpreter.h"
@@ -15,11 +16,7 @@ namespace {
 
 const std::string kWorld = "world { size = [64, 64, 64]; seed = 5; }\n";
 
-Program checked(const std::string& text) {
-    CheckResult result = checkSource(SourceFile("test.vox", text));
-    EXPECT_FALSE(result.hasErrors()) << result.rendered();
-    return result.program ? *result.program : Program{};
-}
+Program checked(const std::string& text) { return test::checkedProgram("test.vox", text); }
 
 // The feature's density (1 rock, 0 air) at one voxel of a 64^3 grid.
 float densityAt(const std::string& feature, glm::ivec3 voxel) {

@@ -1,5 +1,6 @@
 // Field stages in the interpreter: every node kind evaluates through the registry, inputs at a
 // non-zero origin, let sharing, inlining, each FieldMode and the pipeline order with grammars.
+#include "CheckedProgram.h"
 #include "voxc/check/Check.h"
 #include "voxc/interp/FieldEval.h"
 #include "voxc/interp/Interpreter.h"
@@ -13,11 +14,7 @@
 namespace voxc {
 namespace {
 
-Program checked(const std::string& text) {
-    CheckResult result = checkSource(SourceFile("test.vox", text));
-    EXPECT_FALSE(result.hasErrors()) << result.rendered();
-    return result.program ? *result.program : Program{};
-}
+Program checked(const std::string& text) { return test::checkedProgram("test.vox", text); }
 
 // The value of the program's last field at one voxel.
 float fieldAt(const std::string& world, const std::string& declarations, glm::ivec3 voxel) {

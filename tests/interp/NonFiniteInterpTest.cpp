@@ -1,6 +1,7 @@
 // Non-finite values in the interpreter (docs/language.md, "Non-finite values"): what each field
 // mode makes of a field that is NaN or infinite (0 takes its place), a grammar write past the
 // float range, and the NaN rules of the builtins that the kernels write out explicitly.
+#include "CheckedProgram.h"
 #include "voxc/builtins/Functions.h"
 #include "voxc/check/Check.h"
 #include "voxc/interp/Interpreter.h"
@@ -14,11 +15,7 @@
 namespace voxc {
 namespace {
 
-Program checked(const std::string& text) {
-    CheckResult result = checkSource(SourceFile("test.vox", text));
-    EXPECT_FALSE(result.hasErrors()) << result.rendered();
-    return result.program ? *result.program : Program{};
-}
+Program checked(const std::string& text) { return test::checkedProgram("test.vox", text); }
 
 // A row of 4 voxels at densities 0, 0.25, 0.75, 1 (a `start` of boxes), then `pipeline`.
 const std::string kRow = "world { size = [4, 1, 1]; }\n"

@@ -1,6 +1,7 @@
 // A terrain's map sampled from fields on lavapipe against the interpreter: densities and
 // materials bit-identical at chunk sizes 8, 16 and 32, at the origin and at odd negative ones,
 // with coordinates inside the map, past its edges (clamped) and warped off the voxel grid.
+#include "CheckedProgram.h"
 #include "GridCompare.h"
 #include "Lavapipe.h"
 
@@ -14,12 +15,7 @@
 namespace voxc {
 namespace {
 
-Program checked(const std::string& text) {
-    CheckResult result = checkSource(SourceFile("map.vox", text));
-    EXPECT_TRUE(result.diagnostics.empty()) << result.rendered();
-    if (!result.program) throw std::runtime_error("the program did not check");
-    return *result.program;
-}
+Program checked(const std::string& text) { return test::checkedProgram("map.vox", text, test::Allowed::None); }
 
 // An eroded map smaller than the grid, its corner a little inside the grid's (so columns past
 // both edges read the clamped edge), the ground from it, a tunnel that follows the ground 5

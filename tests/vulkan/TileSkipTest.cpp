@@ -1,6 +1,7 @@
 // Tile skipping (DispatchCursor with a tile shift, tiles.glsl): sweeps run only over the tiles
 // where some rule may match, and the result stays bit-identical to the interpreter and to a
 // run that dispatches every anchor.
+#include "CheckedProgram.h"
 #include "Lavapipe.h"
 #include "GridCompare.h"
 #include "voxc/check/Check.h"
@@ -18,11 +19,7 @@ namespace {
 
 using test::lavapipe;
 
-Program checked(const std::string& text) {
-    CheckResult result = checkSource(SourceFile("grow.vox", text));
-    EXPECT_FALSE(result.hasErrors()) << result.rendered();
-    return std::move(*result.program);
-}
+Program checked(const std::string& text) { return test::checkedProgram("grow.vox", text); }
 
 
 RunResult run(const Program& program, bool skip) {
