@@ -69,15 +69,18 @@ void expectSameDefinition(const Definition& a, const Definition& b) {
               std::tie(q.angle, q.step, q.angleDelta, q.stepDelta, q.angleDeviation, q.pitchLimit, q.yaw, q.pitch));
     EXPECT_EQ(p.start, q.start);
     ASSERT_EQ(a.target.has_value(), b.target.has_value());
-    if (a.target) EXPECT_EQ(std::tie(a.target->point, a.target->strength), std::tie(b.target->point, b.target->strength));
+    if (a.target) {
+        EXPECT_EQ(std::tie(a.target->point, a.target->strength), std::tie(b.target->point, b.target->strength));
+    }
     ASSERT_EQ(a.balanced.has_value(), b.balanced.has_value());
-    if (a.balanced) EXPECT_EQ(a.balanced->delta, b.balanced->delta);
+    if (a.balanced) { EXPECT_EQ(a.balanced->delta, b.balanced->delta); }
     ASSERT_EQ(a.constrained.has_value(), b.constrained.has_value());
-    if (a.constrained)
+    if (a.constrained) {
         EXPECT_EQ(std::tie(a.constrained->shape, a.constrained->min, a.constrained->max, a.constrained->center,
                            a.constrained->radius),
                   std::tie(b.constrained->shape, b.constrained->min, b.constrained->max, b.constrained->center,
                            b.constrained->radius));
+    }
 }
 
 const std::string kFullBlock = "const W = 0.25;\n" + kWorld +

@@ -181,7 +181,7 @@ TEST_F(codegen_Package, ArchUnionSkipsChunksItCannotChange) {
     for (const FieldBox& box : package.stages[1].gridBoxes) {
         evaluated += !box.constant;
         unchanged += box.unchanged;
-        if (box.unchanged) EXPECT_EQ(box.value, 0.0f);
+        if (box.unchanged) { EXPECT_EQ(box.value, 0.0f); }
     }
     EXPECT_GT(evaluated, 0u);
     EXPECT_GT(unchanged, evaluated);

@@ -75,7 +75,7 @@ TEST(e2e_CavesExample, OneConnectedNetworkWithRoomsTunnelsAndSpeleothems) {
     EXPECT_GT(total, size_t(100000));
     // Stray bubbles are a few voxels each and a tiny share of the air.
     for (size_t i = 0; i < air.sizes.size(); ++i)
-        if (int64_t(i) != largest - air.sizes.begin()) EXPECT_LE(air.sizes[i], 64u) << "component " << i;
+        if (int64_t(i) != largest - air.sizes.begin()) { EXPECT_LE(air.sizes[i], 64u) << "component " << i; }
     EXPECT_GE(double(*largest), 0.999 * double(total));
 
     // Every drawn segment's ends (inside the grid, as the constrain box keeps them) are air of

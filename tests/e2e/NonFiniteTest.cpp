@@ -96,7 +96,7 @@ TEST(NonFinite, VulkanCountsWhatTheInterpreterCounts) {
             const NonFiniteCount& cpu = expected[pipelineIndex(program, package.stages[s].loc)];
             SCOPED_TRACE(fmt::format("stage {}", s));
             EXPECT_EQ(result.nonFinite[s].count, cpu.count);
-            if (cpu.count) EXPECT_EQ(result.nonFinite[s].firstIndex, cpu.firstIndex);
+            if (cpu.count) { EXPECT_EQ(result.nonFinite[s].firstIndex, cpu.firstIndex); }
         }
     }
 }

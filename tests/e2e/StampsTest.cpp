@@ -69,7 +69,7 @@ TEST(e2e_Stamps, OverlappingStampsAgreeOnVulkanAtEveryChunkSize) {
             SCOPED_TRACE(fmt::format("origin ({}, {}, {}), chunk {}", origin.x, origin.y, origin.z, chunk));
             const Program program = checked(overlapping(origin, chunk));
             const DenseGrid interpreted = interpret(program);
-            if (origin == glm::ivec3(-5, 3, 7)) EXPECT_EQ(test::countBitDifferences(reference, interpreted), 0u);
+            if (origin == glm::ivec3(-5, 3, 7)) { EXPECT_EQ(test::countBitDifferences(reference, interpreted), 0u); }
             EXPECT_EQ(test::countBitDifferences(interpreted, test::runOnLavapipe(program)), 0u);
             EXPECT_EQ(test::countBitDifferences(interpreted,
                                                 test::runOnLavapipe(program, {.skipInactiveTiles = false})),

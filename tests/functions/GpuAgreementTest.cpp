@@ -256,7 +256,7 @@ void expectAgreement(const FunctionInfo& info, bool specials) {
             for (int c = 0; c < componentCount(overload.result); ++c) {
                 const float expected = cpuResultComponent(cpu, c);
                 const float actual = gpu.at({int(s) % kSide, c, int(s) / kSide});
-                if (!specials) ASSERT_TRUE(std::isfinite(expected)) << what << " sample " << s;
+                if (!specials) { ASSERT_TRUE(std::isfinite(expected)) << what << " sample " << s; }
                 const float difference = std::fabs(actual - expected);
                 if (!specials) maxDifference = std::max(maxDifference, difference);
                 const bool agrees = specials ? specialAgrees(expected, actual, info.tolerance)

@@ -17,7 +17,7 @@ namespace voxc {
 
 struct InterpOptions {
     // Called after each rule firing, in execution order (within a phase: x fastest, then y, z).
-    std::function<void(const TraceEvent&)> onFire;
+    std::function<void(const TraceEvent&)> onFire{};
     // When set, firing counts are added to it.
     FireStats* stats = nullptr;
     // When set, voxc::interpret resizes it to one entry per pipeline stage and counts there the

@@ -145,7 +145,7 @@ struct HeightfieldParams {
 // Positions are grid-local voxel coordinates; a voxel is sampled at its integer index.
 struct StartShape {
     ShapeKind kind = ShapeKind::Fill;
-    SourceLoc loc;
+    SourceLoc loc{};
     float value = 1.0f;             // density written inside the shape (Fill: everywhere)
     glm::vec3 min{0.0f}, max{0.0f}; // Box: min <= p < max
     glm::vec3 center{0.0f};         // Sphere: |p - center| <= radius
@@ -155,8 +155,8 @@ struct StartShape {
     float thickness = 1.0f;
     glm::vec3 normal{0.0f, 1.0f, 0.0f}; // HalfSpace: dot(p, normal) <= offset
     float offset = 0.0f;
-    HeightfieldParams heightfield;  // Heightfield: p.y < height(world x, world z)
-    std::optional<uint8_t> material; // written wherever the shape writes its value; absent: untouched
+    HeightfieldParams heightfield{}; // Heightfield: p.y < height(world x, world z)
+    std::optional<uint8_t> material{}; // written wherever the shape writes its value; absent: untouched
 };
 
 struct World {
@@ -181,10 +181,10 @@ struct Stage {
     Kind kind = Kind::Start;
     uint32_t index = 0;               // into Program::grammars, Program::fields or Program::speleothems
     FieldMode mode = FieldMode::Set;  // Field only
-    SourceLoc loc;
+    SourceLoc loc{};
     // Field only: the material written where the field wins (combineField); from the stage's
     // `material NAME` clause, else the feature's `material` key; absent: materials untouched.
-    std::optional<uint8_t> material;
+    std::optional<uint8_t> material{};
     // Filled from the kind's record (stages::makeStage, stages::describePipeline):
     std::string label{};         // the pipeline entry as written: "start", "erode", "subtract tunnel"
     bool readsDensities = true;  // the result depends on the densities before the stage
