@@ -18,15 +18,8 @@ namespace {
 
 Program checked(const std::string& text) { return test::checkedProgram("curves.vox", text, test::Allowed::None); }
 
-void expectDeviceMatches(Program program) {
-    const DenseGrid expected = interpret(program);
-    for (int chunk : {8, 16, 32}) {
-        SCOPED_TRACE(fmt::format("chunk {}", chunk));
-        program.world.chunkSize = chunk;
-        const DenseGrid actual = test::runOnLavapipe(program);
-        EXPECT_EQ(test::countBitDifferences(expected, actual), 0u);
-        EXPECT_EQ(test::countMaterialDifferences(expected, actual), 0u);
-    }
+void expectDeviceMatches(const Program& program) {
+    test::expectLavapipeMatchesAtEveryChunkSize(program, interpret(program));
 }
 
 TEST(vulkan_CurvesStage, EveryModeMatchesTheInterpreter) {

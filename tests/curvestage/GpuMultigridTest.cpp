@@ -163,15 +163,7 @@ TEST(vulkan_GpuMultigrid, DeviceSolvedRunMatchesTheInterpreter) {
         options.curvesSolver = vulkanLinearSolver(validated());
         const CheckResult device = checkSource(source, options);
         ASSERT_TRUE(host.program && device.program) << host.rendered() << device.rendered();
-        const DenseGrid expected = interpret(*host.program);
-        Program program = *device.program;
-        for (int chunk : {8, 16, 32}) {
-            SCOPED_TRACE(fmt::format("chunk {}", chunk));
-            program.world.chunkSize = chunk;
-            const DenseGrid actual = test::runOnLavapipe(program);
-            EXPECT_EQ(test::countBitDifferences(expected, actual), 0u);
-            EXPECT_EQ(test::countMaterialDifferences(expected, actual), 0u);
-        }
+        test::expectLavapipeMatchesAtEveryChunkSize(*device.program, interpret(*host.program));
     }
     expectNoValidationMessages();
 }

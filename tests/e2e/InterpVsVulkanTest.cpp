@@ -45,13 +45,7 @@ class InterpVsVulkan : public ::testing::TestWithParam<Case> {};
 TEST_P(InterpVsVulkan, BitIdenticalAtEveryChunkSize) {
     Program program = loadExample(GetParam().example);
     program.world.origin += GetParam().origin;
-    const DenseGrid expected = interpret(program);
-    for (int chunk : {8, 16, 32}) {
-        SCOPED_TRACE(fmt::format("chunk {}", chunk));
-        program.world.chunkSize = chunk;
-        const DenseGrid actual = test::runOnLavapipe(program);
-        EXPECT_EQ(test::countVoxelDifferences(expected, actual), 0u);
-    }
+    test::expectLavapipeMatchesAtEveryChunkSize(program, interpret(program));
 }
 
 // cases/field_trig.vox: its field is 0.5 + 0.25 * sin(..) * cos(..), so each voxel may differ by

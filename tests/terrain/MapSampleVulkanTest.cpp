@@ -57,13 +57,7 @@ TEST(vulkan_MapSample, FieldsSamplingAMapMatchTheInterpreter) {
             for (int y = 0; y + 1 < 26; ++y)
                 for (int x = 0; x < 37; ++x) roofed += expected.at({x, y, z}) < 0.5f && expected.at({x, y + 1, z}) >= 0.5f;
         EXPECT_GT(roofed, 20u);
-        for (int chunk : {8, 16, 32}) {
-            SCOPED_TRACE(fmt::format("chunk {}", chunk));
-            p.world.chunkSize = chunk;
-            const DenseGrid actual = test::runOnLavapipe(p);
-            EXPECT_EQ(test::countBitDifferences(expected, actual), 0u);
-            EXPECT_EQ(test::countMaterialDifferences(expected, actual), 0u);
-        }
+        test::expectLavapipeMatchesAtEveryChunkSize(p, expected);
     }
 }
 
