@@ -1,5 +1,6 @@
-# Sourced by the shell tests that run voxc as a user would (tests/cli, tests/render,
-# tests/pipeline, tests/edit, tests/mesh, tests/world, tests/viewer): checks that count into `passed` and `failed`, and the summary line.
+# Sourced by the shell tests that run voxc as a user would (tests/cli, tests/render, tests/pipeline,
+# tests/edit, tests/mesh, tests/world, tests/viewer): checks that count into `passed` and `failed`,
+# and the summary line.
 passed=0
 failed=0
 
