@@ -2,7 +2,7 @@
 // State shared by the checker's passes over one file.
 #include "Constants.h"
 #include "Materials.h"
-#include "voxc/generators/curves/Multigrid.h"
+#include "voxc/generators/curves/Solvers.h"
 #include "voxc/generators/terrain/Terrain.h"
 
 #include "voxc/program/Program.h"
@@ -28,7 +28,7 @@ struct Context {
     // List entries of the lsystem_cave point sets checked so far: the runtime bounds their sum.
     uint64_t pointSetListEntries = 0;
     std::optional<uint32_t> seed{}; // CheckOptions::seed
-    curves::LinearSolver curvesSolver{}; // CheckOptions::curvesSolver
+    curves::Solvers curvesSolver{}; // CheckOptions::curvesSolver
     bool keepSolveChannels = false;    // CheckOptions::keepSolveChannels
     std::optional<std::pair<glm::ivec3, glm::ivec3>> region{}; // CheckOptions::region
 };

@@ -17,7 +17,7 @@ struct WorldOverrides {
     std::optional<int32_t> chunk;
     std::optional<double> maxWork; // replaces Limits::maxWork (--max-work; `1e12` is accepted)
     std::optional<std::pair<glm::ivec3, glm::ivec3>> region; // CheckOptions::region (--region, world voxels)
-    curves::LinearSolver curvesSolver; // CheckOptions::curvesSolver (run --solve-on); empty: the host
+    curves::Solvers curvesSolver; // CheckOptions::curvesSolver (run --solve-on); empty members: the host
     terrain::ErosionRunner erosionRunner; // CheckOptions::erosionRunner (run --solve-on); empty: the host
     bool keepSolveChannels = false;    // CheckOptions::keepSolveChannels (--dump)
 };

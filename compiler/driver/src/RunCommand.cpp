@@ -115,7 +115,7 @@ void run(const RunOptions& options) {
     overrides.keepSolveChannels = !dumps.empty();
     std::string multigridDevice; // the device's name once a multigrid ran there
     if (options.solveOn != "host")
-        overrides.curvesSolver = [&](const std::string& name, const std::vector<uint8_t>& fixed,
+        overrides.curvesSolver.linear = [&](const std::string& name, const std::vector<uint8_t>& fixed,
                                      std::vector<curves::Field3*> components, float tolerance,
                                      const curves::Limits& limits) {
             VulkanContext& solver = openDevice();

@@ -19,8 +19,8 @@ void timed(std::vector<std::pair<std::string, double>>& phases, const char* name
 
 } // namespace
 
-Result solveCurves(const Constraints& cs, const Options& options, const Limits& limits, const LinearSolver& solver) {
-    const LinearSolver& linear = solver ? solver : LinearSolver(solveLaplace);
+Result solveCurves(const Constraints& cs, const Options& options, const Limits& limits, const Solvers& solvers) {
+    const LinearSolver& linear = solvers.linear ? solvers.linear : LinearSolver(solveLaplace);
     checkBox(cs.box, limits);
     if (!(std::isfinite(options.k) && options.k > 0.0f)) throw ParameterError("k", options.k, "must be finite and > 0");
     if (options.smoothPasses < 0 || options.smoothPasses > limits.maxSmoothPasses)
@@ -47,25 +47,32 @@ Result solveCurves(const Constraints& cs, const Options& options, const Limits& 
         if (uint64_t(sweeps) * b.cellCount() > limits.maxSweepCellUpdates)
             throw LimitError("Perona-Malik sweep cell updates", uint64_t(sweeps) * b.cellCount(), limits.maxSweepCellUpdates);
         timed(r.phaseMs, "normals", [&] {
-            const NormalField n = peronaMalikNormals(cs, options.k, sweeps, limits);
+            NormalField n = peronaMalikFill(cs);
+            if (solvers.peronaMalik) solvers.peronaMalik(cs, n, options.k, sweeps);
+            else peronaMalikSweeps(cs, n, options.k, sweeps);
             normalizeField(n.x, n.y, n.z, r.normalX, r.normalY, r.normalZ);
         });
     }
     timed(r.phaseMs, "parameters", [&] {
         r.solves.push_back(linear("parameters", fixedR, {&r.amplitude, &r.roughness}, 1e-5f * maxAmplitude, limits));
     });
-    timed(r.phaseMs, "material", [&] { r.material = propagateMaterial(cs); });
-    timed(r.phaseMs, "surface", [&] { r.surface = propagateSurface(cs, r.normalX, r.normalY, r.normalZ, options.propagate); });
-    timed(r.phaseMs, "smoothing", [&] { r.smoothed = smoothBinomial(r.surface.distance, options.smoothPasses); });
+    timed(r.phaseMs, "material", [&] { r.material = (solvers.material ? solvers.material : propagateMaterial)(cs); });
+    timed(r.phaseMs, "surface", [&] {
+        r.surface = (solvers.surface ? solvers.surface : SurfacePropagator(propagateSurface))(cs, r.normalX, r.normalY,
+                                                                                            r.normalZ, options.propagate);
+    });
+    timed(r.phaseMs, "smoothing", [&] {
+        r.smoothed = (solvers.smoothing ? solvers.smoothing : Smoother(smoothBinomial))(r.surface.distance, options.smoothPasses);
+    });
     return r;
 }
 
 Result runCurves(const std::vector<FeatureCurve>& curves, const Box& box, const Options& options, const Limits& limits,
-                 const LinearSolver& solver) {
+                 const Solvers& solvers) {
     std::vector<std::pair<std::string, double>> phases;
     std::optional<Constraints> constraints;
     timed(phases, "voxelize", [&] { constraints.emplace(voxelize(curves, box, options.seedValue, limits)); });
-    Result r = solveCurves(*constraints, options, limits, solver);
+    Result r = solveCurves(*constraints, options, limits, solvers);
     r.phaseMs.insert(r.phaseMs.begin(), phases.front());
     return r;
 }

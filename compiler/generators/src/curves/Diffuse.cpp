@@ -35,6 +35,12 @@ void normalizeField(const Field3& x, const Field3& y, const Field3& z, Field3& o
 }
 
 NormalField peronaMalikNormals(const Constraints& cs, float k, uint32_t sweeps, const Limits&) {
+    NormalField n = peronaMalikFill(cs);
+    peronaMalikSweeps(cs, n, k, sweeps);
+    return n;
+}
+
+NormalField peronaMalikFill(const Constraints& cs) {
     const Box& b = cs.box;
     NormalField n{cs.normalX, cs.normalY, cs.normalZ, std::vector<uint8_t>(b.cellCount(), 0)};
     std::vector<size_t> front;
@@ -63,8 +69,12 @@ NormalField peronaMalikNormals(const Constraints& cs, float k, uint32_t sweeps, 
         for (size_t i : reached) n.set[i] = 1;
         front = std::move(reached);
     }
+    return n;
+}
 
-    // (b) Jacobi sweeps, ping-pong: N_i + (sum_j c_ij (N_j - N_i)) / 6 over set in-box neighbours.
+void peronaMalikSweeps(const Constraints& cs, NormalField& n, float k, uint32_t sweeps) {
+    const Box& b = cs.box;
+    // Jacobi sweeps, ping-pong: N_i + (sum_j c_ij (N_j - N_i)) / 6 over set in-box neighbours.
     // Cells a sweep skips never change, so both buffers hold them from the start.
     Field3 ux(b), uy(b), uz(b);
     NormalField next = n;
@@ -92,7 +102,6 @@ NormalField peronaMalikNormals(const Constraints& cs, float k, uint32_t sweeps, 
                 }
         std::swap(n, next);
     }
-    return n;
 }
 
 MaterialField propagateMaterial(const Constraints& cs) {

@@ -70,8 +70,8 @@ private:
 
 } // namespace
 
-SolveTable solveScene(const Scene& scene, const Limits& limits, const LinearSolver& solver, bool keepChannels) {
-    Result solved = runCurves(scene.curves, scene.box, scene.options, limits, solver);
+SolveTable solveScene(const Scene& scene, const Limits& limits, const Solvers& solvers, bool keepChannels) {
+    Result solved = runCurves(scene.curves, scene.box, scene.options, limits, solvers);
     const auto densityStart = std::chrono::steady_clock::now();
     // The builtin's own evaluation, so the displacement is the function a field would call.
     const FunctionInfo* warped = findFunction("warped_fbm");
@@ -84,7 +84,13 @@ SolveTable solveScene(const Scene& scene, const Limits& limits, const LinearSolv
     table.density.resize(box.cellCount());
     const bool materials = namesMaterial(scene.curves);
     if (materials) table.material.resize(box.cellCount());
-    std::vector<float> displacements(keepChannels ? box.cellCount() : 0, 0.0f);
+    // A device evaluates the displacement at every cell, in one pass; the host only in the band.
+    std::vector<float> displacements;
+    if (solvers.displacement)
+        displacements = solvers.displacement(solved.amplitude, solved.roughness, scene.noiseFrequency, scene.noiseSeed);
+    const bool displaced = !displacements.empty();
+    if (!displaced && keepChannels) displacements.assign(box.cellCount(), 0.0f);
+    const bool everyCell = keepChannels || displaced;
     // Pointwise: each cell's value depends on that cell alone, so two threads give the same bits.
     forTwoSlabs(box.size.z, 8, [&](int32_t z0, int32_t z1) {
         for (int32_t z = z0; z < z1; ++z)
@@ -95,17 +101,17 @@ SolveTable solveScene(const Scene& scene, const Limits& limits, const LinearSolv
                     const float alpha = solved.amplitude.values[i];
                     // With keepChannels every cell's displacement is evaluated (the dump shows it), and
                     // the densities are the same bits (DisplacementBand).
-                    float density = keepChannels ? -1.0f : band.saturated(s, alpha, solved.roughness.values[i]);
+                    float density = everyCell ? -1.0f : band.saturated(s, alpha, solved.roughness.values[i]);
                     if (density < 0.0f) {
-                        float displacement = 0.0f;
-                        if (alpha != 0.0f) {
+                        float displacement = displaced ? displacements[i] : 0.0f;
+                        if (alpha != 0.0f && !displaced) {
                             const glm::vec3 p = glm::vec3(box.min + glm::ivec3(x, y, z)) * scene.noiseFrequency;
                             const std::array<Value, 5> args{Value::makeVec3(p), Value::makeFloat(solved.roughness.values[i]),
                                                             Value::makeFloat(0.0f), Value::makeFloat(0.0f),
                                                             Value::makeInt(int32_t(scene.noiseSeed))};
                             displacement = alpha * warped->eval(args).v.x;
                         }
-                        if (keepChannels) displacements[i] = displacement;
+                        if (keepChannels && !displaced) displacements[i] = displacement;
                         const float d = s - displacement;
                         // +infinity: no seed reaches the cell, so it is air.
                         density = d < INFINITY ? std::clamp(0.5f - d / 2.0f, 0.0f, 1.0f) : 0.0f;

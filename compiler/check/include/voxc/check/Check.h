@@ -5,7 +5,7 @@
 // converts printed symbol/transform layouts into Program's cell order, builds the pipeline,
 // checks the lsystem blocks, checks its work estimate against Limits::maxWork and finally runs the warning analyses
 // (W0201-W0209).
-#include "voxc/generators/curves/Multigrid.h"
+#include "voxc/generators/curves/Solvers.h"
 #include "voxc/generators/lsystem/Connect.h"
 #include "voxc/generators/lsystem/Definition.h"
 #include "voxc/generators/terrain/Terrain.h"
@@ -61,9 +61,10 @@ struct CheckOptions {
     // Replaces the world's seed before anything reads it (`--seed`), so the features, carves and
     // solves made while checking draw from it too, as if the file said `seed = S;`.
     std::optional<uint32_t> seed{};
-    // How curves blocks run their linear solves (normals, noise parameters): empty, the host's
-    // multigrid; `voxc run` passes the same schedule on its Vulkan device (voxc/vulkan/GpuMultigrid.h).
-    curves::LinearSolver curvesSolver{};
+    // Where curves blocks run their global passes (multigrid, Perona-Malik, fronts, smoothing,
+    // displacement): empty members, the host's loops; `voxc run` passes the same passes on its
+    // Vulkan device (voxc/vulkan/GpuCurves.h).
+    curves::Solvers curvesSolver{};
     // Where terrain blocks run their erosion steps: empty, the host's loop; `voxc run --solve-on`
     // passes the same steps on its Vulkan device (voxc/vulkan/GpuErosion.h).
     terrain::ErosionRunner erosionRunner{};

@@ -2,9 +2,7 @@
 // The feature-curve generator's CPU core (Becher et al., spec Part A, docs/curves.md): voxelise
 // the curves into the solve box, diffuse normals, noise parameters and materials, propagate the
 // signed surface and smooth it. The result is what a solve stage will hand to field kernels.
-#include "voxc/generators/curves/Diffuse.h"
-#include "voxc/generators/curves/Multigrid.h"
-#include "voxc/generators/curves/Propagate.h"
+#include "voxc/generators/curves/Solvers.h"
 
 #include <string>
 #include <utility>
@@ -34,13 +32,13 @@ struct Result {
     std::vector<std::pair<std::string, double>> phaseMs;
 };
 
-// Validates options (ParameterError, LimitError) and runs the stages on given constraints; the
-// linear solves (normals in laplace mode, parameters) through `solver` (empty: solveLaplace).
+// Validates options (ParameterError, LimitError) and runs the stages on given constraints, each
+// global pass through its member of `solvers` (empty: the host's loop).
 Result solveCurves(const Constraints& constraints, const Options& options, const Limits& limits,
-                   const LinearSolver& solver = {});
+                   const Solvers& solvers = {});
 
 // voxelize then solveCurves.
 Result runCurves(const std::vector<FeatureCurve>& curves, const Box& box, const Options& options, const Limits& limits,
-                 const LinearSolver& solver = {});
+                 const Solvers& solvers = {});
 
 } // namespace voxc::curves

@@ -17,6 +17,12 @@ struct NormalField {
 // (a) BFS fill from Omega_N, (b) `sweeps` Jacobi sweeps of N_i += 1/6 sum_j c_ij (N_j - N_i)
 // over set neighbours j, c_ij = g(clamp((1 - n_i.n_j) / 2, 0, 1)) on normalised n.
 NormalField peronaMalikNormals(const Constraints& constraints, float k, uint32_t sweeps, const Limits& limits);
+// (a) alone: N0 on Omega_N, then layer by layer an unset cell with set neighbours takes the
+// normalised sum of their normals (stays unset below 1e-6).
+NormalField peronaMalikFill(const Constraints& constraints);
+// (b) alone, in place: ping-pong Jacobi sweeps over the set cells off Omega_N; each sweep
+// normalises the field first, then updates every such cell from the previous sweep's values.
+void peronaMalikSweeps(const Constraints& constraints, NormalField& normals, float k, uint32_t sweeps);
 
 // n = N / |N|, |N| = sqrt((x*x + y*y) + z*z); 0 where |N| < 1e-6 (A3.4).
 void normalizeField(const Field3& x, const Field3& y, const Field3& z, Field3& outX, Field3& outY, Field3& outZ);

@@ -19,15 +19,15 @@ struct Scene {
 // seed reaches the cell), D = alpha * warped_fbm(f0 * p, beta, 0, 0, seed) at the cell's
 // grid-local voxel p (0 where alpha is 0), all in float32 in that order; the material is the
 // propagated one where the density is >= 0.5, else 0, and is left empty when no constraint
-// point names a material. Throws ParameterError, LimitError and ConvergenceError. The linear
-// solves run through `solver` (empty: the host's solveLaplace).
+// point names a material. Throws ParameterError, LimitError and ConvergenceError. The global
+// passes run through `solvers` (empty members: the host's loops).
 // With keepChannels, the table also holds the solve's channels (SolveTable::channels):
 // normal_x, normal_y, normal_z (normalised), amplitude, roughness, material (the propagated id,
 // every cell), confidence, distance (raw S, +infinity where no seed reaches), smoothed (S') and
 // displacement (D). The noise displacement is then evaluated at every cell; otherwise only where
 // it can change the density (a band around S' = 0 bounded by warped_fbm's range), with the same
 // densities bit for bit.
-SolveTable solveScene(const Scene& scene, const Limits& limits, const LinearSolver& solver = {},
+SolveTable solveScene(const Scene& scene, const Limits& limits, const Solvers& solvers = {},
                       bool keepChannels = false);
 
 } // namespace voxc::curves
