@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cstring>
 
@@ -22,9 +23,11 @@ void computeBarrier(const VulkanApi& api, VkCommandBuffer cmd, VkPipelineStageFl
     VkMemoryBarrier b{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     b.srcAccessMask = beforeAccess;
     b.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT |
-                      VK_ACCESS_TRANSFER_WRITE_BIT;
-    api.vkCmdPipelineBarrier(cmd, before, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1,
-                             &b, 0, nullptr, 0, nullptr);
+                      VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT;
+    api.vkCmdPipelineBarrier(cmd, before,
+                             VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT |
+                                 VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
+                             0, 1, &b, 0, nullptr, 0, nullptr);
 }
 
 constexpr VkPipelineStageFlags kAllWork = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
@@ -103,7 +106,11 @@ void VulkanSolveRunner::Impl::recordSteps(const std::vector<SolveStep>& steps) {
             bound = step.kernel;
         }
         ctx.api.vkCmdPushConstants(cmd, set.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(step.push), step.push.data());
-        ctx.api.vkCmdDispatch(cmd, step.groups[0], step.groups[1], step.groups[2]);
+        if (step.indirect)
+            ctx.api.vkCmdDispatchIndirect(cmd, buffers.at(step.indirectBuffer).buffer,
+                                          VkDeviceSize(step.indirectWord) * sizeof(uint32_t));
+        else
+            ctx.api.vkCmdDispatch(cmd, step.groups[0], step.groups[1], step.groups[2]);
         ++dispatches;
     }
 }
@@ -155,7 +162,7 @@ VulkanSolveRunner::VulkanSolveRunner(VulkanContext& context, const SolveProgram&
                                         double(bytes) / (1 << 20), s.ctx.info.name, double(maxRange) / (1 << 20)));
         s.buffers.push_back(createBuffer(s.ctx, bytes,
                                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
-                                             VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                             VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
                                          MemoryUse::Device));
         handles.push_back(s.buffers.back().buffer);
         stagingBytes = std::max(stagingBytes, bytes);
@@ -180,26 +187,29 @@ SolveRun VulkanSolveRunner::run(const std::vector<std::vector<uint32_t>>& initia
     for (uint32_t b = 0; b < s.buffers.size(); ++b) s.upload(b, b < initial.size() ? initial[b] : std::vector<uint32_t>{});
 
     SolveRun run;
+    const bool counting = p.stop == SolveProgram::Stop::CountIsZero;
+    const float tolerance = counting ? 0.0f : p.tolerance;
     // One submit per prologue and per cycle, each ending with the measure read back.
     const auto stepAndMeasure = [&](const std::vector<SolveStep>& steps) {
         s.begin();
         s.recordSteps(steps);
         computeBarrier(s.ctx.api, s.cmd, kAllWork, kAllAccess);
-        s.ctx.api.vkCmdFillBuffer(s.cmd, s.buffers.at(p.measureBuffer).buffer, 0, sizeof(uint32_t), 0);
+        const VkDeviceSize at = counting ? VkDeviceSize(p.measureWord) * sizeof(uint32_t) : 0;
+        if (!counting) s.ctx.api.vkCmdFillBuffer(s.cmd, s.buffers.at(p.measureBuffer).buffer, 0, sizeof(uint32_t), 0);
         s.recordSteps(p.measure);
         computeBarrier(s.ctx.api, s.cmd, kAllWork, kAllAccess);
-        const VkBufferCopy region{0, 0, sizeof(uint32_t)};
-        s.ctx.api.vkCmdCopyBuffer(s.cmd, s.buffers[p.measureBuffer].buffer, s.staging.buffer, 1, &region);
+        const VkBufferCopy region{at, 0, sizeof(uint32_t)};
+        s.ctx.api.vkCmdCopyBuffer(s.cmd, s.buffers.at(p.measureBuffer).buffer, s.staging.buffer, 1, &region);
         s.submitAndWait();
         invalidateForHost(s.ctx, s.staging);
-        float value;
-        std::memcpy(&value, s.staging.mapped, sizeof value);
-        run.measures.push_back(value);
+        uint32_t word;
+        std::memcpy(&word, s.staging.mapped, sizeof word);
+        run.measures.push_back(counting ? float(word) : std::bit_cast<float>(word));
     };
     stepAndMeasure(p.prologue);
-    while (!(run.measures.back() <= p.tolerance) && int32_t(run.measures.size()) - 1 < p.maxCycles)
+    while (!(run.measures.back() <= tolerance) && int32_t(run.measures.size()) - 1 < p.maxCycles)
         stepAndMeasure(p.cycle);
-    run.converged = run.measures.back() <= p.tolerance;
+    run.converged = run.measures.back() <= tolerance;
     for (uint32_t b = 0; b < readWords.size() && b < s.buffers.size(); ++b)
         run.buffers.push_back(readWords[b] > 0 ? s.download(b, readWords[b]) : std::vector<uint32_t>{});
     run.executeMs = s.executeMs;

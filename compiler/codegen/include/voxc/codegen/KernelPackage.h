@@ -155,19 +155,30 @@ struct StagePlan {
 // is above `tolerance`, at most `maxCycles` times. Levels, ping-pong halves and colours are data of
 // the steps (their push words), so a multigrid V-cycle (smoothing, restriction, prolongation
 // between levels) and a fixed-sweep Jacobi schedule are both a list of steps. Each step waits for
-// the one before it. The measure: buffers[measureBuffer] word 0 cleared to 0, then `measure` run,
-// then that word read back as a float (after the prologue and after every cycle).
+// the one before it. The measure (after the prologue and after every cycle), by `stop`:
+// MeasureAtMost: buffers[measureBuffer] word 0 cleared to 0, then `measure` run, then that word read
+// back as a float, the cycles stopping once it is <= tolerance; CountIsZero: `measure` run, then
+// that word read back as a count, the cycles stopping once it is 0 (a BFS front that ran out: each
+// cycle expands a few layers, a layer's dispatch sized on the device by an indirect step).
+// A fixed schedule (so many sweeps) is a prologue alone, maxCycles 0.
 struct SolveStep {
     uint32_t kernel = 0;                // index into SolveProgram::kernels
-    uint32_t groups[3] = {1, 1, 1};     // workgroups per axis
+    uint32_t groups[3] = {1, 1, 1};     // workgroups per axis, unless indirect
     std::array<int32_t, 16> push{};     // the kernel's push-constant block (64 bytes)
+    // Indirect: the workgroup counts are the three words at indirectWord of buffers[indirectBuffer],
+    // as an earlier step wrote them.
+    bool indirect = false;
+    uint32_t indirectBuffer = 0, indirectWord = 0;
 };
 
 struct SolveProgram {
+    enum class Stop { MeasureAtMost, CountIsZero };
     std::vector<Kernel> kernels;        // SPIR-V; push constants are SolveStep::push
     std::vector<uint64_t> bufferWords;  // 32-bit words of each storage buffer, binding = index
     std::vector<SolveStep> prologue, cycle, measure;
+    Stop stop = Stop::MeasureAtMost;
     uint32_t measureBuffer = 0;
+    uint32_t measureWord = 0;           // CountIsZero: the count's word in buffers[measureBuffer]
     float tolerance = 0.0f;
     int32_t maxCycles = 0;
 };

@@ -13,11 +13,11 @@
 namespace voxc {
 
 struct SolveRun {
-    std::vector<float> measures;                // after the prologue, then after each cycle
+    std::vector<float> measures;                // after the prologue, then after each cycle (a count as a float)
     std::vector<std::vector<uint32_t>> buffers; // the first `readWords[b]` words of each buffer b
     double executeMs = 0;                       // first submit -> last fence
     uint64_t dispatches = 0;
-    bool converged = false;                     // the last measure is <= the tolerance
+    bool converged = false;                     // the last measure is <= the tolerance (a count: 0)
 };
 
 class VulkanSolveRunner {
@@ -31,7 +31,7 @@ public:
 
     // Buffers start as `initial[b]` (zero past its end; all zero when absent); a UserError when
     // a buffer exceeds what the device binds. Stops after the cycle whose measure is <= the
-    // tolerance, or after maxCycles (then SolveRun::converged is false: the caller reports it).
+    // tolerance (a count: is 0), or after maxCycles (then SolveRun::converged is false: the caller reports it).
     SolveRun run(const std::vector<std::vector<uint32_t>>& initial, const std::vector<uint64_t>& readWords);
 
 private:
