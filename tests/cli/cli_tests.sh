@@ -255,10 +255,15 @@ expect curves_run_solves 0 "curves 'cliffs' \(64x32x64 cells, solved on the host
     --voxels "$work/curves_cliff8.npy"
 expect_same curves_cliff_chunk_8_vs_32 "$work/curves_cliff.npy" "$work/curves_cliff8.npy"
 expect curves_interp_solves 0 "curves 'cliffs' .*parameters 5 levels" -- "$voxc" interp "$src/examples/curves_cliff.vox"
-# --solve-on device: the multigrid on lavapipe, the same voxels as the host's solve
+# --solve-on device: every curves pass on lavapipe, the host's voxels but for the noise
+# displacement's last bits (warped_fbm's exp2, docs/curves.md "What runs where")
 expect curves_solve_on_device 0 "curves 'cliffs' \(64x32x64 cells, solved when checked, the multigrid on 'llvmpipe" -- \
     "$voxc" run "$src/examples/curves_cliff.vox" --device lavapipe --solve-on device --voxels "$work/curves_cliff_device.npy"
-expect_same curves_solve_on_device_same_voxels "$work/curves_cliff.npy" "$work/curves_cliff_device.npy"
+expect curves_solve_on_device_close_voxels 0 "^ok$" -- /usr/bin/python3 -c "
+import numpy as np, sys
+a, b = np.load(sys.argv[1]), np.load(sys.argv[2])
+assert a.shape == b.shape and np.abs(a - b).max() <= 1e-5 and (a != b).mean() < 0.05, np.abs(a - b).max()
+print('ok')" "$work/curves_cliff.npy" "$work/curves_cliff_device.npy"
 expect curves_solve_on_bad 1 "--solve-on: gpu not in \{device,host\}" -- \
     "$voxc" run "$src/examples/curves_cliff.vox" --solve-on gpu --voxels "$work/curves_bad.npy"
 # --dump: solved channels as .npy that NumPy (Debian's python3-numpy) reads; the density channel

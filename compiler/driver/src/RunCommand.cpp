@@ -19,8 +19,8 @@
 #include "voxc/mesh/SurfaceNets.h"
 #include "voxc/vulkan/Context.h"
 #include "voxc/vulkan/Executor.h"
+#include "voxc/vulkan/GpuCurves.h"
 #include "voxc/vulkan/GpuErosion.h"
-#include "voxc/vulkan/GpuMultigrid.h"
 #include "voxc/vulkan/GpuMesher.h"
 
 #include <chrono>
@@ -113,17 +113,14 @@ void run(const RunOptions& options) {
     };
     WorldOverrides overrides = options.overrides;
     overrides.keepSolveChannels = !dumps.empty();
-    std::string multigridDevice; // the device's name once a multigrid ran there
+    std::string multigridDevice; // the device's name once a curves pass ran there
     if (options.solveOn != "host")
-        overrides.curvesSolver.linear = [&](const std::string& name, const std::vector<uint8_t>& fixed,
-                                     std::vector<curves::Field3*> components, float tolerance,
-                                     const curves::Limits& limits) {
+        overrides.curvesSolver = vulkanCurvesSolvers([&]() -> VulkanContext* {
             VulkanContext& solver = openDevice();
-            if (options.solveOn.empty() && solver.device().type == DeviceType::Cpu)
-                return curves::solveLaplace(name, fixed, std::move(components), tolerance, limits);
+            if (options.solveOn.empty() && solver.device().type == DeviceType::Cpu) return nullptr;
             multigridDevice = solver.device().name;
-            return vulkanLinearSolver(solver)(name, fixed, std::move(components), tolerance, limits);
-        };
+            return &solver;
+        });
     std::string erosionDevice; // the device's name once erosion steps ran there
     if (options.solveOn != "host")
         overrides.erosionRunner = [&](terrain::ErosionGrid& grid, const terrain::ErosionParams& params, int32_t level,
