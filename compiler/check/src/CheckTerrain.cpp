@@ -352,7 +352,7 @@ SolveTable voxelise(const TerrainBlock& block, const terrain::TerrainResult& res
             }
     table.source = "terrain";
     table.terrainMaps = std::make_shared<const TerrainMaps>(
-        TerrainMaps{result.height.width, result.height.values, result.water.values, result.sediment.values});
+        TerrainMaps{result.height.width, result.height.values, result.water.values, result.sediment.values, result.difference.values});
     table.notes = fmt::format("levels {}..{} ({}^2 cells), {} erosion steps ({} cell-steps), water {:.4g}, sediment "
                               "{:.4g}, ground moved {:.4g} (sums over the finest level, in units of max_height)",
                               domain.minLevel, domain.maxLevel, result.height.width, result.erosionSteps,
@@ -392,7 +392,7 @@ std::vector<CurvesBlock> checkTerrains(Context& context, const ast::File& file, 
     for (const ast::Block& block : file.blocks) {
         if (block.kind != "terrain") continue;
         if (!checkLabel(context, block, true) || !block.label) continue;
-        CurvesBlock out{*block.label, block.loc, nullptr};
+        CurvesBlock out{*block.label, block.loc, "terrain"};
         if (!claimStageName(context, block, names, usedNames)) {
             blocks.push_back(std::move(out));
             continue;
@@ -418,7 +418,8 @@ std::vector<CurvesBlock> checkTerrains(Context& context, const ast::File& file, 
         if (std::optional<TerrainBlock> terrainBlock = readTerrain(context, block, world)) {
             try {
                 const terrain::TerrainResult result = terrain::generateTerrain(terrainBlock->map, terrainBlock->erosion, limits);
-                out.table = std::make_shared<const SolveTable>(voxelise(*terrainBlock, result, world));
+                out = solvedBlock(*block.label, block.loc,
+                                  std::make_shared<const SolveTable>(voxelise(*terrainBlock, result, world)));
                 context.maps[*block.label] = sampledMap(*block.label, *terrainBlock, result);
                 cellBudget -= cells;
             } catch (const terrain::LimitError& e) {

@@ -1,4 +1,5 @@
-// `voxc terrain FILE NAME [--heightmap H.png] [--height H.npy] [--water W.npy] [--sediment S.npy]`:
+// `voxc terrain FILE NAME [--heightmap H.png] [--height H.npy] [--water W.npy] [--sediment S.npy]
+// [--difference D.npy]`:
 // a terrain block's maps as a terrain artist takes them away (docs/terrain.md, "Outputs"), written
 // as one set, with the generator's summary.
 #include "Commands.h"
@@ -19,7 +20,7 @@ namespace {
 struct TerrainOptions {
     std::string file;
     std::string name;
-    std::string heightmapPath, heightPath, waterPath, sedimentPath;
+    std::string heightmapPath, heightPath, waterPath, sedimentPath, differencePath;
 };
 
 // Without erosion the water and sediment maps are zero, never missing.
@@ -32,13 +33,14 @@ terrain::Field2 field(int32_t side, const std::vector<float>& values) {
 
 void runTerrain(const TerrainOptions& options) {
     if (!options.heightmapPath.empty()) requireExtension(options.heightmapPath, {".png"}, "the heightmap");
-    for (const std::string* path : {&options.heightPath, &options.waterPath, &options.sedimentPath})
+    for (const std::string* path : {&options.heightPath, &options.waterPath, &options.sedimentPath, &options.differencePath})
         if (!path->empty()) requireExtension(*path, {".npy"}, "a map");
     const RolePath inputs[] = {{"the input", options.file}};
     const RolePath outputs[] = {{"--heightmap", options.heightmapPath},
                                 {"--height", options.heightPath},
                                 {"--water", options.waterPath},
-                                {"--sediment", options.sedimentPath}};
+                                {"--sediment", options.sedimentPath},
+                                {"--difference", options.differencePath}};
     refuseClashingPaths(inputs, outputs);
 
     const Program program = loadProgram(options.file, WorldOverrides{});
@@ -64,8 +66,10 @@ void runTerrain(const TerrainOptions& options) {
         terrain::writeFieldNpy(files, options.waterPath, field(maps.side, maps.water));
     if (!options.sedimentPath.empty())
         terrain::writeFieldNpy(files, options.sedimentPath, field(maps.side, maps.sediment));
+    if (!options.differencePath.empty())
+        terrain::writeFieldNpy(files, options.differencePath, field(maps.side, maps.difference));
     files.commit();
-    reportWritten({options.heightmapPath, options.heightPath, options.waterPath, options.sedimentPath});
+    reportWritten({options.heightmapPath, options.heightPath, options.waterPath, options.sedimentPath, options.differencePath});
 }
 
 } // namespace
@@ -80,6 +84,8 @@ void addTerrainCommand(CLI::App& app) {
     command->add_option("--height", options->heightPath, "The height map as .npy (float32, units of max_height)");
     command->add_option("--water", options->waterPath, "The water depth left after the drain as .npy");
     command->add_option("--sediment", options->sedimentPath, "The suspended sediment as .npy");
+    command->add_option("--difference", options->differencePath,
+                        "The eroded height minus the uneroded one (S_h) as .npy: < 0 where water cut, > 0 where it deposited");
     command->callback([options] { runTerrain(*options); });
 }
 

@@ -1,8 +1,9 @@
 #pragma once
-// The result of a global solve (a `curves` block, docs/curves.md): a density, and optionally a
-// material id, per voxel of a box of the grid, computed once on the host when the file is
-// checked. The interpreter combines it with the grid directly; generated kernels read the same
-// values through kBindingSolveTables (solveTableWords), so both backends combine the same floats.
+// The result of a global solve (a `curves` or `terrain` block, docs/curves.md): a density, and
+// optionally a material id, per voxel of a box of the grid, computed once per run (a terrain
+// block's when the file is checked). The interpreter combines it with the grid directly; generated
+// kernels read the same values through kBindingSolveTables (solveTableWords), so both backends
+// combine the same floats.
 #include "voxc/core/SourceLoc.h"
 
 #include <cstdint>
@@ -13,6 +14,10 @@
 #include <vector>
 
 namespace voxc {
+
+namespace curves {
+struct Scene; // voxc/generators/curves/Scene.h
+}
 
 // One iterative solve as `voxc run` reports it.
 struct SolveSummary {
@@ -29,6 +34,7 @@ struct SolveSummary {
 struct TerrainMaps {
     int32_t side = 0;
     std::vector<float> height, water, sediment;
+    std::vector<float> difference; // S_h: the eroded height minus the uneroded one
 };
 
 struct SolveTable {
@@ -43,7 +49,7 @@ struct SolveTable {
     std::string notes;             // what the solve did besides `solves`, for reports (may be empty)
     std::shared_ptr<const TerrainMaps> terrainMaps; // terrain blocks only
     // The solve's intermediate channels by name (curves: docs/curves.md "Dumping channels"), each
-    // in `density`'s order, kept only when the check asks (CheckOptions::keepSolveChannels).
+    // in `density`'s order, kept only when the run asks (stages::SolveOptions::keepChannels).
     std::vector<std::pair<std::string, std::vector<float>>> channels;
     // Wall time of the solve's parts in order (curves: voxelize, normals, parameters, material,
     // surface, smoothing, density), for benchmarks; never printed, nothing depends on it.
@@ -52,12 +58,26 @@ struct SolveTable {
     uint64_t cellCount() const { return uint64_t(size.x) * uint64_t(size.y) * uint64_t(size.z); }
 };
 
-// A declared `curves NAME { ... }` block with its solved table.
+// A declared `curves` or `terrain` block. The check knows its box and whether it writes materials;
+// a terrain block's table is made by the check, a curves block's only by a run
+// (stages::solveBlocks, from `scene`), so checking a file never runs a curves solve.
 struct CurvesBlock {
     std::string name;
     SourceLoc loc;
-    std::shared_ptr<const SolveTable> table;
+    std::string source = "curves"; // SolveTable::source
+    glm::ivec3 min{0}, size{0};    // the table's box, grid-local
+    bool writesMaterials = false;  // the table has a material channel
+    std::vector<uint8_t> materials; // the ids it may write, ascending (W0208: which materials are used)
+    std::shared_ptr<const curves::Scene> scene; // curves blocks: the checked, voxelised scene
+    std::shared_ptr<const SolveTable> table;    // null until solved (curves: stages::solveBlocks)
+
+    // The table; InternalError when no run solved the block.
+    const SolveTable& solved() const;
+    uint64_t cellCount() const { return uint64_t(size.x) * uint64_t(size.y) * uint64_t(size.z); }
 };
+
+// A block whose table is already made (terrain: by the check), its facts read from the table.
+CurvesBlock solvedBlock(std::string name, SourceLoc loc, std::shared_ptr<const SolveTable> table);
 
 // The words of kBindingSolveTables: word 0 the table count n, words 1..n each table's first
 // word; a table is min (3 ints), size (3 ints), then its densities (float bits), then its
