@@ -145,6 +145,37 @@ TEST_F(SessionTest, EditsUndoAndRedoGiveTheMeshOfTheGrid) {
     EXPECT_TRUE(session.world().mesh().positions == carved.positions);
 }
 
+TEST_F(SessionTest, StartingEditsAreReadOnceTheFileFirstChecksWithItsMaterials) {
+    std::string broken = kProgram;
+    broken.replace(broken.find("peak = 6;"), 9, "peak = 6");
+    write(broken);
+    int reads = 0;
+    const Brush carve{Brush::Op::Carve, {20.0f, 12.0f, 20.0f}, 4.0f, 2.0f};
+    SessionOptions options{path()};
+    options.readEdits = [&](const std::vector<Material>& materials) {
+        ++reads;
+        EXPECT_EQ(materials.size(), 1u);
+        return std::vector<Brush>{carve};
+    };
+    Session session(context(), options);
+    EXPECT_FALSE(session.hasWorld());
+    EXPECT_EQ(reads, 0); // the materials are not known yet
+    write(kProgram);
+    ASSERT_TRUE(session.reload());
+    ASSERT_TRUE(session.reload());
+    EXPECT_EQ(reads, 1);
+    Session unedited(context(), {path()});
+    unedited.edit(carve);
+    EXPECT_TRUE(session.world().mesh().positions == unedited.world().mesh().positions);
+    ASSERT_EQ(session.edits().size(), 1u);
+}
+
+TEST_F(SessionTest, AnUnreadableEditsFileEndsTheSession) {
+    SessionOptions options{path()};
+    options.readEdits = [](const std::vector<Material>&) -> std::vector<Brush> { throw UserError("edits.json:1:1: bad"); };
+    EXPECT_THROW(Session(context(), options), UserError);
+}
+
 TEST_F(SessionTest, SavedEditsAreTheRunEditsFormatWithShortestExactFloats) {
     Session session(context(), {path()});
     session.edit({Brush::Op::Carve, {20.1f, 12.0f, 20.0f}, 4.5f, 2.0f});

@@ -100,4 +100,14 @@ expect reload_visible 0 "differing [1-9]" -- $compare "$work/carved.png" "$work/
 expect add_takes_the_surface_material 0 '"op": "add".*"material": "grass"' -- cat "$work/edits.json"
 expect edits_replay 0 "3 applied on the host, 3 of them changed voxels" -- \
     "$voxc" run "$work/original.vox" --edits "$work/edits.json" -o "$work/replayed.ply" --device lavapipe
+
+# Opening with --edits replays them (read once the file checks, with its materials); a broken
+# edits file is a located error before any world is shown.
+printf 'camera %s\nscreenshot %s\n' "$camera" "$work/opened.png" >"$work/open.txt"
+xvfb-run -a -s "-screen 0 1024x768x24" "$voxc" view "$work/original.vox" --device lavapipe --size $size \
+    --edits "$work/edits.json" --script "$work/open.txt" >/dev/null 2>&1
+expect opened_edits_equal_render 0 "max [0-2], " -- $compare "$work/opened.png" "$work/render_carved.png"
+printf '[{"op": "carve"}\n' >"$work/broken_edits.json"
+expect broken_edits_refused 1 "broken_edits\.json:2:1: error E0001" -- xvfb-run -a -s "-screen 0 1024x768x24" \
+    "$voxc" view "$work/original.vox" --device lavapipe --edits "$work/broken_edits.json" --script "$work/open.txt"
 finish

@@ -5,7 +5,6 @@
 #include "Console.h"
 #include "EditsFile.h"
 
-#include "voxc/check/Check.h"
 #include "voxc/codegen/CompileCache.h"
 #include "voxc/core/Errors.h"
 #include "voxc/render/Camera.h"
@@ -14,7 +13,6 @@
 
 #include <filesystem>
 #include <fmt/format.h>
-#include <iostream>
 
 namespace voxc::driver {
 
@@ -45,7 +43,6 @@ std::vector<viewer::Action> loadScript(const std::string& path) {
 }
 
 void view(const ViewCommandOptions& options) {
-    if (options.file.empty()) throw UserError("view: a .vox file is required");
     if (!options.screenshot.empty()) requireExtension(options.screenshot, {".png"}, "screenshot");
     viewer::ViewerOptions viewerOptions;
     viewerOptions.session = {options.file, options.overrides.seed, options.overrides.chunk, options.iso};
@@ -63,13 +60,11 @@ void view(const ViewCommandOptions& options) {
         viewerOptions.scriptPath = options.scriptPath;
         viewerOptions.script = loadScript(options.scriptPath);
     }
-    // The edits name materials, so the file must check once before they are read; an edits
-    // file that does not exist yet is where "save edits" will write.
-    if (!options.editsPath.empty() && std::filesystem::exists(options.editsPath)) {
-        const CheckResult checked = checkFile(options.file);
-        if (checked.program) viewerOptions.edits = loadEdits(options.editsPath, checked.program->materials);
-        else std::cerr << "voxc: note: --edits is not read: its materials need a file that checks\n";
-    }
+    // An edits file that does not exist yet is where "save edits" will write.
+    if (!options.editsPath.empty() && std::filesystem::exists(options.editsPath))
+        viewerOptions.session.readEdits = [path = options.editsPath](const std::vector<Material>& materials) {
+            return loadEdits(path, materials);
+        };
     viewer::runViewer(viewerOptions);
 }
 
@@ -80,7 +75,7 @@ void addViewCommand(CLI::App& app) {
     CLI::App* command = app.add_subcommand(
         "view", "Open a window on a .vox file's world: orbit, carve and add with a brush, sliders for its parameters, "
                 "reloaded when the file is saved (or run a --script of actions headless)");
-    command->add_option("file", options->file, "The .vox file");
+    command->add_option("file", options->file, "The .vox file")->required();
     command->add_option("--edits", options->editsPath,
                         "A JSON edits file replayed on the world first; \"save edits\" (Ctrl+S) writes there "
                         "(default FILE.vox.edits.json)");

@@ -67,8 +67,7 @@ struct Session::Loaded {
     std::optional<EditableWorld> world;
 };
 
-Session::Session(VulkanContext& context, SessionOptions options, std::vector<Brush> edits)
-    : context_(context), options_(std::move(options)), edits_(std::move(edits)) {
+Session::Session(VulkanContext& context, SessionOptions options) : context_(context), options_(std::move(options)) {
     seedOverride_ = options_.seed;
     reload();
 }
@@ -87,10 +86,8 @@ bool Session::fileChanged() const {
     return !error && (time != loadedTime_ || size != loadedText_.size());
 }
 
-std::string Session::textWithOverrides(const std::string& text) const {
+std::string Session::textWithOverrides(const std::string& text, const ast::File& file) const {
     if (featureOverrides_.empty()) return text;
-    Diagnostics ignored; // the checker reports the file's own errors
-    const ast::File file = parse(SourceFile(options_.path, text), ignored);
     const std::vector<size_t> lineStarts = lineStartsOf(text);
     struct Splice {
         size_t offset, length;
@@ -118,9 +115,7 @@ std::string Session::textWithOverrides(const std::string& text) const {
     return out;
 }
 
-void Session::listParameters(const std::string& text) {
-    Diagnostics ignored;
-    const ast::File file = parse(SourceFile(options_.path, text), ignored);
+void Session::listParameters(const ast::File& file) {
     std::vector<Parameter> parameters;
     Parameter seed{Parameter::Kind::Seed, "seed", double(loaded_->program.world.seed), 0.0, 1000.0, true,
                    seedOverride_.has_value()};
@@ -161,12 +156,16 @@ bool Session::reload() {
         return false;
     }
     loadedText_ = source->text();
+    // The file as written, for the slider splices and the parameter list; the checker reports its errors.
+    Diagnostics parseErrors;
+    const ast::File file = parse(*source, parseErrors);
+    bool readingEdits = false;
     try {
         auto start = std::chrono::steady_clock::now();
         CheckOptions checkOptions;
         checkOptions.constOverrides.insert(constOverrides_.begin(), constOverrides_.end());
         checkOptions.seed = seedOverride_;
-        CheckResult checked = checkSource(SourceFile(options_.path, textWithOverrides(loadedText_)), checkOptions);
+        CheckResult checked = checkSource(SourceFile(options_.path, textWithOverrides(loadedText_, file)), checkOptions);
         if (checked.hasErrors() || !checked.program) {
             error_ = checked.rendered();
             return false;
@@ -195,6 +194,12 @@ bool Session::reload() {
         stats.size = layout.gridSize;
         stats.chunkSize = layout.chunkSize;
         stats.chunkCount = layout.chunkCount;
+        if (options_.readEdits) {
+            readingEdits = true;
+            edits_ = options_.readEdits(program.materials);
+            readingEdits = false;
+            options_.readEdits = nullptr;
+        }
         loaded_ = std::make_unique<Loaded>(Loaded{std::move(program), std::move(result.grid), std::nullopt});
         start = std::chrono::steady_clock::now();
         rebuildWorld();
@@ -202,10 +207,11 @@ bool Session::reload() {
         stats.triangles = loaded_->world->mesh().triangles.size() / 3;
         stats_ = stats;
     } catch (const UserError& e) {
+        if (readingEdits) throw; // the edits file is not watched: waiting for a save cannot mend it
         error_ = fmt::format("{}: {}\n", options_.path, e.what());
         return false;
     }
-    listParameters(loadedText_);
+    listParameters(file);
     error_.clear();
     ++generation_;
     return true;

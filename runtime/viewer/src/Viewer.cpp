@@ -72,7 +72,7 @@ class App {
 public:
     explicit App(const ViewerOptions& options)
         : options_(options), glfw_(), context_(options.context),
-          session_(context_, options.session, options.edits), window_(options.size, "voxc view " + options.session.path),
+          session_(context_, options.session), window_(options.size, "voxc view " + options.session.path),
           presenter_(window_.handle, context_.device().name) {
         if (!session_.lastError().empty()) log("the file does not check; fix it and save:\n" + session_.lastError());
         if (session_.hasWorld()) setCamera(options.camera);

@@ -15,11 +15,16 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
+
+namespace voxc::ast {
+struct File;
+}
 
 namespace voxc::viewer {
 
@@ -38,6 +43,9 @@ struct SessionOptions {
     std::optional<uint32_t> seed = {}; // --seed
     std::optional<int32_t> chunk = {}; // --chunk
     float iso = 0.5f;
+    // Reads the edits replayed on the world (--edits) once the file first checks, since they name
+    // its materials; a UserError it throws leaves reload() (the edits file is not watched).
+    std::function<std::vector<Brush>(const std::vector<Material>&)> readEdits = {};
 };
 
 // What the last successful run made, for the panel's statistics.
@@ -60,7 +68,7 @@ class Session {
 public:
     // Loads the file (reload()); a file that does not check leaves the session without a world
     // and the diagnostics in lastError(). `context` must outlive the session.
-    Session(VulkanContext& context, SessionOptions options, std::vector<Brush> edits = {});
+    Session(VulkanContext& context, SessionOptions options);
     ~Session();
 
     // Re-reads, re-checks and re-runs the file with the current parameters, then replays the
@@ -99,9 +107,9 @@ public:
 
 private:
     struct Loaded;
-    std::string textWithOverrides(const std::string& text) const;
+    std::string textWithOverrides(const std::string& text, const ast::File& file) const;
     void rebuildWorld();
-    void listParameters(const std::string& text);
+    void listParameters(const ast::File& file);
 
     VulkanContext& context_;
     SessionOptions options_;

@@ -14,8 +14,7 @@
 namespace voxc::viewer {
 
 struct ViewerOptions {
-    SessionOptions session;
-    std::vector<Brush> edits;       // replayed on the world first (--edits)
+    SessionOptions session;         // with the --edits replayed on the world first
     std::string editsPath;          // where "save edits" (Ctrl+S) writes
     ContextOptions context;         // the device that generates and draws (and its pipeline cache)
     rendering::ImageSize size{1280, 720};
