@@ -105,8 +105,12 @@ TEST(ir_HoistColumnValues, MarksNodesThatDoNotDependOnY) {
     size_t hoisted = 0;
     for (size_t i = 0; i < field.nodes.size(); ++i) {
         const FieldNode& node = field.nodes[i];
-        if (node.kind == FieldNode::Kind::Call && functions()[node.function].name == "fbm") EXPECT_TRUE(field.perColumn[i]);
-        if (node.kind == FieldNode::Kind::Input && node.input == FieldInput::WorldY) EXPECT_FALSE(field.perColumn[i]);
+        if (node.kind == FieldNode::Kind::Call && functions()[node.function].name == "fbm") {
+            EXPECT_TRUE(field.perColumn[i]);
+        }
+        if (node.kind == FieldNode::Kind::Input && node.input == FieldInput::WorldY) {
+            EXPECT_FALSE(field.perColumn[i]);
+        }
         hoisted += field.perColumn[i];
     }
     EXPECT_FALSE(field.perColumn[field.root]);

@@ -62,14 +62,18 @@ TEST(ir_NoiseSkipping, ChunksFarFromANoiseSurfaceAreProvenAirOrRock) {
             EXPECT_FALSE(rows[y].mixed);
             EXPECT_EQ(rows[y].value, y < 2 ? 1.0f : 0.0f);
         }
-        if (y == 3 || y == 4) EXPECT_EQ(rows[y].constant, 0u); // the surface runs through these
+        if (y == 3 || y == 4) {
+            EXPECT_EQ(rows[y].constant, 0u); // the surface runs through these
+        }
     }
 
     // caves: turbulence, sin and worley are bounded, so the rows above y = 120 are exactly 1.
     FieldEvaluator caves(program.fields[1], program.world.origin);
     size_t constantCaves = 0;
     for (const FieldChunk& chunk : classifyFieldChunks(module.world, module.fields[1])) {
-        if (chunk.localMin.y >= 128) EXPECT_TRUE(chunk.constant) << "chunk row " << chunk.chunk.y;
+        if (chunk.localMin.y >= 128) {
+            EXPECT_TRUE(chunk.constant) << "chunk row " << chunk.chunk.y;
+        }
         if (!chunk.constant) continue;
         ++constantCaves;
         EXPECT_EQ(chunk.value, 1.0f);
