@@ -78,7 +78,9 @@ bool activeTileAnchor(out ivec3 anchor) {
         return false;
     TileAnchors anchors = tileAnchors(tileOfId(activeTiles.id[slot]));
     ivec3 n = anchorsPerTile();
-    ivec3 i = anchors.first + ivec3(t % n.x, t / n.x % n.y, t / (n.x * n.y));
+    int row = smallQuotient(t, n.x); // t / n.x
+    int plane = smallQuotient(row, n.y);
+    ivec3 i = anchors.first + ivec3(t - row * n.x, row - plane * n.y, plane);
     anchor = push.anchorStart.xyz + i * push.anchorStep.xyz;
     return all(lessThanEqual(i, anchors.last));
 }

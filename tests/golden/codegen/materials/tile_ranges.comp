@@ -114,27 +114,44 @@ uint densityKey(float v) {
 }
 
 int tileShift() { return push.anchorStep.w; }
-int tileSize() { return push.gridOrigin.w >> (findMSB(push.gridOrigin.w) - push.anchorStep.w); }
-int tilesPerAxis() { return push.gridOrigin.w >> push.anchorStep.w; } // per chunk
-int tilesPerChunk() { return tilesPerAxis() * tilesPerAxis() * tilesPerAxis(); }
+int tileSize() { return 1 << push.anchorStep.w; }
+int tilesPerAxisShift() { return findMSB(push.gridOrigin.w) - push.anchorStep.w; } // log2 of tiles per chunk axis
+int tilesPerAxis() { return 1 << tilesPerAxisShift(); } // per chunk
+int tilesPerChunk() { return 1 << (3 * tilesPerAxisShift()); }
+
+// a / b for a >= 0, b >= 1 and a quotient below 2^21, as integer division computes it. llvmpipe
+// divides integers lane by lane (and guards each against zero); this is a few float and integer
+// operations on every lane at once. The float quotient is off by less than 1 there (even with
+// the 2.5 ulp division Vulkan allows), so one correction either way makes it exact. Every
+// quotient below counts tiles, chunks or anchors of a grid, which stay below 2^21.
+int smallQuotient(int a, int b) {
+    int q = int(float(a) * (1.0 / float(b)));
+    int r = a - q * b;
+    return q + (r >= b ? 1 : 0) - (r < 0 ? 1 : 0);
+}
+ivec3 smallQuotient(ivec3 a, ivec3 b) {
+    return ivec3(smallQuotient(a.x, b.x), smallQuotient(a.y, b.y), smallQuotient(a.z, b.z));
+}
 
 // Tile index of the tile at world tile coordinate `tile`.
 int tileIndex(ivec3 tile) {
-    int perAxis = tilesPerAxis();
-    ivec3 entry = (tile >> findMSB(perAxis)) - push.chunkBase.xyz;
+    int shift = tilesPerAxisShift();
+    ivec3 entry = (tile >> shift) - push.chunkBase.xyz;
     int slot = chunkTable.chunkSlot[entry.x + push.chunkCount.x * (entry.y + push.chunkCount.y * entry.z)];
-    ivec3 inside = tile & (perAxis - 1);
-    return slot * tilesPerChunk() + inside.x + perAxis * (inside.y + perAxis * inside.z);
+    ivec3 inside = tile & ((1 << shift) - 1);
+    return (slot << (3 * shift)) + inside.x + ((inside.y + (inside.z << shift)) << shift);
 }
 
 // World tile coordinate of a tile id.
 ivec3 tileOfId(uint id) {
-    int perAxis = tilesPerAxis();
-    int entry = int(id) / tilesPerChunk();
-    int inside = int(id) % tilesPerChunk();
+    int shift = tilesPerAxisShift();
+    int entry = int(id) >> (3 * shift);
+    int inside = int(id) & (tilesPerChunk() - 1);
     ivec3 count = push.chunkCount.xyz;
-    ivec3 chunk = push.chunkBase.xyz + ivec3(entry % count.x, entry / count.x % count.y, entry / (count.x * count.y));
-    return chunk * perAxis + ivec3(inside % perAxis, inside / perAxis % perAxis, inside / (perAxis * perAxis));
+    int row = smallQuotient(entry, count.x); // entry / count.x
+    int plane = smallQuotient(row, count.y);
+    ivec3 chunk = push.chunkBase.xyz + ivec3(entry - row * count.x, row - plane * count.y, plane);
+    return (chunk << shift) + (ivec3(inside, inside >> shift, inside >> (2 * shift)) & ((1 << shift) - 1));
 }
 
 // The anchors of the current phase (push.anchorStart + i * step, i < push.anchorCount) whose
@@ -150,9 +167,10 @@ TileAnchors tileAnchors(ivec3 tile) {
     ivec3 low = tile * tileSize() - push.gridOrigin.xyz - push.anchorStart.xyz;
     ivec3 high = low + (tileSize() - 1);
     TileAnchors a;
-    a.first = (max(low, ivec3(0)) + step - 1) / step;
+    a.first = smallQuotient(max(low, ivec3(0)) + step - 1, step);
     // floor(high / step), and -1 when the tile ends before the first anchor
-    a.last = min(mix(high / step, ivec3(-1), lessThan(high, ivec3(0))), push.anchorCount.xyz - 1);
+    a.last = min(mix(smallQuotient(max(high, ivec3(0)), step), ivec3(-1), lessThan(high, ivec3(0))),
+                 push.anchorCount.xyz - 1);
     return a;
 }
 
@@ -160,7 +178,7 @@ TileAnchors tileAnchors(ivec3 tile) {
 // dispatch spreads a tile's anchors over workgroups.
 ivec3 anchorsPerTile() {
     ivec3 step = push.anchorStep.xyz;
-    return min((ivec3(tileSize()) + step - 1) / step, push.anchorCount.xyz);
+    return min(smallQuotient(ivec3(tileSize()) + step - 1, step), push.anchorCount.xyz);
 }
 int anchorsPerTileCount() {
     ivec3 n = anchorsPerTile();
@@ -170,15 +188,15 @@ int anchorsPerTileCount() {
 // Workgroups per row of an indirect sweep dispatch: enough for one tile's anchors, so the rows
 // (workgroup y) never outnumber the active tiles (voxc::skipTileShift checks them against the limit).
 uint activeDispatchGroupsX(int workgroupInvocations) {
-    return uint(anchorsPerTileCount() + workgroupInvocations - 1) / uint(workgroupInvocations);
+    return uint(smallQuotient(anchorsPerTileCount() + workgroupInvocations - 1, workgroupInvocations));
 }
 
 // An indirect sweep's lanes take the active tiles' anchors one after another: lane `lane` of
 // the dispatch is anchor `anchor` of active tile `slot`; false past the last active tile.
 bool activeAnchorIndex(uint record, uint lane, out uint slot, out int anchor) {
-    uint perTile = uint(anchorsPerTileCount());
-    slot = lane / perTile;
-    anchor = int(lane % perTile);
+    int perTile = anchorsPerTileCount();
+    slot = uint(smallQuotient(int(lane), perTile));
+    anchor = int(lane) - int(slot) * perTile;
     return slot < activeDispatch.args[4u * record + 3u];
 }
 // ---- end tiles.glsl ----
