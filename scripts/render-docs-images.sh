@@ -22,6 +22,9 @@ done
 # The island's cliffs at the water line, where the caves open.
 "$voxc" render "$root/examples/sea_caves.vox" -o "$root/docs/images/sea_caves.png" --size 400x400 \
     --camera -50,60,-50:64,18,64 --device lavapipe
+# The mesa's cliff with the mouths of its stamped burrows.
+"$voxc" render "$root/examples/mesa_burrows.vox" -o "$root/docs/images/mesa_burrows.png" --size 400x400 \
+    --camera -40,45,-40:40,17,40 --device lavapipe
 # The lava tube's mouth under the ridge, in the x = 127 face.
 "$voxc" render "$root/examples/canyon.vox" -o "$root/docs/images/canyon.png" --size 640x400 \
     --camera 230,75,110:64,14,56 --device lavapipe

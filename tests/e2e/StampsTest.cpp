@@ -159,5 +159,102 @@ TEST(e2e_Stamps, RegionHaloHoldsTheReach) {
     EXPECT_EQ(test::countBitDifferences(stages::cropGrid(full, region), stages::cropGrid(part, inPart)), 0u);
 }
 
+size_t changedVoxels(const DenseGrid& before, const DenseGrid& after) {
+    size_t changed = 0;
+    for (size_t i = 0; i < before.data().size(); ++i) changed += before.data()[i] != after.data()[i];
+    return changed;
+}
+
+// A small L-system network stamped at every window where a rock face meets air, turned toward
+// each side by `symmetry = rot_y`: its turtle starts at the anchor + offset and digs into the
+// rock in the written rule's +x, whichever way the face looks.
+std::string lsystemStamp(glm::ivec3 origin, int chunk) {
+    return fmt::format(R"(
+world {{ size = [44, 20, 40]; origin = [{}, {}, {}]; chunk = {}; seed = 3; }}
+material rock {{ id = 1; color = [0.5, 0.5, 0.5]; }}
+start {{
+  fill {{ value = 0; }}
+  box {{ min = [9, 0, 8]; max = [35, 14, 32]; material = rock; }}
+}}
+lsystem burrow {{
+  axiom = "FF[RF][LF]";
+  expansions = 0;
+  step = 3;
+}}
+feature burrows = lsystem_cave {{ lsystem = burrow; radius = 2; clearance = 1; curl_amplitude = 1; min_scale = 1; }}
+grammar dig {{
+  bounds = [[0, 6, 0], [44, 7, 40]];
+  stride = [1, 1, 4];
+  symmetry = rot_y;
+  rule face {{
+    size = [2, 1, 1];
+    probability = 0.5;
+    symbol {{ [ABS, PRES] }}
+    transform {{ [NOP, NOP] }}
+    stamp burrows {{ mode = subtract; offset = [1, 0, 0]; reach = [14, 6, 8]; }}
+  }}
+}}
+pipeline {{ start; dig; }}
+)",
+                       origin.x, origin.y, origin.z, chunk);
+}
+
+TEST(e2e_Stamps, LsystemCaveStampsAgreeOnVulkanAtEveryChunkSize) {
+    const Program program = checked(lsystemStamp({-7, 5, 11}, 16));
+    const DenseGrid start = evaluateStart(program);
+    const DenseGrid grid = interpret(program);
+    // Burrows were dug into all four faces of the block, each beginning at its face.
+    int east = 0, west = 0, north = 0, south = 0;
+    for (int i = 10; i < 34; ++i) {
+        west += grid.at({11, 6, i}) < 0.5f, east += grid.at({32, 6, i}) < 0.5f;
+        south += grid.at({i, 6, 10}) < 0.5f, north += grid.at({i, 6, 29}) < 0.5f;
+    }
+    EXPECT_GT(west, 0);
+    EXPECT_GT(east, 0);
+    EXPECT_GT(south, 0);
+    EXPECT_GT(north, 0);
+    EXPECT_GT(changedVoxels(start, grid), 200u);
+    test::expectLavapipeMatchesAtEveryChunkSize(program, grid);
+    // At another origin the world coordinates (and so the brush's noise and the rule draws) change;
+    // the interpreter is the reference there too.
+    const Program moved = checked(lsystemStamp({13, -9, -21}, 8));
+    test::expectLavapipeMatchesAtEveryChunkSize(moved, interpret(moved));
+}
+
+// The stamped network is the lsystem's, moved to start at the anchor + offset: one firing (the
+// only sandstone voxel) carves exactly what the same lsystem_cave carves as a pipeline stage whose
+// turtle starts there. The network is drawn on whole voxels (right angles, whole steps, no curl
+// displacement), so moving it changes no float, and the brush's noise reads the world place in both.
+TEST(e2e_Stamps, LsystemCaveStampIsTheCarveMovedToTheAnchor) {
+    const auto program = [](const std::string& stamp, const std::string& pipeline) {
+        return checked(fmt::format(R"(
+world {{ size = [40, 20, 30]; origin = [2, -3, 5]; chunk = 8; seed = 9; }}
+material sandstone {{ id = 2; color = [0.8, 0.6, 0.4]; }}
+start {{ fill {{ value = 1; }} box {{ min = [6, 9, 14]; max = [7, 10, 15]; value = 0.75; material = sandstone; }} }}
+lsystem burrow {{ axiom = "FFF[RFF]F[LF]"; expansions = 0; angle = 90; step = 3; start = [10, 7, 18]; }}
+feature burrows = lsystem_cave {{ lsystem = burrow; radius = 2.5; clearance = 1; curl_amplitude = 0; min_scale = 1; }}
+grammar dig {{
+  bounds = [[6, 9, 14], [7, 10, 15]];
+  rule here {{
+    size = [1, 1, 1];
+    symbol {{ [MAT sandstone] }}
+    transform {{ [SET 1] }}
+    {}
+  }}
+}}
+pipeline {{ start; dig; {} }}
+)",
+                                   stamp, pipeline));
+    };
+    // The anchor is grid voxel (6, 9, 14), so the frame's origin is grid (8, 10, 13), world
+    // (10, 7, 18), where the pipeline carve's turtle starts (its start is in world coordinates).
+    const Program stamped = program("stamp burrows { mode = subtract; offset = [2, 1, -1]; reach = [26, 10, 12]; }", "");
+    const Program carved = program("", "subtract burrows;");
+    const DenseGrid stampedGrid = interpret(stamped);
+    EXPECT_EQ(test::countBitDifferences(stampedGrid, interpret(carved)), 0u);
+    EXPECT_GT(changedVoxels(evaluateStart(stamped), stampedGrid), 100u);
+    EXPECT_EQ(test::countBitDifferences(stampedGrid, test::runOnLavapipe(stamped)), 0u);
+}
+
 } // namespace
 } // namespace voxc

@@ -49,6 +49,7 @@ constexpr std::string_view kMaterialKey = "material";
 
 struct CheckedFeature {
     Field field;
+    std::optional<Field> stampField; // CheckedFeatures::stampFields
     std::optional<uint8_t> material;
 };
 
@@ -62,7 +63,7 @@ std::optional<CheckedFeature> checkFeature(Context& context, const ast::FeatureD
     if (body.kind == kLsystemCave) {
         std::optional<CheckedLsystemCave> cave = checkLsystemCave(context, decl, world, file, lsystems);
         if (!cave) return std::nullopt;
-        return CheckedFeature{std::move(cave->field), cave->material};
+        return CheckedFeature{std::move(cave->field), std::move(cave->stampField), cave->material};
     }
     const dey::GeneratorInfo* info = dey::findGenerator(body.kind);
     if (info == nullptr) {
@@ -142,7 +143,9 @@ CheckedFeatures checkFeatures(Context& context, const ast::File& file, const std
         }
         std::optional<CheckedFeature> feature = checkFeature(context, decl, world, file, lsystems);
         out.materials.push_back(feature ? feature->material : std::nullopt);
-        if (feature) out.fields.push_back(std::move(feature->field));
+        if (!feature) continue;
+        out.fields.push_back(std::move(feature->field));
+        out.stampFields.push_back(std::move(feature->stampField));
     }
     return out;
 }

@@ -136,10 +136,11 @@ std::optional<DeclaredRule> checkRule(Context& context, const ast::Block& block)
                 out.rule.aggregates.push_back(test);
     for (const ast::Block& part : block.blocks) {
         if (part.kind != "stamp" || !sizeOk) continue;
-        SourceLoc reachLoc;
-        if (auto stamp = checkStampBlock(context, part, out.rule.size, where, reachLoc)) {
+        SourceLoc reachLoc, offsetLoc;
+        if (auto stamp = checkStampBlock(context, part, out.rule.size, where, reachLoc, offsetLoc)) {
             out.rule.stamps.push_back(std::move(*stamp));
             out.syntax.stampReachLocs.push_back(reachLoc);
+            out.syntax.stampOffsetLocs.push_back(offsetLoc);
         }
     }
 

@@ -150,14 +150,19 @@ std::optional<CheckedLsystemCave> checkLsystemCave(Context& context, const ast::
         context.pointSetListEntries += set->bins.centreItems.size() + set->bins.segmentItems.size();
         if (set->bins.centreItems.empty() && set->bins.segmentItems.empty())
             warnCarvesNothing(context, lsystemKey->value.loc, net->name, skeleton, world);
+        // A stamp's turtle starts at its frame's origin: the network moved back by its start.
+        out.stampField = lsystem::carveField(movedPointSet(*set, -definition.params.start), params, world.seed,
+                                             lsystem::CarveFrame::Stamp);
         out.field = lsystem::carveField(std::move(set), params, world.seed);
     } catch (const lsystem::LimitError& e) {
         context.diagnostics.error("E0012", lsystemKey->value.loc, fmt::format("lsystem '{}': {}", net->name, e.what()));
         return std::nullopt;
     }
-    out.field.name = decl.name;
-    out.field.loc = decl.loc;
-    for (FieldNode& node : out.field.nodes) node.loc = body.loc;
+    for (Field* field : {&out.field, &out.stampField}) {
+        field->name = decl.name;
+        field->loc = decl.loc;
+        for (FieldNode& node : field->nodes) node.loc = body.loc;
+    }
     return out;
 }
 

@@ -14,18 +14,24 @@
 namespace voxc::check {
 
 // One `stamp` block of a rule whose window is `windowSize`; reports its errors and returns
-// nothing then. `reachLoc` receives the place of its `reach` value.
+// nothing then. `reachLoc` and `offsetLoc` receive the places of its `reach` and `offset`
+// values (its name when it has no offset).
 std::optional<Stamp> checkStampBlock(Context& context, const ast::Block& block, glm::ivec3 windowSize,
-                                     const std::string& rule, SourceLoc& reachLoc);
+                                     const std::string& rule, SourceLoc& reachLoc, SourceLoc& offsetLoc);
 
 // E0012 at a stamp's reach when the grown windows of one phase of its sweep would cover a voxel
 // more than Limits::maxStampOverlap times (phase spacing along each axis: phaseCount * stride;
 // no more than the phase's anchors along it).
 void checkStampOverlap(Context& context, const Grammar& grammar, const std::vector<RuleSyntax>& rules);
 
-// Points every stamp of `grammars` at its field in `fields` by name (E0002 with a suggestion for
-// an unknown one; E0013 for a field that reads an lsystem's point set, which is carved in
-// grid coordinates only).
-void resolveStampFields(Context& context, std::vector<Grammar>& grammars, const std::vector<Field>& fields);
+// Points every stamp of `grammars` (`syntax` parallel) at its field in `fields` by name (E0002
+// with a suggestion for an unknown one). A field with a stamp form in `stampFields` (parallel to
+// `fields`, shorter or empty where none has one: an lsystem_cave's carve measured from the
+// stamp's frame) is stamped through a copy appended to `fields`, one per declared stamp and
+// shared by its variants, its point set binned over the stamp's frame box (PointSet::binnedInFrame).
+// Such a stamp's offset must be whole voxels (E0007), and its reach must hold the carve: E0012
+// at the reach where the skeleton, with the brush's reach around it, passes the grown window.
+void resolveStampFields(Context& context, std::vector<Grammar>& grammars, const std::vector<CheckedGrammar>& syntax,
+                        std::vector<Field>& fields, const std::vector<std::optional<Field>>& stampFields);
 
 } // namespace voxc::check

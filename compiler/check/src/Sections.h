@@ -18,6 +18,7 @@ struct RuleSyntax {
     SourceLoc symbolLoc;
     std::vector<SourceLoc> symbolCells; // in Program's cell order (cellIndex)
     std::vector<SourceLoc> stampReachLocs; // per Rule::stamps entry: its `reach` value
+    std::vector<SourceLoc> stampOffsetLocs; // per Rule::stamps entry: its `offset` value, else its name
     // The declared rule this one is (index among the grammar's declared rules); a symmetry
     // variant shares it with its original, so warnings are reported once per declared rule.
     size_t declaredIndex = 0;
@@ -69,6 +70,9 @@ std::vector<Field> checkFields(Context& context, const ast::File& file, const st
 
 struct CheckedFeatures {
     std::vector<Field> fields;                    // the field features that checked, declaration order
+    // Parallel to `fields`: the field a stamp of the feature reads instead, where it differs (an
+    // lsystem_cave's carve measured from the stamp's frame).
+    std::vector<std::optional<Field>> stampFields;
     std::vector<std::optional<uint8_t>> materials; // each declared field feature's `material` key
     std::vector<SpeleothemStage> speleothems;      // the speleothem features that checked, declaration order
 };

@@ -254,6 +254,30 @@ glm::bvec2 pointSetReaches(const PointSet& set, glm::dvec3 lo, glm::dvec3 hi) {
     return reaches;
 }
 
+std::shared_ptr<PointSet> movedPointSet(const PointSet& set, glm::dvec3 by) {
+    auto moved = std::make_shared<PointSet>(set);
+    moved->bins = {};
+    for (glm::vec3& centre : moved->centres) centre = glm::vec3(glm::dvec3(centre) + by);
+    for (PointSetSegment& segment : moved->segments) segment.from = glm::vec3(glm::dvec3(segment.from) + by);
+    return moved;
+}
+
+bool pointSetSupport(const PointSet& set, glm::dvec3& lo, glm::dvec3& hi) {
+    lo = glm::dvec3(std::numeric_limits<double>::max());
+    hi = -lo;
+    for (size_t i = 0; i < set.centres.size(); ++i) {
+        const double reach = double(set.centreReach) / double(set.centreScales[i]);
+        lo = glm::min(lo, glm::dvec3(set.centres[i]) - reach);
+        hi = glm::max(hi, glm::dvec3(set.centres[i]) + reach);
+    }
+    for (const PointSetSegment& s : set.segments) {
+        const glm::dvec3 a(s.from), b = a + glm::dvec3(s.delta);
+        lo = glm::min(lo, glm::min(a, b) - double(set.segmentReach));
+        hi = glm::max(hi, glm::max(a, b) + double(set.segmentReach));
+    }
+    return !set.centres.empty() || !set.segments.empty();
+}
+
 std::vector<int32_t> pointSetWords(std::span<const std::shared_ptr<const PointSet>> sets, glm::ivec3 gridOrigin,
                                    glm::ivec3 gridSize) {
     constexpr uint64_t kMaxWords = uint64_t(1) << 31;
@@ -268,8 +292,11 @@ std::vector<int32_t> pointSetWords(std::span<const std::shared_ptr<const PointSe
     for (size_t s = 0; s < sets.size(); ++s) {
         const PointSet& set = *sets[s];
         const PointBins bins =
-            binPointSetOverGrid(set, gridOrigin, gridSize, kMaxPointSetListEntries - entries, kMaxPointSetPerCell);
+            set.binnedInFrame
+                ? set.bins
+                : binPointSetOverGrid(set, gridOrigin, gridSize, kMaxPointSetListEntries - entries, kMaxPointSetPerCell);
         entries += bins.centreItems.size() + bins.segmentItems.size();
+        if (entries > kMaxPointSetListEntries) throw PointSetLimitError{"entries", entries, kMaxPointSetListEntries};
         const size_t header = words.size();
         words[s] = int32_t(header);
         for (int i = 0; i < kHeaderWords; ++i) append(0);

@@ -189,10 +189,10 @@ std::shared_ptr<const PointSet> carvePointSet(const Skeleton& skeleton, const Ca
     return set;
 }
 
-Field carveField(std::shared_ptr<const PointSet> set, const CarveParams& params, uint32_t seed) {
+Field carveField(std::shared_ptr<const PointSet> set, const CarveParams& params, uint32_t seed, CarveFrame frame) {
     CarveDag dag;
     const uint32_t p = dag.worldPosition();
-    const uint32_t distances = dag.pointSet(std::move(set), p);
+    const uint32_t distances = dag.pointSet(std::move(set), frame == CarveFrame::Stamp ? dag.position() : p);
     const uint32_t centreDistance = dag.component(distances, 0), skeletonDistance = dag.component(distances, 1);
 
     // M(v): one simplex, three worley F1 octaves, two modulators.

@@ -58,6 +58,10 @@ struct PointSet {
     // pointSetClearance. 0: none.
     float clearance = 0.0f;
     PointBins bins;            // the interpreter's lists (binPointSetOverGrid on the checked world)
+    // A stamp's copy (docs/language.md, "Stamps"): read at the stamp's frame positions, not the
+    // world's, so `bins` cover the frame's box, fixed at check time, and every backend reads them
+    // as they are instead of binning the set over its grid.
+    bool binnedInFrame = false;
 };
 
 // The float operations both backends perform, in this order (lsystem_carve.glsl mirrors them with
@@ -94,6 +98,13 @@ bool pointSetClearance(const PointSet& set, glm::vec3 p);
 // [lo, hi] (conservative: true may be wrong, false never is).
 glm::bvec2 pointSetReaches(const PointSet& set, glm::dvec3 lo, glm::dvec3 hi);
 
+// `set`'s points moved by `by`, each coordinate rounded to float once, without lists.
+std::shared_ptr<PointSet> movedPointSet(const PointSet& set, glm::dvec3 by);
+
+// The box outside which the node's value is its caps (every centre's and segment's reach around
+// it), in the set's coordinates; false for a set without points.
+bool pointSetSupport(const PointSet& set, glm::dvec3& lo, glm::dvec3& hi);
+
 // Bounds on the lists of one binning: list entries over all cells, and centres or segments one
 // cell lists (the length of a kernel's loop per voxel, before its early exit).
 constexpr uint64_t kMaxPointSetListEntries = uint64_t(1) << 24;
@@ -104,7 +115,7 @@ constexpr uint64_t kMaxPointSetCellTests = uint64_t(1) << 26;
 constexpr uint64_t kMaxPointSetCells = uint64_t(1) << 24;
 
 // The storage buffer of kBindingPointSets (layout in compiler/shaders/lsystem_carve.glsl): every
-// set binned over the grid (binPointSetOverGrid). Throws PointSetLimitError past the bounds above
+// set binned over the grid (binPointSetOverGrid), a stamp's copy with its own lists (binnedInFrame). Throws PointSetLimitError past the bounds above
 // or a buffer of 2^31 words.
 std::vector<int32_t> pointSetWords(std::span<const std::shared_ptr<const PointSet>> sets, glm::ivec3 gridOrigin,
                                    glm::ivec3 gridSize);

@@ -77,7 +77,14 @@ std::shared_ptr<const PointSet> carvePointSet(const Skeleton& skeleton, const Ca
 // binPointSetOverGrid, turning PointSetLimitError into LimitError.
 PointBins binCarveCells(const PointSet& set, glm::ivec3 worldOrigin, glm::ivec3 worldSize, const CarveLimits& limits);
 
+// Where the carve's point set is measured from: the voxel's world place (a pipeline stage), or
+// a stamp's frame x, y, z (docs/language.md, "Stamps": the skeleton, moved to start at the
+// frame's origin, moves and turns with the window that fires). The brush's noise reads the world place either way, so each stamped
+// cave's walls differ.
+enum class CarveFrame : uint8_t { World, Stamp };
+
 // The carve's field (nodes and Float root; the caller names it and locates its nodes).
-Field carveField(std::shared_ptr<const PointSet> set, const CarveParams& params, uint32_t seed);
+Field carveField(std::shared_ptr<const PointSet> set, const CarveParams& params, uint32_t seed,
+                 CarveFrame frame = CarveFrame::World);
 
 } // namespace voxc::lsystem
