@@ -1,11 +1,12 @@
-/* An engine's use of libvoxc (docs/embedding.md): load a .vox file, generate its grid (or a box
- * of it), mesh it and read the arrays.
- * Usage: embed FILE.vox [vulkan|interpreter] [MINX,MINY,MINZ:MAXX,MAXY,MAXZ]
+/* An engine's use of libvoxc (docs/embedding.md): load a .vox file or a package directory that
+ * `voxc compile` wrote, generate its grid (or a box of it), mesh it and read the arrays.
+ * Usage: embed FILE.vox|PACKAGE_DIR [vulkan|interpreter] [MINX,MINY,MINZ:MAXX,MAXY,MAXZ]
  * Prints the grid size, the solid voxel count and the mesh's vertex and triangle counts. */
 #include <voxc/voxc.h>
 
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 
 static int fail(const char* what) {
     fprintf(stderr, "embed: %s failed:\n%s\n", what, voxc_last_error());
@@ -17,14 +18,17 @@ int main(int argc, char** argv) {
     const int region = argc == 4 && sscanf(argv[3], "%d,%d,%d:%d,%d,%d", &min[0], &min[1], &min[2], &max[0], &max[1],
                                            &max[2]) == 6;
     if (argc < 2 || argc > 4 || (argc == 4 && !region)) {
-        fprintf(stderr, "usage: embed FILE.vox [vulkan|interpreter] [MINX,MINY,MINZ:MAXX,MAXY,MAXZ]\n");
+        fprintf(stderr, "usage: embed FILE.vox|PACKAGE_DIR [vulkan|interpreter] [MINX,MINY,MINZ:MAXX,MAXY,MAXZ]\n");
         return 2;
     }
     voxc_backend backend = VOXC_BACKEND_VULKAN;
     if (argc >= 3 && strcmp(argv[2], "interpreter") == 0) backend = VOXC_BACKEND_INTERPRETER;
 
     voxc_program* program = NULL;
-    if (voxc_program_load(argv[1], NULL, &program) != VOXC_OK) return fail("loading");
+    struct stat input;
+    const int package = stat(argv[1], &input) == 0 && S_ISDIR(input.st_mode);
+    if ((package ? voxc_package_load(argv[1], &program) : voxc_program_load(argv[1], NULL, &program)) != VOXC_OK)
+        return fail("loading");
     voxc_grid* grid = NULL;
     const voxc_status generated =
         region ? voxc_generate_region(program, min, max, backend, &grid) : voxc_generate(program, backend, &grid);

@@ -1,13 +1,19 @@
 #include "SamplePrograms.h"
 #include "PackageTree.h"
 #include "voxc/stages/Pipeline.h"
+#include "voxc/codegen/PackageReader.h"
 #include "voxc/codegen/PackageWriter.h"
+#include "voxc/codegen/CompileCache.h"
+#include "voxc/core/Errors.h"
+#include "voxc/core/Sha256.h"
 #ifdef VOXC_HAVE_CHECK
 #include "voxc/check/Check.h"
+#include "voxc/check/LoadPackage.h"
 #endif
 
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <algorithm>
 #include <gtest/gtest.h>
@@ -40,7 +46,7 @@ TEST_F(codegen_Package, CompilingAndWritingTwiceGivesIdenticalBytes) {
     writePackage(compileProgram(program), (root_ / "b").string(), source);
     const auto a = readTree(root_ / "a");
     const auto b = readTree(root_ / "b");
-    EXPECT_EQ(a.size(), 19u); // manifest + 9 kernels x (.comp, .spv)
+    EXPECT_EQ(a.size(), 20u); // manifest + 9 kernels x (.comp, .spv) + sources/0.vox
     EXPECT_EQ(a, b);
     EXPECT_TRUE(a.contains("kernels/overhang_sweep0.spv"));
     EXPECT_TRUE(a.contains("kernels/start.comp"));
@@ -68,7 +74,7 @@ TEST_F(codegen_Package, ManifestDescribesKernelsAndDispatch) {
     std::vector<std::string> keys;
     for (const auto& [key, value] : m.items())
         keys.push_back(key);
-    EXPECT_EQ(keys, (std::vector<std::string>{"format", "schema_version", "voxc_version", "source", "world",
+    EXPECT_EQ(keys, (std::vector<std::string>{"format", "schema_version", "voxc_version", "source", "sources", "world",
                                               "uses_materials", "materials", "push_constants", "buffers", "kernels",
                                               "dispatch"}));
     EXPECT_EQ(m["format"], "voxc-package");
@@ -78,6 +84,9 @@ TEST_F(codegen_Package, ManifestDescribesKernelsAndDispatch) {
     EXPECT_EQ(m["source"]["file"], "sample.vox");
     // FIPS 180-4's example "abc".
     EXPECT_EQ(m["source"]["sha256"], "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+    // The package's copy of the source, hashed as `source` is.
+    EXPECT_EQ(m["sources"], nlohmann::ordered_json::parse(R"([{"path": "sample.vox", "file": "sources/0.vox",
+        "sha256": "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad"}])"));
     EXPECT_EQ(m["world"]["origin"], nlohmann::json::array({-5, 3, -12}));
     EXPECT_EQ(m["world"]["chunk"], 8);
     EXPECT_EQ(m["world"]["seed"], 7);
@@ -93,6 +102,7 @@ TEST_F(codegen_Package, ManifestDescribesKernelsAndDispatch) {
     EXPECT_EQ(sweep["spv"], "kernels/overhang_sweep0.spv");
     EXPECT_EQ(sweep["local_size"], nlohmann::json::array({8, 8, 1}));
     EXPECT_EQ(sweep["bindings"], nlohmann::json(package.kernels[1].bindings));
+    EXPECT_EQ(sweep["spv_sha256"], sha256Hex(packageFiles(package).at("kernels/overhang_sweep0.spv")));
     // The start kernel declares only the shared buffers, not the tile buffers.
     EXPECT_EQ(kernels[0]["bindings"], nlohmann::json::array({kBindingVoxels, kBindingChunkTable, kBindingNoiseTables}));
     EXPECT_EQ(sweep["anchors_per_invocation"], nlohmann::json::array({1, 1, 1}));
@@ -148,6 +158,42 @@ TEST_F(codegen_Package, ManifestHashesTheSourceWithSha256) {
 }
 
 #ifdef VOXC_HAVE_CHECK
+// voxc_package_load: a package of a file importing a rule file, compiled with another seed and
+// chunk size, loads without its sources and without glslang, to the plan and files it holds.
+TEST_F(codegen_Package, LoadsAPackageAwayFromItsSources) {
+    const std::string file = std::string(VOXC_EXAMPLES_DIR) + "/../tests/pipeline/project/world.vox";
+    CheckOptions options;
+    options.seed = 9;
+    const CheckResult checked = checkFile(file, options);
+    ASSERT_TRUE(checked.program) << checked.rendered();
+    Program program = *checked.program;
+    program.world.chunkSize = 8;
+    const KernelPackage package = compileProgram(program);
+    const PackageSource source = packageSource(file, checked.source.text(), checked.lsystems);
+    writePackage(package, (root_ / "pkg").string(), source);
+    EXPECT_EQ(readTree(root_ / "pkg").at("sources/1.rules"), source.imports.at(0).text);
+    EXPECT_EQ(source.imports.at(0).path, "tunnels.rules");
+
+    const uint64_t compiledBefore = compileCacheCounts().compiled;
+    const LoadedPackage loaded = loadPackage((root_ / "pkg").string());
+    EXPECT_EQ(compileCacheCounts().compiled, compiledBefore);
+    EXPECT_EQ(loaded.program.world.seed, 9u);
+    EXPECT_EQ(loaded.program.world.chunkSize, 8);
+    EXPECT_EQ(packageFiles(loaded.package, source), packageFiles(package, source));
+
+    // A rule file the copy lacks: the check's error, located.
+    std::string manifest = readTree(root_ / "pkg").at("manifest.json");
+    manifest.replace(manifest.find("\"tunnels.rules\""), 15, "\"tunnelz.rules\"");
+    std::ofstream(root_ / "pkg" / "manifest.json", std::ios::binary) << manifest;
+    try {
+        loadPackage((root_ / "pkg").string());
+        ADD_FAILURE() << "loaded";
+    } catch (const UserError& e) {
+        EXPECT_NE(std::string(e.what()).find("its copy of world.vox does not check"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("E0100"), std::string::npos) << e.what();
+    }
+}
+
 TEST_F(codegen_Package, ManifestListsFieldStages) {
     CheckResult checked = checkFile(std::string(VOXC_EXAMPLES_DIR) + "/fields.vox");
     ASSERT_TRUE(checked.program) << checked.rendered();
@@ -208,6 +254,64 @@ TEST_F(codegen_Package, FieldStagesAfterASetSkipChunksTheyCannotChange) {
     }
 }
 #endif
+
+// What voxc_package_load does with a package: its files read back and checked, its kernels
+// compiled again from the GLSL with the package's SPIR-V (glslang never runs), every file equal.
+TEST_F(codegen_Package, ReadingBackTakesTheSpirvAndRefusesAnAlteredPackage) {
+    const Program program = test::sampleProgram();
+    const KernelPackage package = compileProgram(program);
+    const PackageSource source{"sample.vox", "grammar text", {{"../rules/a.rules", "A;F;N;1"}}};
+    writePackage(package, root_.string(), source);
+    const PackageContents contents = readPackage(root_.string());
+    EXPECT_EQ(contents.source.imports.at(0).path, "../rules/a.rules");
+    EXPECT_EQ(contents.source.imports.at(0).text, "A;F;N;1");
+    EXPECT_EQ(contents.seed, program.world.seed);
+    EXPECT_EQ(contents.chunkSize, program.world.chunkSize);
+    EXPECT_EQ(contents.files.at("sources/1.rules"), "A;F;N;1");
+
+    const uint64_t compiledBefore = compileCacheCounts().compiled;
+    KernelPackage rebuilt;
+    {
+        const PackagedSpirvScope scope(contents);
+        rebuilt = compileProgram(program);
+    }
+    EXPECT_EQ(compileCacheCounts().compiled, compiledBefore);
+    verifyRebuiltPackage(rebuilt, contents);
+
+    const auto refusal = [&](const std::string& path, const std::function<void(std::string&)>& alter) {
+        const fs::path copy = root_.string() + "_altered";
+        fs::remove_all(copy);
+        fs::copy(root_, copy, fs::copy_options::recursive);
+        std::string bytes = readTree(copy).at(path);
+        alter(bytes);
+        std::ofstream(copy / path, std::ios::binary) << bytes;
+        try {
+            const PackageContents altered = readPackage(copy.string());
+            const PackagedSpirvScope scope(altered);
+            verifyRebuiltPackage(compileProgram(program), altered);
+        } catch (const UserError& e) {
+            fs::remove_all(copy);
+            return std::string(e.what());
+        }
+        fs::remove_all(copy);
+        return std::string("accepted");
+    };
+    EXPECT_NE(refusal("kernels/start.spv", [](std::string& b) { b[40] ^= 1; }).find("kernels/start.spv does not match its SHA-256"),
+              std::string::npos);
+    EXPECT_NE(refusal("sources/1.rules", [](std::string& b) { b += "\n"; }).find("sources/1.rules does not match"),
+              std::string::npos);
+    EXPECT_NE(refusal("kernels/start.comp", [](std::string& b) { b += "\n"; }).find("kernel start whose GLSL differs"),
+              std::string::npos);
+    EXPECT_NE(refusal("manifest.json", [](std::string& b) { b.replace(b.find("\"seed\": 7"), 9, "\"seed\": 8"); })
+                  .find("manifest.json differs from what its sources compile to"),
+              std::string::npos);
+    EXPECT_NE(refusal("manifest.json", [](std::string& b) { b.replace(b.find("\"voxc_version\": \"") + 17, 5, "0.0.1"); })
+                  .find("written by voxc 0.0.1"),
+              std::string::npos);
+    EXPECT_NE(refusal("manifest.json", [](std::string& b) { b.resize(b.size() / 2); }).find("it has no voxc manifest.json"),
+              std::string::npos);
+    EXPECT_THROW(readPackage((root_ / "none").string()), UserError);
+}
 
 TEST_F(codegen_Package, SpirvValAcceptsEveryWrittenModule) {
     const std::string spirvVal = VOXC_SPIRV_VAL;

@@ -3,7 +3,8 @@
 # a temporary prefix, then uses it as a project would (docs/embedding.md): a CMake project builds
 # a ruleset with find_package(voxc) and voxc_add_ruleset, rebuilding exactly when an input
 # changed; with libvoxc, the C example in examples/embed links against the installed library
-# through pkg-config (and through CMake) and generates a grid. Prints "N passed, N failed" last.
+# through pkg-config (and through CMake), generates a grid, and loads a compiled package (refusing
+# a missing, foreign, corrupt or other version's one). Prints "N passed, N failed" last.
 set -u
 build=$1
 src=$2
@@ -81,6 +82,35 @@ PY
         expect "embed_region_mesh_$backend" 0 "mesh: $box_counts" -- cat "$work/box_$backend.out"
     done
     expect embed_region_outside 1 "not inside the grid" -- "$work/embed/embed" "$src/examples/overhang.vox" vulkan 0,0,0:999,1,1
+
+    # A compiled package loads (its SPIR-V, no GLSL compiler) and generates what its .vox does.
+    pkg=$work/overhang_pkg
+    expect package_compile 0 "" -- "$prefix/bin/voxc" compile "$src/examples/overhang.vox" -o "$pkg"
+    expect embed_package_vulkan 0 "mesh: $counts" -- "$work/embed/embed" "$pkg" vulkan
+    expect embed_package_interpreter 0 "mesh: $counts" -- "$work/embed/embed" "$pkg" interpreter
+    expect embed_package_region 0 "grid 30x32x26 at 10,5,3: $box_solid of 24960 voxels solid" -- "$work/embed/embed" "$pkg" vulkan "$box"
+    # The seed and chunk it was compiled with, and its copy of the rule file, with the sources gone.
+    cp -r "$src/tests/pipeline/project" "$work/moved"
+    expect package_compile_seed 0 "" -- "$prefix/bin/voxc" compile "$work/moved/world.vox" -o "$work/moved_pkg" --seed 9 --chunk 8
+    "$prefix/bin/voxc" run "$work/moved/world.vox" --seed 9 --chunk 8 -o "$work/moved.ply" --mesh-on host > "$work/moved.out" 2>&1
+    moved_counts=$(grep -Eo '[0-9]+ vertices, [0-9]+ triangles' "$work/moved.out" | head -1)
+    rm -r "$work/moved"
+    expect embed_package_seed_chunk_rules 0 "mesh: $moved_counts" -- "$work/embed/embed" "$work/moved_pkg" vulkan
+    # Refused with the reason: foreign, another version, corrupt files.
+    mkdir "$work/foreign" && echo hi > "$work/foreign/notes.txt"
+    expect embed_package_foreign 1 "voxc did not write 'notes.txt'" -- "$work/embed/embed" "$work/foreign"
+    broken() { rm -rf "$work/broken"; cp -r "$pkg" "$work/broken"; }
+    broken; sed -i 's/"voxc_version": "[^"]*"/"voxc_version": "0.0.1"/' "$work/broken/manifest.json"
+    expect embed_package_version 1 "written by voxc 0.0.1 and this is voxc 0.1.0" -- "$work/embed/embed" "$work/broken"
+    spv=$(ls "$pkg"/kernels/*.spv | head -1)
+    broken; printf '\x01' | dd of="$work/broken/kernels/$(basename "$spv")" bs=1 seek=40 conv=notrunc status=none
+    expect embed_package_corrupt_spirv 1 "kernels/$(basename "$spv") does not match its SHA-256" -- "$work/embed/embed" "$work/broken"
+    broken; echo "// edited" >> "$work/broken/sources/0.vox"
+    expect embed_package_edited_source 1 "sources/0.vox does not match its SHA-256" -- "$work/embed/embed" "$work/broken"
+    broken; sed -i '$ a // edited' "$work/broken/kernels/$(basename "$spv" .spv).comp"
+    expect embed_package_edited_glsl 1 "whose GLSL differs from its copy" -- "$work/embed/embed" "$work/broken"
+    broken; sed -i 's/"halo": \[/"halo": [1,/' "$work/broken/manifest.json"
+    expect embed_package_edited_manifest 1 "manifest.json differs from what its sources compile to" -- "$work/embed/embed" "$work/broken"
 fi
 
 finish

@@ -174,6 +174,7 @@ CheckResult checkSource(const SourceFile& source, const CheckOptions& options) {
             context.erosionRunner = options.erosionRunner;
             context.keepSolveChannels = options.keepSolveChannels;
             context.region = options.region;
+            context.readRuleFile = options.readRuleFile;
             std::vector<CheckedLsystem> lsystems;
             Program program = check::checkProgram(context, file, source.path(), lsystems);
             if (!diagnostics.hasErrors()) {

@@ -79,7 +79,8 @@ public:
             context_.diagnostics.error("E0012", block_.labelLoc, fmt::format("{}: {}", where_, e.what()));
             return std::nullopt;
         }
-        return CheckedLsystem{*block_.label, block_.labelLoc, definition_, connect_, rulesPath_, block_.loc, block_.end};
+        return CheckedLsystem{*block_.label, block_.labelLoc, definition_, connect_, rulesPath_, rulesName_, rulesText_,
+                              block_.loc, block_.end};
     }
 
 private:
@@ -370,7 +371,7 @@ private:
         }
         const std::string path = (std::filesystem::path(sourcePath_).parent_path() / *name).string();
         Diagnostics fileDiagnostics;
-        std::optional<SourceFile> source = loadSourceFile(path, fileDiagnostics, size_t(context_.limits.maxSourceBytes));
+        std::optional<SourceFile> source = openRuleFile(path, fileDiagnostics);
         if (source && reportIfNotText(*source, fileDiagnostics)) source.reset();
         if (!source) {
             for (const Diagnostic& d : fileDiagnostics.take())
@@ -378,6 +379,8 @@ private:
             return;
         }
         rulesPath_ = path;
+        rulesName_ = *name;
+        rulesText_ = source->text();
         auto shared = std::make_shared<const SourceFile>(std::move(*source));
         std::optional<RuleSet> rules = parseRuleFile(*shared, fileDiagnostics, definition_.limits);
         for (Diagnostic& d : fileDiagnostics.take()) {
@@ -387,6 +390,23 @@ private:
         if (!rules) return;
         merge(rules->productions, definition_.productions, "production", shared);
         merge(rules->macros, definition_.macros, "macro", shared);
+    }
+
+    // The rule file from the disk, or from CheckOptions::readRuleFile when it is set.
+    std::optional<SourceFile> openRuleFile(const std::string& path, Diagnostics& diagnostics) const {
+        const size_t maxBytes = size_t(context_.limits.maxSourceBytes);
+        if (!context_.readRuleFile) return loadSourceFile(path, diagnostics, maxBytes);
+        std::optional<std::string> text = context_.readRuleFile(path);
+        if (!text) {
+            diagnostics.error("E0100", {}, fmt::format("cannot read file '{}': no such file", path));
+            return std::nullopt;
+        }
+        if (text->size() > maxBytes) {
+            diagnostics.error("E0012", {}, fmt::format("cannot read file '{}': it is larger than the limit of {} bytes",
+                                                       path, maxBytes));
+            return std::nullopt;
+        }
+        return SourceFile(path, std::move(*text));
     }
 
     // Appends the file's alternatives after the block's own (the file is read before them, so
@@ -410,7 +430,7 @@ private:
     std::string where_;
     Definition definition_;
     ConnectParams connect_;
-    std::string rulesPath_;
+    std::string rulesPath_, rulesName_, rulesText_;
     LsystemOrigins origins_;
     std::set<char> declaredProductions_, declaredMacros_; // blocks seen (a rule file may add to the same symbols)
 };

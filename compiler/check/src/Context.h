@@ -8,8 +8,10 @@
 #include "voxc/program/Program.h"
 #include "voxc/syntax/Diagnostics.h"
 
+#include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace voxc::check {
@@ -31,6 +33,7 @@ struct Context {
     curves::Solvers curvesSolver{}; // CheckOptions::curvesSolver
     bool keepSolveChannels = false;    // CheckOptions::keepSolveChannels
     std::optional<std::pair<glm::ivec3, glm::ivec3>> region{}; // CheckOptions::region
+    std::function<std::optional<std::string>(const std::string&)> readRuleFile{}; // CheckOptions::readRuleFile
 };
 
 } // namespace voxc::check

@@ -23,9 +23,14 @@ namespace fs = std::filesystem;
 // and is removing it.
 struct Vanished {};
 
-[[noreturn]] void fail(const fs::path& dir, const std::string& why) {
-    throw UserError(fmt::format("cannot write package '{}': {}", dir.string(), why));
-}
+// Why the directory cannot be used, said by existingPackage for its verb. `notAPackage`: the
+// directory is not a voxc package, which replacing it would delete.
+struct Refused {
+    std::string why;
+    bool notAPackage = false;
+};
+
+[[noreturn]] void fail(const fs::path&, const std::string& why) { throw Refused{why}; }
 
 [[noreturn]] void failErrno(const fs::path& dir, const std::string& what) {
     if (errno == ENOENT) throw Vanished{};
@@ -91,10 +96,8 @@ bool isVoxcManifest(const std::string& text) {
     return manifest.value("format", "") == kPackageFormat || manifest.contains("voxc_version");
 }
 
-[[noreturn]] void foreign(const fs::path& dir, const std::string& relative) {
-    fail(dir, fmt::format("the directory is not a voxc package: voxc did not write '{}', and replacing the directory "
-                          "would delete it; remove it or choose another directory",
-                          relative));
+[[noreturn]] void foreign(const std::string& relative) {
+    throw Refused{fmt::format("the directory is not a voxc package: voxc did not write '{}'", relative), true};
 }
 
 std::optional<std::map<std::string, std::string>> readPackage(const fs::path& dir) {
@@ -112,41 +115,52 @@ std::optional<std::map<std::string, std::string>> readPackage(const fs::path& di
     for (const Entry& entry : listAt(dir, dirFd.get(), "")) {
         if (entry.name == "manifest.json" && entry.type == S_IFREG) {
             files[entry.name] = readAt(dir, dirFd.get(), entry.name, entry.name);
-        } else if ((entry.name == "kernels" || entry.name == "data") && entry.type == S_IFDIR) {
-            // kernels/*.comp and *.spv; data/*.bin
+        } else if ((entry.name == "kernels" || entry.name == "data" || entry.name == "sources") &&
+                   entry.type == S_IFDIR) {
+            // kernels/*.comp and *.spv; data/*.bin; sources/*.vox and *.rules
             const std::string sub = entry.name + "/";
             const Fd subFd(::openat(dirFd.get(), entry.name.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC));
             if (subFd.get() < 0) failErrno(dir, sub);
             for (const Entry& file : listAt(dir, subFd.get(), sub)) {
                 const std::string relative = sub + file.name;
                 const std::string extension = fs::path(file.name).extension().string();
-                const bool ours = entry.name == "kernels" ? extension == ".comp" || extension == ".spv" : extension == ".bin";
-                if (file.type != S_IFREG || !ours) foreign(dir, relative);
+                const bool ours = entry.name == "kernels"   ? extension == ".comp" || extension == ".spv"
+                                  : entry.name == "sources" ? extension == ".vox" || extension == ".rules"
+                                                            : extension == ".bin";
+                if (file.type != S_IFREG || !ours) foreign(relative);
                 files[relative] = readAt(dir, subFd.get(), file.name, relative);
             }
         } else {
-            foreign(dir, entry.name);
+            foreign(entry.name);
         }
     }
     if (!files.empty() && !(files.contains("manifest.json") && isVoxcManifest(files.at("manifest.json"))))
-        fail(dir, "the directory is not a voxc package (it has no voxc manifest.json); remove it or choose another "
-                  "directory");
+        throw Refused{"the directory is not a voxc package (it has no voxc manifest.json)", true};
     return files;
 }
 
 } // namespace
 
-std::optional<std::map<std::string, std::string>> existingPackage(const fs::path& dir) {
-    // Each retry follows a package that a concurrent compile swapped in; that takes that
-    // compile's whole write, so a few retries outlast any realistic number of writers.
-    constexpr int kAttempts = 16;
-    for (int attempt = 0; attempt < kAttempts; ++attempt) {
-        try {
-            return readPackage(dir);
-        } catch (const Vanished&) {
+std::optional<std::map<std::string, std::string>> existingPackage(const fs::path& dir, PackageVerb verb) {
+    const bool writing = verb == PackageVerb::Write;
+    try {
+        // Each retry follows a package that a concurrent compile swapped in; that takes that
+        // compile's whole write, so a few retries outlast any realistic number of writers.
+        constexpr int kAttempts = 16;
+        for (int attempt = 0; attempt < kAttempts; ++attempt) {
+            try {
+                return readPackage(dir);
+            } catch (const Vanished&) {
+            }
         }
+        fail(dir, "it keeps being replaced while voxc reads it");
+    } catch (const Refused& refused) {
+        throw UserError(fmt::format("cannot {} package '{}': {}{}", writing ? "write" : "load", dir.string(),
+                                    refused.why,
+                                    refused.notAPackage && writing ? ", and replacing the directory would delete it; "
+                                                                     "remove it or choose another directory"
+                                                                   : ""));
     }
-    fail(dir, "it keeps being replaced while voxc reads it");
 }
 
 } // namespace voxc::codegen

@@ -12,7 +12,10 @@ namespace voxc::codegen {
 // swapping the directory yields one whole package, never a mix (the read is retried when the
 // package being read is removed under it). UserError when `dir` is a symbolic link or not a
 // directory, or holds anything voxc does not write (a package holds manifest.json with a voxc
-// manifest and kernels/*.comp, *.spv, nothing else): replacing it would delete a user's file.
-std::optional<std::map<std::string, std::string>> existingPackage(const std::filesystem::path& dir);
+// manifest, kernels/*.comp, *.spv, data/*.bin, sources/*.vox, *.rules, nothing else): replacing
+// it would delete a user's file. The messages say "cannot VERB package 'DIR': ...".
+enum class PackageVerb { Write, Load };
+std::optional<std::map<std::string, std::string>> existingPackage(const std::filesystem::path& dir,
+                                                                  PackageVerb verb = PackageVerb::Write);
 
 } // namespace voxc::codegen

@@ -172,7 +172,20 @@ Json kernelJson(const Kernel& k) {
                 {"local_size", Json::array({k.localSize[0], k.localSize[1], k.localSize[2]})},
                 {"anchors_per_invocation",
                  Json::array({k.anchorsPerInvocation[0], k.anchorsPerInvocation[1], k.anchorsPerInvocation[2]})},
-                {"bindings", k.bindings}};
+                {"bindings", k.bindings},
+                {"spv_sha256", sha256Hex(littleEndianWords(k.spirv))}};
+}
+
+// The .vox first, then its rule files: the path the checker reads, the package's copy, its hash.
+Json sourcesJson(const PackageSource& source) {
+    Json sources = Json::array();
+    if (source.fileName.empty()) return sources;
+    sources.push_back(Json{{"path", source.fileName}, {"file", packageSourcePath(0)}, {"sha256", sha256Hex(source.text)}});
+    for (size_t i = 0; i < source.imports.size(); ++i)
+        sources.push_back(Json{{"path", source.imports[i].path},
+                               {"file", packageSourcePath(i + 1)},
+                               {"sha256", sha256Hex(source.imports[i].text)}});
+    return sources;
 }
 
 // A kernel's name, or null for kNoKernel.
@@ -231,6 +244,10 @@ Json stageJson(const KernelPackage& package, const StagePlan& stage) {
 
 } // namespace
 
+std::string packageSourcePath(size_t index) {
+    return index == 0 ? "sources/0.vox" : fmt::format("sources/{}.rules", index);
+}
+
 std::string packageGlslPath(const Kernel& k) { return "kernels/" + k.name + ".comp"; }
 std::string packageSpirvPath(const Kernel& k) { return "kernels/" + k.name + ".spv"; }
 
@@ -247,6 +264,7 @@ std::string packageManifest(const KernelPackage& package, const PackageSource& s
         {"schema_version", kManifestSchemaVersion},
         {"voxc_version", VOXC_VERSION},
         {"source", Json{{"file", source.fileName}, {"sha256", sha256Hex(source.text)}}},
+        {"sources", sourcesJson(source)},
         {"world", Json{{"size", vec(w.size)},
                        {"origin", vec(w.origin)},
                        {"chunk", w.chunkSize},

@@ -28,11 +28,15 @@ std::vector<PackageData> packageData(const KernelPackage& package) {
     return data;
 }
 
-std::string littleEndianWords(const std::vector<int32_t>& words) {
+std::string littleEndianWords(const std::vector<uint32_t>& words) {
     std::string bytes(words.size() * 4, '\0');
     for (size_t i = 0; i < words.size(); ++i)
-        for (int b = 0; b < 4; ++b) bytes[4 * i + size_t(b)] = char((uint32_t(words[i]) >> (8 * b)) & 0xFF);
+        for (int b = 0; b < 4; ++b) bytes[4 * i + size_t(b)] = char((words[i] >> (8 * b)) & 0xFF);
     return bytes;
+}
+
+std::string littleEndianWords(const std::vector<int32_t>& words) {
+    return littleEndianWords(std::vector<uint32_t>(words.begin(), words.end()));
 }
 
 } // namespace voxc::codegen

@@ -26,15 +26,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string spirvBytes(const std::vector<uint32_t>& words) {
-    std::string bytes;
-    bytes.reserve(words.size() * 4);
-    for (uint32_t w : words)
-        for (int shift = 0; shift < 32; shift += 8)
-            bytes.push_back(char((w >> shift) & 0xffu));
-    return bytes;
-}
-
 [[noreturn]] void fail(const fs::path& dir, const std::string& why) {
     throw UserError(fmt::format("cannot write package '{}': {}", dir.string(), why));
 }
@@ -110,14 +101,14 @@ void syncDirectory(const fs::path& directory) {
 }
 
 void writeTree(const fs::path& dir, const fs::path& temp, const std::map<std::string, std::string>& files) {
-    for (const char* sub : {"kernels", "data"}) {
+    for (const char* sub : {"kernels", "data", "sources"}) {
         const bool used = std::any_of(files.begin(), files.end(),
                                       [&](const auto& file) { return file.first.starts_with(std::string(sub) + "/"); });
         if (used && ::mkdir((temp / sub).c_str(), 0777) != 0) fail(dir, fmt::format("{}: {}", sub, std::strerror(errno)));
     }
     for (const auto& [relative, bytes] : files)
         writeNewFile(dir, temp / relative, bytes);
-    for (const char* sub : {"kernels", "data"})
+    for (const char* sub : {"kernels", "data", "sources"})
         if (fs::is_directory(temp / sub)) syncDirectory(temp / sub);
     syncDirectory(temp);
 }
@@ -161,9 +152,13 @@ std::map<std::string, std::string> packageFiles(const KernelPackage& package, co
     std::map<std::string, std::string> files;
     for (const Kernel& k : package.kernels) {
         files[packageGlslPath(k)] = k.glsl;
-        files[packageSpirvPath(k)] = spirvBytes(k.spirv);
+        files[packageSpirvPath(k)] = littleEndianWords(k.spirv);
     }
     for (const PackageData& data : packageData(package)) files[data.path] = littleEndianWords(data.words);
+    if (!source.fileName.empty()) {
+        files[packageSourcePath(0)] = source.text;
+        for (size_t i = 0; i < source.imports.size(); ++i) files[packageSourcePath(i + 1)] = source.imports[i].text;
+    }
     files["manifest.json"] = packageManifest(package, source);
     return files;
 }

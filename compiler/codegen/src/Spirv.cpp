@@ -1,6 +1,7 @@
 #include "voxc/codegen/Spirv.h"
 
 #include "CompileCacheEntries.h"
+#include "PackagedSpirv.h"
 
 #include "voxc/core/Errors.h"
 
@@ -116,6 +117,7 @@ std::vector<uint32_t> compileUncached(std::string_view kernelName, const std::st
 } // namespace
 
 std::vector<uint32_t> compileComputeShader(std::string_view kernelName, const std::string& glsl) {
+    if (std::optional<std::vector<uint32_t>> spirv = packagedSpirv(kernelName, glsl)) return std::move(*spirv);
     return cachedCompile(kernelName, glsl, [&] { return compileUncached(kernelName, glsl); });
 }
 

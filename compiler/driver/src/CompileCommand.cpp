@@ -4,6 +4,7 @@
 #include "Depfile.h"
 #include "OutputPaths.h"
 
+#include "voxc/check/LoadPackage.h"
 #include "voxc/codegen/PackageWriter.h"
 #include "voxc/core/AtomicWrite.h"
 #include "voxc/core/Errors.h"
@@ -61,7 +62,7 @@ void compile(const CompileCommandOptions& options) {
     const KernelPackage package = compileProgram(program, compileOptions);
     const std::chrono::duration<double, std::milli> compileTime = std::chrono::steady_clock::now() - start;
     detail() << fmt::format("compiled {} kernels in {:.1f} ms\n", package.kernels.size(), compileTime.count());
-    const codegen::PackageSource source{std::filesystem::path(options.file).filename().string(), sourceText};
+    const codegen::PackageSource source = packageSource(options.file, sourceText, lsystems);
     const codegen::PackageWrite written = codegen::writePackage(package, options.outputDir, source);
     if (written == codegen::PackageWrite::Unchanged)
         status() << options.outputDir << " is up to date (" << package.kernels.size() << " kernels)\n";

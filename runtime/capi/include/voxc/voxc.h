@@ -1,6 +1,7 @@
 /* libvoxc: voxc for engines, as a C API (docs/embedding.md).
  *
- * Load a .vox file (checked and compiled in the process, as `voxc compile` does), generate its
+ * Load a .vox file (checked and compiled in the process, as `voxc compile` does) or a compiled
+ * package, generate its
  * grid on a Vulkan device or with the CPU interpreter (the two agree bit for bit), mesh it with
  * marching cubes, and read the arrays. Every handle is freed by its own voxc_*_free; arrays a
  * handle returns live as long as the handle. No C++ exception crosses this boundary: a function
@@ -35,7 +36,7 @@ typedef enum voxc_backend {
     VOXC_BACKEND_INTERPRETER = 1 /* the CPU interpreter, the reference */
 } voxc_backend;
 
-typedef struct voxc_program voxc_program; /* a checked and compiled .vox file */
+typedef struct voxc_program voxc_program; /* a checked and compiled .vox file or a loaded package */
 typedef struct voxc_grid voxc_grid;       /* generated densities and material ids */
 typedef struct voxc_mesh voxc_mesh;       /* a marching-cubes mesh of a grid */
 
@@ -55,6 +56,12 @@ typedef struct voxc_load_options {
 /* Checks and compiles the .vox file at `path` (its rule files are read relative to it).
  * `options` may be null. On success *out holds a program to free with voxc_program_free. */
 VOXC_API voxc_status voxc_program_load(const char* path, const voxc_load_options* options, voxc_program** out);
+/* Loads a package directory that `voxc compile` wrote (manifest.json, kernels/, data/, sources/),
+ * with the seed and chunk size it was compiled with. The kernels' SPIR-V comes from the package (no
+ * GLSL compiler runs); the package's copy of the .vox and its rule files is checked again to rebuild
+ * the plan, and every file of the package must be what they compile to. VOXC_ERROR_USER, saying
+ * why, for a missing, corrupt or foreign package or one another voxc version wrote. */
+VOXC_API voxc_status voxc_package_load(const char* directory, voxc_program** out);
 VOXC_API void voxc_program_free(voxc_program* program);
 
 /* The world's grid: size in voxels and the world coordinate of voxel (0,0,0). */

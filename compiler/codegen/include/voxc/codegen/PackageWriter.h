@@ -1,7 +1,8 @@
 #pragma once
 // Writes a KernelPackage as a package directory: dir/manifest.json, dir/kernels/<name>.comp
-// (GLSL), dir/kernels/<name>.spv (SPIR-V words, little endian) and dir/data/<buffer>.bin (the
-// words of the buffers the compiler fills, little endian). The directory is replaced as
+// (GLSL), dir/kernels/<name>.spv (SPIR-V words, little endian), dir/data/<buffer>.bin (the
+// words of the buffers the compiler fills, little endian) and dir/sources/ (the .vox and its
+// rule files). The directory is replaced as
 // a whole, so a reader sees the old package or the new one, never a mix.
 #include "voxc/codegen/KernelPackage.h"
 
@@ -14,15 +15,29 @@ namespace voxc::codegen {
 // manifest.json's "format": how voxc recognises a directory it may replace.
 inline constexpr const char* kPackageFormat = "voxc-package";
 
-// What the manifest records about the program's source: the file name without its directory
-// (so the manifest does not depend on where or how the command was typed) and the text, hashed.
+// A rule file the .vox imports: its path as the checker joins it (the `rules = "..."` string,
+// relative to the .vox's directory) and its text.
+struct ImportedFile {
+    std::string path;
+    std::string text;
+};
+
+// What the package records about the program's source: the file name without its directory (so
+// the manifest does not depend on where or how the command was typed), the text, and the rule
+// files it imports. The package holds copies of them all (sources/), hashed in the manifest, so
+// a loader can rebuild the plan the manifest describes (PackageReader.h).
 struct PackageSource {
     std::string fileName;
     std::string text;
+    std::vector<ImportedFile> imports{};
 };
 
 // The manifest text writePackage writes (JSON, keys in a fixed order, trailing newline).
 std::string packageManifest(const KernelPackage& package, const PackageSource& source = {});
+
+// The package files of the source copies: sources/0.vox for the .vox, sources/N.rules for
+// imports[N-1] (numbered, so no user's path decides a file name).
+std::string packageSourcePath(size_t index);
 
 // A kernel's files, relative to the package directory.
 std::string packageGlslPath(const Kernel& kernel);
@@ -37,6 +52,7 @@ struct PackageData {
 // The package's buffers with known contents: point sets (binding 10), solve tables (binding 12).
 std::vector<PackageData> packageData(const KernelPackage& package);
 std::string littleEndianWords(const std::vector<int32_t>& words);
+std::string littleEndianWords(const std::vector<uint32_t>& words); // a .spv file's bytes
 
 // Every file of the package: path relative to the package directory -> bytes.
 std::map<std::string, std::string> packageFiles(const KernelPackage& package, const PackageSource& source = {});

@@ -10,7 +10,8 @@
 namespace voxc::codegen {
 
 // Compiles and validates one generated kernel. Any failure is a voxc bug: InternalError with
-// the compiler's or validator's message and the source with line numbers.
+// the compiler's or validator's message and the source with line numbers. Inside a
+// PackagedSpirvScope (PackageReader.h) the kernel's SPIR-V comes from the loaded package instead.
 std::vector<uint32_t> compileComputeShader(std::string_view kernelName, const std::string& glsl);
 
 // The renderer's vertex and fragment stages (voxc/render), compiled and validated the same way,
