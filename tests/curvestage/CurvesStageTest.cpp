@@ -6,10 +6,13 @@
 
 #include "voxc/check/Check.h"
 #include "voxc/codegen/KernelPackage.h"
+#include "voxc/core/Errors.h"
 #include "voxc/mesh/MarchingCubes.h"
 #include "voxc/mesh/Mesh.h"
 #include "voxc/program/Semantics.h"
 #include "voxc/stages/Pipeline.h"
+#include "voxc/stages/Region.h"
+#include "voxc/stages/Solve.h"
 
 #include <gtest/gtest.h>
 
@@ -18,11 +21,25 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <memory>
+#include <stdexcept>
 
 namespace voxc {
 namespace {
 
-Program checked(const std::string& text) { return test::checkedProgram("curves.vox", text, test::Allowed::None); }
+Program checked(const std::string& text) {
+    Program program = test::checkedProgram("curves.vox", text, test::Allowed::None);
+    stages::solveBlocks(program);
+    return program;
+}
+
+Program checkedFile(const std::string& path, const stages::SolveOptions& options = {}) {
+    CheckResult result = checkFile(path);
+    if (!result.program) throw std::runtime_error(result.rendered());
+    Program program = std::move(*result.program);
+    stages::solveBlocks(program, options);
+    return program;
+}
 
 Mesh meshOf(const Program& program, const DenseGrid& grid) {
     const World& w = program.world;
@@ -128,9 +145,7 @@ TEST(curvestage_Plan, SkipsTheBoxPiecesThatChangeNothing) {
 // The example: a non-empty watertight mesh, and the solid voxels carry the three materials of
 // its curves (sand, sandstone, grass) and nothing else.
 TEST(curvestage_Example, CliffMeshesWatertightWithTheCurvesMaterials) {
-    CheckResult result = checkFile(std::string(VOXC_SOURCE_DIR) + "/examples/curves_cliff.vox");
-    ASSERT_TRUE(result.program) << result.rendered();
-    const Program& program = *result.program;
+    const Program program = checkedFile(std::string(VOXC_SOURCE_DIR) + "/examples/curves_cliff.vox");
     const DenseGrid grid = interpret(program);
     const Mesh mesh = meshOf(program, grid);
     EXPECT_GT(mesh.triangles.size(), 3000u);
@@ -160,17 +175,14 @@ TEST(curvestage_Example, CliffMeshesWatertightWithTheCurvesMaterials) {
 }
 
 // The noise displacement runs only where it can change the density (Scene.cpp, DisplacementBand);
-// a check keeping the channels evaluates it at every cell. The densities and materials must be the
+// a solve keeping the channels evaluates it at every cell. The densities and materials must be the
 // same bits, the band must have left cells out (displacement != 0 where the density saturated),
 // and the kept channels must give the density by its formula.
 TEST(curvestage_Example, DisplacementBandGivesTheFullEvaluationsBits) {
     const std::string path = std::string(VOXC_SOURCE_DIR) + "/examples/curves_cliff.vox";
-    CheckOptions full;
-    full.keepSolveChannels = true;
-    const CheckResult banded = checkFile(path, CheckOptions{}), everywhere = checkFile(path, full);
-    ASSERT_TRUE(banded.program && everywhere.program) << banded.rendered() << everywhere.rendered();
-    const SolveTable& a = *banded.program->curves.at(0).table;
-    const SolveTable& b = *everywhere.program->curves.at(0).table;
+    const Program banded = checkedFile(path), everywhere = checkedFile(path, {.keepChannels = true});
+    const SolveTable& a = banded.curves.at(0).solved();
+    const SolveTable& b = everywhere.curves.at(0).solved();
     EXPECT_TRUE(a.channels.empty());
     ASSERT_EQ(a.density.size(), b.density.size());
     EXPECT_EQ(0, std::memcmp(a.density.data(), b.density.data(), a.density.size() * sizeof(float)));
@@ -190,6 +202,75 @@ TEST(curvestage_Example, DisplacementBandGivesTheFullEvaluationsBits) {
         if ((density == 0.0f || density == 1.0f) && displacement[i] != 0.0f) ++saturatedAndDisplaced;
     }
     EXPECT_GT(saturatedAndDisplaced, b.density.size() / 4);
+}
+
+// Checking a file never solves its curves (docs/curves.md, "The stage"): the check keeps the
+// voxelised scene and answers every question the check asks (work, materials, the box) from it;
+// only stages::solveBlocks makes a table. The box is the largest a file may declare (256x128x256,
+// Limits::maxSolveCells), whose solve takes tens of seconds.
+TEST(curvestage_Check, LeavesTheSolveToTheRun) {
+    const Program program = test::checkedProgram("big.vox", R"(
+world { size = [256, 128, 256]; }
+material rock { id = 1; }
+curves big {
+  box = [[0, 0, 0], [255, 127, 255]];
+  curve edge {
+    points = [[40, 60, 40], [100, 64, 90], [160, 58, 150], [220, 62, 210]];
+    constraint { t = 0; material = rock; }
+    constraint { t = 1; }
+  }
+}
+pipeline { start; union big; }
+)",
+                                                 test::Allowed::None);
+    const CurvesBlock& block = program.curves.at(0);
+    EXPECT_EQ(block.table, nullptr);
+    ASSERT_NE(block.scene, nullptr);
+    EXPECT_EQ(block.cellCount(), uint64_t(256) * 128 * 256);
+    EXPECT_TRUE(block.writesMaterials);
+    EXPECT_EQ(block.materials, std::vector<uint8_t>{1});
+    EXPECT_TRUE(program.usesMaterials());
+    EXPECT_THROW(block.solved(), InternalError);
+}
+
+// A run solves each block once: a second solveBlocks keeps the table, and compileProgram and
+// interpret, given a program nobody solved, solve it themselves (on the host) to the same bits.
+TEST(curvestage_Solve, OnceAndTheSameWhoeverSolves) {
+    Program unsolved = test::checkedProgram("curves.vox", test::ridgeProgram("union", ""), test::Allowed::None);
+    ASSERT_EQ(unsolved.curves.at(0).table, nullptr);
+    Program program = unsolved;
+    stages::solveBlocks(program);
+    const std::shared_ptr<const SolveTable> table = program.curves.at(0).table;
+    ASSERT_NE(table, nullptr);
+    stages::solveBlocks(program);
+    EXPECT_EQ(program.curves.at(0).table, table);
+    const DenseGrid a = interpret(program), b = interpret(unsolved);
+    EXPECT_EQ(0, std::memcmp(a.data().data(), b.data().data(), a.data().size() * sizeof(float)));
+    EXPECT_EQ(a.materials(), b.materials());
+    EXPECT_EQ(unsolved.curves.at(0).table, nullptr); // interpret solved a copy
+    EXPECT_EQ(compileProgram(program).solveTables.back(), table); // the package uploads the run's table
+}
+
+// A region's program may be made before or after the solve: either way its table is the whole
+// box's solve cropped to the region, and the region computes the whole grid's voxels there.
+TEST(curvestage_Solve, RegionBeforeOrAfterTheSolve) {
+    const Program unsolved = test::checkedProgram("curves.vox", test::ridgeProgram("union", ""), test::Allowed::None);
+    Program whole = unsolved;
+    stages::solveBlocks(whole);
+    const stages::GridBox box{{5, 3, 9}, {30, 21, 20}};
+    const Program after = stages::regionProgram(whole, box);
+    Program before = stages::regionProgram(unsolved, box);
+    stages::solveBlocks(before);
+    const SolveTable &x = after.curves.at(0).solved(), &y = before.curves.at(0).solved();
+    EXPECT_EQ(x.min, y.min);
+    EXPECT_EQ(x.size, y.size);
+    EXPECT_EQ(after.curves.at(0).min, x.min);
+    EXPECT_EQ(after.curves.at(0).size, x.size);
+    EXPECT_EQ(0, std::memcmp(x.density.data(), y.density.data(), x.density.size() * sizeof(float)));
+    EXPECT_EQ(x.material, y.material);
+    const DenseGrid region = interpret(before), expected = stages::cropGrid(interpret(whole), box);
+    EXPECT_EQ(0, std::memcmp(region.data().data(), expected.data().data(), region.data().size() * sizeof(float)));
+    EXPECT_EQ(region.materials(), expected.materials());
 }
 
 } // namespace

@@ -8,6 +8,7 @@
 
 #include "voxc/check/Check.h"
 #include "voxc/stages/Pipeline.h"
+#include "voxc/stages/Solve.h"
 #include "voxc/vulkan/Context.h"
 #include "voxc/vulkan/Executor.h"
 
@@ -16,7 +17,12 @@
 namespace voxc {
 namespace {
 
-Program checked(const std::string& text) { return test::checkedProgram("curves.vox", text, test::Allowed::None); }
+// Solved once here, so the interpreter and the three chunk sizes' runs combine the same table.
+Program checked(const std::string& text) {
+    Program program = test::checkedProgram("curves.vox", text, test::Allowed::None);
+    stages::solveBlocks(program);
+    return program;
+}
 
 void expectDeviceMatches(const Program& program) {
     test::expectLavapipeMatchesAtEveryChunkSize(program, interpret(program));

@@ -12,6 +12,7 @@
 #include "voxc/codegen/Spirv.h"
 #include "voxc/generators/curves/Scene.h"
 #include "voxc/stages/Pipeline.h"
+#include "voxc/stages/Solve.h"
 #include "voxc/vulkan/Context.h"
 #include "voxc/vulkan/GpuMultigrid.h"
 
@@ -21,6 +22,8 @@
 #include <bit>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
+#include <utility>
 
 namespace voxc {
 namespace {
@@ -125,21 +128,27 @@ TEST(vulkan_GpuMultigrid, ProgramCoversEveryLevel) {
     EXPECT_EQ(p.measure.size(), 1u);
 }
 
-// A curves block checked with the Vulkan solver gives the table the host solve gives.
+// The host's and the device's solve of a checked program: stages::solveBlocks with the Vulkan
+// solver or without.
+std::pair<Program, Program> hostAndDeviceSolved(const SourceFile& source) {
+    const CheckResult checked = checkSource(source, CheckOptions{});
+    if (!checked.program) throw std::runtime_error(checked.rendered());
+    std::pair<Program, Program> solved{*checked.program, *checked.program};
+    stages::solveBlocks(solved.first);
+    stages::solveBlocks(solved.second, {vulkanLinearSolver(validated())});
+    return solved;
+}
+
+// A curves block solved with the Vulkan solver gives the table the host solve gives.
 TEST(vulkan_GpuMultigrid, CurvesExampleTableMatchesTheHost) {
     std::ifstream in(std::string(VOXC_SOURCE_DIR) + "/examples/curves_cliff.vox");
     std::stringstream text;
     text << in.rdbuf();
-    const SourceFile source("curves_cliff.vox", text.str());
-    CheckOptions options;
-    const CheckResult host = checkSource(source, options);
-    options.curvesSolver = vulkanLinearSolver(validated());
-    const CheckResult device = checkSource(source, options);
-    ASSERT_TRUE(host.program && device.program) << host.rendered() << device.rendered();
-    ASSERT_EQ(host.program->curves.size(), device.program->curves.size());
-    for (size_t i = 0; i < host.program->curves.size(); ++i) {
-        const SolveTable& a = *host.program->curves[i].table;
-        const SolveTable& b = *device.program->curves[i].table;
+    const auto [host, device] = hostAndDeviceSolved(SourceFile("curves_cliff.vox", text.str()));
+    ASSERT_EQ(host.curves.size(), device.curves.size());
+    for (size_t i = 0; i < host.curves.size(); ++i) {
+        const SolveTable& a = host.curves[i].solved();
+        const SolveTable& b = device.curves[i].solved();
         ASSERT_EQ(a.density.size(), b.density.size());
         size_t differences = 0;
         for (size_t c = 0; c < a.density.size(); ++c)
@@ -157,13 +166,8 @@ TEST(vulkan_GpuMultigrid, CurvesExampleTableMatchesTheHost) {
 TEST(vulkan_GpuMultigrid, DeviceSolvedRunMatchesTheInterpreter) {
     for (const char* world : {"", "origin = [-13, -6, 5];"}) {
         SCOPED_TRACE(world);
-        const SourceFile source("ridge.vox", test::ridgeProgram("union", world));
-        CheckOptions options;
-        const CheckResult host = checkSource(source, options);
-        options.curvesSolver = vulkanLinearSolver(validated());
-        const CheckResult device = checkSource(source, options);
-        ASSERT_TRUE(host.program && device.program) << host.rendered() << device.rendered();
-        test::expectLavapipeMatchesAtEveryChunkSize(*device.program, interpret(*host.program));
+        const auto [host, device] = hostAndDeviceSolved(SourceFile("ridge.vox", test::ridgeProgram("union", world)));
+        test::expectLavapipeMatchesAtEveryChunkSize(device, interpret(host));
     }
     expectNoValidationMessages();
 }

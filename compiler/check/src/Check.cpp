@@ -113,13 +113,11 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
         program.curves.push_back(std::move(block));
     program.fields = checkFields(context, file, grammarNames);
     CheckedFeatures features = checkFeatures(context, file, grammarNames, program.world, lsystems);
-    std::vector<std::optional<Field>> stampFields(program.fields.size()); // the plain fields have none
-    for (std::optional<Field>& stampField : features.stampFields) stampFields.push_back(std::move(stampField));
     for (Field& feature : features.fields) program.fields.push_back(std::move(feature));
-    resolveStampFields(context, program.grammars, grammars, program.fields, stampFields);
+    resolveStampFields(context, program.grammars, program.fields);
     for (const CurvesBlock& block : program.curves) {
         context.curvesNames.push_back(block.name);
-        context.curvesKinds.push_back(block.table ? block.table->source : "solve");
+        context.curvesKinds.push_back(block.source);
     }
     program.speleothems = std::move(features.speleothems);
 
@@ -170,11 +168,8 @@ CheckResult checkSource(const SourceFile& source, const CheckOptions& options) {
         if (!diagnostics.hasErrors()) {
             check::Context context{diagnostics, options.limits, check::Constants(diagnostics, options.constOverrides), {}};
             context.seed = options.seed;
-            context.curvesSolver = options.curvesSolver;
             context.erosionRunner = options.erosionRunner;
-            context.keepSolveChannels = options.keepSolveChannels;
             context.region = options.region;
-            context.readRuleFile = options.readRuleFile;
             std::vector<CheckedLsystem> lsystems;
             Program program = check::checkProgram(context, file, source.path(), lsystems);
             if (!diagnostics.hasErrors()) {

@@ -1,6 +1,7 @@
-// The `curves` block: keys and ranges with located errors here, then the host solve
-// (curves::solveScene), whose remaining errors (a degenerate bitangent, a bound on work, a solve
-// that does not converge) are located at the curve or block they come from.
+// The `curves` block: keys and ranges with located errors here, then the voxelisation, whose
+// remaining errors (a degenerate bitangent, a bound on work) are located at the curve or block they
+// come from. The solve itself runs only when the program runs (stages::solveBlocks), so checking a
+// file (voxc check, the language server) costs the voxelisation at most.
 #include "CheckCurves.h"
 
 #include "Materials.h"
@@ -22,8 +23,8 @@ namespace voxc::check {
 
 namespace {
 
-// All curves blocks together: the host solve runs at check time (about 3 s per million cells on
-// one core), and its tables are uploaded whole (two words per cell).
+// All curves blocks together: a run solves every box (about 2 s of CPU per million cells on the
+// host), and its tables are uploaded whole (two words per cell).
 
 constexpr std::string_view kBlockKeys[] = {"box", "normals", "k", "sweeps", "smoothing", "noise_frequency",
                                            "noise_seed"};
@@ -201,7 +202,7 @@ std::optional<curves::FeatureCurve> readCurve(Context& context, const ast::Block
     return curve;
 }
 
-// The options, the curves and the box; the solve itself once everything checked.
+// The options, the curves and the box.
 std::optional<curves::Scene> readScene(Context& context, const ast::Block& block, const World& world,
                                        uint64_t& cellBudget, const curves::Limits& limits) {
     const std::string where = fmt::format("curves '{}'", *block.label);
@@ -303,10 +304,28 @@ std::optional<curves::Scene> readScene(Context& context, const ast::Block& block
     return scene;
 }
 
-// W0210: no seed ribbon meets a cell of the box (or every cell ends up air), so the stage
-// combines air: a curve drawn outside the box, most often.
-void warnAllAir(Context& context, const ast::Block& block, const SolveTable& table) {
-    if (std::any_of(table.density.begin(), table.density.end(), [](float d) { return d != 0.0f; })) return;
+// The work a run's solve may do that the keys alone do not bound: the Perona-Malik sweeps over the
+// box (E0012 at the block, as the solve would throw it).
+bool checkSolveWork(Context& context, const ast::Block& block, const curves::Scene& scene, const curves::Limits& limits) {
+    if (scene.options.normals != curves::NormalMode::PeronaMalik) return true;
+    const glm::ivec3 size = scene.box.size;
+    const uint64_t sweeps = scene.options.sweeps != 0 ? scene.options.sweeps : uint64_t(std::max({size.x, size.y, size.z}));
+    if (sweeps * scene.box.cellCount() <= limits.maxSweepCellUpdates) return true;
+    context.diagnostics.error(
+        "E0012", block.loc,
+        curves::LimitError("Perona-Malik sweep cell updates", sweeps * scene.box.cellCount(), limits.maxSweepCellUpdates)
+            .what());
+    return false;
+}
+
+// W0210: no seed ribbon meets a cell of the box, so no cell is pinned (Omega_S is empty), the
+// surface reaches none and the table is air in every cell: a curve drawn outside the box, most
+// often. (A box whose seeds the noise displacement pushes out of every cell is air too; only the
+// solve can tell, so that is not warned about.)
+void warnAllAir(Context& context, const ast::Block& block, const curves::Constraints& constraints) {
+    if (std::any_of(constraints.flags.begin(), constraints.flags.end(),
+                    [](uint8_t f) { return (f & curves::kInSurface) != 0; }))
+        return;
     context.diagnostics.warning("W0210", block.loc,
                                 fmt::format("curves '{}' solves to air in every cell of its box: no seed curve's "
                                             "ribbon pins a surface inside it; move the curves into the box "
@@ -325,19 +344,27 @@ std::vector<CurvesBlock> checkCurves(Context& context, const ast::File& file, co
     for (const ast::Block& block : file.blocks) {
         if (block.kind != "curves") continue;
         if (!checkLabel(context, block, true) || !block.label) continue;
-        CurvesBlock out{*block.label, block.loc, nullptr};
+        CurvesBlock out{*block.label, block.loc, "curves"};
         if (!claimStageName(context, block, names, stageNames)) {
             blocks.push_back(std::move(out));
             continue;
         }
-        if (std::optional<curves::Scene> scene = readScene(context, block, world, cellBudget, limits)) {
+        std::optional<curves::Scene> scene = readScene(context, block, world, cellBudget, limits);
+        if (scene && checkSolveWork(context, block, *scene, limits)) {
             try {
-                out.table = std::make_shared<const SolveTable>(
-                    curves::solveScene(*scene, limits, context.curvesSolver, context.keepSolveChannels));
-                warnAllAir(context, block, *out.table);
+                warnAllAir(context, block, curves::voxelize(scene->curves, scene->box, scene->options.seedValue, limits));
+                out.min = scene->box.min;
+                out.size = scene->box.size;
+                for (const curves::FeatureCurve& curve : scene->curves)
+                    for (const curves::ConstraintPoint& point : curve.constraints)
+                        if (point.material != kMaterialNone) out.materials.push_back(uint8_t(point.material));
+                std::sort(out.materials.begin(), out.materials.end());
+                out.materials.erase(std::unique(out.materials.begin(), out.materials.end()), out.materials.end());
+                out.writesMaterials = !out.materials.empty();
+                out.scene = std::make_shared<const curves::Scene>(std::move(*scene));
             } catch (const curves::ParameterError& e) {
                 context.diagnostics.error("E0007", block.loc, e.what());
-            } catch (const UserError& e) { // LimitError, ConvergenceError: bounds on the solve's work
+            } catch (const curves::LimitError& e) { // bounds on the voxelisation's work
                 context.diagnostics.error("E0012", block.loc, e.what());
             }
         }

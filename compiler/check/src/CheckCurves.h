@@ -1,7 +1,8 @@
 #pragma once
 // `curves NAME { box = ...; curve NAME { points = ...; constraint { t = 0; ... } ... } ... }`
-// (docs/language.md, "Curves"; docs/curves.md): feature curves solved on the host when the file
-// is checked, used as a pipeline stage by name with a mode (`union cliffs;`).
+// (docs/language.md, "Curves"; docs/curves.md): feature curves voxelised when the file is checked
+// and solved when it runs (stages::solveBlocks), used as a pipeline stage by name with a mode
+// (`union cliffs;`).
 #include "Context.h"
 
 #include "voxc/program/Program.h"
@@ -11,7 +12,7 @@
 
 namespace voxc::check {
 
-// Every curves block, in declaration order; a block with errors (reported) has no table.
+// Every curves block, in declaration order, with its scene; a block with errors (reported) has none.
 // Names share the namespace of grammars, fields and features (`stageNames`).
 std::vector<CurvesBlock> checkCurves(Context& context, const ast::File& file, const World& world,
                                      const std::vector<std::string>& stageNames);

@@ -2,16 +2,13 @@
 // State shared by the checker's passes over one file.
 #include "Constants.h"
 #include "Materials.h"
-#include "voxc/generators/curves/Solvers.h"
 #include "voxc/generators/terrain/Terrain.h"
 
 #include "voxc/program/Program.h"
 #include "voxc/syntax/Diagnostics.h"
 
-#include <functional>
 #include <map>
 #include <memory>
-#include <optional>
 #include <string>
 
 namespace voxc::check {
@@ -30,10 +27,7 @@ struct Context {
     // List entries of the lsystem_cave point sets checked so far: the runtime bounds their sum.
     uint64_t pointSetListEntries = 0;
     std::optional<uint32_t> seed{}; // CheckOptions::seed
-    curves::Solvers curvesSolver{}; // CheckOptions::curvesSolver
-    bool keepSolveChannels = false;    // CheckOptions::keepSolveChannels
     std::optional<std::pair<glm::ivec3, glm::ivec3>> region{}; // CheckOptions::region
-    std::function<std::optional<std::string>(const std::string&)> readRuleFile{}; // CheckOptions::readRuleFile
 };
 
 } // namespace voxc::check

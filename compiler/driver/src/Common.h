@@ -2,6 +2,7 @@
 // Helpers every verb shares: loading and checking a file, printing diagnostics, and the
 // flags that override the file's world settings.
 #include "voxc/check/Check.h"
+#include "voxc/generators/curves/Solvers.h"
 #include "voxc/grid/Grid.h"
 #include "voxc/program/Program.h"
 
@@ -17,9 +18,9 @@ struct WorldOverrides {
     std::optional<int32_t> chunk;
     std::optional<double> maxWork; // replaces Limits::maxWork (--max-work; `1e12` is accepted)
     std::optional<std::pair<glm::ivec3, glm::ivec3>> region; // CheckOptions::region (--region, world voxels)
-    curves::Solvers curvesSolver; // CheckOptions::curvesSolver (run --solve-on); empty members: the host
+    curves::Solvers curvesSolver; // stages::SolveOptions::solvers of the run (run --solve-on); empty members: the host
     terrain::ErosionRunner erosionRunner; // CheckOptions::erosionRunner (run --solve-on); empty: the host
-    bool keepSolveChannels = false;    // CheckOptions::keepSolveChannels (--dump)
+    bool keepSolveChannels = false;    // stages::SolveOptions::keepChannels of the run (--dump)
 };
 
 // --seed, --chunk and --max-work.

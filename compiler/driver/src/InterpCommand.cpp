@@ -11,6 +11,7 @@
 #include "voxc/grid/Grid.h"
 #include "voxc/interp/Interpreter.h"
 #include "voxc/stages/Pipeline.h"
+#include "voxc/stages/Solve.h"
 
 #include <fmt/format.h>
 #include <iostream>
@@ -60,9 +61,10 @@ SliceSpec parseSlice(const std::string& text, glm::ivec3 size) {
 
 void interpretFile(const InterpOptions& options, std::span<const SolveDump> dumps) {
     std::vector<CheckedLsystem> lsystems;
-    WorldOverrides overrides = withRegion(options.overrides, options.region);
-    overrides.keepSolveChannels = !dumps.empty();
-    const RegionRun run = planRegionRun(loadProgram(options.file, overrides, false, nullptr, &lsystems), options.region);
+    Program checked =
+        loadProgram(options.file, withRegion(options.overrides, options.region), false, nullptr, &lsystems);
+    stages::solveBlocks(checked, {.keepChannels = !dumps.empty()}); // on the host, for the report and --dump
+    const RegionRun run = planRegionRun(std::move(checked), options.region);
     const Program& program = run.program;
     const std::vector<Brush> edits =
         options.editsPath.empty() ? std::vector<Brush>{} : loadEdits(options.editsPath, program.materials);

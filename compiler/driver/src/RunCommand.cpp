@@ -9,6 +9,7 @@
 #include "SolveReport.h"
 
 #include "voxc/stages/Pipeline.h"
+#include "voxc/stages/Solve.h"
 #include "voxc/codegen/CompileCache.h"
 #include "voxc/core/Errors.h"
 #include "voxc/grid/Grid.h"
@@ -97,10 +98,11 @@ void run(const RunOptions& options) {
     const auto since = [](std::chrono::steady_clock::time_point start) {
         return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     };
-    double deviceMs = 0.0; // the device may be opened inside the check (a curves solve) or after it
+    double deviceMs = 0.0; // the device may be opened inside the check (terrain erosion), the solve or after them
 
-    // The check solves curves blocks: their multigrid runs on the device, made then, unless it is a
-    // CPU device, where the host's loops are faster (docs/curves.md, "What runs where").
+    // Curves blocks are solved before the plan (terrain blocks by the check): their multigrid runs on
+    // the device, made then, unless it is a CPU device, where the host's loops are faster
+    // (docs/curves.md, "What runs where").
     std::optional<VulkanContext> device;
     const auto openDevice = [&]() -> VulkanContext& {
         if (device) return *device;
@@ -132,9 +134,13 @@ void run(const RunOptions& options) {
             vulkanErosionRunner(solver)(grid, params, level, firstStep, steps, drain);
         };
     const auto checkStart = std::chrono::steady_clock::now();
-    const RegionRun run =
-        planRegionRun(loadProgram(options.file, withRegion(overrides, options.region)), options.region);
-    times.add("check", since(checkStart) - deviceMs, "parse, check, host solves");
+    Program checked = loadProgram(options.file, withRegion(overrides, options.region));
+    times.add("check", since(checkStart) - deviceMs, "parse, check, terrain blocks");
+    const double checkDeviceMs = deviceMs;
+    const auto solveStart = std::chrono::steady_clock::now();
+    stages::solveBlocks(checked, {overrides.curvesSolver, overrides.keepSolveChannels});
+    times.add("solve", since(solveStart) - (deviceMs - checkDeviceMs), "curves blocks");
+    const RegionRun run = planRegionRun(std::move(checked), options.region);
     const Program& program = run.program;
     const std::vector<Brush> edits =
         options.editsPath.empty() ? std::vector<Brush>{} : loadEdits(options.editsPath, program.materials);
@@ -275,7 +281,7 @@ void addRunCommand(CLI::App& app) {
                       "Neither read nor write the compile cache (SPIR-V by content, the device's pipeline cache) in "
                       "$VOXC_CACHE_DIR, else $XDG_CACHE_HOME/voxc, else ~/.cache/voxc");
     command->add_flag("--timings", options->timings,
-                      "Print wall time per phase: check, lower+glsl, spirv, device, pipelines, generate, mesh, write");
+                      "Print wall time per phase: check, solve, lower+glsl, spirv, device, pipelines, generate, mesh, write");
     addRegionFlag(*command, options->region);
     addEditsFlag(*command, options->editsPath);
     addWorldOverrideFlags(*command, options->overrides);

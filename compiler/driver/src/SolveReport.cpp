@@ -14,10 +14,10 @@ std::string formatSolveReport(const Program& program, bool perCycle, const std::
     for (const Stage& stage : program.pipeline) {
         if (stage.kind != Stage::Kind::Curves) continue;
         const CurvesBlock& block = program.curves.at(stage.index);
-        const SolveTable& table = *block.table;
-        const std::string where = multigridDevice.empty() || table.source != "curves"
-                                      ? std::string("solved on the host when checked")
-                                      : fmt::format("solved when checked, the multigrid on '{}'", multigridDevice);
+        const SolveTable& table = block.solved();
+        const std::string where = table.source != "curves"    ? std::string("solved on the host when checked")
+                                  : multigridDevice.empty() ? std::string("solved on the host")
+                                                            : fmt::format("solved, the multigrid on '{}'", multigridDevice);
         out += fmt::format("{} '{}' ({}x{}x{} cells, {}):", table.source, block.name, table.size.x, table.size.y,
                            table.size.z, where);
         for (const SolveSummary& solve : table.solves)
@@ -83,7 +83,7 @@ void writeSolveDumps(OutputFiles& outputs, const Program& program, std::span<con
     for (const SolveDump& dump : dumps) {
         const CurvesBlock* block = nullptr;
         for (const CurvesBlock& candidate : program.curves)
-            if (candidate.table && candidate.table->source == "curves" &&
+            if (candidate.source == "curves" &&
                 (candidate.name == dump.block || (dump.block.empty() && program.curves.size() == 1)))
                 block = &candidate;
         if (!block)
@@ -92,7 +92,7 @@ void writeSolveDumps(OutputFiles& outputs, const Program& program, std::span<con
                                               dump.channel, dump.channel, program.curves.size())
                                 : fmt::format("--dump {}.{}: the file has no curves block '{}'", dump.block, dump.channel,
                                               dump.block));
-        const SolveTable& table = *block->table;
+        const SolveTable& table = block->solved();
         if (dump.channel == "density") {
             writeFloatNpy(outputs, dump.path, table.size, table.density);
             continue;

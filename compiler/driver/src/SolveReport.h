@@ -12,7 +12,7 @@
 
 namespace voxc::driver {
 
-// Per curves stage of the pipeline: its box and, per solve, multigrid levels, V-cycles and the
+// Per curves stage of the pipeline (its block solved: stages::solveBlocks): its box and, per solve, multigrid levels, V-cycles and the
 // max residual after the full-multigrid start and at the end; with `perCycle` (voxc interp
 // --trace) also a line per solve listing the max residual after each cycle. Empty without
 // curves stages. `multigridDevice`: the Vulkan device the curves' multigrid ran on (voxc run

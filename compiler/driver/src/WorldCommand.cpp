@@ -7,6 +7,7 @@
 #include "voxc/interp/Interpreter.h"
 #include "voxc/stages/Pipeline.h"
 #include "voxc/stages/Region.h"
+#include "voxc/stages/Solve.h"
 #include "voxc/vulkan/Context.h"
 #include "voxc/vulkan/Executor.h"
 #include "voxc/world/MpiTiles.h"
@@ -80,7 +81,8 @@ void writeWorldTiles(const WorldCommandOptions& options) {
     const glm::ivec3 middle = declared.world.origin +
                               glm::clamp(area.min + (area.size() - edge) / 2, glm::ivec3(0), declared.world.size - edge);
     overrides.region = std::pair(middle, middle + edge);
-    const Program program = loadProgram(options.file, overrides);
+    Program program = loadProgram(options.file, overrides);
+    stages::solveBlocks(program); // once for every tile: a tile's program crops the tables
 
     // Kernels compiled for a tile before (a rerun, another rank) come from the compile cache and
     // the pipeline cache; a tile's place is written into some of them, so not from a neighbour's.

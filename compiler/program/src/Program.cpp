@@ -20,7 +20,7 @@ bool Program::usesMaterials() const {
     });
     // A curves stage writes the materials of its constraint points (SolveTable::material).
     const auto curvesWrite = std::any_of(pipeline.begin(), pipeline.end(), [this](const Stage& s) {
-        return s.kind == Stage::Kind::Curves && !curves.at(s.index).table->material.empty();
+        return s.kind == Stage::Kind::Curves && curves.at(s.index).writesMaterials;
     });
     return startWrites || stageWrites || grammarUses || curvesWrite;
 }

@@ -2,14 +2,18 @@
 #include "voxc/codegen/SampledMaps.h"
 #include "voxc/ir/Lower.h"
 #include "voxc/stages/Pipeline.h"
+#include "voxc/stages/Solve.h"
 #include "voxc/stages/StageKind.h"
 
 #include <filesystem>
 #include <glm/common.hpp>
+#include <optional>
 
 namespace voxc {
 
-KernelPackage compileProgram(const Program& program, const CompileOptions& options) {
+KernelPackage compileProgram(const Program& given, const CompileOptions& options) {
+    std::optional<Program> solved;
+    const Program& program = stages::solvedProgram(given, solved);
     const ir::IrModule module = ir::lowerProgram(program, ir::LowerOptions{options.afterPass});
     KernelPackage package;
     package.world = program.world;

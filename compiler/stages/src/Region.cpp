@@ -31,7 +31,8 @@ Grammar regionGrammar(Grammar grammar, const GridBox& box) {
     return grammar;
 }
 
-// The cells of `table` inside `box`, moved to its grid-local voxels (possibly none).
+} // namespace
+
 std::shared_ptr<const SolveTable> regionTable(const SolveTable& table, const GridBox& box) {
     auto out = std::make_shared<SolveTable>();
     const glm::ivec3 lo = glm::max(table.min, box.min);
@@ -53,6 +54,8 @@ std::shared_ptr<const SolveTable> regionTable(const SolveTable& table, const Gri
             }
     return out;
 }
+
+namespace {
 
 int32_t parseInt(std::string_view text, const std::string& whole) {
     int32_t value = 0;
@@ -99,7 +102,14 @@ Program regionProgram(const Program& program, const GridBox& box) {
     region.world.origin = program.world.origin + box.min;
     region.world.localBase = box.min;
     for (Grammar& grammar : region.grammars) grammar = regionGrammar(grammar, box);
-    for (CurvesBlock& block : region.curves) block.table = regionTable(*block.table, box);
+    for (CurvesBlock& block : region.curves) {
+        const glm::ivec3 lo = glm::max(block.min, box.min);
+        const glm::ivec3 hi = glm::max(glm::min(block.min + block.size, box.max), lo);
+        block.min = lo - box.min;
+        block.size = hi - lo;
+        // A curves block not solved yet is solved whole and cropped by stages::solveBlocks.
+        if (block.table) block.table = regionTable(*block.table, box);
+    }
     return region;
 }
 

@@ -1,7 +1,9 @@
-// A curves stage: the host-solved table of a curves block (SolveTable, solved when the file is
-// checked) combined with the grid inside the block's box by the stage's mode, with the table's
-// materials where it wins. One kernel per (block, mode), dispatched over the box only, split at
-// chunk borders so boxes whose combine provably changes nothing are skipped.
+// A curves stage: the table of a curves or terrain block (SolveTable, solved once per run by
+// stages::solveBlocks, a terrain block's when the file is checked) combined with the grid inside the
+// block's box by the stage's mode, with the table's materials where it wins. One kernel per (block,
+// mode), dispatched over the box only, split at chunk borders so boxes whose combine provably
+// changes nothing are skipped. Only the plan and the interpretation read the table; the check's
+// questions (work, materials, radius) are answered from the block's box.
 #include "Kinds.h"
 
 #include "voxc/codegen/CurvesKernel.h"
@@ -15,7 +17,7 @@ namespace voxc::stages {
 
 namespace {
 
-const SolveTable& tableOf(const Program& program, const Stage& stage) { return *program.curves.at(stage.index).table; }
+const CurvesBlock& blockOf(const Program& program, const Stage& stage) { return program.curves.at(stage.index); }
 
 std::string label(const Program& program, const Stage& stage) {
     return fmt::format("{} {}", ir::fieldModeName(stage.mode), program.curves.at(stage.index).name);
@@ -24,10 +26,10 @@ std::string label(const Program& program, const Stage& stage) {
 // Even a set leaves the voxels outside its box as they were, so the stages before it stay live.
 bool readsDensities(const Stage&) { return true; }
 
-bool writesMaterials(const Program& program, const Stage& stage) { return !tableOf(program, stage).material.empty(); }
+bool writesMaterials(const Program& program, const Stage& stage) { return blockOf(program, stage).writesMaterials; }
 
 StageWork estimateWork(const Program& program, const Stage& stage, double) {
-    const double cells = double(tableOf(program, stage).cellCount());
+    const double cells = double(blockOf(program, stage).cellCount());
     return {cells, stage.loc,
             fmt::format("curves '{}' ({} cells combined)", program.curves.at(stage.index).name, formatWork(cells))};
 }
@@ -40,16 +42,16 @@ int64_t newKernels(const Program& program, const Stage& stage, std::set<std::str
     return seen.insert(kernelName(program, stage)).second ? 1 : 0;
 }
 
-// The table was solved over the block's declared box when the file was checked, so the stage
+// The table is solved over the block's whole declared box, whatever grid runs, so the stage
 // samples it by position and combines it with the voxel's own density.
 StageRadius dependencyRadius(const Program& program, const Stage& stage) {
     return {glm::ivec3(0), fmt::format("a table solved once over the {} block's box, sampled by position",
-                                       tableOf(program, stage).source)};
+                                       blockOf(program, stage).source)};
 }
 
 // The checker keeps the box inside the grid, and every table value is a finite float in [0, 1].
 void interpret(const Program& program, const Stage& stage, DenseGrid& grid, const InterpOptions&, NonFiniteCount*) {
-    const SolveTable& table = tableOf(program, stage);
+    const SolveTable& table = blockOf(program, stage).solved();
     const bool materials = !table.material.empty();
     size_t at = 0;
     for (int32_t z = 0; z < table.size.z; ++z)
@@ -73,13 +75,14 @@ void addKernels(PlanContext& context) {
     for (const auto& [key, stage] : kinds) {
         const CurvesBlock& block = context.program.curves.at(key.first);
         auto [it, inserted] = tableIndex.emplace(key.first, uint32_t(context.package.solveTables.size()));
+        const SolveTable& table = block.solved(); // before a null table could reach the package
         if (inserted) context.package.solveTables.push_back(block.table);
         const std::string name = kernelName(context.program, stage);
         const std::string origin = fmt::format("{}:{}:{} curves {}, {}", context.sourceName, block.loc.line,
                                                block.loc.column, block.name, ir::fieldModeName(key.second));
         context.kernels[name] = context.addKernel(
             name, origin, codegen::curvesDispatchShape(context.module),
-            codegen::curvesKernelSource(context.module, it->second, key.second, !block.table->material.empty(), name,
+            codegen::curvesKernelSource(context.module, it->second, key.second, !table.material.empty(), name,
                                         origin));
     }
 }
@@ -113,7 +116,7 @@ bool combineKeepsGrid(FieldMode mode, codegen::DensityBounds range, std::optiona
 // Boxes tiling the grid: the solve box split at the world-aligned chunk borders (each piece
 // skipped where its combine provably changes nothing), and the slabs around it, skipped.
 void plan(PlanContext& context, const Stage& stage, StagePlan& plan) {
-    const SolveTable& table = tableOf(context.program, stage);
+    const SolveTable& table = blockOf(context.program, stage).solved();
     plan.gridKernel = context.kernels.at(kernelName(context.program, stage));
     plan.attributes.emplace_back("curves", context.program.curves.at(stage.index).name);
     plan.attributes.emplace_back("mode", std::string(ir::fieldModeName(stage.mode)));

@@ -5,7 +5,6 @@
 // converts printed symbol/transform layouts into Program's cell order, builds the pipeline,
 // checks the lsystem blocks, checks its work estimate against Limits::maxWork and finally runs the warning analyses
 // (W0201-W0209).
-#include "voxc/generators/curves/Solvers.h"
 #include "voxc/generators/lsystem/Connect.h"
 #include "voxc/generators/lsystem/Definition.h"
 #include "voxc/generators/terrain/Terrain.h"
@@ -13,7 +12,6 @@
 #include "voxc/syntax/Diagnostics.h"
 #include "voxc/syntax/SourceFile.h"
 
-#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -29,9 +27,6 @@ struct CheckedLsystem {
     lsystem::Definition definition;
     lsystem::ConnectParams connect;
     std::string rulesPath; // the imported rule file as opened (relative to the working directory), or empty
-    // With rulesPath: the `rules` string as written (relative to the .vox's directory) and the
-    // file's text, which a compiled package keeps a copy of.
-    std::string rulesName, rulesText;
     // The whole block, from its `lsystem` word to its closing brace, so tools can rewrite it.
     SourceLoc blockStart, blockEnd;
 };
@@ -65,24 +60,14 @@ struct CheckOptions {
     // Replaces the world's seed before anything reads it (`--seed`), so the features, carves and
     // solves made while checking draw from it too, as if the file said `seed = S;`.
     std::optional<uint32_t> seed{};
-    // Where curves blocks run their global passes (multigrid, Perona-Malik, fronts, smoothing,
-    // displacement): empty members, the host's loops; `voxc run` passes the same passes on its
-    // Vulkan device (voxc/vulkan/GpuCurves.h).
-    curves::Solvers curvesSolver{};
     // Where terrain blocks run their erosion steps: empty, the host's loop; `voxc run --solve-on`
     // passes the same steps on its Vulkan device (voxc/vulkan/GpuErosion.h).
     terrain::ErosionRunner erosionRunner{};
-    // Keep each curves block's intermediate channels in its table (SolveTable::channels; `--dump`).
-    bool keepSolveChannels = false;
     // `--region`: the box of the world (world voxels, min and max with max excluded) a run will
     // compute. The world may then exceed Limits::maxVoxels: what must fit is the box grown by the
     // pipeline's halo (voxc/stages/Region.h), clipped to the world (E0014 otherwise), and the work
     // estimate counts that grid.
     std::optional<std::pair<glm::ivec3, glm::ivec3>> region{};
-    // Where the rule files lsystem blocks import come from (`rules = "x.rules"`, given the path
-    // joined to the .vox's directory as the checker would open it): the text, or nothing for a
-    // file it does not have (E0100). Null: the disk. A loaded package serves its own copies.
-    std::function<std::optional<std::string>(const std::string& path)> readRuleFile{};
 };
 
 CheckResult checkSource(const SourceFile& source, const Limits& limits = {});

@@ -20,10 +20,12 @@ struct CompileOptions {
 
 // Program -> IR -> generated GLSL kernels -> validated SPIR-V, plus the plan of every stage. Each
 // kind names its kernels (e.g. "start", "ground_set", "overhang_sweep0"). The result is the same,
-// byte for byte, on every run.
+// byte for byte, on every run. Curves blocks with no table yet are solved on the host first
+// (stages::solvedProgram).
 KernelPackage compileProgram(const Program& program, const CompileOptions& options = {});
 
-// Runs program.pipeline in order, starting from an all-air grid of the world's size.
+// Runs program.pipeline in order, starting from an all-air grid of the world's size (curves blocks
+// with no table yet solved on the host first, as compileProgram).
 DenseGrid interpret(const Program& program, const InterpOptions& options = {});
 
 } // namespace voxc

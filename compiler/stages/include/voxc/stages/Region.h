@@ -32,9 +32,14 @@ GridBox haloBox(const Program& program, const GridBox& region, glm::ivec3 halo);
 
 // The program whose grid is `box` of `program`'s (a whole-world program, localBase 0): the same
 // world position, seed and chunking, with World::localBase, grammar bounds and anchor numbering
-// (Grammar::firstAnchor) and solve tables moved into the box, so every stage computes what it
-// computes there in the declared grid, up to the box's border effects the halo keeps out.
+// (Grammar::firstAnchor) and solve blocks (their boxes, and their tables once solved) moved into
+// the box, so every stage computes what it computes there in the declared grid, up to the box's
+// border effects the halo keeps out.
 Program regionProgram(const Program& program, const GridBox& box);
+
+// The cells of `table` inside `box`, moved to its grid-local voxels (possibly none); the solve's
+// channels are left out.
+std::shared_ptr<const SolveTable> regionTable(const SolveTable& table, const GridBox& box);
 
 // The voxels of `box` (grid-local to `grid`), both channels.
 DenseGrid cropGrid(const DenseGrid& grid, const GridBox& box);
