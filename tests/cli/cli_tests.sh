@@ -309,9 +309,14 @@ expect_same seed_override_is_the_file_seed "$work/seed9_file.npy" "$work/seed9_f
 "$voxc" interp "$src/examples/lsystem_cave.vox" --voxels "$work/seed7.npy" >/dev/null 2>&1
 expect seed_override_changes_the_carve 1 "" -- cmp -s "$work/seed7.npy" "$work/seed9_flag.npy"
 # terrain: a block's maps as files, written together or not at all
-expect terrain_maps 0 "terrain 'valley': levels 2..7 \(128\^2 cells\), [0-9]+ erosion steps" -- "$voxc" terrain "$src/examples/valley.vox" valley --heightmap "$work/valley.png" --height "$work/valley_h.npy" --water "$work/valley_w.npy" --sediment "$work/valley_s.npy"
-expect terrain_heightmap_16bit 0 "" -- python3 -c "import struct,sys; b=open(sys.argv[1],'rb').read(); assert b[:8] == b'\x89PNG\r\n\x1a\n' and struct.unpack('>II', b[16:24]) == (128, 128) and b[24] == 16 and b[25] == 0" "$work/valley.png"
+expect terrain_maps 0 "terrain 'valley': levels 2..8 \(256\^2 cells\), [0-9]+ erosion steps" -- "$voxc" terrain "$src/examples/valley.vox" valley --heightmap "$work/valley.png" --height "$work/valley_h.npy" --water "$work/valley_w.npy" --sediment "$work/valley_s.npy" --difference "$work/valley_d.npy"
+expect terrain_heightmap_16bit 0 "" -- python3 -c "import struct,sys; b=open(sys.argv[1],'rb').read(); assert b[:8] == b'\x89PNG\r\n\x1a\n' and struct.unpack('>II', b[16:24]) == (256, 256) and b[24] == 16 and b[25] == 0" "$work/valley.png"
 expect terrain_npy 0 "" -- test -s "$work/valley_s.npy"
+# the eroded difference: the valley's floor raised by sediment, its slopes cut
+expect terrain_difference 0 "^ok$" -- /usr/bin/python3 -c "
+import numpy as np, sys
+d = np.load(sys.argv[1]) * 40
+print('ok' if d.shape == (256, 1, 256) and d.min() < -2 and d.max() > 2 else (d.shape, d.min(), d.max()))" "$work/valley_d.npy"
 expect terrain_unknown 1 "no terrain named 'hills' \(it declares: valley\)" -- "$voxc" terrain "$src/examples/valley.vox" hills --heightmap "$work/hills.png"
 expect terrain_extension 1 "must end in \.png" -- "$voxc" terrain "$src/examples/valley.vox" valley --heightmap "$work/valley.jpg" --height "$work/valley2.npy"
 expect_no_file terrain_extension_nothing_written "$work/valley2.npy"

@@ -113,8 +113,10 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
         program.curves.push_back(std::move(block));
     program.fields = checkFields(context, file, grammarNames);
     CheckedFeatures features = checkFeatures(context, file, grammarNames, program.world, lsystems);
+    std::vector<std::optional<Field>> stampFields(program.fields.size()); // the plain fields have none
+    for (std::optional<Field>& stampField : features.stampFields) stampFields.push_back(std::move(stampField));
     for (Field& feature : features.fields) program.fields.push_back(std::move(feature));
-    resolveStampFields(context, program.grammars, program.fields);
+    resolveStampFields(context, program.grammars, grammars, program.fields, stampFields);
     for (const CurvesBlock& block : program.curves) {
         context.curvesNames.push_back(block.name);
         context.curvesKinds.push_back(block.source);
@@ -170,6 +172,7 @@ CheckResult checkSource(const SourceFile& source, const CheckOptions& options) {
             context.seed = options.seed;
             context.erosionRunner = options.erosionRunner;
             context.region = options.region;
+            context.readRuleFile = options.readRuleFile;
             std::vector<CheckedLsystem> lsystems;
             Program program = check::checkProgram(context, file, source.path(), lsystems);
             if (!diagnostics.hasErrors()) {

@@ -352,7 +352,7 @@ SolveTable voxelise(const TerrainBlock& block, const terrain::TerrainResult& res
             }
     table.source = "terrain";
     table.terrainMaps = std::make_shared<const TerrainMaps>(
-        TerrainMaps{result.height.width, result.height.values, result.water.values, result.sediment.values});
+        TerrainMaps{result.height.width, result.height.values, result.water.values, result.sediment.values, result.difference.values});
     table.notes = fmt::format("levels {}..{} ({}^2 cells), {} erosion steps ({} cell-steps), water {:.4g}, sediment "
                               "{:.4g}, ground moved {:.4g} (sums over the finest level, in units of max_height)",
                               domain.minLevel, domain.maxLevel, result.height.width, result.erosionSteps,

@@ -7,8 +7,10 @@
 #include "voxc/program/Program.h"
 #include "voxc/syntax/Diagnostics.h"
 
+#include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace voxc::check {
@@ -28,6 +30,7 @@ struct Context {
     uint64_t pointSetListEntries = 0;
     std::optional<uint32_t> seed{}; // CheckOptions::seed
     std::optional<std::pair<glm::ivec3, glm::ivec3>> region{}; // CheckOptions::region
+    std::function<std::optional<std::string>(const std::string&)> readRuleFile{}; // CheckOptions::readRuleFile
 };
 
 } // namespace voxc::check

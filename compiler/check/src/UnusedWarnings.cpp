@@ -40,15 +40,22 @@ void warnUnused(Context& context, const ast::File& file, const Program& program,
         if (stage.kind == Stage::Kind::Grammar) grammarRuns[stage.index] = true;
         if (stage.kind == Stage::Kind::Field) fieldRuns[stage.index] = true;
     }
-    // A field a running grammar stamps runs too.
+    // A field a running grammar stamps runs too; by name, as a stamp of an lsystem_cave reads a
+    // copy of it.
     for (size_t g = 0; g < program.grammars.size(); ++g)
         for (const Rule& rule : program.grammars[g].rules)
             for (const Stamp& stamp : rule.stamps)
-                if (grammarRuns[g]) fieldRuns[stamp.field] = true;
+                for (size_t i = 0; i < program.fields.size(); ++i)
+                    if (grammarRuns[g] && program.fields[i].name == stamp.fieldName) fieldRuns[i] = true;
     const std::string why = hasPipelineBlock ? "the pipeline does not name it"
                                              : "there is no 'pipeline' block, so only the grammars run";
-    // program.fields holds the declared fields, then the features, as the pipeline indexes them.
-    for (size_t i = 0; i < program.fields.size(); ++i) {
+    // program.fields holds the declared fields, then the features, as the pipeline indexes them,
+    // then the stamps' copies of lsystem_caves (named like their feature, which speaks for them).
+    const size_t declared = file.fields.size() + std::count_if(file.features.begin(), file.features.end(),
+                                                               [](const ast::FeatureDecl& feature) {
+                                                                   return feature.body.kind != kSpeleothemsGenerator;
+                                                               });
+    for (size_t i = 0; i < std::min(declared, program.fields.size()); ++i) {
         if (fieldRuns[i]) continue;
         const bool isFeature = i >= file.fields.size();
         context.diagnostics.warning("W0206", program.fields[i].loc,

@@ -3,6 +3,7 @@
 #include "voxc/voxc.h"
 
 #include "voxc/check/Check.h"
+#include "voxc/check/LoadPackage.h"
 #include "voxc/core/Errors.h"
 #include "voxc/grid/Grid.h"
 #include "voxc/mesh/MarchingCubes.h"
@@ -114,6 +115,15 @@ voxc_status voxc_program_load(const char* path, const voxc_load_options* options
         voxc::stages::solveBlocks(program); // once: the package, the interpreter and every region read the tables
         voxc::KernelPackage package = voxc::compileProgram(program);
         *out = new voxc_program{std::move(program), std::move(package)};
+    });
+}
+
+voxc_status voxc_package_load(const char* directory, voxc_program** out) {
+    if (!directory || !out) return fail(VOXC_ERROR_ARGUMENT, "voxc_package_load: directory and out must not be null");
+    *out = nullptr;
+    return guarded([&] {
+        voxc::LoadedPackage loaded = voxc::loadPackage(directory);
+        *out = new voxc_program{std::move(loaded.program), std::move(loaded.package)};
     });
 }
 

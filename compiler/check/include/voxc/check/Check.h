@@ -12,6 +12,7 @@
 #include "voxc/syntax/Diagnostics.h"
 #include "voxc/syntax/SourceFile.h"
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -27,6 +28,9 @@ struct CheckedLsystem {
     lsystem::Definition definition;
     lsystem::ConnectParams connect;
     std::string rulesPath; // the imported rule file as opened (relative to the working directory), or empty
+    // With rulesPath: the `rules` string as written (relative to the .vox's directory) and the
+    // file's text, which a compiled package keeps a copy of.
+    std::string rulesName, rulesText;
     // The whole block, from its `lsystem` word to its closing brace, so tools can rewrite it.
     SourceLoc blockStart, blockEnd;
 };
@@ -68,6 +72,10 @@ struct CheckOptions {
     // pipeline's halo (voxc/stages/Region.h), clipped to the world (E0014 otherwise), and the work
     // estimate counts that grid.
     std::optional<std::pair<glm::ivec3, glm::ivec3>> region{};
+    // Where the rule files lsystem blocks import come from (`rules = "x.rules"`, given the path
+    // joined to the .vox's directory as the checker would open it): the text, or nothing for a
+    // file it does not have (E0100). Null: the disk. A loaded package serves its own copies.
+    std::function<std::optional<std::string>(const std::string& path)> readRuleFile{};
 };
 
 CheckResult checkSource(const SourceFile& source, const Limits& limits = {});

@@ -34,6 +34,7 @@ struct SolveSummary {
 struct TerrainMaps {
     int32_t side = 0;
     std::vector<float> height, water, sediment;
+    std::vector<float> difference; // S_h: the eroded height minus the uneroded one
 };
 
 struct SolveTable {
