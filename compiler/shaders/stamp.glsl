@@ -2,11 +2,13 @@
 // <<HEADER>>
 
 // The stamp pass of one sweep (docs/language.md, "Stamps"), run after each phase's sweep kernel,
-// which recorded the rule each anchor fired (firedRule). One invocation per voxel that the
-// phase's windows, grown by the sweep's reach, cover: it folds the stamps of every firing whose
-// grown window holds it, in anchor order (z, then y, then x), each as voxc::combineField, as the
-// interpreter applies them one firing after another. No two invocations share a voxel, so the
-// result does not depend on the dispatch or the chunk size.
+// which recorded the rule each anchor fired (firedRule) and set the firing bits of the anchors
+// that fired a rule with stamps. One invocation per voxel that the phase's windows, grown by the
+// sweep's reach, cover: it folds the stamps of every firing whose grown window holds it, in anchor
+// order (z, then y, then x), each as voxc::combineField, as the interpreter applies them one
+// firing after another. It reads a word of bits per 32 anchors along x and visits the set ones
+// alone, so a voxel pays for the firings near it, not for every anchor that could reach it. No two
+// invocations share a voxel, so the result does not depend on the dispatch or the chunk size.
 // Push block: the voxels are anchorStart.xyz + id, id < anchorCount.xyz; anchorStep.xyz is the
 // phase's first anchor.
 
@@ -34,14 +36,24 @@ void main() {
     ivec3 first = max(-floorDivide(phaseStart - (local - WINDOW - REACH + 1), PHASE_STEP), ivec3(0));
     ivec3 last = floorDivide(min(local + REACH, LAST_ANCHOR) - phaseStart, PHASE_STEP);
     int address = voxelAddress(local);
+    // The firing bits of anchor i (relative to phaseStart) are at phase lattice base + i.
+    ivec3 base = phaseLattice(phaseStart);
+    int fromBit = base.x + first.x, toBit = base.x + last.x;
     for (int k = first.z; k <= last.z; ++k) {
         for (int j = first.y; j <= last.y; ++j) {
-            for (int i = first.x; i <= last.x; ++i) {
-                ivec3 anchor = phaseStart + ivec3(i, j, k) * PHASE_STEP;
-                uint fired = firedRule.rule[firedIndex(anchor)];
-                if (fired == 0u) continue;
-                ivec3 fromAnchor = local - anchor;
-                // <<STAMPS>>
+            int row = firingRow(base + ivec3(0, j, k));
+            for (int w = fromBit >> 5; w <= toBit >> 5; ++w) {
+                // Bits fromBit .. toBit of the row that lie in word w.
+                uint bits = firedRule.rule[row + w] & (0xffffffffu << uint(max(fromBit - 32 * w, 0))) &
+                            (0xffffffffu >> uint(31 - min(toBit - 32 * w, 31)));
+                while (bits != 0u) {
+                    int i = 32 * w + findLSB(bits) - base.x;
+                    bits &= bits - 1u;
+                    ivec3 anchor = phaseStart + ivec3(i, j, k) * PHASE_STEP;
+                    uint fired = firedRule.rule[firedIndex(anchor)];
+                    ivec3 fromAnchor = local - anchor;
+                    // <<STAMPS>>
+                }
             }
         }
     }

@@ -54,9 +54,24 @@ bool sweepHasStamps(const ir::IrSweep& sweep) {
     return std::any_of(sweep.rules.begin(), sweep.rules.end(), [](const ir::IrRule& r) { return !r.stamps.empty(); });
 }
 
-uint64_t sweepFiredWords(const ir::IrSweep& sweep) {
+namespace {
+
+// Anchors of one phase along each axis, at most: ceil(anchorCount / phaseCount).
+glm::ivec3 phaseAnchors(const ir::IrSweep& sweep) { return (sweep.anchorCount + sweep.phaseCount - 1) / sweep.phaseCount; }
+
+uint64_t anchorWords(const ir::IrSweep& sweep) {
     return uint64_t(sweep.anchorCount.x) * uint64_t(sweep.anchorCount.y) * uint64_t(sweep.anchorCount.z);
 }
+
+// One bit per anchor of a phase, rows along x of whole words.
+uint64_t firingBitWords(const ir::IrSweep& sweep) {
+    const glm::ivec3 anchors = phaseAnchors(sweep);
+    return uint64_t((anchors.x + 31) / 32) * uint64_t(anchors.y) * uint64_t(anchors.z);
+}
+
+} // namespace
+
+uint64_t sweepFiredWords(const ir::IrSweep& sweep) { return anchorWords(sweep) + firingBitWords(sweep); }
 
 glm::ivec3 sweepStampReach(const ir::IrSweep& sweep) {
     glm::ivec3 reach(0);
@@ -66,12 +81,34 @@ glm::ivec3 sweepStampReach(const ir::IrSweep& sweep) {
 }
 
 std::string firedRecordGlsl(const ir::IrGrammar& grammar, const ir::IrSweep& sweep) {
+    const glm::ivec3 anchors = phaseAnchors(sweep);
     return fmt::format(
         "// The rule each anchor of the sweep fired (1 + its index among the live rules, 0: none), at the\n"
         "// anchor's number n = (anchor - bounds min) / stride, x fastest (kBindingScratch).\n"
         "layout(std430, set = 0, binding = 11) buffer FiredRule {{\n    uint rule[];\n}} firedRule;\n\n"
-        "int firedIndex(ivec3 anchor) {{\n    ivec3 n = (anchor - {}) / {};\n    return n.x + {} * (n.y + {} * n.z);\n}}\n",
-        ivec3Glsl(grammar.boundsMin), ivec3Glsl(grammar.stride), sweep.anchorCount.x, sweep.anchorCount.y);
+        "ivec3 anchorNumber(ivec3 anchor) {{ return (anchor - {}) / {}; }}\n\n"
+        "int firedIndex(ivec3 anchor) {{\n    ivec3 n = anchorNumber(anchor);\n    return n.x + {} * (n.y + {} * n.z);\n}}\n\n"
+        "// After the rules, the current phase's firing bits: bit m.x of row (m.y, m.z) is set where the\n"
+        "// anchor m = n / phaseCount of the phase fired a rule with stamps, so the stamp pass visits\n"
+        "// those anchors alone, in anchor order. The sweep kernel sets or clears every bit of its phase.\n"
+        "const ivec3 PHASE_COUNT = {};\nconst int FIRING_ROW_WORDS = {};\n\n"
+        "ivec3 phaseLattice(ivec3 anchor) {{ return anchorNumber(anchor) / PHASE_COUNT; }}\n\n"
+        "int firingRow(ivec3 m) {{ return {} + FIRING_ROW_WORDS * (m.y + {} * m.z); }}\n",
+        ivec3Glsl(grammar.boundsMin), ivec3Glsl(grammar.stride), sweep.anchorCount.x, sweep.anchorCount.y,
+        ivec3Glsl(sweep.phaseCount), (anchors.x + 31) / 32, anchorWords(sweep), anchors.y);
+}
+
+std::string firingBitGlsl(const ir::IrSweep& sweep) {
+    std::vector<std::string> stamping;
+    for (uint32_t r = 0; r < sweep.rules.size(); ++r)
+        if (!sweep.rules[r].stamps.empty()) stamping.push_back(fmt::format("chosen == {}", r));
+    return fmt::format("{{ // this anchor's firing bit (stamp pass)\n"
+                       "    ivec3 m = phaseLattice(anchor);\n"
+                       "    int word = firingRow(m) + (m.x >> 5);\n"
+                       "    uint bit = 1u << uint(m.x & 31);\n"
+                       "    if ({}) atomicOr(firedRule.rule[word], bit);\n"
+                       "    else atomicAnd(firedRule.rule[word], ~bit);\n}}\n",
+                       fmt::join(stamping, " || "));
 }
 
 DispatchShape stampDispatchShape() { return DispatchShape{{8, 8, 1}, {1, 1, 1}}; }

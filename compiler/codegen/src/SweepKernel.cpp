@@ -360,7 +360,7 @@ std::string sweepKernelSource(const IrGrammar& grammar, const IrSweep& sweep, st
     std::string apply = applyRule(grammar, sweep, sourceName);
     if (stamps) {
         rules += "\n" + firedRecordGlsl(grammar, sweep);
-        apply += "firedRule.rule[firedIndex(anchor)] = uint(chosen + 1);\n";
+        apply += "firedRule.rule[firedIndex(anchor)] = uint(chosen + 1);\n" + firingBitGlsl(sweep);
     }
     return instantiateTemplate("sweep.glsl", {{"HEADER", headerComment},
                                               {"DISPATCH_SHAPE", shape},

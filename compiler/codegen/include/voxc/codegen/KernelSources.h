@@ -90,8 +90,11 @@ DispatchShape stampDispatchShape();
 std::string stampKernelSource(const ir::IrModule& module, const ir::IrGrammar& grammar, const ir::IrSweep& sweep,
                               std::string_view kernelName, std::string_view sourceName);
 bool sweepHasStamps(const ir::IrSweep& sweep);
-// The FiredRule buffer (kBindingScratch) and firedIndex(anchor), shared by the sweep and stamp kernels.
+// The FiredRule buffer (kBindingScratch): the rule each anchor fired (firedIndex(anchor)) and the
+// phase's firing bits (firingRow), shared by the sweep and stamp kernels.
 std::string firedRecordGlsl(const ir::IrGrammar& grammar, const ir::IrSweep& sweep);
+// The sweep kernel's write of its anchor's firing bit, after `chosen` is known.
+std::string firingBitGlsl(const ir::IrSweep& sweep);
 uint64_t sweepFiredWords(const ir::IrSweep& sweep);
 // The largest reach of the sweep's stamps per axis: how far the stamp pass reaches past the windows.
 glm::ivec3 sweepStampReach(const ir::IrSweep& sweep);
