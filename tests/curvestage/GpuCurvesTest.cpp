@@ -4,6 +4,7 @@
 // and small; then a whole curves solve with every pass on the device gives the host's channels.
 // The validation layer stays quiet.
 #include "../curves/Scenes.h"
+#include "Lavapipe.h"
 #include "voxc/generators/curves/Scene.h"
 #include "voxc/vulkan/Context.h"
 #include "voxc/vulkan/GpuCurves.h"
@@ -17,15 +18,7 @@
 namespace voxc {
 namespace {
 
-VulkanContext& validated() {
-    static VulkanContext context(ContextOptions{.device = "lavapipe", .validation = true});
-    return context;
-}
-
-void expectNoValidationMessages() {
-    for (const ValidationMessage& m : validated().validationMessages()) ADD_FAILURE() << m.text;
-    validated().clearValidationMessages();
-}
+using test::expectNoValidationMessages;
 
 size_t bitDifferences(const std::vector<float>& a, const std::vector<float>& b) {
     if (a.size() != b.size()) return std::max(a.size(), b.size());
@@ -70,7 +63,7 @@ TEST(vulkan_GpuCurves, PeronaMalikSweepsMatchTheHost) {
             SCOPED_TRACE(fmt::format("{} sweeps", sweeps));
             curves::NormalField host = filled, device = filled;
             curves::peronaMalikSweeps(cs, host, 0.01f, sweeps);
-            vulkanPeronaMalikSweeps(validated(), cs, device, 0.01f, sweeps);
+            vulkanPeronaMalikSweeps(test::validatedLavapipe(), cs, device, 0.01f, sweeps);
             EXPECT_EQ(bitDifferences(host.x.values, device.x.values) + bitDifferences(host.y.values, device.y.values) +
                           bitDifferences(host.z.values, device.z.values),
                       0u);
@@ -91,7 +84,7 @@ TEST(vulkan_GpuCurves, SmoothingMatchesTheHost) {
         for (int32_t passes : {0, 1, 3}) {
             SCOPED_TRACE(fmt::format("{} passes", passes));
             EXPECT_EQ(bitDifferences(curves::smoothBinomial(raw, passes).values,
-                                     vulkanSmoothBinomial(validated(), raw, passes).values),
+                                     vulkanSmoothBinomial(test::validatedLavapipe(), raw, passes).values),
                       0u);
         }
     }
@@ -103,7 +96,7 @@ TEST(vulkan_GpuCurves, FrontsMatchTheHost) {
         SCOPED_TRACE(describe(b));
         const curves::Constraints cs = cliffConstraints(b);
         const curves::MaterialField hostMaterial = curves::propagateMaterial(cs);
-        const curves::MaterialField deviceMaterial = vulkanPropagateMaterial(validated(), cs);
+        const curves::MaterialField deviceMaterial = vulkanPropagateMaterial(test::validatedLavapipe(), cs);
         EXPECT_EQ(hostMaterial.material, deviceMaterial.material);
         EXPECT_EQ(hostMaterial.assigned, deviceMaterial.assigned);
         EXPECT_EQ(bitDifferences(hostMaterial.confidence.values, deviceMaterial.confidence.values), 0u);
@@ -114,7 +107,7 @@ TEST(vulkan_GpuCurves, FrontsMatchTheHost) {
         for (curves::PropagateRule rule : {curves::PropagateRule::SmallestMagnitude, curves::PropagateRule::SignedMin}) {
             SCOPED_TRACE(rule == curves::PropagateRule::SignedMin ? "signed min" : "smallest magnitude");
             const curves::SurfaceField host = curves::propagateSurface(cs, n[0], n[1], n[2], rule);
-            const curves::SurfaceField device = vulkanPropagateSurface(validated(), cs, n[0], n[1], n[2], rule);
+            const curves::SurfaceField device = vulkanPropagateSurface(test::validatedLavapipe(), cs, n[0], n[1], n[2], rule);
             EXPECT_EQ(bitDifferences(host.distance.values, device.distance.values), 0u);
             EXPECT_EQ(host.layer, device.layer);
             EXPECT_EQ(host.layers, device.layers);
@@ -129,10 +122,10 @@ TEST(vulkan_GpuCurves, EmptyFrontLeavesTheBoxUnreached) {
     const curves::Constraints cs = cliffConstraints(far);
     const curves::Field3 zero(cs.box);
     const curves::SurfaceField device =
-        vulkanPropagateSurface(validated(), cs, zero, zero, zero, curves::PropagateRule::SmallestMagnitude);
+        vulkanPropagateSurface(test::validatedLavapipe(), cs, zero, zero, zero, curves::PropagateRule::SmallestMagnitude);
     for (float v : device.distance.values) EXPECT_EQ(v, INFINITY);
     EXPECT_EQ(device.layers, 0);
-    EXPECT_EQ(vulkanPropagateMaterial(validated(), cs).layers, 0);
+    EXPECT_EQ(vulkanPropagateMaterial(test::validatedLavapipe(), cs).layers, 0);
     expectNoValidationMessages();
 }
 
@@ -150,7 +143,7 @@ TEST(vulkan_GpuCurves, WholeSolveMatchesTheHost) {
             scene.noiseSeed = 7;
             const SolveTable host = curves::solveScene(scene, curves::Limits{}, {}, true);
             const SolveTable device =
-                curves::solveScene(scene, curves::Limits{}, vulkanCurvesSolvers([] { return &validated(); }), true);
+                curves::solveScene(scene, curves::Limits{}, vulkanCurvesSolvers([] { return &test::validatedLavapipe(); }), true);
             ASSERT_EQ(host.channels.size(), device.channels.size());
             for (size_t c = 0; c < host.channels.size(); ++c) {
                 SCOPED_TRACE(host.channels[c].first);

@@ -16,6 +16,18 @@ inline VulkanContext& lavapipe() {
     return context;
 }
 
+// lavapipe with the validation layer, for the tests that ask it to stay quiet.
+inline VulkanContext& validatedLavapipe() {
+    static VulkanContext context(ContextOptions{.device = "lavapipe", .validation = true});
+    return context;
+}
+
+// Every message the validation layer gave `context` so far is a failure; the list is cleared.
+inline void expectNoValidationMessages(VulkanContext& context = validatedLavapipe()) {
+    for (const ValidationMessage& m : context.validationMessages()) ADD_FAILURE() << m.text;
+    context.clearValidationMessages();
+}
+
 // The grid a run of `program` leaves on lavapipe.
 inline DenseGrid runOnLavapipe(const Program& program, const ExecutorOptions& options = {}) {
     VulkanExecutor executor(lavapipe(), compileProgram(program, {}), options);

@@ -1,7 +1,7 @@
 #include "voxc/vulkan/GpuCurves.h"
 
+#include "SolvePass.h"
 #include "voxc/builtins/Shapes.h"
-#include "voxc/codegen/Spirv.h"
 #include "voxc/core/Errors.h"
 #include "voxc/shaders/ShaderSources.h"
 #include "voxc/vulkan/GpuMultigrid.h"
@@ -52,13 +52,7 @@ const Kernel& passKernel(const char* file) {
     const std::lock_guard lock(mutex);
     const auto found = compiled.find(file);
     if (found != compiled.end()) return found->second;
-    Kernel k;
-    k.name = file;
-    k.origin = file;
-    k.glsl = passSource(file);
-    k.spirv = codegen::compileComputeShader(k.name, k.glsl);
-    k.localSize[0] = kLocalSize, k.localSize[1] = 1, k.localSize[2] = 1;
-    return compiled.emplace(file, std::move(k)).first->second;
+    return compiled.emplace(file, solvePassKernel(file, file, passSource(file), kLocalSize)).first->second;
 }
 
 uint32_t word(float v) { return std::bit_cast<uint32_t>(v); }

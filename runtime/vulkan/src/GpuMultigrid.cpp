@@ -1,6 +1,6 @@
 #include "voxc/vulkan/GpuMultigrid.h"
 
-#include "voxc/codegen/Spirv.h"
+#include "SolvePass.h"
 #include "voxc/core/Errors.h"
 #include "voxc/shaders/ShaderSources.h"
 #include "voxc/vulkan/SolveRunner.h"
@@ -38,15 +38,9 @@ const std::vector<Kernel>& passKernels(int32_t components) {
     const auto found = compiled.find(components);
     if (found != compiled.end()) return found->second;
     std::vector<Kernel> kernels;
-    for (const char* file : kPassFiles) {
-        Kernel k;
-        k.name = fmt::format("{} ({} components)", file, components);
-        k.origin = file;
-        k.glsl = passSource(file, components);
-        k.spirv = codegen::compileComputeShader(k.name, k.glsl);
-        k.localSize[0] = kLocalSize, k.localSize[1] = 1, k.localSize[2] = 1;
-        kernels.push_back(std::move(k));
-    }
+    for (const char* file : kPassFiles)
+        kernels.push_back(solvePassKernel(fmt::format("{} ({} components)", file, components), file,
+                                          passSource(file, components), kLocalSize));
     return compiled.emplace(components, std::move(kernels)).first->second;
 }
 
