@@ -1,8 +1,9 @@
 // curves: examples/curves_cliff.vox scaled to 128x64x128 (S = 1) and 256x128x256 (S = 2); Becher
 // et al. Table 1 reports 131.69 ms and 1,480.82 ms for their 128^3 and 256x128x256 scenes on a GTX
 // 1080, solve and meshing together. `host_solve` checks the file and solves it on the host (the
-// interpreter's reference), `vulkan_solve` with its multigrid on the device and the rest on the
-// host (stages::solveBlocks), each with the parts' times as counters (SolveTable::phaseMs); the
+// interpreter's reference), `vulkan_solve` with every global pass on the device (vulkanCurvesSolvers:
+// the multigrid, fronts, smoothing and displacement; spline to voxelisation and the density on the
+// host; stages::solveBlocks), each with the parts' times as counters (SolveTable::phaseMs); the
 // runs (`vulkan`, `interp`) combine the solved table.
 #include "CurvesCases.h"
 
@@ -12,7 +13,7 @@
 #include "voxc/stages/Pipeline.h"
 #include "voxc/stages/Solve.h"
 #include "voxc/vulkan/Executor.h"
-#include "voxc/vulkan/GpuMultigrid.h"
+#include "voxc/vulkan/GpuCurves.h"
 
 #include <fmt/format.h>
 
@@ -59,15 +60,15 @@ curves cliffs {
 pipeline { start; set cliffs; }
 )";
 
-// The scene checked and solved with `solver`.
-Program curvesProgram(int32_t scale, const curves::LinearSolver& solver) {
+// The scene checked and solved with `solvers`.
+Program curvesProgram(int32_t scale, const curves::Solvers& solvers) {
     CheckOptions options;
     options.constOverrides["S"] = scale;
     CheckResult result = checkSource(SourceFile("curves.vox", kCurvesProgram), options);
     if (result.hasErrors() || !result.program)
         throw InternalError("the curves bench program does not check:\n" + result.rendered());
     Program program = std::move(*result.program);
-    stages::solveBlocks(program, {solver});
+    stages::solveBlocks(program, {solvers});
     return program;
 }
 
@@ -77,14 +78,14 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 
 // A check and solve of the scene per iteration, the solve's parts as counters (ms of the last iteration).
 void registerSolve(JsonReporter& reporter, int32_t scale, const std::string& backend, const std::string& device,
-                   std::function<curves::LinearSolver()> solver) {
+                   std::function<curves::Solvers()> solvers) {
     const int n = 128 * scale;
     const std::string name = fmt::format("curves/{}_solve/{}", backend, n);
-    auto* b = benchmark::RegisterBenchmark(name.c_str(), [scale, solver](benchmark::State& state) {
-        const curves::LinearSolver linear = solver();
+    auto* b = benchmark::RegisterBenchmark(name.c_str(), [scale, solvers](benchmark::State& state) {
+        const curves::Solvers passes = solvers();
         for (auto _ : state) {
             const auto start = std::chrono::steady_clock::now();
-            const Program program = curvesProgram(scale, linear);
+            const Program program = curvesProgram(scale, passes);
             state.SetIterationTime(millisecondsSince(start) / 1000.0);
             for (const auto& [part, ms] : program.curves.front().solved().phaseMs) state.counters[part + "_ms"] = ms;
         }
@@ -99,14 +100,14 @@ void registerSolve(JsonReporter& reporter, int32_t scale, const std::string& bac
 void registerCurves(JsonReporter& reporter, VulkanContext* context, bool interp, bool host) {
     for (int32_t scale : {1, 2}) {
         const int n = 128 * scale;
-        if (host) registerSolve(reporter, scale, "host", "cpu (2 threads)", [] { return curves::LinearSolver{}; });
+        if (host) registerSolve(reporter, scale, "host", "cpu (2 threads)", [] { return curves::Solvers{}; });
         if (context)
             registerSolve(reporter, scale, "vulkan", context->device().name,
-                          [context] { return vulkanLinearSolver(*context); });
+                          [context] { return vulkanCurvesSolvers([context] { return context; }); });
         // Solved on the host, which is faster on lavapipe; the table is the same either way.
         auto program = std::make_shared<std::unique_ptr<const Program>>();
         const auto solved = [program, scale] {
-            if (!*program) *program = std::make_unique<const Program>(curvesProgram(scale, curves::LinearSolver{}));
+            if (!*program) *program = std::make_unique<const Program>(curvesProgram(scale, curves::Solvers{}));
             return (*program).get();
         };
         if (context) {
