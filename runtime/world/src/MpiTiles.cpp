@@ -2,11 +2,13 @@
 
 #include "voxc/core/Errors.h"
 
+#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <mpi.h>
 #include <string>
+#include <thread>
 
 namespace voxc::world {
 
@@ -23,6 +25,29 @@ struct Finished {
     char mesh[kDigestSize] = {};
 };
 
+// Open MPI's blocking receive polls without sleeping, so a rank waiting in it takes a whole core
+// from the ranks computing tiles beside it (rank 0 waits seconds per tile). Tiles take seconds,
+// so a millisecond of latency costs nothing.
+void sleepUntilMessage(int source) {
+    for (int arrived = 0;;) {
+        MPI_Iprobe(source, kTag, MPI_COMM_WORLD, &arrived, MPI_STATUS_IGNORE);
+        if (arrived) return;
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+}
+
+// Every rank's arrival, waited for the same way, so a worker out of tiles leaves its core to the
+// ones still computing (MPI_Finalize's own wait polls too).
+void sleepingBarrier() {
+    MPI_Request request;
+    MPI_Ibarrier(MPI_COMM_WORLD, &request);
+    for (int done = 0;;) {
+        MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+        if (done) return;
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+}
+
 // Rank 0: answers every worker's message with the next pending tile, or -1 when none is left.
 void coordinate(int ranks, const std::vector<int64_t>& pending, const TileDone& done) {
     size_t next = 0;
@@ -30,6 +55,7 @@ void coordinate(int ranks, const std::vector<int64_t>& pending, const TileDone& 
     while (working > 0) {
         Finished message;
         MPI_Status status;
+        sleepUntilMessage(MPI_ANY_SOURCE);
         MPI_Recv(&message, int(sizeof message), MPI_BYTE, MPI_ANY_SOURCE, kTag, MPI_COMM_WORLD, &status);
         if (message.tile >= 0)
             done(message.tile, {std::string(message.voxels, kDigestSize),
@@ -84,6 +110,7 @@ WorldSummary writeWorldOnRanks(const Program& program, const WorldOptions& optio
         std::cerr << "voxc: internal error (rank " << rank << "): " << error.what() << "\n";
         MPI_Abort(MPI_COMM_WORLD, 2);
     }
+    sleepingBarrier();
     MPI_Finalize();
     return summary;
 }
