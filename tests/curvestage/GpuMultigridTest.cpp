@@ -29,15 +29,8 @@ namespace voxc {
 namespace {
 
 // lavapipe with the validation layer: every test here asks it to stay quiet.
-VulkanContext& validated() {
-    static VulkanContext context(ContextOptions{.device = "lavapipe", .validation = true});
-    return context;
-}
-
-void expectNoValidationMessages() {
-    for (const ValidationMessage& m : validated().validationMessages()) ADD_FAILURE() << m.text;
-    validated().clearValidationMessages();
-}
+using test::expectNoValidationMessages;
+VulkanContext& validated() { return test::validatedLavapipe(); }
 
 size_t bitDifferences(const curves::Field3& a, const curves::Field3& b) {
     size_t n = 0;
