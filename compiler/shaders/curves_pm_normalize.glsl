@@ -5,22 +5,18 @@
 layout(local_size_x = 64) in;
 
 <<CURVES_SOLVE_COMMON>>
-
-layout(std430, set = 0, binding = 0) readonly buffer Flags { uint flags[]; }; // bit 0 set, bit 1 fixed
-layout(std430, set = 0, binding = 1) buffer Normals { float normals[]; };      // two halves, xyz per cell
-layout(std430, set = 0, binding = 2) buffer Units { float units[]; };          // xyz per cell
+<<CURVES_PM_COMMON>>
 
 void main() {
     const ivec3 p = dispatchedCell();
     if (p.x < 0) return;
     const uint i = cellIndex(p);
-    const uint n = (uint(push.size.w) * cellCount() + i) * 3u;
-    const float x = normals[n], y = normals[n + 1u], z = normals[n + 2u];
-    precise float magnitude = sqrt((x * x + y * y) + z * z);
+    const vec3 n = loadNormal(push.size.w, i);
+    precise float magnitude = sqrt((n.x * n.x + n.y * n.y) + n.z * n.z);
     if (!(magnitude >= 1e-6)) {
         units[i * 3u] = 0.0, units[i * 3u + 1u] = 0.0, units[i * 3u + 2u] = 0.0;
         return;
     }
-    precise float ux = x / magnitude, uy = y / magnitude, uz = z / magnitude;
+    precise float ux = n.x / magnitude, uy = n.y / magnitude, uz = n.z / magnitude;
     units[i * 3u] = ux, units[i * 3u + 1u] = uy, units[i * 3u + 2u] = uz;
 }

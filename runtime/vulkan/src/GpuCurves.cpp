@@ -38,6 +38,7 @@ std::string passSource(const char* file) {
     };
     expand("<<CURVES_SOLVE_COMMON>>", std::string(shaderSource("curves_solve_common.glsl")));
     expand("<<CURVES_FRONT_COMMON>>", std::string(shaderSource("curves_front_common.glsl")));
+    expand("<<CURVES_PM_COMMON>>", std::string(shaderSource("curves_pm_common.glsl")));
     std::string noise;
     for (const char* library : {"random.glsl", "noise_common.glsl", "noise_perlin3.glsl", "noise_fractal.glsl"})
         noise += std::string(shaderSource(library)) + "\n";
@@ -135,28 +136,31 @@ void vulkanPeronaMalikSweeps(VulkanContext& context, const curves::Constraints& 
     const uint64_t cells = b.cellCount();
     SolveProgram p;
     p.kernels = {passKernel("curves_pm_normalize.glsl"), passKernel("curves_pm_sweep.glsl")};
-    p.bufferWords = {cells, cells * 6, cells * 3};
+    // Flags, the even half of the normals, the unit normals, the odd half.
+    p.bufferWords = {cells, cells * 3, cells * 3, cells * 3};
     for (uint32_t s = 0; s < sweeps; ++s) {
         const int32_t source = int32_t(s % 2);
         p.prologue.push_back(cellStep(0, b, source, 0));
         p.prologue.push_back(cellStep(1, b, source, 0, k));
     }
-    std::vector<std::vector<uint32_t>> initial(2);
+    std::vector<std::vector<uint32_t>> initial(4);
     initial[0].resize(cells);
-    initial[1].resize(cells * 6);
+    initial[1].resize(cells * 3);
     for (size_t i = 0; i < cells; ++i) {
         initial[0][i] = (n.set[i] ? 1u : 0u) | ((cs.flags[i] & curves::kInNormals) ? 2u : 0u);
-        const float v[3] = {n.x.values[i], n.y.values[i], n.z.values[i]};
-        for (uint64_t half = 0; half < 2; ++half)
-            for (size_t c = 0; c < 3; ++c) initial[1][(half * cells + i) * 3 + c] = word(v[c]);
+        initial[1][i * 3] = word(n.x.values[i]), initial[1][i * 3 + 1] = word(n.y.values[i]);
+        initial[1][i * 3 + 2] = word(n.z.values[i]);
     }
-    const SolveRun run = runOnce(context, p, initial, {0, cells * 6});
-    const uint64_t result = (sweeps % 2) * cells * 3;
-    const std::vector<uint32_t>& out = run.buffers.at(1);
+    initial[3] = initial[1]; // cells a sweep skips never change: both halves hold them
+    const uint32_t result = sweeps % 2 == 0 ? 1 : 3;
+    std::vector<uint64_t> read(4, 0);
+    read[result] = cells * 3;
+    const SolveRun run = runOnce(context, p, initial, read);
+    const std::vector<uint32_t>& out = run.buffers.at(result);
     for (size_t i = 0; i < cells; ++i) {
-        n.x.values[i] = value(out[result + i * 3]);
-        n.y.values[i] = value(out[result + i * 3 + 1]);
-        n.z.values[i] = value(out[result + i * 3 + 2]);
+        n.x.values[i] = value(out[i * 3]);
+        n.y.values[i] = value(out[i * 3 + 1]);
+        n.z.values[i] = value(out[i * 3 + 2]);
     }
 }
 
