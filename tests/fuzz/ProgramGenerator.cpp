@@ -88,7 +88,10 @@ private:
     Random random_;
     std::string out_;
     std::array<int, 3> size_{};
+    std::string stampBlock();
+
     std::vector<std::string> materials_, fields_, grammars_, lets_;
+    std::vector<std::string> lsystemCaves_; // the lsystem_cave features among fields_
     // User functions so far (each takes two floats); inside a body, its parameters replace the
     // inputs, which function bodies may not read.
     std::vector<std::string> functions_;
@@ -225,6 +228,20 @@ void Generator::features() {
     for (int i = 0; i < count; ++i) {
         const std::string name = fmt::format("feature{}", i);
         std::string keys;
+        if (random_.chance(0.2)) {
+            // A tiny network: single moves from the start, each within one voxel of it, and a brush
+            // reaching at most 0.55 + 1 voxels beyond, so a stamp of reach 3 holds it at any whole
+            // offset in [-1, 1] (docs/language.md, "Stamps").
+            static constexpr const char* kMoves[] = {"[F]", "[RF]", "[LF]", "[UF]", "[DF]", "[RRF]"};
+            std::string axiom;
+            for (int m = random_.range(1, 3); m > 0; --m) axiom += kMoves[random_.below(6)];
+            out_ += fmt::format("lsystem net{} {{ axiom = \"{}\"; expansions = 0; step = 1; angle = {}; start = {}; }}\n", i,
+                                axiom, random_.range(0, 180), point());
+            keys = fmt::format("lsystem_cave {{ lsystem = net{}; radius = 0.5; clearance = 0.5; curl_amplitude = {}; "
+                               "min_scale = 2;",
+                               i, number(random_.real(0.0, 0.45)));
+            lsystemCaves_.push_back(name);
+        } else
         switch (random_.below(3)) {
         case 0:
             keys = fmt::format("arch {{ start = {}; end = [{}, {}, {}]; radius = {}; iterations = {};", point(),
@@ -241,7 +258,8 @@ void Generator::features() {
                                size_[0], size_[1], size_[2], number(random_.real(0.0, 1.0)), number(random_.real(0.0, 1.0)));
             break;
         }
-        if (random_.chance(0.3)) keys += fmt::format(" rotate = [0, {}, 0];", random_.range(-90, 90));
+        const bool lsystemCave = !lsystemCaves_.empty() && lsystemCaves_.back() == name; // takes no `rotate`
+        if (!lsystemCave && random_.chance(0.3)) keys += fmt::format(" rotate = [0, {}, 0];", random_.range(-90, 90));
         if (!materials_.empty() && random_.chance(0.5)) keys += fmt::format(" material = {};", materialName());
         fields_.push_back(name);
         out_ += fmt::format("feature {} = {} }}\n", name, keys);
@@ -330,10 +348,35 @@ void Generator::grammars() {
                                     fraction ? "solid_fraction" : kAggregates[random_.range(0, 2)],
                                     number(fraction ? std::max(0.0, low) : low), number(fraction ? 1.0 : low + random_.real(0.0, 1.2)));
             }
+            if (!fields_.empty() && random_.chance(0.3)) out_ += stampBlock();
             out_ += "  }\n";
         }
         out_ += "}\n";
     }
+}
+
+// A stamp of a field or feature (docs/language.md, "Stamps"): reach at most 3 per axis, so the
+// grown windows of one phase cover a voxel at most 7^3 times, under Limits::maxStampOverlap.
+std::string Generator::stampBlock() {
+    static constexpr std::array<std::string_view, 4> kModes = {"union", "subtract", "set", "intersect"};
+    const std::string& field = fields_[random_.below(uint32_t(fields_.size()))];
+    const bool lsystemCave = std::find(lsystemCaves_.begin(), lsystemCaves_.end(), field) != lsystemCaves_.end();
+    std::string keys;
+    if (random_.chance(0.8)) keys += fmt::format(" mode = {};", kModes[random_.below(kModes.size())]);
+    if (lsystemCave)
+        keys += " reach = 3;";
+    else if (random_.chance(0.5))
+        keys += fmt::format(" reach = {};", random_.range(0, 3));
+    else
+        keys += fmt::format(" reach = [{}, {}, {}];", random_.range(0, 3), random_.range(0, 3), random_.range(0, 3));
+    if (random_.chance(0.5)) {
+        const auto offset = [&] {
+            return lsystemCave || random_.chance(0.5) ? std::to_string(random_.range(-1, 1)) : number(random_.real(-2.0, 2.0));
+        };
+        keys += fmt::format(" offset = [{}, {}, {}];", offset(), offset(), offset());
+    }
+    if (!materials_.empty() && random_.chance(0.4)) keys += fmt::format(" material = {};", materialName());
+    return fmt::format("    stamp {} {{{} }}\n", field, keys);
 }
 
 // Every field, feature and grammar runs at least once, in random order, plus up to two repeats.

@@ -1,7 +1,8 @@
 #pragma once
 // Random valid .vox programs for the differential fuzzer (DiffFuzz.cpp): a small world, start
 // shapes and materials, user functions, typed field expressions over the builtin registry, Dey's
-// feature generators, small grammars and a pipeline that uses them. Valid by construction as far as the registries describe the language
+// feature generators and tiny lsystem_cave networks, small grammars whose rules may stamp them,
+// and a pipeline that uses them. Valid by construction as far as the registries describe the language
 // (the checker still has the last word: a program it rejects is counted, not compared).
 #include <cstdint>
 #include <string>

@@ -15,7 +15,8 @@ TEST(ProgramGenerator, SameSeedSameProgram) {
 }
 
 TEST(ProgramGenerator, EveryProgramChecks) {
-    int withGrammar = 0, withField = 0, withMaterial = 0, withVariants = 0, withAggregates = 0;
+    int withGrammar = 0, withField = 0, withMaterial = 0, withVariants = 0, withAggregates = 0, withStamps = 0,
+        withLsystemStamps = 0;
     for (uint64_t seed = 1; seed <= 300; ++seed) {
         const std::string text = generateProgram(seed);
         const CheckResult result = checkSource(SourceFile(fmt::format("seed{}.vox", seed), text));
@@ -23,14 +24,20 @@ TEST(ProgramGenerator, EveryProgramChecks) {
         withGrammar += !result.program->grammars.empty();
         withField += !result.program->fields.empty();
         withMaterial += result.program->usesMaterials();
-        bool variant = false, aggregate = false; // a symmetry variant is named rule@element
+        bool variant = false, aggregate = false, stamp = false, lsystemStamp = false; // a variant is named rule@element
         for (const Grammar& grammar : result.program->grammars)
             for (const Rule& rule : grammar.rules) {
                 variant = variant || rule.name.find('@') != std::string::npos;
                 aggregate = aggregate || !rule.aggregates.empty();
+                stamp = stamp || !rule.stamps.empty();
+                for (const Stamp& s : rule.stamps)
+                    for (const FieldNode& node : result.program->fields.at(s.field).nodes)
+                        lsystemStamp = lsystemStamp || node.kind == FieldNode::Kind::PointSet;
             }
         withVariants += variant;
         withAggregates += aggregate;
+        withStamps += stamp;
+        withLsystemStamps += lsystemStamp;
     }
     // Each part of the language shows up in a fair share of the programs.
     EXPECT_GT(withGrammar, 100);
@@ -38,6 +45,8 @@ TEST(ProgramGenerator, EveryProgramChecks) {
     EXPECT_GT(withMaterial, 100);
     EXPECT_GT(withVariants, 30);
     EXPECT_GT(withAggregates, 30);
+    EXPECT_GT(withStamps, 30);
+    EXPECT_GT(withLsystemStamps, 5);
 }
 
 } // namespace
