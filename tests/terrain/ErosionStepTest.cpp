@@ -3,6 +3,7 @@
 #include "voxc/generators/terrain/Erosion.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <gtest/gtest.h>
 #include <limits>
@@ -155,6 +156,48 @@ TEST(ErosionStepTest, DropsAreDeterministicAndWithinTheirRanges) {
         EXPECT_EQ(drop.intensity, again.intensity);
     }
     EXPECT_NE(dropAt(params, 64, 32, 8, 0).centreX, dropAt(params, 64, 32, 9, 0).centreX); // the level keys the hash
+}
+
+// erosionSteps fuses the passes (rain with the surface, evaporation and the bed into the water
+// pass) and splits a grid of 256 rows or more between two threads; every channel must still be
+// the bits of the six passes run one after the other over the whole grid.
+TEST(ErosionStepTest, FusedTwoThreadStepsEqualThePassesInOrder) {
+    for (const Transport transport : {Transport::Conservative, Transport::Mei}) {
+        ErosionParams params = findPreset("mountain_river")->params;
+        params.transport = transport;
+        params.seed = 3;
+        ErosionGrid fused(300, 263); // odd height: the bands differ in size
+        for (int32_t y = 0; y < fused.height(); ++y)
+            for (int32_t x = 0; x < fused.width(); ++x) {
+                fused.base.at(x, y) = float(0.5 + 0.3 * std::sin(x * 0.05) * std::cos(y * 0.07) + 0.02 * std::sin((x + y) * 0.9));
+                fused.rain.at(x, y) = float(0.5 + 0.5 * std::cos(x * 0.02));
+            }
+        ErosionGrid passes = fused;
+        erosionSteps(fused, params, 8, 0, 40, false);
+        erosionSteps(fused, params, 8, 40, 5, true);
+        for (uint32_t step = 0; step < 45; ++step) {
+            const bool drain = step >= 40;
+            if (!drain) addRain(passes, params, 8, step);
+            updateFlux(passes, params);
+            updateWaterAndVelocity(passes, params);
+            erodeAndDeposit(passes, params);
+            transportSediment(passes, params);
+            evaporate(passes, drain ? 1.0f - 0.9f : 1.0f - params.evaporation * params.dt);
+        }
+        using G = ErosionGrid;
+        for (const auto& [field, name] : {std::pair(&G::difference, "S_h"), {&G::water, "water"}, {&G::sediment, "sediment"},
+                                          {&G::suspended, "suspended"}, {&G::fluxL, "flux L"}, {&G::fluxR, "flux R"},
+                                          {&G::fluxT, "flux T"}, {&G::fluxB, "flux B"}, {&G::velocityU, "u"},
+                                          {&G::velocityV, "v"}, {&G::surface, "surface"}}) {
+            size_t differing = 0;
+            for (size_t i = 0; i < (fused.*field).values.size(); ++i)
+                differing += std::bit_cast<uint32_t>((fused.*field).values[i]) != std::bit_cast<uint32_t>((passes.*field).values[i]);
+            EXPECT_EQ(differing, 0u) << name << (transport == Transport::Mei ? " (mei)" : "");
+        }
+        double moved = 0.0;
+        for (float v : fused.difference.values) moved += std::fabs(v);
+        EXPECT_GT(moved, 1e-2); // the steps did erode
+    }
 }
 
 } // namespace

@@ -2,9 +2,12 @@
 
 #include "voxc/program/Random.h"
 
+#include <algorithm>
 #include <array>
+#include <barrier>
 #include <cmath>
 #include <fmt/format.h>
+#include <thread>
 
 namespace voxc::terrain {
 
@@ -50,19 +53,6 @@ void requireRange(const char* name, float value, float minimum, float maximum) {
 float uniform(uint32_t seed, int32_t level, uint32_t step, uint32_t draw) {
     const uint32_t h = mix32(mix32(mix32(mix32(seed) ^ uint32_t(level)) ^ step) ^ draw);
     return float(h >> 8) * 0x1p-24f;
-}
-
-// surface = b (+ d when withWater), b = base + S_h, precomputed so every neighbour read is one load.
-void computeSurface(ErosionGrid& g, bool withWater) {
-    for (size_t i = 0; i < g.surface.values.size(); ++i) {
-        const float b = g.base.values[i] + g.difference.values[i];
-        g.surface.values[i] = withWater ? b + g.water.values[i] : b;
-    }
-}
-
-// A flux channel's value at (x, y), 0 outside the grid (closed boundary).
-float fluxOrZero(const Field2& flux, int32_t x, int32_t y) {
-    return (x < 0 || y < 0 || x >= flux.width || y >= flux.height) ? 0.0f : flux.at(x, y);
 }
 
 } // namespace
@@ -117,132 +107,234 @@ Drop dropAt(const ErosionParams& p, int32_t width, int32_t height, int32_t level
     return drop;
 }
 
-void addRain(ErosionGrid& g, const ErosionParams& p, int32_t level, uint32_t step) {
-    if (p.rain == RainMode::None) return;
-    if (p.rain == RainMode::Uniform) {
-        const float amount = p.dt * p.uniformRain;
-        for (size_t i = 0; i < g.water.values.size(); ++i) g.water.values[i] = g.water.values[i] + amount * g.rain.values[i];
-        return;
-    }
-    const Drop drop = dropAt(p, g.width(), g.height(), level, step);
-    const float radiusSquared = drop.radius * drop.radius;
-    for (int32_t y = 0; y < g.height(); ++y)
-        for (int32_t x = 0; x < g.width(); ++x) {
-            const float dx = float(x) - drop.centreX, dy = float(y) - drop.centreY;
-            if (dx * dx + dy * dy <= radiusSquared) {
-                const size_t i = g.water.index(x, y);
-                g.water.values[i] = g.water.values[i] + drop.intensity * g.rain.values[i];
-            }
-        }
-}
-
-void updateFlux(ErosionGrid& g, const ErosionParams& p) {
-    const float coefficient = (p.dt * p.pipeArea) * p.gravity;
-    const float area = p.cellSize * p.cellSize;
-    const int32_t w = g.width(), h = g.height();
-    computeSurface(g, true);
-    for (int32_t y = 0; y < h; ++y)
-        for (int32_t x = 0; x < w; ++x) {
-            const size_t i = g.water.index(x, y);
-            const float d = g.water.values[i];
-            const float level = g.surface.values[i];
-            auto outflow = [&](float flux, int32_t nx, int32_t ny) {
-                if (nx < 0 || ny < 0 || nx >= w || ny >= h) return 0.0f;
-                const float drop = level - g.surface.at(nx, ny);
-                return std::max(0.0f, flux + (coefficient * drop) / p.pipeLength);
-            };
-            float fl = outflow(g.fluxL.values[i], x - 1, y), fr = outflow(g.fluxR.values[i], x + 1, y);
-            float ft = outflow(g.fluxT.values[i], x, y + 1), fb = outflow(g.fluxB.values[i], x, y - 1);
-            const float total = ((fl + fr) + ft) + fb;
-            if (total > 0.0f) { // K: the outflow may not drain more than the cell holds (Eq 3.18)
-                const float k = std::min(1.0f, (d * area) / (total * p.dt));
-                fl = k * fl;
-                fr = k * fr;
-                ft = k * ft;
-                fb = k * fb;
-            }
-            g.fluxL.values[i] = fl;
-            g.fluxR.values[i] = fr;
-            g.fluxT.values[i] = ft;
-            g.fluxB.values[i] = fb;
-        }
-}
-
-void updateWaterAndVelocity(ErosionGrid& g, const ErosionParams& p) {
-    const float area = p.cellSize * p.cellSize;
-    const float speedLimit = (0.5f * p.cellSize) / p.dt;
-    for (int32_t y = 0; y < g.height(); ++y)
-        for (int32_t x = 0; x < g.width(); ++x) {
-            const size_t i = g.water.index(x, y);
-            const float fl = g.fluxL.values[i], fr = g.fluxR.values[i], ft = g.fluxT.values[i], fb = g.fluxB.values[i];
-            const float inRight = fluxOrZero(g.fluxR, x - 1, y), inLeft = fluxOrZero(g.fluxL, x + 1, y);
-            const float inTop = fluxOrZero(g.fluxT, x, y - 1), inBottom = fluxOrZero(g.fluxB, x, y + 1);
-            const float in = ((inRight + inLeft) + inTop) + inBottom;
-            const float out = ((fl + fr) + ft) + fb;
-            const float d1 = g.water.values[i];
-            const float d2 = d1 + (p.dt * (in - out)) / area;
-            const float mean = (d1 + d2) * 0.5f;
-            float u = 0.0f, v = 0.0f;
-            if (mean > 1e-6f) {
-                const float flowX = 0.5f * ((inRight - fl) + (fr - inLeft));
-                const float flowY = 0.5f * ((inTop - fb) + (ft - inBottom));
-                u = std::clamp(flowX / (p.cellSize * mean), -speedLimit, speedLimit);
-                v = std::clamp(flowY / (p.cellSize * mean), -speedLimit, speedLimit);
-            }
-            g.water.values[i] = d2;
-            g.velocityU.values[i] = u;
-            g.velocityV.values[i] = v;
-        }
-}
-
-void erodeAndDeposit(ErosionGrid& g, const ErosionParams& p) {
-    const float e = p.depthLimit;
-    const bool limited = std::isfinite(e);
-    computeSurface(g, false);
-    const Field2& bed = g.surface;
-    for (int32_t y = 0; y < g.height(); ++y)
-        for (int32_t x = 0; x < g.width(); ++x) {
-            const size_t i = g.water.index(x, y);
-            const float b = bed.values[i];
-            const float px = std::clamp(b - std::min(bed.clamped(x - 1, y), bed.clamped(x + 1, y)), 0.0f, 1.0f);
-            const float py = std::clamp(b - std::min(bed.clamped(x, y - 1), bed.clamped(x, y + 1)), 0.0f, 1.0f);
-            const float q = px * px + py * py;
-            const float sinTilt = std::max(std::sqrt(q / (1.0f + q)), p.minTilt);
-            const float u = g.velocityU.values[i], v = g.velocityV.values[i];
-            const float speed = std::sqrt(u * u + v * v);
-            const float sh = g.difference.values[i], s = g.sediment.values[i];
-            const float room = limited ? std::max(0.0f, (e - std::abs(sh)) / e) : 1.0f;
-            const float c = (((p.capacity * sinTilt) * speed) * g.capacity.values[i]) * room;
-            // The E clamp is on the amount moved, so S_h + s is conserved exactly (B3.4 step 4).
-            if (c > s) {
-                const float amount = std::max(0.0f, std::min((p.dt * p.suspension) * (c - s), e + sh));
-                g.differenceNext.values[i] = sh - amount;
-                g.suspended.values[i] = s + amount;
-            } else {
-                const float amount = std::max(0.0f, std::min((p.dt * p.deposition) * (s - c), e - sh));
-                g.differenceNext.values[i] = sh + amount;
-                g.suspended.values[i] = s - amount;
-            }
-        }
-    std::swap(g.difference, g.differenceNext);
-}
-
+// The passes below work on a band of rows [y0, y1) each, so a step can split the grid between
+// two threads (erosionSteps). Each cell's value is the same float operations in the same order
+// whichever band it lies in. Per-cell conditions are selects of values computed unconditionally,
+// so the rows' interiors are `omp simd` loops that GCC vectorises (built with -fopenmp-simd
+// -fno-trapping-math -fno-math-errno: compiler/generators/CMakeLists.txt), 8 wide in the AVX2
+// clone of each row kernel where the CPU has it. IEEE add, multiply, divide, sqrt, min and max
+// give the same bits at every width, and the build has -ffp-contract=off: no FMA changes a rounding.
 namespace {
 
-// Mei's backward sample (Eq 3.27): bilinear from the clamped departure point.
-void transportMei(ErosionGrid& g, const ErosionParams& p) {
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define VOXC_ROW_KERNEL __attribute__((target_clones("avx2", "default")))
+#else
+#define VOXC_ROW_KERNEL
+#endif
+
+// The read-only pointers of one row and its neighbour rows, clamped to the grid.
+struct Rows {
+    size_t at, down, up; // offsets of rows y, max(y - 1, 0), min(y + 1, h - 1)
+    bool hasDown, hasUp; // whether those are real neighbours (a closed boundary otherwise)
+};
+
+Rows rowsAt(int32_t y, int32_t w, int32_t h) {
+    const size_t width = size_t(w);
+    return {size_t(y) * width, size_t(std::max(y - 1, 0)) * width, size_t(std::min(y + 1, h - 1)) * width, y > 0, y < h - 1};
+}
+
+// Rain (not in the drain), then surface = (base + S_h) + d for the flux.
+VOXC_ROW_KERNEL void rainAndSurfaceRows(ErosionGrid& g, const ErosionParams& p, const Drop& drop, bool rain, int32_t y0, int32_t y1) {
+    const int32_t w = g.width();
+    const float radiusSquared = drop.radius * drop.radius, amount = p.dt * p.uniformRain;
+    for (int32_t y = y0; y < y1; ++y) {
+        const size_t row = size_t(y) * size_t(w);
+        float* __restrict water = g.water.values.data() + row;
+        const float* __restrict rainAt = g.rain.values.data() + row;
+        const float* __restrict base = g.base.values.data() + row;
+        const float* __restrict difference = g.difference.values.data() + row;
+        float* __restrict surface = g.surface.values.data() + row;
+        if (rain && p.rain == RainMode::Uniform) {
+            for (int32_t x = 0; x < w; ++x) water[x] = water[x] + amount * rainAt[x];
+        } else if (rain && p.rain == RainMode::Drops) {
+            const float dy = float(y) - drop.centreY;
+            for (int32_t x = 0; x < w; ++x) {
+                const float dx = float(x) - drop.centreX;
+                water[x] = dx * dx + dy * dy <= radiusSquared ? water[x] + drop.intensity * rainAt[x] : water[x];
+            }
+        }
+        for (int32_t x = 0; x < w; ++x) surface[x] = (base[x] + difference[x]) + water[x];
+    }
+}
+
+// surface = base + S_h, the bed the erosion's tilt reads.
+VOXC_ROW_KERNEL void bedRows(ErosionGrid& g, int32_t y0, int32_t y1) {
+    const size_t first = size_t(y0) * size_t(g.width()), last = size_t(y1) * size_t(g.width());
+    const float* __restrict base = g.base.values.data();
+    const float* __restrict difference = g.difference.values.data();
+    float* __restrict surface = g.surface.values.data();
+    for (size_t i = first; i < last; ++i) surface[i] = base[i] + difference[i];
+}
+
+struct FluxConstants {
+    float coefficient, pipeLength, area, dt;
+};
+
+// One cell's outflows (B3.4 step 2); a neighbour outside the grid gets none.
+inline void fluxCell(FluxConstants c, float level, float left, float right, float down, float up, bool hasLeft,
+                     bool hasRight, bool hasDown, bool hasUp, float d, float& fl, float& fr, float& ft, float& fb) {
+    // Every value is computed and then selected (GCC keeps possibly trapping float operations
+    // out of conditions, so a condition around one would keep the loop scalar).
+    const float toLeft = std::max(0.0f, fl + (c.coefficient * (level - left)) / c.pipeLength);
+    const float toRight = std::max(0.0f, fr + (c.coefficient * (level - right)) / c.pipeLength);
+    const float toUp = std::max(0.0f, ft + (c.coefficient * (level - up)) / c.pipeLength);
+    const float toDown = std::max(0.0f, fb + (c.coefficient * (level - down)) / c.pipeLength);
+    const float l = hasLeft ? toLeft : 0.0f, r = hasRight ? toRight : 0.0f, t = hasUp ? toUp : 0.0f, b = hasDown ? toDown : 0.0f;
+    const float total = ((l + r) + t) + b;
+    // K: the outflow may not drain more than the cell holds (Eq 3.18); 1 * f is f, so K = 1
+    // when there is no outflow leaves it as it was.
+    const float limit = std::min(1.0f, (d * c.area) / (total * c.dt));
+    const float k = total > 0.0f ? limit : 1.0f;
+    fl = k * l;
+    fr = k * r;
+    ft = k * t;
+    fb = k * b;
+}
+
+VOXC_ROW_KERNEL void fluxRows(ErosionGrid& g, const ErosionParams& p, int32_t y0, int32_t y1) {
+    const FluxConstants c{(p.dt * p.pipeArea) * p.gravity, p.pipeLength, p.cellSize * p.cellSize, p.dt};
     const int32_t w = g.width(), h = g.height();
-    for (int32_t y = 0; y < h; ++y)
+    for (int32_t y = y0; y < y1; ++y) {
+        const Rows rows = rowsAt(y, w, h);
+        const float* __restrict s = g.surface.values.data() + rows.at;
+        const float* __restrict down = g.surface.values.data() + rows.down;
+        const float* __restrict up = g.surface.values.data() + rows.up;
+        const float* __restrict d = g.water.values.data() + rows.at;
+        float* __restrict fl = g.fluxL.values.data() + rows.at;
+        float* __restrict fr = g.fluxR.values.data() + rows.at;
+        float* __restrict ft = g.fluxT.values.data() + rows.at;
+        float* __restrict fb = g.fluxB.values.data() + rows.at;
+        const bool hasDown = rows.hasDown, hasUp = rows.hasUp;
+#pragma omp simd
+        for (int32_t x = 1; x < w - 1; ++x)
+            fluxCell(c, s[x], s[x - 1], s[x + 1], down[x], up[x], true, true, hasDown, hasUp, d[x], fl[x], fr[x], ft[x], fb[x]);
+        for (const int32_t x : {0, w - 1}) // the edges (once when w = 1): a missing neighbour gets no flux
+            if (x == 0 || w > 1)
+                fluxCell(c, s[x], s[std::max(x - 1, 0)], s[std::min(x + 1, w - 1)], down[x], up[x], x > 0, x < w - 1, hasDown,
+                         hasUp, d[x], fl[x], fr[x], ft[x], fb[x]);
+    }
+}
+
+struct WaterConstants {
+    float dt, area, cellSize, speedLimit, keep;
+};
+
+// One cell's water and velocity (B3.4 step 3); `in*` are the neighbours' flows into it (0
+// outside the grid). The new depth is multiplied by `keep` (the evaporation, or 1: exact).
+inline void waterCell(WaterConstants c, float inRight, float inLeft, float inTop, float inBottom, float fl, float fr,
+                      float ft, float fb, float& d, float& u, float& v) {
+    const float in = ((inRight + inLeft) + inTop) + inBottom;
+    const float out = ((fl + fr) + ft) + fb;
+    const float d1 = d;
+    const float d2 = d1 + (c.dt * (in - out)) / c.area;
+    const float mean = (d1 + d2) * 0.5f;
+    const float flowX = 0.5f * ((inRight - fl) + (fr - inLeft));
+    const float flowY = 0.5f * ((inTop - fb) + (ft - inBottom));
+    const float movingU = std::clamp(flowX / (c.cellSize * mean), -c.speedLimit, c.speedLimit);
+    const float movingV = std::clamp(flowY / (c.cellSize * mean), -c.speedLimit, c.speedLimit);
+    d = d2 * c.keep;
+    u = mean > 1e-6f ? movingU : 0.0f;
+    v = mean > 1e-6f ? movingV : 0.0f;
+}
+
+// Water and velocity; with `bed`, also surface = base + S_h for the erosion (S_h does not change
+// before it, and nothing reads the surface in between).
+VOXC_ROW_KERNEL void waterRows(ErosionGrid& g, const ErosionParams& p, float keep, bool bed, int32_t y0, int32_t y1) {
+    const WaterConstants c{p.dt, p.cellSize * p.cellSize, p.cellSize, (0.5f * p.cellSize) / p.dt, keep};
+    const int32_t w = g.width(), h = g.height();
+    for (int32_t y = y0; y < y1; ++y) {
+        const Rows rows = rowsAt(y, w, h);
+        const float* __restrict fl = g.fluxL.values.data() + rows.at;
+        const float* __restrict fr = g.fluxR.values.data() + rows.at;
+        const float* __restrict ft = g.fluxT.values.data() + rows.at;
+        const float* __restrict fb = g.fluxB.values.data() + rows.at;
+        const float* __restrict topBelow = g.fluxT.values.data() + rows.down;  // f_T(x, y - 1)
+        const float* __restrict bottomAbove = g.fluxB.values.data() + rows.up; // f_B(x, y + 1)
+        float* __restrict d = g.water.values.data() + rows.at;
+        float* __restrict u = g.velocityU.values.data() + rows.at;
+        float* __restrict v = g.velocityV.values.data() + rows.at;
+        const bool hasDown = rows.hasDown, hasUp = rows.hasUp;
+#pragma omp simd
+        for (int32_t x = 1; x < w - 1; ++x) {
+            const float inTop = topBelow[x], inBottom = bottomAbove[x]; // loaded always: the rows exist
+            waterCell(c, fr[x - 1], fl[x + 1], hasDown ? inTop : 0.0f, hasUp ? inBottom : 0.0f, fl[x], fr[x], ft[x], fb[x], d[x],
+                      u[x], v[x]);
+        }
+        for (const int32_t x : {0, w - 1}) // the edges, once when w = 1
+            if (x == 0 || w > 1) {
+                const float inRight = x > 0 ? fr[x - 1] : 0.0f, inLeft = x < w - 1 ? fl[x + 1] : 0.0f;
+                const float inTop = topBelow[x], inBottom = bottomAbove[x];
+                waterCell(c, inRight, inLeft, hasDown ? inTop : 0.0f, hasUp ? inBottom : 0.0f, fl[x], fr[x], ft[x], fb[x], d[x],
+                          u[x], v[x]);
+            }
+    }
+    if (bed) bedRows(g, y0, y1);
+}
+
+struct ErodeConstants {
+    float e, minTilt, capacity, suspend, deposit; // suspend = dt K_s, deposit = dt K_d
+    bool limited;
+};
+
+// One cell's erosion or deposition (B3.4 step 4); the E clamp is on the amount moved, so
+// S_h + s is conserved exactly.
+inline void erodeCell(ErodeConstants c, float b, float left, float right, float down, float up, float u, float v,
+                      float capacityAt, float sh, float s, float& shNext, float& s1) {
+    const float px = std::clamp(b - std::min(left, right), 0.0f, 1.0f);
+    const float py = std::clamp(b - std::min(down, up), 0.0f, 1.0f);
+    const float q = px * px + py * py;
+    const float sinTilt = std::max(std::sqrt(q / (1.0f + q)), c.minTilt);
+    const float speed = std::sqrt(u * u + v * v);
+    const float roomLeft = std::max(0.0f, (c.e - std::abs(sh)) / c.e);
+    const float room = c.limited ? roomLeft : 1.0f;
+    const float capacity = (((c.capacity * sinTilt) * speed) * capacityAt) * room;
+    const float suspended = std::max(0.0f, std::min(c.suspend * (capacity - s), c.e + sh));
+    const float deposited = std::max(0.0f, std::min(c.deposit * (s - capacity), c.e - sh));
+    const float eroded = sh - suspended, raised = sh + deposited, carried = s + suspended, dropped = s - deposited;
+    shNext = capacity > s ? eroded : raised;
+    s1 = capacity > s ? carried : dropped;
+}
+
+// Reads the bed from `surface`; writes S_h into differenceNext (the caller swaps the halves).
+VOXC_ROW_KERNEL void erodeRows(ErosionGrid& g, const ErosionParams& p, int32_t y0, int32_t y1) {
+    const ErodeConstants c{p.depthLimit, p.minTilt, p.capacity, p.dt * p.suspension, p.dt * p.deposition, std::isfinite(p.depthLimit)};
+    const int32_t w = g.width(), h = g.height();
+    for (int32_t y = y0; y < y1; ++y) {
+        const Rows rows = rowsAt(y, w, h);
+        const float* __restrict bed = g.surface.values.data() + rows.at;
+        const float* __restrict down = g.surface.values.data() + rows.down;
+        const float* __restrict up = g.surface.values.data() + rows.up;
+        const float* __restrict u = g.velocityU.values.data() + rows.at;
+        const float* __restrict v = g.velocityV.values.data() + rows.at;
+        const float* __restrict capacity = g.capacity.values.data() + rows.at;
+        const float* __restrict sh = g.difference.values.data() + rows.at;
+        const float* __restrict s = g.sediment.values.data() + rows.at;
+        float* __restrict shNext = g.differenceNext.values.data() + rows.at;
+        float* __restrict s1 = g.suspended.values.data() + rows.at;
+#pragma omp simd
+        for (int32_t x = 1; x < w - 1; ++x)
+            erodeCell(c, bed[x], bed[x - 1], bed[x + 1], down[x], up[x], u[x], v[x], capacity[x], sh[x], s[x], shNext[x], s1[x]);
+        for (const int32_t x : {0, w - 1}) // the edges, once when w = 1
+            if (x == 0 || w > 1)
+                erodeCell(c, bed[x], bed[std::max(x - 1, 0)], bed[std::min(x + 1, w - 1)], down[x], up[x], u[x], v[x],
+                          capacity[x], sh[x], s[x], shNext[x], s1[x]);
+    }
+}
+
+// Mei's backward sample (Eq 3.27): bilinear from the clamped departure point.
+void transportMeiRows(ErosionGrid& g, const ErosionParams& p, int32_t y0, int32_t y1) {
+    const int32_t w = g.width(), h = g.height();
+    const Field2& s1 = g.suspended;
+    for (int32_t y = y0; y < y1; ++y)
         for (int32_t x = 0; x < w; ++x) {
             const size_t i = g.water.index(x, y);
             const float sx = std::clamp(float(x) - (g.velocityU.values[i] * p.dt) / p.cellSize, 0.0f, float(w - 1));
             const float sy = std::clamp(float(y) - (g.velocityV.values[i] * p.dt) / p.cellSize, 0.0f, float(h - 1));
-            const int32_t x0 = int32_t(std::floor(sx)), y0 = int32_t(std::floor(sy));
-            const int32_t x1 = std::min(x0 + 1, w - 1), y1 = std::min(y0 + 1, h - 1);
-            const float fx = sx - float(x0), fy = sy - float(y0);
-            const Field2& s1 = g.suspended;
-            const float low = (1.0f - fx) * s1.at(x0, y0) + fx * s1.at(x1, y0);
-            const float high = (1.0f - fx) * s1.at(x0, y1) + fx * s1.at(x1, y1);
+            const int32_t x0 = int32_t(std::floor(sx)), yy0 = int32_t(std::floor(sy));
+            const int32_t x1 = std::min(x0 + 1, w - 1), yy1 = std::min(yy0 + 1, h - 1);
+            const float fx = sx - float(x0), fy = sy - float(yy0);
+            const float low = (1.0f - fx) * s1.at(x0, yy0) + fx * s1.at(x1, yy0);
+            const float high = (1.0f - fx) * s1.at(x0, yy1) + fx * s1.at(x1, yy1);
             g.sediment.values[i] = low * (1.0f - fy) + high * fy;
         }
 }
@@ -252,11 +344,17 @@ void transportMei(ErosionGrid& g, const ErosionParams& p) {
 // (x, y) sums its sources' contributions s1 * (w_x * w_y), w = 1 - frac at floor(arrival) and frac
 // one cell further, sources in row-major order, zero weights skipped. Scattering the sources in
 // row-major order adds to every cell in exactly that order, so this loop is that gather bit for bit
-// (a GPU kernel gathers). A source without sediment adds +0 to a sum that is never -0: skipped.
-void transportConservative(ErosionGrid& g, const ErosionParams& p) {
+// (a GPU kernel gathers). The band [y0, y1) owns its rows: it scatters the sources of rows y0 - 1
+// to y1, in row-major order, and adds only into its own rows. A source without sediment adds +0 to
+// a sum that is never -0: skipped.
+void transportConservativeRows(ErosionGrid& g, const ErosionParams& p, int32_t y0, int32_t y1) {
     const int32_t w = g.width(), h = g.height();
-    std::fill(g.sediment.values.begin(), g.sediment.values.end(), 0.0f);
-    for (int32_t y = 0; y < h; ++y)
+    float* target = g.sediment.values.data();
+    std::fill(target + size_t(y0) * size_t(w), target + size_t(y1) * size_t(w), 0.0f);
+    const auto add = [&](int32_t x, int32_t y, float amount) {
+        if (y >= y0 && y < y1) target[g.water.index(x, y)] = target[g.water.index(x, y)] + amount;
+    };
+    for (int32_t y = std::max(y0 - 1, 0); y < std::min(y1 + 1, h); ++y)
         for (int32_t x = 0; x < w; ++x) {
             const size_t i = g.water.index(x, y);
             const float sediment = g.suspended.values[i];
@@ -266,37 +364,96 @@ void transportConservative(ErosionGrid& g, const ErosionParams& p) {
             const float floorX = std::floor(tx), floorY = std::floor(ty);
             const float fx = tx - floorX, fy = ty - floorY;
             const float wx0 = 1.0f - fx, wy0 = 1.0f - fy;
-            const size_t at = g.water.index(int32_t(floorX), int32_t(floorY));
-            float* target = g.sediment.values.data();
-            target[at] = target[at] + sediment * (wx0 * wy0);
-            if (fx != 0.0f) target[at + 1] = target[at + 1] + sediment * (fx * wy0);
+            const int32_t ax = int32_t(floorX), ay = int32_t(floorY);
+            add(ax, ay, sediment * (wx0 * wy0));
+            if (fx != 0.0f) add(ax + 1, ay, sediment * (fx * wy0));
             if (fy != 0.0f) {
-                target[at + size_t(w)] = target[at + size_t(w)] + sediment * (wx0 * fy);
-                if (fx != 0.0f) target[at + size_t(w) + 1] = target[at + size_t(w) + 1] + sediment * (fx * fy);
+                add(ax, ay + 1, sediment * (wx0 * fy));
+                if (fx != 0.0f) add(ax + 1, ay + 1, sediment * (fx * fy));
             }
         }
 }
 
+void transportRows(ErosionGrid& g, const ErosionParams& p, int32_t y0, int32_t y1) {
+    if (p.transport == Transport::Mei)
+        transportMeiRows(g, p, y0, y1);
+    else
+        transportConservativeRows(g, p, y0, y1);
+}
+
+// Grids with fewer rows run on one thread: a 128-row pass is too short to pay for the
+// synchronisation between the passes.
+constexpr int32_t kMinRowsForTwoThreads = 256;
+
 } // namespace
 
-void transportSediment(ErosionGrid& g, const ErosionParams& p) {
-    if (p.transport == Transport::Mei)
-        transportMei(g, p);
-    else
-        transportConservative(g, p);
+void addRain(ErosionGrid& g, const ErosionParams& p, int32_t level, uint32_t step) {
+    if (p.rain == RainMode::None) return;
+    const Drop drop = p.rain == RainMode::Drops ? dropAt(p, g.width(), g.height(), level, step) : Drop{};
+    rainAndSurfaceRows(g, p, drop, true, 0, g.height()); // the surface is recomputed before it is read
 }
+
+void updateFlux(ErosionGrid& g, const ErosionParams& p) {
+    rainAndSurfaceRows(g, p, Drop{}, false, 0, g.height());
+    fluxRows(g, p, 0, g.height());
+}
+
+void updateWaterAndVelocity(ErosionGrid& g, const ErosionParams& p) { waterRows(g, p, 1.0f, false, 0, g.height()); }
+
+void erodeAndDeposit(ErosionGrid& g, const ErosionParams& p) {
+    bedRows(g, 0, g.height());
+    erodeRows(g, p, 0, g.height());
+    std::swap(g.difference, g.differenceNext);
+}
+
+void transportSediment(ErosionGrid& g, const ErosionParams& p) { transportRows(g, p, 0, g.height()); }
 
 void evaporate(ErosionGrid& g, float keep) {
     for (float& d : g.water.values) d = d * keep;
 }
 
+// A step as four passes over a band, each after the previous one has finished on every band:
+// rain with the surface b + d; the flux; water, velocity and evaporation with the bed b; erosion
+// (then S_h's halves swap); transport. The last pass of a step and the first of the next touch
+// different channels, so they need no wait between them.
+void erosionSteps(ErosionGrid& g, const ErosionParams& p, int32_t level, uint32_t firstStep, uint32_t steps, bool drain) {
+    const float keep = drain ? 1.0f - 0.9f : 1.0f - p.evaporation * p.dt;
+    const auto band = [&](auto&& wait, int32_t y0, int32_t y1) {
+        for (uint32_t step = firstStep; step < firstStep + steps; ++step) {
+            const bool rain = !drain && p.rain != RainMode::None;
+            const Drop drop = rain && p.rain == RainMode::Drops ? dropAt(p, g.width(), g.height(), level, step) : Drop{};
+            rainAndSurfaceRows(g, p, drop, rain, y0, y1);
+            wait();
+            fluxRows(g, p, y0, y1);
+            wait();
+            waterRows(g, p, keep, true, y0, y1);
+            wait();
+            erodeRows(g, p, y0, y1);
+            wait(); // S_h's halves swap here
+            transportRows(g, p, y0, y1);
+        }
+    };
+    // Between passes, once every band has arrived (a barrier's completion with two threads);
+    // every fourth pass is the erosion's.
+    uint32_t phase = 0;
+    const auto completion = [&]() noexcept {
+        if (phase % 4 == 3) std::swap(g.difference, g.differenceNext);
+        ++phase;
+    };
+    const int32_t h = g.height();
+    if (h < kMinRowsForTwoThreads) {
+        band(completion, 0, h);
+        return;
+    }
+    std::barrier sync(2, completion);
+    const auto wait = [&] { sync.arrive_and_wait(); };
+    std::thread other([&] { band(wait, 0, h / 2); });
+    band(wait, h / 2, h);
+    other.join();
+}
+
 void erosionStep(ErosionGrid& g, const ErosionParams& p, int32_t level, uint32_t step, bool drain) {
-    if (!drain) addRain(g, p, level, step);
-    updateFlux(g, p);
-    updateWaterAndVelocity(g, p);
-    erodeAndDeposit(g, p);
-    transportSediment(g, p);
-    evaporate(g, drain ? 1.0f - 0.9f : 1.0f - p.evaporation * p.dt);
+    erosionSteps(g, p, level, step, 1, drain);
 }
 
 } // namespace voxc::terrain

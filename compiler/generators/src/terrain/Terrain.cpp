@@ -16,7 +16,7 @@ ErosionSettings presetSettings(std::string_view name) {
 
 void runErosionSteps(ErosionGrid& grid, const ErosionParams& params, int32_t level, uint32_t firstStep,
                      uint32_t steps, bool drain) {
-    for (uint32_t step = firstStep; step < firstStep + steps; ++step) erosionStep(grid, params, level, step, drain);
+    erosionSteps(grid, params, level, firstStep, steps, drain);
 }
 
 Field2 gaussian5(const Field2& field) {

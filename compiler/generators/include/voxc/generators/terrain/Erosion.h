@@ -82,5 +82,9 @@ Drop dropAt(const ErosionParams& params, int32_t width, int32_t height, int32_t 
 
 // One step; `drain` runs the final drain's form (no rain, d *= 1 - 0.9).
 void erosionStep(ErosionGrid& grid, const ErosionParams& params, int32_t level, uint32_t step, bool drain = false);
+// Steps firstStep .. firstStep + steps - 1, the same bits as that many erosionStep calls; grids of
+// 256 rows or more split each pass between two threads.
+void erosionSteps(ErosionGrid& grid, const ErosionParams& params, int32_t level, uint32_t firstStep, uint32_t steps,
+                  bool drain);
 
 } // namespace voxc::terrain
