@@ -255,6 +255,9 @@ expect curves_run_solves 0 "curves 'cliffs' \(64x32x64 cells, solved on the host
     --voxels "$work/curves_cliff8.npy"
 expect_same curves_cliff_chunk_8_vs_32 "$work/curves_cliff.npy" "$work/curves_cliff8.npy"
 expect curves_interp_solves 0 "curves 'cliffs' .*parameters 5 levels" -- "$voxc" interp "$src/examples/curves_cliff.vox"
+# the solve runs after the check, as a phase of its own
+expect curves_solve_phase 0 "solve +[0-9.]+  curves blocks" -- "$voxc" run "$src/examples/curves_cliff.vox" --device lavapipe \
+    --timings --voxels "$work/curves_cliff_timed.npy"
 # --solve-on device: every curves pass on lavapipe, the host's voxels but for the noise
 # displacement's last bits (warped_fbm's exp2, docs/curves.md "What runs where")
 expect curves_solve_on_device 0 "curves 'cliffs' \(64x32x64 cells, solved, the multigrid on 'llvmpipe" -- \

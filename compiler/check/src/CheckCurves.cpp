@@ -352,7 +352,9 @@ std::vector<CurvesBlock> checkCurves(Context& context, const ast::File& file, co
         std::optional<curves::Scene> scene = readScene(context, block, world, cellBudget, limits);
         if (scene && checkSolveWork(context, block, *scene, limits)) {
             try {
-                warnAllAir(context, block, curves::voxelize(scene->curves, scene->box, scene->options.seedValue, limits));
+                scene->constraints = std::make_shared<const curves::Constraints>(
+                    curves::voxelize(scene->curves, scene->box, scene->options.seedValue, limits));
+                warnAllAir(context, block, *scene->constraints);
                 out.min = scene->box.min;
                 out.size = scene->box.size;
                 for (const curves::FeatureCurve& curve : scene->curves)

@@ -71,7 +71,8 @@ private:
 } // namespace
 
 SolveTable solveScene(const Scene& scene, const Limits& limits, const Solvers& solvers, bool keepChannels) {
-    Result solved = runCurves(scene.curves, scene.box, scene.options, limits, solvers);
+    Result solved = scene.constraints ? solveCurves(*scene.constraints, scene.options, limits, solvers)
+                                      : runCurves(scene.curves, scene.box, scene.options, limits, solvers);
     const auto densityStart = std::chrono::steady_clock::now();
     // The builtin's own evaluation, so the displacement is the function a field would call.
     const FunctionInfo* warped = findFunction("warped_fbm");

@@ -51,8 +51,9 @@ struct SolveTable {
     // The solve's intermediate channels by name (curves: docs/curves.md "Dumping channels"), each
     // in `density`'s order, kept only when the run asks (stages::SolveOptions::keepChannels).
     std::vector<std::pair<std::string, std::vector<float>>> channels;
-    // Wall time of the solve's parts in order (curves: voxelize, normals, parameters, material,
-    // surface, smoothing, density), for benchmarks; never printed, nothing depends on it.
+    // Wall time of the solve's parts in order (curves: voxelize unless the check did, normals,
+    // parameters, material, surface, smoothing, density), for benchmarks; never printed, nothing
+    // depends on it.
     std::vector<std::pair<std::string, double>> phaseMs;
 
     uint64_t cellCount() const { return uint64_t(size.x) * uint64_t(size.y) * uint64_t(size.z); }

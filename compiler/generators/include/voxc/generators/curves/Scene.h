@@ -1,9 +1,12 @@
 #pragma once
 // A `curves` block's whole solve, from curves to the table a pipeline stage combines with the
-// grid (docs/curves.md, "The stage"): runCurves, then the noise displacement and the density
+// grid (docs/curves.md, "The stage"): solveCurves (runCurves without the scene's constraints),
+// then the noise displacement and the density
 // of spec A3.7, and the material where the density is solid.
 #include "voxc/generators/curves/Curves.h"
 #include "voxc/program/SolveTable.h"
+
+#include <memory>
 
 namespace voxc::curves {
 
@@ -13,6 +16,9 @@ struct Scene {
     Options options;
     float noiseFrequency = 0.0625f; // f0, per voxel
     uint32_t noiseSeed = 0;         // the displacement's warped_fbm seed
+    // The curves voxelised into the box (voxelize with options.seedValue) by whoever made the
+    // scene and reported voxelize's errors (the checker); null: solveScene voxelises them.
+    std::shared_ptr<const Constraints> constraints;
 };
 
 // density(S' - D, 2) = clamp(0.5 - (S' - D) / 2, 0, 1) per cell (0 where S' is +infinity: no
