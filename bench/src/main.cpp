@@ -57,16 +57,20 @@ double processCpuMs() {
     return double(t.tv_sec) * 1e3 + double(t.tv_nsec) / 1e6;
 }
 
+// readBack false: the result stays in the device's buffers, as `voxc run` leaves it when it meshes
+// there and writes no voxels (backend "vulkan_on_device").
 void registerVulkan(bench::JsonReporter& reporter, VulkanContext& context, const std::string& caseName, int n,
-                    std::shared_ptr<const Program> program) {
-    const std::string name = fmt::format("{}/{}/vulkan", caseName, n);
+                    std::shared_ptr<const Program> program, bool readBack = true) {
+    const std::string backend = readBack ? "vulkan" : "vulkan_on_device";
+    const std::string name = fmt::format("{}/{}/{}", caseName, n, backend);
     auto executor = std::make_shared<std::unique_ptr<VulkanExecutor>>();
-    const bench::RecordKey setupKey{caseName, n, "vulkan_setup", context.device().name};
-    benchmark::RegisterBenchmark(name.c_str(), [&context, &reporter, setupKey, program,
-                                                executor](benchmark::State& state) {
+    const bench::RecordKey setupKey{caseName, n, backend + "_setup", context.device().name};
+    benchmark::RegisterBenchmark(name.c_str(), [&context, &reporter, setupKey, program, executor,
+                                                readBack](benchmark::State& state) {
         if (!*executor) {
             const auto start = std::chrono::steady_clock::now();
-            *executor = std::make_unique<VulkanExecutor>(context, compileProgram(*program, {}));
+            *executor = std::make_unique<VulkanExecutor>(context, compileProgram(*program, {}),
+                                                         ExecutorOptions{.readBack = readBack});
             reporter.addRecord(setupKey, std::chrono::duration<double, std::milli>(
                                              std::chrono::steady_clock::now() - start).count());
             (*executor)->run(); // warm-up
@@ -80,7 +84,7 @@ void registerVulkan(bench::JsonReporter& reporter, VulkanContext& context, const
         }
         state.counters["cpu_ms"] = benchmark::Counter(cpuMs, benchmark::Counter::kAvgIterations);
     })->UseManualTime()->Unit(benchmark::kMillisecond);
-    reporter.describe(name + "/manual_time", {caseName, n, "vulkan", context.device().name});
+    reporter.describe(name + "/manual_time", {caseName, n, backend, context.device().name});
 }
 
 void registerInterp(bench::JsonReporter& reporter, const std::string& caseName, int n,
@@ -177,6 +181,7 @@ int main(int argc, char** argv) {
         for (int n : options.fieldSizes) {
             auto program = std::make_shared<const Program>(bench::fbm5Program(n));
             if (uses("vulkan")) registerVulkan(reporter, *context, "fbm5", n, program);
+            if (uses("vulkan")) registerVulkan(reporter, *context, "fbm5", n, program, false);
             if (uses("interp")) registerInterp(reporter, "fbm5", n, program);
             if (uses("libnoise")) registerLibnoise(reporter, n);
         }

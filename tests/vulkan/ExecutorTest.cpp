@@ -174,6 +174,32 @@ TEST(vulkan_Executor, RepeatedRunsReuseThePipelines) {
     EXPECT_GE(second.timings.readbackMs, 0.0);
 }
 
+TEST(vulkan_Executor, FirstStageWritingEveryVoxelReplacesTheClear) {
+    // Whole chunks and a start stage that writes every voxel: the buffer is not cleared, so the
+    // second run starts on the first one's result, which the grammars changed, and must not see it.
+    VulkanContext context;
+    KernelPackage package = makePackage(makeWorld({48, 32, 32}, {0, 0, 0}, 16), true, mixedGrammars());
+    package.stages.front().writesEveryDensity = true;
+    VulkanExecutor executor(context, package);
+    const RunResult first = executor.run();
+    const RunResult second = executor.run();
+    EXPECT_EQ(first.grid.data(), second.grid.data());
+    expectEqualGrids(second.grid.toDense(), referenceResult(package), "second run");
+}
+
+TEST(vulkan_Executor, WithoutReadBackTheGridStaysOnTheDevice) {
+    VulkanContext context;
+    const KernelPackage package = makePackage(makeWorld(kGridSize, {0, 0, 0}, 16), true, mixedGrammars());
+    VulkanExecutor onDevice(context, package, {.readBack = false});
+    const RunResult result = onDevice.run();
+    EXPECT_TRUE(result.grid.data().empty());
+    EXPECT_EQ(result.grid.layout().gridSize, glm::ivec3(0));
+    EXPECT_EQ(result.timings.readbackMs, 0.0);
+    EXPECT_EQ(result.dispatches, countDispatches(package, {65535, 65535, 65535}));
+    // The next run with a read-back still gets the whole result.
+    expectEqualGrids(runPackage(package).grid.toDense(), referenceResult(package), "read back");
+}
+
 TEST(vulkan_Executor, SeedReachesTheKernels) {
     const KernelPackage package =
         makePackage(makeWorld({9, 9, 9}, {0, 0, 0}, 8, 0xABC12345u), true, {}, TestKernel::Seed);

@@ -156,7 +156,17 @@ void run(const RunOptions& options) {
     if (!erosionDevice.empty()) status() << fmt::format("terrain erosion steps ran on {}\n", erosionDevice);
     VulkanContext& context = openDevice();
     times.add("device", deviceMs, "instance, device, pipeline cache");
-    VulkanExecutor executor(context, package);
+    // Without shaderFloat64 the default falls back to the host mesher (the same mesh, bit for bit);
+    // asking for the device explicitly is then GpuMarchingCubes' error.
+    const bool marchingCubes = options.mesher == "mc";
+    const bool deviceCanMesh = context.hasShaderFloat64();
+    const bool meshOnDevice = marchingCubes && options.lod.empty() && !options.meshPath.empty() && !run.region &&
+                              edits.empty() && (options.meshOn == "device" || (options.meshOn.empty() && deviceCanMesh));
+    // The grid comes back to the host only for what reads it there: a region's crop, edits, the
+    // .npy files, material counts, the LOD meshes and the host meshers.
+    const bool hostNeedsGrid = !meshOnDevice || !options.voxelsPath.empty() || !options.materialsPath.empty() ||
+                               program.usesMaterials();
+    VulkanExecutor executor(context, package, {.readBack = hostNeedsGrid});
     times.add("pipelines", executor.setupMs(), "shader modules, pipelines, buffers");
     const RunResult result = times.time("generate", [&] { return executor.run(); });
     // A region's voxels, without its halo, mesh on the host; so does a grid with edits (EditsFile.h).
@@ -197,18 +207,12 @@ void run(const RunOptions& options) {
         });
     } else if (!options.meshPath.empty()) {
         MeshStats stats;
-        const bool marchingCubes = options.mesher == "mc";
-        // Without shaderFloat64 the default falls back to the host mesher (the same mesh, bit for
-        // bit); asking for the device explicitly is then GpuMarchingCubes' error.
-        const bool deviceCanMesh = context.hasShaderFloat64();
-        const bool onDevice = marchingCubes && !run.region && edits.empty() &&
-                              (options.meshOn == "device" || (options.meshOn.empty() && deviceCanMesh));
         if (marchingCubes && options.meshOn.empty() && !deviceCanMesh && !run.region && edits.empty())
             std::cerr << fmt::format("voxc: note: the device '{}' has no shaderFloat64; marching cubes runs on the host\n",
                                      context.device().name);
         const MeshOptions meshOptions{.iso = options.iso};
         const Mesh mesh = times.time("mesh", [&] {
-            return onDevice        ? GpuMarchingCubes(executor).mesh(meshOptions, &stats)
+            return meshOnDevice    ? GpuMarchingCubes(executor).mesh(meshOptions, &stats)
                    : marchingCubes ? meshMarchingCubes(voxels, meshOptions, &stats)
                                    : meshSurfaceNets(voxels, meshOptions, &stats);
         });
@@ -222,7 +226,7 @@ void run(const RunOptions& options) {
         if (mesh.triangles.empty())
             std::cerr << fmt::format("voxc: warning: the mesh is empty: every voxel is on the same side of --iso {}\n", options.iso);
         meshReport = fmt::format("wrote {} ({}): {}; {}; skipped {} of {} chunks with no surface\n", options.meshPath,
-                                 onDevice ? "marching cubes on the device" : marchingCubes ? "marching cubes" : "surface nets",
+                                 meshOnDevice ? "marching cubes on the device" : marchingCubes ? "marching cubes" : "surface nets",
                                  describeMeshQuality(quality),
                                  quality.nonManifoldEdges == 0 ? "watertight" : "closed, not manifold",
                                  stats.skippedChunks, stats.chunks);

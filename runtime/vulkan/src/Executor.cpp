@@ -77,6 +77,7 @@ struct VulkanExecutor::Impl {
     ChunkLayout layout;
     std::array<uint32_t, 3> maxGroups{};
     bool staged = false; // results come back through `readback` instead of a mapped voxel buffer
+    bool clearsVoxels = true; // false: the first stage writes every voxel of the buffer (firstStageFillsBuffer)
     int32_t tileShift = -1; // >= 0: sweeps run over active tiles only (DispatchCursor)
     KernelPipelines pipelines;
     // `materials` is one uint per voxel beside `voxels` when the package uses materials, else a
@@ -99,6 +100,9 @@ struct VulkanExecutor::Impl {
     ~Impl();
 
     void checkLimits() const;
+    // The first stage writes every voxel's density, reading none, and no chunk has padding voxels
+    // outside the grid, so clearing the voxel buffer before it would only cost a pass over it.
+    bool firstStageFillsBuffer() const;
     void createBuffers();
     // A read-only int buffer with `values`, ready for every kernel.
     DeviceBuffer createTable(const std::vector<int32_t>& values);
@@ -153,6 +157,12 @@ void VulkanExecutor::Impl::checkLimits() const {
                                     "smaller grid or chunk size",
                                     double(bytes) / (1 << 20), layout.chunkTotal(), layout.chunkSize, ctx.info.name,
                                     double(maxRange) / (1 << 20)));
+}
+
+bool VulkanExecutor::Impl::firstStageFillsBuffer() const {
+    const glm::ivec3 size = layout.gridSize;
+    const bool noPadding = layout.chunkTotal() * layout.chunkVoxels() == size_t(size.x) * size_t(size.y) * size_t(size.z);
+    return noPadding && !package.stages.empty() && package.stages.front().writesEveryDensity;
 }
 
 void VulkanExecutor::Impl::createBuffers() {
@@ -318,6 +328,7 @@ VulkanExecutor::VulkanExecutor(VulkanContext& context, const KernelPackage& pack
     }
     const DeviceType type = s.ctx.info.type;
     s.staged = options.alwaysStage || !(type == DeviceType::Integrated || type == DeviceType::Cpu);
+    s.clearsVoxels = !s.firstStageFillsBuffer();
     if (s.options.dispatchesPerBatch == 0) s.options.dispatchesPerBatch = 1;
     s.tileShift = options.skipInactiveTiles ? skipTileShift(s.package, s.maxGroups) : -1;
 
@@ -356,7 +367,7 @@ vulkan_detail::ExecutorVoxels VulkanExecutor::deviceVoxels() const {
 RunResult VulkanExecutor::run() {
     Impl& s = *impl_;
     const VulkanApi& api = s.ctx.api;
-    RunResult result{ChunkedGrid(s.layout), {}, 0};
+    RunResult result{ChunkedGrid(s.options.readBack ? s.layout : ChunkLayout{}), {}, 0};
     result.timings.setupMs = s.setupMs;
 
     DispatchCursor cursor(s.package, s.maxGroups, s.tileShift);
@@ -376,7 +387,7 @@ RunResult VulkanExecutor::run() {
         check(api.vkBeginCommandBuffer(frame.cmd, &begin), "vkBeginCommandBuffer");
         if (batch == 0) {
             // Padding voxels outside the grid and grids without a start stage read as 0 on every run.
-            api.vkCmdFillBuffer(frame.cmd, s.voxels.buffer, 0, VK_WHOLE_SIZE, 0);
+            if (s.clearsVoxels) api.vkCmdFillBuffer(frame.cmd, s.voxels.buffer, 0, VK_WHOLE_SIZE, 0);
             api.vkCmdFillBuffer(frame.cmd, s.materials.buffer, 0, VK_WHOLE_SIZE, 0); // every voxel `none`
             if (s.tileShift >= 0) s.recordTileReset(frame.cmd);
             s.nonFinite.recordRunStart(s.ctx, frame.cmd);
@@ -417,7 +428,7 @@ RunResult VulkanExecutor::run() {
         if (!more) {
             if (stage != kNoStage) s.recordStageEnd(frame.cmd, stage, last);
             memoryBarrier(api, frame.cmd, last, kHostRead); // the skip statistics and non-finite counts
-            s.recordReadback(frame.cmd, last);
+            if (s.options.readBack) s.recordReadback(frame.cmd, last);
         }
         check(api.vkEndCommandBuffer(frame.cmd), "vkEndCommandBuffer");
         result.timings.recordMs += millisecondsSince(recordStart);
@@ -429,18 +440,20 @@ RunResult VulkanExecutor::run() {
     s.wait(s.frames[1]);
     result.timings.executeMs = millisecondsSince(executeStart);
 
-    const Clock::time_point readStart = Clock::now();
-    const DeviceBuffer& source = s.staged ? s.readback : s.voxels;
-    invalidateForHost(s.ctx, source);
-    std::vector<float>& data = result.grid.data();
-    const VkDeviceSize voxelBytes = s.voxels.size;
-    VOXC_ASSERT(data.size() * sizeof(float) == voxelBytes && voxelBytes <= source.size);
-    std::memcpy(data.data(), source.mapped, voxelBytes);
-    if (s.package.usesMaterials) {
-        if (!s.staged) invalidateForHost(s.ctx, s.materials);
-        s.readMaterials(s.staged ? s.readback : s.materials, s.staged ? voxelBytes : 0, result.grid);
+    if (s.options.readBack) {
+        const Clock::time_point readStart = Clock::now();
+        const DeviceBuffer& source = s.staged ? s.readback : s.voxels;
+        invalidateForHost(s.ctx, source);
+        std::vector<float>& data = result.grid.data();
+        const VkDeviceSize voxelBytes = s.voxels.size;
+        VOXC_ASSERT(data.size() * sizeof(float) == voxelBytes && voxelBytes <= source.size);
+        std::memcpy(data.data(), source.mapped, voxelBytes);
+        if (s.package.usesMaterials) {
+            if (!s.staged) invalidateForHost(s.ctx, s.materials);
+            s.readMaterials(s.staged ? s.readback : s.materials, s.staged ? voxelBytes : 0, result.grid);
+        }
+        result.timings.readbackMs = millisecondsSince(readStart);
     }
-    result.timings.readbackMs = millisecondsSince(readStart);
     if (s.tileShift >= 0) {
         invalidateForHost(s.ctx, s.skipStats);
         uint32_t counts[2];

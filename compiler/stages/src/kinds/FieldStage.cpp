@@ -5,6 +5,7 @@
 
 #include "voxc/interp/FieldEval.h"
 
+#include <algorithm>
 #include <fmt/format.h>
 
 namespace voxc::stages {
@@ -81,6 +82,8 @@ void plan(PlanContext& context, const Stage& stage, StagePlan& plan) {
     codegen::FieldStageBoxes boxes =
         codegen::fieldBoxes(context.module, field, stage.mode, stage.material, context.densities);
     plan.gridBoxes = std::move(boxes.boxes);
+    plan.writesEveryDensity = !readsDensities(stage) && std::none_of(plan.gridBoxes.begin(), plan.gridBoxes.end(),
+                                                                     [](const FieldBox& box) { return box.unchanged; });
     context.densities = boxes.after;
 }
 

@@ -52,6 +52,7 @@ void addKernels(PlanContext& context) {
 // Every density is 0 before the pipeline; the start stage writes only its shapes' values.
 void plan(PlanContext& context, const Stage&, StagePlan& plan) {
     plan.gridKernel = context.kernels.at("start");
+    plan.writesEveryDensity = true;
     if (context.densities)
         for (const StartShape& shape : context.module.start)
             context.densities = codegen::DensityBounds{std::min(context.densities->lo, shape.value),

@@ -143,6 +143,9 @@ struct StagePlan {
     uint64_t scratchWords = 0; // kBindingScratch words the stage's passes use
     std::vector<FieldBox> gridBoxes;
     bool writesDensities = true;
+    // The grid pass writes every grid voxel's density and reads none first (a start stage; a `set`
+    // field stage with no unchanged box), so as the first stage it makes clearing the grid needless.
+    bool writesEveryDensity = false;
     std::optional<uint8_t> material; // Stage::material, when the stage writes one
     std::optional<GrammarPlan> grammar; // the sweeps, repeated grammar->iterations times
     // How far a voxel after the stage depends on voxels before it, per axis (stages::StageRadius).

@@ -34,6 +34,10 @@ struct ExecutorOptions {
     // Run each sweep phase only over the tiles (8^3 voxels) where some rule may match (see
     // DispatchCursor); ignored where the package or the device limits do not allow it (skipTileShift).
     bool skipInactiveTiles = true;
+    // Copy the voxels into RunResult::grid after each run. false leaves them in the device's
+    // buffers only (deviceVoxels(), for the GPU mesher) and the grid empty: a caller that meshes
+    // on the device and writes no voxels skips copying (and allocating) the whole grid.
+    bool readBack = true;
 };
 
 // How much tile skipping saved in one run: counts of (tile, phase) pairs, summed over every
@@ -72,8 +76,10 @@ public:
     VulkanExecutor(const VulkanExecutor&) = delete;
     VulkanExecutor& operator=(const VulkanExecutor&) = delete;
 
-    // Clears the voxel and material buffers to 0, runs every dispatch of the plan, returns the
-    // grid (densities, and materials when the package uses them; otherwise every voxel `none`).
+    // Clears the voxel and material buffers to 0 (the voxels not where the first stage writes every
+    // one of them and the chunks hold no padding), runs every dispatch of the plan, returns the
+    // grid (densities, and materials when the package uses them; otherwise every voxel `none`;
+    // an empty grid when ExecutorOptions::readBack is false).
     RunResult run();
 
     const ChunkLayout& layout() const;
