@@ -60,7 +60,7 @@ constexpr uint32_t kBindingPointSets = 10;
 constexpr uint32_t kBindingSolveTables = 12;
 // uint words a stage's passes hand to each other (StagePlan::scratchWords, the largest over the
 // stages; one word when none needs any): a speleothem stage's air mask (speleothems.glsl), the
-// rule each anchor of a sweep with stamps fired (StampKernel.cpp).
+// rule each anchor of a sweep with stamps fired and its phase's firing bits (StampKernel.cpp).
 constexpr uint32_t kBindingScratch = 11;
 
 constexpr uint32_t kNoKernel = UINT32_MAX;
