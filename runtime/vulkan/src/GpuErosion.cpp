@@ -1,6 +1,6 @@
 #include "voxc/vulkan/GpuErosion.h"
 
-#include "voxc/codegen/Spirv.h"
+#include "SolvePass.h"
 #include "voxc/core/Errors.h"
 #include "voxc/shaders/ShaderSources.h"
 #include "voxc/vulkan/SolveRunner.h"
@@ -50,15 +50,7 @@ const std::vector<Kernel>& passKernels() {
     static std::once_flag once;
     static std::vector<Kernel> kernels;
     std::call_once(once, [] {
-        for (const char* file : kPassFiles) {
-            Kernel k;
-            k.name = file;
-            k.origin = file;
-            k.glsl = passSource(file);
-            k.spirv = codegen::compileComputeShader(k.name, k.glsl);
-            k.localSize[0] = kLocalSize, k.localSize[1] = 1, k.localSize[2] = 1;
-            kernels.push_back(std::move(k));
-        }
+        for (const char* file : kPassFiles) kernels.push_back(solvePassKernel(file, file, passSource(file), kLocalSize));
     });
     return kernels;
 }

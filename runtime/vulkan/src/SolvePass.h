@@ -1,5 +1,6 @@
 #pragma once
-// The kernel of one pass of a SolveProgram built from GLSL (GpuMultigrid.cpp, GpuCurves.cpp).
+// The kernel of one pass of a SolveProgram built from GLSL (GpuMultigrid.cpp, GpuCurves.cpp,
+// GpuErosion.cpp).
 #include "voxc/codegen/KernelPackage.h"
 #include "voxc/codegen/Spirv.h"
 
