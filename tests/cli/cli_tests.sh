@@ -255,6 +255,11 @@ expect curves_run_solves 0 "curves 'cliffs' \(64x32x64 cells, solved on the host
     --voxels "$work/curves_cliff8.npy"
 expect_same curves_cliff_chunk_8_vs_32 "$work/curves_cliff.npy" "$work/curves_cliff8.npy"
 expect curves_interp_solves 0 "curves 'cliffs' .*parameters 5 levels" -- "$voxc" interp "$src/examples/curves_cliff.vox"
+# --trace: per solve the five levels' full-multigrid residuals, coarsest first, then each V-cycle's
+expect curves_interp_trace_levels 0 "  normals full multigrid per level, coarsest first: 4x2x4 [0-9.e+-]+, 8x4x8 [0-9.e+-]+, 16x8x16 [0-9.e+-]+, 32x16x32 [0-9.e+-]+, 64x32x64 [0-9.e+-]+$" -- \
+    "$voxc" interp "$src/examples/curves_cliff.vox" --trace --trace-limit 0
+expect curves_interp_trace_cycles 0 "  parameters max residual: full multigrid [0-9.e+-]+, V-cycle 1 [0-9.e+-]+" -- \
+    "$voxc" interp "$src/examples/curves_cliff.vox" --trace --trace-limit 0
 # the solve runs after the check, as a phase of its own
 expect curves_solve_phase 0 "solve +[0-9.]+  curves blocks" -- "$voxc" run "$src/examples/curves_cliff.vox" --device lavapipe \
     --timings --voxels "$work/curves_cliff_timed.npy"

@@ -27,10 +27,15 @@ TEST(CurvesSolve, MultigridConvergesHalvingTheResidualEachCycle) {
     const Result r = solveCurves(cs, Options{}, Limits{});
     ASSERT_EQ(r.solves.size(), 2u);
     for (const SolveReport& s : r.solves) {
-        EXPECT_EQ(s.levels, 5); // 64x32x64, 32x16x32, 16x8x16, 8x4x8, 4x4x4
+        EXPECT_EQ(s.levels, 5); // 64x32x64, 32x16x32, 16x8x16, 8x4x8, 4x2x4
         EXPECT_LE(s.cycles(), Limits{}.maxCycles);
         const float tolerance = s.name == "parameters" ? 6e-5f : 1e-5f; // 1e-5 * max amplitude 6
         EXPECT_LE(s.residuals.back(), tolerance) << s.name;
+        // Full multigrid's stages, coarsest first, end on the finest level's start residual.
+        ASSERT_EQ(s.fullMultigrid.size(), 5u) << s.name;
+        EXPECT_EQ(s.fullMultigrid.front().size, glm::ivec3(4, 2, 4)) << s.name;
+        EXPECT_EQ(s.fullMultigrid.back().size, glm::ivec3(64, 32, 64)) << s.name;
+        EXPECT_EQ(s.fullMultigrid.back().residual, s.residuals.front()) << s.name;
         for (size_t c = 3; c < s.residuals.size(); ++c) {
             EXPECT_LE(2.0f * s.residuals[c], s.residuals[c - 1]) << s.name << " cycle " << c;
             std::printf("%s V-cycle %zu: residual %.3g, factor %.2f\n", s.name.c_str(), c, s.residuals[c],

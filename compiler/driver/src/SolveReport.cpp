@@ -28,6 +28,14 @@ std::string formatSolveReport(const Program& program, bool perCycle, const std::
         out += "\n";
         if (!perCycle) continue;
         for (const SolveSummary& solve : table.solves) {
+            out += fmt::format("  {} full multigrid per level, coarsest first:", solve.name);
+            if (solve.fullMultigrid.empty()) out += " not kept (the multigrid ran on the device)";
+            for (size_t l = 0; l < solve.fullMultigrid.size(); ++l) {
+                const LevelResidual& level = solve.fullMultigrid[l];
+                out += fmt::format("{} {}x{}x{} {:.3e}", l == 0 ? "" : ",", level.size.x, level.size.y, level.size.z,
+                                   level.residual);
+            }
+            out += "\n";
             out += fmt::format("  {} max residual: full multigrid {:.3e}", solve.name, solve.residuals.front());
             for (size_t c = 1; c < solve.residuals.size(); ++c)
                 out += fmt::format(", V-cycle {} {:.3e}", c, solve.residuals[c]);

@@ -143,7 +143,7 @@ curves::LinearSolver vulkanLinearSolver(VulkanContext& context) {
         read[kUBuffer] = fixed.size() * count;
         VulkanSolveRunner runner(context, program);
         const SolveRun run = runner.run(initial, read);
-        curves::SolveReport report{name, int32_t(levels.size()), run.measures};
+        curves::SolveReport report{name, int32_t(levels.size()), run.measures, {}}; // no per-level residuals
         if (!run.converged) throw curves::ConvergenceError(name, report.cycles(), report.residuals.back(), tolerance);
         const std::vector<uint32_t>& words = run.buffers.at(kUBuffer);
         VOXC_ASSERT(words.size() == fixed.size() * count);

@@ -387,13 +387,18 @@ SolveReport solveLaplace(const std::string& name, const std::vector<uint8_t>& fi
             levels[l].f.emplace_back(levels[l].box.cellCount(), 0.0f);
         }
     }
+    // Each stage's residual is read only (maxResidualOf): the unknowns are those of an unrecorded
+    // solve, bit for bit. A coarse level's right-hand side is still its start's 0 at its stage.
+    std::vector<LevelResidual> stages;
     smooth(levels.back(), kCoarsestSweeps, levels.size() == 1);
+    stages.push_back({levels.back().box.size, maxResidualOf(levels.back())});
     for (size_t l = levels.size() - 1; l-- > 0;) {
         for (size_t c = 0; c < components.size(); ++c) prolong(levels[l + 1].box, levels[l + 1].u[c], levels[l], levels[l].u[c], false);
         vCycle(levels, l);
+        stages.push_back({levels[l].box.size, maxResidualOf(levels[l])});
     }
 
-    SolveReport report{name, int32_t(levels.size()), {maxResidualOf(levels.front())}};
+    SolveReport report{name, int32_t(levels.size()), {stages.back().residual}, std::move(stages)};
     while (!(report.residuals.back() <= tolerance)) {
         if (report.cycles() >= limits.maxCycles)
             throw ConvergenceError(name, report.cycles(), report.residuals.back(), tolerance);

@@ -134,7 +134,7 @@ SolveTable solveScene(const Scene& scene, const Limits& limits, const Solvers& s
     table.phaseMs.emplace_back(
         "density", std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - densityStart).count());
     for (const SolveReport& report : solved.solves)
-        table.solves.push_back({report.name, report.levels, report.residuals});
+        table.solves.push_back({report.name, report.levels, report.residuals, report.fullMultigrid});
     return table;
 }
 

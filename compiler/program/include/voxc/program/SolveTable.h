@@ -19,12 +19,22 @@ namespace curves {
 struct Scene; // voxc/generators/curves/Scene.h
 }
 
+// A multigrid level's cells per axis and its max residual (in finest-cell units, docs/curves.md)
+// at the end of its full-multigrid stage.
+struct LevelResidual {
+    glm::ivec3 size{0};
+    float residual = 0.0f;
+};
+
 // One iterative solve as `voxc run` reports it.
 struct SolveSummary {
     std::string name;              // e.g. "normals", "parameters"
     int32_t levels = 0;            // multigrid levels
     // Max residual after the full-multigrid start (index 0) and after each V-cycle.
     std::vector<float> residuals;
+    // Per level, coarsest first, the last (the finest) being residuals[0]; empty when the
+    // multigrid ran on a device, which keeps only the finest level's residuals.
+    std::vector<LevelResidual> fullMultigrid;
 
     int32_t cycles() const { return int32_t(residuals.size()) - 1; }
 };

@@ -4,6 +4,7 @@
 // multigrid in float32 with the fixed operation order of docs/curves.md.
 #include "voxc/generators/curves/Grid.h"
 #include "voxc/generators/curves/Limits.h"
+#include "voxc/program/SolveTable.h"
 
 #include <functional>
 #include <string>
@@ -14,6 +15,7 @@ struct SolveReport {
     std::string name;
     int32_t levels = 0;
     std::vector<float> residuals; // max residual after FMG (index 0) and after each V-cycle
+    std::vector<LevelResidual> fullMultigrid; // SolveSummary::fullMultigrid (host solves only)
     int32_t cycles() const { return int32_t(residuals.size()) - 1; }
 };
 
