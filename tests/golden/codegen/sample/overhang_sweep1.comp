@@ -174,10 +174,10 @@ uint densityKey(float v) {
 }
 
 int tileShift() { return push.anchorStep.w; }
-int tileSize() { return 1 << push.anchorStep.w; }
-int tilesPerAxisShift() { return findMSB(push.gridOrigin.w) - push.anchorStep.w; } // log2 of tiles per chunk axis
-int tilesPerAxis() { return 1 << tilesPerAxisShift(); } // per chunk
-int tilesPerChunk() { return 1 << (3 * tilesPerAxisShift()); }
+int tileSize() { return push.gridOrigin.w >> (findMSB(push.gridOrigin.w) - push.anchorStep.w); }
+int tilesPerAxis() { return push.gridOrigin.w >> push.anchorStep.w; } // per chunk, a power of two
+int tilesPerAxisShift() { return findMSB(push.gridOrigin.w) - push.anchorStep.w; } // its log2
+int tilesPerChunk() { return tilesPerAxis() * tilesPerAxis() * tilesPerAxis(); }
 
 // a / b for a >= 0, b >= 1 and a quotient below 2^21, as integer division computes it. llvmpipe
 // divides integers lane by lane (and guards each against zero); this is a few float and integer
@@ -195,23 +195,24 @@ ivec3 smallQuotient(ivec3 a, ivec3 b) {
 
 // Tile index of the tile at world tile coordinate `tile`.
 int tileIndex(ivec3 tile) {
-    int shift = tilesPerAxisShift();
-    ivec3 entry = (tile >> shift) - push.chunkBase.xyz;
+    int perAxis = tilesPerAxis();
+    ivec3 entry = (tile >> tilesPerAxisShift()) - push.chunkBase.xyz;
     int slot = chunkTable.chunkSlot[entry.x + push.chunkCount.x * (entry.y + push.chunkCount.y * entry.z)];
-    ivec3 inside = tile & ((1 << shift) - 1);
-    return (slot << (3 * shift)) + inside.x + ((inside.y + (inside.z << shift)) << shift);
+    ivec3 inside = tile & (perAxis - 1);
+    return slot * tilesPerChunk() + inside.x + perAxis * (inside.y + perAxis * inside.z);
 }
 
 // World tile coordinate of a tile id.
 ivec3 tileOfId(uint id) {
     int shift = tilesPerAxisShift();
+    int perAxis = tilesPerAxis();
     int entry = int(id) >> (3 * shift);
     int inside = int(id) & (tilesPerChunk() - 1);
     ivec3 count = push.chunkCount.xyz;
     int row = smallQuotient(entry, count.x); // entry / count.x
     int plane = smallQuotient(row, count.y);
     ivec3 chunk = push.chunkBase.xyz + ivec3(entry - row * count.x, row - plane * count.y, plane);
-    return (chunk << shift) + (ivec3(inside, inside >> shift, inside >> (2 * shift)) & ((1 << shift) - 1));
+    return chunk * perAxis + (ivec3(inside, inside >> shift, inside >> (2 * shift)) & (perAxis - 1));
 }
 
 // The anchors of the current phase (push.anchorStart + i * step, i < push.anchorCount) whose
