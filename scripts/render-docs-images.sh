@@ -28,6 +28,9 @@ done
 # The lava tube's mouth under the ridge, in the x = 127 face.
 "$voxc" render "$root/examples/canyon.vox" -o "$root/docs/images/canyon.png" --size 640x400 \
     --camera 230,75,110:64,14,56 --device lavapipe
+# The range from the north-east, its peak in snow.
+"$voxc" render "$root/examples/mountains.vox" -o "$root/docs/images/mountains.png" --size 640x400 \
+    --camera 150,90,-40:64,24,64 --device lavapipe
 for example in scene valley; do
     "$voxc" render "$root/examples/$example.vox" -o "$root/docs/images/$example.png" --size 640x400 --device lavapipe
 done
