@@ -16,6 +16,12 @@ done
 # The cliff face from the floor's side.
 "$voxc" render "$root/examples/curves_cliff.vox" -o "$root/docs/images/curves_cliff.png" --size 400x400 \
     --camera -60,60,120:32,12,32 --device lavapipe
+# Into the tunnel's mouth, under the vaulted roof.
+"$voxc" render "$root/examples/curves_cave.vox" -o "$root/docs/images/curves_cave.png" --size 400x400 \
+    --camera 52,26,-52:32,11,32 --device lavapipe
+# Up the terraces' steps.
+"$voxc" render "$root/examples/curves_terrace.vox" -o "$root/docs/images/curves_terrace.png" --size 400x400 \
+    --camera -40,50,-40:32,12,32 --device lavapipe
 # Down the canyon, where the stamped arches span it.
 "$voxc" render "$root/examples/arches_between_cliffs.vox" -o "$root/docs/images/arches_between_cliffs.png" \
     --size 400x400 --camera 64,120,-50:64,14,64 --device lavapipe
