@@ -6,7 +6,7 @@
 
 layout(local_size_x = 64) in;
 
-<<CURVES_SOLVE_COMMON>>
+#include "curves_solve_common.glsl"
 
 layout(std430, set = 0, binding = 0) readonly buffer Amplitude { float amplitude[]; };
 layout(std430, set = 0, binding = 1) readonly buffer Roughness { float roughness[]; };
@@ -14,7 +14,10 @@ layout(std430, set = 0, binding = 1) readonly buffer Roughness { float roughness
 layout(std430, set = 0, binding = 2) readonly buffer NoiseTables { int perlinPermutation[]; } noiseTables;
 layout(std430, set = 0, binding = 3) writeonly buffer Displacement { float displacement[]; };
 
-<<NOISE_LIBRARIES>>
+#include "random.glsl"
+#include "noise_common.glsl"
+#include "noise_perlin3.glsl"
+#include "noise_fractal.glsl"
 
 void main() {
     const ivec3 p = dispatchedCell();

@@ -4,8 +4,8 @@
 
 layout(local_size_x = 1) in;
 
-<<CURVES_SOLVE_COMMON>>
-<<CURVES_FRONT_COMMON>>
+#include "curves_solve_common.glsl"
+#include "curves_front_common.glsl"
 
 void setCell(uint cell, ivec3 p, int layer) {}
 

@@ -6,8 +6,8 @@
 
 layout(local_size_x = 64) in;
 
-<<CURVES_SOLVE_COMMON>>
-<<CURVES_FRONT_COMMON>>
+#include "curves_solve_common.glsl"
+#include "curves_front_common.glsl"
 
 layout(std430, set = 0, binding = 3) buffer Distance { float surfaceDistance[]; };
 layout(std430, set = 0, binding = 4) readonly buffer Normals { float normals[]; }; // unit, xyz per cell

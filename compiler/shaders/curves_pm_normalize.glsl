@@ -4,8 +4,8 @@
 
 layout(local_size_x = 64) in;
 
-<<CURVES_SOLVE_COMMON>>
-<<CURVES_PM_COMMON>>
+#include "curves_solve_common.glsl"
+#include "curves_pm_common.glsl"
 
 void main() {
     const ivec3 p = dispatchedCell();

@@ -4,7 +4,7 @@
 
 layout(local_size_x = 64) in;
 
-<<CURVES_SOLVE_COMMON>>
+#include "curves_solve_common.glsl"
 
 layout(std430, set = 0, binding = 0) buffer Values { float values[]; }; // two halves
 

@@ -3,7 +3,7 @@
 // water, clamped neighbours), the capacity C = (((K_c·sinφ)·|V|)·s(x, y))·room, then the amount
 // moved between S_h and the suspended sediment, clamped by the depth limit E. Writes the other
 // S_h channel (ping-pong) and the suspended sediment.
-// <<EROSION_COMMON>>
+#include "erosion_common.glsl"
 
 float bedAt(int x, int y) {
     return load(kSurface, clamp(x, 0, push.grid.x - 1), clamp(y, 0, push.grid.y - 1));

@@ -1,6 +1,6 @@
 #version 450
 // Evaporation (terrain::evaporate): d = d·keep, keep = 1 − K_e·dt (the drain: 1 − 0.9).
-// <<EROSION_COMMON>>
+#include "erosion_common.glsl"
 
 void main() {
     int i = cellOfInvocation();

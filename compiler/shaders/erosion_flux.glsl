@@ -1,7 +1,7 @@
 #version 450
 // Outflow fluxes (terrain::updateFlux): f' = max(0, f + (((dt·A)·g)·(h − h_D)) / l) towards each
 // neighbour inside the grid, 0 outside; scaled by K = min(1, (d·l_x²) / (Σf'·dt)) when Σf' > 0.
-// <<EROSION_COMMON>>
+#include "erosion_common.glsl"
 
 float outflow(float flux, float level, int nx, int ny) {
     if (nx < 0 || ny < 0 || nx >= push.grid.x || ny >= push.grid.y) return 0.0;

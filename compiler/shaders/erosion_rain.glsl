@@ -1,7 +1,7 @@
 #version 450
 // Rain (terrain::addRain): a drop adds intensity · w inside its disc (dx² + dy² <= R², integer
 // cell indices, the drop drawn on the host by terrain::dropAt); uniform rain adds (dt · r) · w.
-// <<EROSION_COMMON>>
+#include "erosion_common.glsl"
 
 void main() {
     int i = cellOfInvocation();

@@ -1,7 +1,7 @@
 #version 450
 // surface = b (+ d with water), b = base + S_h, so every neighbour read is one load
 // (terrain's computeSurface).
-// <<EROSION_COMMON>>
+#include "erosion_common.glsl"
 
 void main() {
     int i = cellOfInvocation();

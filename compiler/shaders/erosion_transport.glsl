@@ -3,7 +3,7 @@
 // clamped departure point. `conservative`: the documented gather: the 3×3 sources in row-major
 // order, each a source with sediment whose clamped arrival point's bilinear footprint covers this
 // cell adding s1·(w_x·w_y), starting from +0 (the host scatters in the same order).
-// <<EROSION_COMMON>>
+#include "erosion_common.glsl"
 
 void main() {
     int i = cellOfInvocation();

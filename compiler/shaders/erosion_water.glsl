@@ -2,7 +2,7 @@
 // Water and velocity (terrain::updateWaterAndVelocity): d2 = d1 + (dt·(in − out)) / l_x², and
 // where the mean depth exceeds 1e-6 the velocity from the mean of the through-flows, clamped to
 // ±(0.5·l_x)/dt.
-// <<EROSION_COMMON>>
+#include "erosion_common.glsl"
 
 float fluxOrZero(int channel, int x, int y) {
     return (x < 0 || y < 0 || x >= push.grid.x || y >= push.grid.y) ? 0.0 : load(channel, x, y);

@@ -1,4 +1,6 @@
 #version 450
+// <<COMPONENTS>>
+#include "mg_common.glsl"
 // Multigrid pass: trilinear cell-centred interpolation of level push.coarse at every free cell
 // of level push.fine, along x, then y, then z: on a halved axis weights 3/4 (own parent) and 1/4
 // (the next parent towards the child, clamped at the box), on a kept axis 1 and 0. Added to u

@@ -1,4 +1,6 @@
 #version 450
+// <<COMPONENTS>>
+#include "mg_common.glsl"
 // Multigrid pass: the max over free cells of level push.fine (the finest) and every component of
 // |0 - sum_j w_j (u_j - u_i)|, the quantity the schedule stops on. Max is order-free, so the
 // workgroup maximum and an atomic max of the bits (non-negative floats order as their bits) give

@@ -1,4 +1,6 @@
 #version 450
+// <<COMPONENTS>>
+#include "mg_common.glsl"
 // Multigrid pass: one invocation per cell of level push.coarse, over its children in level
 // push.fine (z, then y, then x order, as the host's sum). Mode push.halved.w:
 //   0: the mean of the children's residuals (0 at fixed children) becomes the coarse right-hand

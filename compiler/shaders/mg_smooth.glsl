@@ -1,4 +1,6 @@
 #version 450
+// <<COMPONENTS>>
+#include "mg_common.glsl"
 // Multigrid pass: one red-black Gauss-Seidel half sweep on level push.fine, colour push.halved.w
 // (cells with (x + y + z) & 1 == colour). u_i = (sum_j w_j u_j - f_i) / sum_j w_j over the
 // in-box neighbours, both sums from 0 in neighbour order; fixed cells keep their values. A

@@ -2,7 +2,7 @@
 // `1.0 - f` as one precise subtraction, ties keeping the grid's density.
 #include "voxc/codegen/CurvesKernel.h"
 
-#include "Template.h"
+#include "voxc/codegen/Template.h"
 
 #include "voxc/ir/Ir.h"
 

@@ -2,7 +2,7 @@
 // constants written inline), the per-column nodes before the y loop, then the combine of
 // FieldMode written exactly as voxc::combineField computes it with std::min / std::max.
 #include "voxc/codegen/KernelSources.h"
-#include "Template.h"
+#include "voxc/codegen/Template.h"
 
 #include "voxc/builtins/Functions.h"
 #include "voxc/builtins/Ops.h"

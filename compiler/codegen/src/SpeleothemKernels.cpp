@@ -1,7 +1,7 @@
 // GLSL for a speleothem stage: the shared air-mask prepass (speleothem_mask.glsl) and one grow
 // kernel per stage (speleothem_grow.glsl) with the stage's parameters as constants, written as
 // the float literals the CPU uses (glslFloat round-trips every float).
-#include "Template.h"
+#include "voxc/codegen/Template.h"
 
 #include "voxc/builtins/Ops.h"
 #include "voxc/codegen/KernelSources.h"

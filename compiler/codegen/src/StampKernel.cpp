@@ -1,7 +1,7 @@
 // The stamp pass of a sweep whose rules stamp fields (stamp.glsl), and the record of fired rules
 // the sweep kernel leaves for it in kBindingScratch.
 #include "voxc/codegen/KernelSources.h"
-#include "Template.h"
+#include "voxc/codegen/Template.h"
 
 #include "voxc/builtins/Ops.h"
 #include "voxc/ir/Ir.h"

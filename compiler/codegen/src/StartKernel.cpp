@@ -1,5 +1,5 @@
 #include "voxc/codegen/KernelSources.h"
-#include "Template.h"
+#include "voxc/codegen/Template.h"
 
 #include "voxc/builtins/Ops.h"
 #include "voxc/builtins/Shapes.h"

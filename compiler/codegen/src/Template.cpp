@@ -1,4 +1,4 @@
-#include "Template.h"
+#include "voxc/codegen/Template.h"
 
 #include "voxc/core/Errors.h"
 #include "voxc/shaders/ShaderSources.h"

@@ -2,8 +2,8 @@
 
 #include "SolvePass.h"
 #include "voxc/builtins/Shapes.h"
+#include "voxc/codegen/Template.h"
 #include "voxc/core/Errors.h"
-#include "voxc/shaders/ShaderSources.h"
 #include "voxc/vulkan/GpuMultigrid.h"
 #include "voxc/vulkan/SolveRunner.h"
 
@@ -29,23 +29,6 @@ constexpr int32_t kLayersPerCycle = 8;
 // FrontControl's words (curves_front_common.glsl).
 enum FrontWord : uint32_t { kNextCount, kCount, kGroups, kLayer = kGroups + 3, kHalf, kLastLayer, kFrontWords };
 
-// `file` with its <<...>> lines replaced by the shared sources.
-std::string passSource(const char* file) {
-    std::string pass(shaderSource(file));
-    const auto expand = [&](const std::string& marker, const std::string& text) {
-        const size_t at = pass.find(marker);
-        if (at != std::string::npos) pass.replace(at, marker.size(), text);
-    };
-    expand("<<CURVES_SOLVE_COMMON>>", std::string(shaderSource("curves_solve_common.glsl")));
-    expand("<<CURVES_FRONT_COMMON>>", std::string(shaderSource("curves_front_common.glsl")));
-    expand("<<CURVES_PM_COMMON>>", std::string(shaderSource("curves_pm_common.glsl")));
-    std::string noise;
-    for (const char* library : {"random.glsl", "noise_common.glsl", "noise_perlin3.glsl", "noise_fractal.glsl"})
-        noise += std::string(shaderSource(library)) + "\n";
-    expand("<<NOISE_LIBRARIES>>", noise);
-    return pass;
-}
-
 // The pass's SPIR-V, compiled once per process.
 const Kernel& passKernel(const char* file) {
     static std::mutex mutex;
@@ -53,7 +36,7 @@ const Kernel& passKernel(const char* file) {
     const std::lock_guard lock(mutex);
     const auto found = compiled.find(file);
     if (found != compiled.end()) return found->second;
-    return compiled.emplace(file, solvePassKernel(file, file, passSource(file), kLocalSize)).first->second;
+    return compiled.emplace(file, solvePassKernel(file, file, codegen::instantiateTemplate(file, {}), kLocalSize)).first->second;
 }
 
 uint32_t word(float v) { return std::bit_cast<uint32_t>(v); }

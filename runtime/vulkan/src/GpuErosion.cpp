@@ -1,8 +1,8 @@
 #include "voxc/vulkan/GpuErosion.h"
 
 #include "SolvePass.h"
+#include "voxc/codegen/Template.h"
 #include "voxc/core/Errors.h"
-#include "voxc/shaders/ShaderSources.h"
 #include "voxc/vulkan/SolveRunner.h"
 
 #include <fmt/format.h>
@@ -35,22 +35,12 @@ std::array<terrain::Field2*, kChannelCount> channels(terrain::ErosionGrid& g) {
             &g.fluxR,    &g.fluxT, &g.fluxB,    &g.velocityU,  &g.velocityV,      &g.suspended, &g.surface};
 }
 
-// The pass's #version line, the shared declarations in place of its <<EROSION_COMMON>> line.
-std::string passSource(const char* file) {
-    std::string pass(shaderSource(file));
-    const std::string marker = "// <<EROSION_COMMON>>";
-    const size_t at = pass.find(marker);
-    if (at == std::string::npos) throw InternalError(fmt::format("{} has no {} line", file, marker));
-    pass.replace(at, marker.size(), shaderSource("erosion_common.glsl"));
-    return pass;
-}
-
 // SPIR-V of the passes, compiled once per process.
 const std::vector<Kernel>& passKernels() {
     static std::once_flag once;
     static std::vector<Kernel> kernels;
     std::call_once(once, [] {
-        for (const char* file : kPassFiles) kernels.push_back(solvePassKernel(file, file, passSource(file), kLocalSize));
+        for (const char* file : kPassFiles) kernels.push_back(solvePassKernel(file, file, codegen::instantiateTemplate(file, {}), kLocalSize));
     });
     return kernels;
 }

@@ -1,8 +1,8 @@
 #include "voxc/vulkan/GpuMultigrid.h"
 
 #include "SolvePass.h"
+#include "voxc/codegen/Template.h"
 #include "voxc/core/Errors.h"
-#include "voxc/shaders/ShaderSources.h"
 #include "voxc/vulkan/SolveRunner.h"
 
 #include <fmt/format.h>
@@ -22,14 +22,6 @@ constexpr const char* kPassFiles[kPassCount] = {"mg_smooth.glsl", "mg_restrict.g
                                                 "mg_residual.glsl"};
 constexpr uint32_t kMaskBuffer = 0, kUBuffer = 1, kFBuffer = 2, kMeasureBuffer = 3, kBufferCount = 4;
 
-// The pass's #version line, COMPONENTS, the shared declarations, then the rest of the pass.
-std::string passSource(const char* file, int32_t components) {
-    const std::string pass(shaderSource(file));
-    const size_t firstLine = pass.find('\n') + 1;
-    return pass.substr(0, firstLine) + fmt::format("#define COMPONENTS {}\n", components) +
-           std::string(shaderSource("mg_common.glsl")) + pass.substr(firstLine);
-}
-
 // SPIR-V of the passes per component count, compiled once per process.
 const std::vector<Kernel>& passKernels(int32_t components) {
     static std::mutex mutex;
@@ -38,9 +30,10 @@ const std::vector<Kernel>& passKernels(int32_t components) {
     const auto found = compiled.find(components);
     if (found != compiled.end()) return found->second;
     std::vector<Kernel> kernels;
+    const codegen::TemplateSections sections{{"COMPONENTS", fmt::format("#define COMPONENTS {}", components)}};
     for (const char* file : kPassFiles)
         kernels.push_back(solvePassKernel(fmt::format("{} ({} components)", file, components), file,
-                                          passSource(file, components), kLocalSize));
+                                          codegen::instantiateTemplate(file, sections), kLocalSize));
     return compiled.emplace(components, std::move(kernels)).first->second;
 }
 
