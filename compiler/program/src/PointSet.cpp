@@ -66,6 +66,19 @@ bool cellRange(const PointBins& bins, glm::dvec3 boxLo, glm::dvec3 boxHi, glm::i
     return true;
 }
 
+// The boxes outside which centre (segment) i of `set` cannot reach, widened by `slack`.
+void centreBox(const PointSet& set, size_t i, double slack, glm::dvec3& lo, glm::dvec3& hi) {
+    const double reach = double(set.centreReach) / set.centreScales[i] + slack;
+    lo = glm::dvec3(set.centres[i]) - reach;
+    hi = glm::dvec3(set.centres[i]) + reach;
+}
+
+void segmentBox(const PointSet& set, size_t i, double slack, glm::dvec3& lo, glm::dvec3& hi) {
+    const glm::dvec3 a(set.segments[i].from), b = a + glm::dvec3(set.segments[i].delta);
+    lo = glm::min(a, b) - (double(set.segmentReach) + slack);
+    hi = glm::max(a, b) + (double(set.segmentReach) + slack);
+}
+
 size_t cellIndex(const PointBins& bins, glm::ivec3 cell) {
     const glm::ivec3 i = cell - bins.firstCell;
     return size_t(i.x) + size_t(bins.cellCount.x) * (size_t(i.y) + size_t(bins.cellCount.y) * size_t(i.z));
@@ -166,21 +179,13 @@ PointBins binPointSet(const PointSet& set, glm::ivec3 firstCell, glm::ivec3 cell
     const double centreReach = set.centreReach, segmentReach = set.segmentReach;
     fillLists(
         bins, set.centres.size(), centreReach,
-        [&](size_t i, glm::dvec3& lo, glm::dvec3& hi) {
-            const double worldReach = centreReach / set.centreScales[i] + kListSlack;
-            lo = glm::dvec3(set.centres[i]) - worldReach;
-            hi = glm::dvec3(set.centres[i]) + worldReach;
-        },
+        [&](size_t i, glm::dvec3& lo, glm::dvec3& hi) { centreBox(set, i, kListSlack, lo, hi); },
         [&](size_t i, glm::dvec3 lo, glm::dvec3 hi) { return boxDistance(glm::dvec3(set.centres[i]), lo, hi); },
         [&](size_t i) { return double(set.centreScales[i]); }, bins.centreStart, bins.centreItems, entries,
         maxEntries, maxPerCell);
     fillLists(
         bins, set.segments.size(), segmentReach,
-        [&](size_t i, glm::dvec3& lo, glm::dvec3& hi) {
-            const glm::dvec3 a(set.segments[i].from), b = a + glm::dvec3(set.segments[i].delta);
-            lo = glm::min(a, b) - (segmentReach + kListSlack);
-            hi = glm::max(a, b) + (segmentReach + kListSlack);
-        },
+        [&](size_t i, glm::dvec3& lo, glm::dvec3& hi) { segmentBox(set, i, kListSlack, lo, hi); },
         [&](size_t i, glm::dvec3 lo, glm::dvec3 hi) { return segmentBoxLowerBound(set.segments[i], lo, hi); },
         [](size_t) { return 1.0; }, bins.segmentStart, bins.segmentItems, entries, maxEntries, maxPerCell);
     return bins;
@@ -265,16 +270,10 @@ std::shared_ptr<PointSet> movedPointSet(const PointSet& set, glm::dvec3 by) {
 bool pointSetSupport(const PointSet& set, glm::dvec3& lo, glm::dvec3& hi) {
     lo = glm::dvec3(std::numeric_limits<double>::max());
     hi = -lo;
-    for (size_t i = 0; i < set.centres.size(); ++i) {
-        const double reach = double(set.centreReach) / double(set.centreScales[i]);
-        lo = glm::min(lo, glm::dvec3(set.centres[i]) - reach);
-        hi = glm::max(hi, glm::dvec3(set.centres[i]) + reach);
-    }
-    for (const PointSetSegment& s : set.segments) {
-        const glm::dvec3 a(s.from), b = a + glm::dvec3(s.delta);
-        lo = glm::min(lo, glm::min(a, b) - double(set.segmentReach));
-        hi = glm::max(hi, glm::max(a, b) + double(set.segmentReach));
-    }
+    const auto widen = [&](glm::dvec3 itemLo, glm::dvec3 itemHi) { lo = glm::min(lo, itemLo), hi = glm::max(hi, itemHi); };
+    glm::dvec3 itemLo, itemHi;
+    for (size_t i = 0; i < set.centres.size(); ++i) centreBox(set, i, 0.0, itemLo, itemHi), widen(itemLo, itemHi);
+    for (size_t i = 0; i < set.segments.size(); ++i) segmentBox(set, i, 0.0, itemLo, itemHi), widen(itemLo, itemHi);
     return !set.centres.empty() || !set.segments.empty();
 }
 
