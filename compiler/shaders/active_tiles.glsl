@@ -46,11 +46,15 @@ struct TileNeighbourhood {
     uvec2 r000, r100, r010, r110, r001, r101, r011, r111;
 };
 
+// The tile index of a tile at or after the first of the chunk table, -1 past its end.
+int tileIndexOrNone(ivec3 tile) {
+    ivec3 tableHigh = (push.chunkBase.xyz + push.chunkCount.xyz) * tilesPerAxis() - 1;
+    return any(greaterThan(tile, tableHigh)) ? -1 : tileIndex(tile);
+}
+
 uvec2 tileRangeOrEmpty(ivec3 tile) {
-    ivec3 tableLow = push.chunkBase.xyz * tilesPerAxis();
-    ivec3 tableHigh = tableLow + push.chunkCount.xyz * tilesPerAxis() - 1;
-    if (any(greaterThan(tile, tableHigh))) return uvec2(0xffffffffu, 0u);
-    int index = tileIndex(tile);
+    int index = tileIndexOrNone(tile);
+    if (index < 0) return uvec2(0xffffffffu, 0u);
     return uvec2(tileRanges.key[2 * index], tileRanges.key[2 * index + 1]);
 }
 
@@ -90,6 +94,48 @@ uvec2 nearCellRange(TileNeighbourhood n, TileAnchors anchors, ivec3 offset) {
     range = uniteIf(range, here.x && next.y && next.z, n.r011);
     range = uniteIf(range, next.x && next.y && next.z, n.r111);
     return range;
+}
+
+// The tile indices (tileIndexOrNone) of a tile and its next
+// tiles along x, y and z: where the occupancy rows of a window whose offsets are below 8 lie.
+struct OccupancyNeighbourhood {
+    int i000, i100, i010, i110, i001, i101, i011, i111;
+};
+
+OccupancyNeighbourhood occupancyNeighbourhood(ivec3 tile) {
+    OccupancyNeighbourhood n;
+    n.i000 = tileIndexOrNone(tile);
+    n.i100 = tileIndexOrNone(tile + ivec3(1, 0, 0));
+    n.i010 = tileIndexOrNone(tile + ivec3(0, 1, 0));
+    n.i110 = tileIndexOrNone(tile + ivec3(1, 1, 0));
+    n.i001 = tileIndexOrNone(tile + ivec3(0, 0, 1));
+    n.i101 = tileIndexOrNone(tile + ivec3(1, 0, 1));
+    n.i011 = tileIndexOrNone(tile + ivec3(0, 1, 1));
+    n.i111 = tileIndexOrNone(tile + ivec3(1, 1, 1));
+    return n;
+}
+
+// The occupancy bits of row (y, z) of the neighbourhood (tile-local, 0 <= y, z < 2 * tileSize()),
+// bit x for x = 0 .. 2 * tileSize() - 1: the tile's row, then its next tile's along x. Outside
+// the chunk table no anchor's window reads, so those bits are clear.
+uint occupancyRow(OccupancyNeighbourhood n, int y, int z) {
+    int size = tileSize();
+    bool upY = y >= size;
+    bool upZ = z >= size;
+    int here = upZ ? (upY ? n.i011 : n.i001) : (upY ? n.i010 : n.i000);
+    int next = upZ ? (upY ? n.i111 : n.i101) : (upY ? n.i110 : n.i100);
+    ivec3 inside = ivec3(0, y & (size - 1), z & (size - 1));
+    uint rowMask = (1u << size) - 1u;
+    uint row = 0u;
+    if (here >= 0) {
+        ivec2 bit = occupancyBit(here, inside);
+        row = (tileOccupancy.bits[bit.x] >> bit.y) & rowMask;
+    }
+    if (next >= 0) {
+        ivec2 bit = occupancyBit(next, inside);
+        row |= ((tileOccupancy.bits[bit.x] >> bit.y) & rowMask) << size;
+    }
+    return row;
 }
 
 // Whether a density range (keys) meets the key interval [lo, hi].

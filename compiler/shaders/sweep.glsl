@@ -51,7 +51,8 @@ int windowCellAddress(WindowAddressing window, ivec3 offset) {
 }
 
 // Stores a written density and keeps its tile's range a superset of the tile's densities
-// (the range only widens; the next tile_ranges pass recomputes it exactly).
+// (the range only widens; the next tile_ranges pass recomputes it exactly) and the voxel's
+// occupancy bit exact (other lanes write other bits of the word, hence the atomics).
 void writeDensity(int address, float value) {
     voxels.density[address] = value;
     if (push.anchorCount.w == 0) return; // direct dispatch: no tile bookkeeping
@@ -59,12 +60,19 @@ void writeDensity(int address, float value) {
     int chunkShift = findMSB(chunkSize);
     int inside = address & (chunkSize * chunkSize * chunkSize - 1);
     int perAxis = tilesPerAxis();
-    ivec3 tile = (ivec3(inside, inside >> chunkShift, inside >> (2 * chunkShift)) & (push.gridOrigin.w - 1)) >> tileShift();
+    ivec3 voxel = ivec3(inside, inside >> chunkShift, inside >> (2 * chunkShift)) & (chunkSize - 1);
+    ivec3 tile = voxel >> tileShift();
     int index = (address >> (3 * chunkShift)) * tilesPerChunk() + tile.x + perAxis * (tile.y + perAxis * tile.z);
     uint key = densityKey(value);
     atomicMin(tileRanges.key[2 * index], key);
     atomicMax(tileRanges.key[2 * index + 1], key);
     tileDirty.flag[index] = 1u;
+    if (!occupancyTracked()) return;
+    ivec2 bit = occupancyBit(index, voxel & (tileSize() - 1));
+    if (occupied(value))
+        atomicOr(tileOccupancy.bits[bit.x], 1u << bit.y);
+    else
+        atomicAnd(tileOccupancy.bits[bit.x], ~(1u << bit.y));
 }
 
 // The anchor of this invocation in an indirect dispatch: false when it has none.

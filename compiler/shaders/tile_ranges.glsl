@@ -3,7 +3,8 @@
 // flag in TileDirty is set (after a start stage, or where a sweep wrote), so the next sweep
 // classifies tiles on tight ranges. One invocation per tile id (tiles.glsl); a workgroup per
 // tile would cost more in workgroup overhead (llvmpipe) than the tile's reads. Only voxels
-// inside the grid count, since windows never read the padding.
+// inside the grid count, since windows never read the padding (their occupancy bits stay clear).
+// The same reads set the tile's occupancy bits (tiles.glsl).
 
 #include "common.glsl"
 
@@ -18,17 +19,31 @@ void main() {
     int index = tileIndex(tile);
     if (tileDirty.flag[index] == 0u) return;
     ivec3 tileLow = tile * tileSize() - push.gridOrigin.xyz; // grid-local
-    ivec3 low = max(tileLow, ivec3(0));
-    ivec3 high = min(tileLow + tileSize(), push.gridSize.xyz);
+    ivec3 low = max(tileLow, ivec3(0)) - tileLow;             // tile-local, the in-grid part
+    ivec3 high = min(tileLow + tileSize(), push.gridSize.xyz) - tileLow;
+    bool occupancy = occupancyTracked();
     uint lo = 0xffffffffu;
     uint hi = 0u;
-    for (int z = low.z; z < high.z; ++z) {
-        for (int y = low.y; y < high.y; ++y) {
-            int address = voxelAddress(ivec3(low.x, y, z));
-            for (int x = low.x; x < high.x; ++x, ++address) { // a tile row never leaves its chunk
-                uint key = densityKey(voxels.density[address]);
-                lo = min(lo, key);
-                hi = max(hi, key);
+    uint word = 0u; // occupancy rows gathered for the word they fill
+    for (int z = 0; z < tileSize(); ++z) {
+        for (int y = 0; y < tileSize(); ++y) {
+            uint row = 0u;
+            if (z >= low.z && z < high.z && y >= low.y && y < high.y) {
+                int address = voxelAddress(tileLow + ivec3(low.x, y, z));
+                for (int x = low.x; x < high.x; ++x, ++address) { // a tile row never leaves its chunk
+                    float density = voxels.density[address];
+                    uint key = densityKey(density);
+                    lo = min(lo, key);
+                    hi = max(hi, key);
+                    row |= occupied(density) ? 1u << x : 0u;
+                }
+            }
+            if (!occupancy) continue;
+            ivec2 bit = occupancyBit(index, ivec3(0, y, z));
+            word |= row << bit.y;
+            if (bit.y + tileSize() == 32) {
+                tileOccupancy.bits[bit.x] = word;
+                word = 0u;
             }
         }
     }

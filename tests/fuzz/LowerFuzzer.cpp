@@ -37,10 +37,12 @@ void generateGlsl(const voxc::ir::IrModule& module) {
         (void)fieldBoxes(module, field, stage.mode, stage.material, std::nullopt);
         (void)fieldKernelSource(module, field, stage.mode, stage.material, {stage}, field.name, sourceName);
     }
+    const std::optional<OccupancyLevel> level = occupancyLevel(module);
+    (void)tileRangesKernelSource(level);
     for (const voxc::ir::IrGrammar& grammar : module.grammars)
         for (const voxc::ir::IrSweep& sweep : grammar.sweeps) {
-            (void)sweepKernelSource(grammar, sweep, grammar.name, sourceName);
-            if (!sweep.rules.empty()) (void)activeTilesKernelSource(grammar, sweep, grammar.name, sourceName);
+            (void)sweepKernelSource(grammar, sweep, grammar.name, sourceName, level);
+            if (!sweep.rules.empty()) (void)activeTilesKernelSource(grammar, sweep, grammar.name, sourceName, level);
         }
 }
 

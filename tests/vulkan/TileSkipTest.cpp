@@ -11,6 +11,7 @@
 #include "voxc/vulkan/Executor.h"
 
 #include <cstring>
+#include <stdexcept>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -22,11 +23,18 @@ using test::lavapipe;
 Program checked(const std::string& text) { return test::checkedProgram("grow.vox", text); }
 
 
-RunResult run(const Program& program, bool skip) {
+RunResult run(const Program& program, bool skip, std::array<uint32_t, 3> maxWorkGroups = {0, 0, 0}) {
     ExecutorOptions options;
     options.skipInactiveTiles = skip;
+    options.maxWorkGroups = maxWorkGroups;
     VulkanExecutor executor(lavapipe(), compileProgram(program, {}), options);
     return executor.run();
+}
+
+const Kernel& kernelNamed(const KernelPackage& package, const std::string& name) {
+    for (const Kernel& kernel : package.kernels)
+        if (kernel.name == name) return kernel;
+    throw std::runtime_error("no kernel " + name);
 }
 
 TEST(vulkan_TileSkip, OverhangDispatchesFewTilesAndMatchesTheInterpreter) {
@@ -79,6 +87,63 @@ TEST(vulkan_TileSkip, GrowthAcrossTileBordersMatchesTheInterpreter) {
     // The rock reached tiles far from the seed.
     EXPECT_GE(expected.at({20, 2, 2}), 0.5f);
     EXPECT_GE(expected.at({3, 2, 15}), 0.5f);
+}
+
+// cave_grammar.vox's rules need rock beside air along x in two or three stacked rows: its
+// heightfield's surface band meets every density range, but the occupancy bits show the band
+// steps at most one voxel at a time, so only tiles at the cliff face stay active.
+TEST(vulkan_TileSkip, OccupancyPatternsLeaveOutTheSurfaceBand) {
+    CheckResult result = checkFile(fmt::format("{}/examples/cave_grammar.vox", VOXC_SOURCE_DIR));
+    ASSERT_TRUE(result.program) << result.rendered();
+    const Program program = std::move(*result.program);
+    const DenseGrid expected = interpret(program);
+    const RunResult skipping = run(program, true);
+    ASSERT_TRUE(skipping.skip.enabled);
+    EXPECT_EQ(skipping.skip.tileSize, 8);
+    // Density ranges alone keep about 16% of the tile-phases (the surface band and the face).
+    EXPECT_LT(skipping.skip.activeTilePhases * 20, skipping.skip.tilePhases);
+    EXPECT_GT(skipping.skip.activeTilePhases, 0u);
+    EXPECT_EQ(test::countBitDifferences(expected, skipping.grid.toDense()), 0u);
+    // Fewer workgroups make the runtime choose tiles of 16 (occupancy bits kept) and of 32 (too
+    // wide for a row of bits: ranges alone); both give the same voxels.
+    const RunResult tiles16 = run(program, true, {64, 64, 65535});
+    EXPECT_EQ(tiles16.skip.tileSize, 16);
+    EXPECT_LT(tiles16.skip.activeTilePhases * 4, tiles16.skip.tilePhases);
+    EXPECT_EQ(test::countBitDifferences(expected, tiles16.grid.toDense()), 0u);
+    const RunResult tiles32 = run(program, true, {512, 8, 65535});
+    EXPECT_EQ(tiles32.skip.tileSize, 32);
+    EXPECT_EQ(test::countBitDifferences(expected, tiles32.grid.toDense()), 0u);
+}
+
+// The level is the test that decides the most cells: here `> 0.25` (three cells of `GT 0.25`
+// and one of `LEQ 0.25` against one `GEQ 0.5`). A cell that passes NaN (NEQ) or both sides
+// of the level is left to the ranges.
+TEST(vulkan_TileSkip, OccupancyLevelDecidesTheMostCells) {
+    const Program program = checked(R"(
+world { size = [24, 20, 16]; chunk = 8; seed = 5; }
+start {
+  fill { value = 0; }
+  box { min = [0, 0, 0]; max = [10, 12, 16]; value = 0.75; }
+  box { min = [4, 0, 0]; max = [14, 6, 16]; value = 0.2; }
+}
+grammar levels {
+  iterations = 3;
+  clamp = [0, 1];
+  rule edge { size = [3, 1, 1]; symbol { [GT 0.25, GT 0.25, LEQ 0.25] } transform { [NOP, NOP, ADD 0.125] } }
+  rule other { size = [3, 1, 1]; symbol { [NEQ 0.3, GT 0.25, GEQ 0.5] } transform { [NOP, ADD -0.25, NOP] } }
+}
+)");
+    const KernelPackage package = compileProgram(program, {});
+    EXPECT_NE(kernelNamed(package, "tile_ranges").glsl.find("bool occupied(float density) { return density > 0.25; }"),
+              std::string::npos);
+    const std::string& tiles = kernelNamed(package, "levels_sweep0_active_tiles").glsl;
+    EXPECT_NE(tiles.find("(anchorsX & (row_0_0 >> 0) & (row_0_0 >> 1) & (~row_0_0 >> 2)) != 0u); // edge"),
+              std::string::npos)
+        << tiles;
+    EXPECT_NE(tiles.find("(anchorsX & (row_0_0 >> 1) & (row_0_0 >> 2)) != 0u); // other"), std::string::npos);
+    const RunResult skipping = run(program, true);
+    EXPECT_EQ(test::countBitDifferences(interpret(program), skipping.grid.toDense()), 0u);
+    EXPECT_LT(skipping.skip.activeTilePhases, skipping.skip.tilePhases);
 }
 
 TEST(vulkan_TileSkip, ValidationLayerReportsNothing) {

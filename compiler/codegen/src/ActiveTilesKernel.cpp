@@ -12,6 +12,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <set>
 
 namespace voxc::codegen {
 
@@ -94,19 +95,104 @@ bool testsMaterial(const IrRule& rule) {
 // Tiles are never smaller than this (voxc::skipTileShift).
 constexpr int kMinTileSize = 8;
 
-// `mayMatch`: some live rule has every tested cell's value set meeting its cell's range.
-std::string mayMatch(const IrSweep& sweep) {
+// Where a cell of a matching window must lie against the occupancy level (tiles.glsl).
+enum class LevelSide { Any, Holds, Fails };
+
+// A NaN passes a cell's predicates only when each of them passes it (NEQ does), and NaN never
+// holds the level; `min`/`max` tests skip NaN cells, so they cannot rule it out.
+bool passesNaN(const IrRule& rule, uint32_t c) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    return std::all_of(rule.symbol[c].predicates.begin(), rule.symbol[c].predicates.end(), [&](const Predicate& p) {
+        return p.op == SymbolOp::IGN || symbolOpInfo(p.op).eval(nan, p.value);
+    });
+}
+
+LevelSide levelSide(const IrRule& rule, uint32_t c, glm::ivec3 offset, const OccupancyLevel& level) {
+    if (!testsCell(rule, c, offset)) return LevelSide::Any;
+    const ValueSet values = cellValues(rule, c, offset);
+    if (values.intersect(ValueSet::above(level.value, !level.strict)).empty()) return LevelSide::Fails;
+    if (values.intersect(ValueSet::below(level.value, level.strict)).empty() && !passesNaN(rule, c))
+        return LevelSide::Holds;
+    return LevelSide::Any;
+}
+
+// Whether a sweep's tested cells all lie below the smallest tile size from the anchor: then a
+// tile's anchors read only that tile and its next ones (nearCellRange, occupancyRow).
+bool nearCells(const IrSweep& sweep) {
+    for (const IrRule& rule : sweep.rules)
+        for (uint32_t c = 0; c < sweep.cells.size(); ++c) {
+            const glm::ivec3 o = sweep.cells[c].offset;
+            if (testsCell(rule, c, o) && (std::min({o.x, o.y, o.z}) < 0 || std::max({o.x, o.y, o.z}) >= kMinTileSize))
+                return false;
+        }
+    return true;
+}
+
+// The range tests of one rule: each tested cell's value set meets that cell's range.
+std::string rangeTest(const IrSweep& sweep, const IrRule& rule) {
+    std::vector<std::string> cells;
+    for (uint32_t c = 0; c < sweep.cells.size(); ++c) {
+        if (!testsCell(rule, c, sweep.cells[c].offset)) continue;
+        const ValueSet set = cellValues(rule, c, sweep.cells[c].offset);
+        if (set.empty()) {
+            // A `min`/`max` box no density passes with the cell's predicates: never matches.
+            cells.push_back(fmt::format("false // {} no density passes its predicates and tests",
+                                        printCell(sweep.cells[c].offset)));
+            continue;
+        }
+        std::vector<std::string> meets;
+        for (const ValueInterval& interval : set.intervals()) {
+            const KeyInterval k = keyInterval(interval);
+            meets.push_back(fmt::format("meets(range{}, 0x{:08x}u, 0x{:08x}u)", c, k.lo, k.hi));
+        }
+        std::vector<std::string> predicates;
+        for (const Predicate& p : rule.symbol[c].predicates)
+            if (p.op != SymbolOp::IGN) predicates.push_back(printPredicate(p));
+        if (!rule.symbol[c].materialPredicates.empty()) predicates.push_back("(material tests may pass)");
+        for (const AggregateTest& test : rule.aggregates)
+            if (boundsCells(test) && inBox(test, sweep.cells[c].offset))
+                predicates.push_back(fmt::format("(where {})", ir::printAggregate(test)));
+        cells.push_back(fmt::format("{} // {} {}", meets.size() == 1 ? meets[0] : fmt::format("({})", fmt::join(meets, " || ")),
+                                    printCell(sweep.cells[c].offset), fmt::join(predicates, " & ")));
+    }
+    if (cells.empty()) return "";
+    std::string s;
+    for (size_t i = 0; i < cells.size(); ++i) {
+        const size_t comment = cells[i].find(" //");
+        s += fmt::format("    {}{}{}\n", cells[i].substr(0, comment), i + 1 == cells.size() ? ";" : " &&",
+                         cells[i].substr(comment));
+    }
+    return s;
+}
+
+// The row variable holding the occupancy bits of window row (dy, dz) at the current anchor row.
+std::string rowName(glm::ivec3 offset) { return fmt::format("row_{}_{}", offset.y, offset.z); }
+
+// A rule's occupancy pattern over the anchors of one anchor row, as a uint expression (a bit
+// per anchor x), or "" when the level decides none of its cells.
+std::string patternTest(const IrSweep& sweep, const IrRule& rule, const OccupancyLevel& level) {
+    std::vector<std::string> terms;
+    for (uint32_t c = 0; c < sweep.cells.size(); ++c) {
+        const glm::ivec3 o = sweep.cells[c].offset;
+        const LevelSide side = levelSide(rule, c, o, level);
+        if (side == LevelSide::Any) continue;
+        terms.push_back(fmt::format("({}{} >> {})", side == LevelSide::Holds ? "" : "~", rowName(o), o.x));
+    }
+    if (terms.empty()) return "";
+    return fmt::format("anchorsX & {}", fmt::join(terms, " & "));
+}
+
+// `mayMatch`: some live rule has every tested cell's value set meeting its cell's range and,
+// where the occupancy level decides some of its cells, its pattern of cells holding and failing
+// the level occurs at an anchor of this phase in the tile.
+std::string mayMatch(const IrSweep& sweep, const std::optional<OccupancyLevel>& level) {
     std::string s = "// The density range each tested cell can read (keys), over this tile's anchors.\n";
     std::vector<bool> tested(sweep.cells.size(), false);
     for (const IrRule& rule : sweep.rules)
         for (uint32_t c = 0; c < sweep.cells.size(); ++c)
             tested[c] = tested[c] || testsCell(rule, c, sweep.cells[c].offset);
     // Offsets below the smallest tile size read only the anchors' tile and its next neighbours.
-    bool near = true;
-    for (uint32_t c = 0; c < sweep.cells.size(); ++c) {
-        const glm::ivec3 o = sweep.cells[c].offset;
-        if (tested[c]) near = near && std::min({o.x, o.y, o.z}) >= 0 && std::max({o.x, o.y, o.z}) < kMinTileSize;
-    }
+    const bool near = nearCells(sweep);
     if (near) s += "TileNeighbourhood neighbourhood = tileNeighbourhood(tileOfId(id));\n";
     for (uint32_t c = 0; c < sweep.cells.size(); ++c) {
         if (!tested[c]) continue;
@@ -114,57 +200,115 @@ std::string mayMatch(const IrSweep& sweep) {
         s += near ? fmt::format("uvec2 range{} = nearCellRange(neighbourhood, anchors, ivec3({}, {}, {}));\n", c, o.x, o.y, o.z)
                   : fmt::format("uvec2 range{} = cellRange(anchors, ivec3({}, {}, {}));\n", c, o.x, o.y, o.z);
     }
+
     s += "\n// A rule may match when each of its tested cells' value sets meets that cell's range.\n";
     s += "bool mayMatch = false;\n";
+    std::vector<std::string> patterns(sweep.rules.size());
     for (uint32_t r = 0; r < sweep.rules.size(); ++r) {
         const IrRule& rule = sweep.rules[r];
-        std::vector<std::string> cells;
-        for (uint32_t c = 0; c < sweep.cells.size(); ++c) {
-            if (!testsCell(rule, c, sweep.cells[c].offset)) continue;
-            const ValueSet set = cellValues(rule, c, sweep.cells[c].offset);
-            if (set.empty()) {
-                // A `min`/`max` box no density passes with the cell's predicates: never matches.
-                cells.push_back(fmt::format("false // {} no density passes its predicates and tests",
-                                            printCell(sweep.cells[c].offset)));
-                continue;
-            }
-            std::vector<std::string> meets;
-            for (const ValueInterval& interval : set.intervals()) {
-                const KeyInterval k = keyInterval(interval);
-                meets.push_back(fmt::format("meets(range{}, 0x{:08x}u, 0x{:08x}u)", c, k.lo, k.hi));
-            }
-            std::vector<std::string> predicates;
-            for (const Predicate& p : rule.symbol[c].predicates)
-                if (p.op != SymbolOp::IGN) predicates.push_back(printPredicate(p));
-            if (!rule.symbol[c].materialPredicates.empty()) predicates.push_back("(material tests may pass)");
-            for (const AggregateTest& test : rule.aggregates)
-                if (boundsCells(test) && inBox(test, sweep.cells[c].offset))
-                    predicates.push_back(fmt::format("(where {})", ir::printAggregate(test)));
-            cells.push_back(fmt::format("{} // {} {}", meets.size() == 1 ? meets[0] : fmt::format("({})", fmt::join(meets, " || ")),
-                                        printCell(sweep.cells[c].offset), fmt::join(predicates, " & ")));
-        }
+        const std::string ranges = rangeTest(sweep, rule);
+        if (near && level) patterns[r] = patternTest(sweep, rule, *level);
         s += fmt::format("// {}: {}\n", r, rule.name);
-        if (cells.empty()) {
+        if (ranges.empty()) {
             s += testsMaterial(rule) ? "mayMatch = true; // material tests only, which tiles do not track\n"
                                      : "mayMatch = true; // every cell IGN: matches everywhere\n";
             continue;
         }
-        s += "mayMatch = mayMatch ||\n";
-        for (size_t i = 0; i < cells.size(); ++i) {
-            const size_t comment = cells[i].find(" //");
-            s += fmt::format("    {}{}{}\n", cells[i].substr(0, comment), i + 1 == cells.size() ? ";" : " &&",
-                             cells[i].substr(comment));
+        if (patterns[r].empty()) {
+            s += "mayMatch = mayMatch ||\n" + ranges;
+        } else {
+            s += fmt::format("bool ranges{} =\n{}", r, ranges);
+            s += fmt::format("mayMatch = mayMatch || (ranges{} && !occupancyTracked());\n", r);
         }
     }
+    if (std::all_of(patterns.begin(), patterns.end(), [](const std::string& p) { return p.empty(); })) return s;
+
+    // The rows each pattern reads, relative to the anchor row.
+    std::set<std::pair<int, int>> rows;
+    for (uint32_t r = 0; r < sweep.rules.size(); ++r)
+        for (uint32_t c = 0; c < sweep.cells.size(); ++c)
+            if (!patterns[r].empty() && levelSide(sweep.rules[r], c, sweep.cells[c].offset, *level) != LevelSide::Any)
+                rows.insert({sweep.cells[c].offset.z, sweep.cells[c].offset.y});
+    std::vector<std::string> candidates;
+    for (uint32_t r = 0; r < sweep.rules.size(); ++r)
+        if (!patterns[r].empty()) candidates.push_back(fmt::format("ranges{}", r));
+    s += "\n// Rules whose ranges pass and whose cells the occupancy level decides: look for their\n"
+         "// patterns of voxels holding (row bits) and failing it (~) at this phase's anchors, a row\n"
+         "// of anchors at a time (bit x: the anchor at tile-local x).\n";
+    s += fmt::format("if (!mayMatch && ({})) {{\n", fmt::join(candidates, " || "));
+    s += "    ivec3 tile = tileOfId(id);\n"
+         "    OccupancyNeighbourhood occupancy = occupancyNeighbourhood(tile);\n"
+         "    ivec3 localStart = push.gridOrigin.xyz + push.anchorStart.xyz - tile * tileSize();\n"
+         "    uint anchorsX = 0u;\n"
+         "    for (int i = anchors.first.x; i <= anchors.last.x; ++i) anchorsX |= 1u << (localStart.x + i * push.anchorStep.x);\n"
+         "    for (int iz = anchors.first.z; iz <= anchors.last.z && !mayMatch; ++iz) {\n"
+         "        int z = localStart.z + iz * push.anchorStep.z;\n"
+         "        for (int iy = anchors.first.y; iy <= anchors.last.y && !mayMatch; ++iy) {\n"
+         "            int y = localStart.y + iy * push.anchorStep.y;\n";
+    for (const auto& [dz, dy] : rows)
+        s += fmt::format("            uint {} = occupancyRow(occupancy, y + {}, z + {});\n",
+                         rowName(glm::ivec3(0, dy, dz)), dy, dz);
+    for (uint32_t r = 0; r < sweep.rules.size(); ++r)
+        if (!patterns[r].empty())
+            s += fmt::format("            mayMatch = mayMatch || (ranges{} && ({}) != 0u); // {}\n", r, patterns[r],
+                             sweep.rules[r].name);
+    s += "        }\n    }\n}\n";
     return s;
+}
+
+// Candidate levels of a cell: the ends of its value set's intervals.
+void addCandidates(const ValueSet& values, std::set<std::pair<float, bool>>& out) {
+    for (const ValueInterval& interval : values.intervals()) {
+        if (std::isfinite(interval.lo)) out.insert({interval.lo, !interval.loClosed});
+        if (std::isfinite(interval.hi)) out.insert({interval.hi, interval.hiClosed});
+    }
 }
 
 } // namespace
 
 DispatchShape activeTilesDispatchShape() { return DispatchShape{{64, 1, 1}, {1, 1, 1}}; }
 
+std::optional<OccupancyLevel> occupancyLevel(const ir::IrModule& module) {
+    std::set<std::pair<float, bool>> candidates;
+    for (const ir::IrGrammar& grammar : module.grammars)
+        for (const IrSweep& sweep : grammar.sweeps)
+            for (const IrRule& rule : sweep.rules)
+                for (uint32_t c = 0; c < sweep.cells.size(); ++c)
+                    if (testsCell(rule, c, sweep.cells[c].offset))
+                        addCandidates(cellValues(rule, c, sweep.cells[c].offset), candidates);
+    // The level that decides the most cells of near sweeps' rules; the lowest on a tie.
+    std::optional<OccupancyLevel> best;
+    size_t bestCells = 0;
+    for (const auto& [value, strict] : candidates) {
+        const OccupancyLevel level{value, strict};
+        size_t cells = 0;
+        for (const ir::IrGrammar& grammar : module.grammars)
+            for (const IrSweep& sweep : grammar.sweeps) {
+                if (!nearCells(sweep)) continue;
+                for (const IrRule& rule : sweep.rules)
+                    for (uint32_t c = 0; c < sweep.cells.size(); ++c)
+                        cells += levelSide(rule, c, sweep.cells[c].offset, level) != LevelSide::Any ? 1 : 0;
+            }
+        if (cells > bestCells) {
+            best = level;
+            bestCells = cells;
+        }
+    }
+    return best;
+}
+
+std::string occupancyLevelGlsl(const std::optional<OccupancyLevel>& level) {
+    if (!level)
+        return "// None: no rule cell of a sweep that tiles can skip tests a level.\n"
+               "const bool OCCUPANCY_LEVEL = false;\n"
+               "bool occupied(float density) { return false; }\n";
+    return fmt::format("const bool OCCUPANCY_LEVEL = true;\n"
+                       "bool occupied(float density) {{ return density {} {}; }}\n",
+                       level->strict ? ">" : ">=", glslFloat(level->value));
+}
+
 std::string activeTilesKernelSource(const ir::IrGrammar& grammar, const IrSweep& sweep, std::string_view kernelName,
-                                     std::string_view sourceName) {
+                                     std::string_view sourceName, const std::optional<OccupancyLevel>& level) {
     VOXC_ASSERT(!sweep.rules.empty());
     const std::string header =
         fmt::format("voxc generated kernel \"{}\": the active tiles of each phase of sweep {} (window {}) of\n"
@@ -180,11 +324,14 @@ std::string activeTilesKernelSource(const ir::IrGrammar& grammar, const IrSweep&
          {"SWEEP_SHAPE", fmt::format("// Invocations in one workgroup of the sweep kernel.\n"
                                      "const int SWEEP_WORKGROUP_INVOCATIONS = {};\n",
                                      invocations)},
-         {"MAY_MATCH", mayMatch(sweep)}});
+         {"OCCUPANCY_LEVEL", occupancyLevelGlsl(level)},
+         {"MAY_MATCH", mayMatch(sweep, level)}});
 }
 
 DispatchShape tileRangesDispatchShape() { return DispatchShape{{64, 1, 1}, {1, 1, 1}}; }
 
-std::string tileRangesKernelSource() { return instantiateTemplate("tile_ranges.glsl", {}); }
+std::string tileRangesKernelSource(const std::optional<OccupancyLevel>& level) {
+    return instantiateTemplate("tile_ranges.glsl", {{"OCCUPANCY_LEVEL", occupancyLevelGlsl(level)}});
+}
 
 } // namespace voxc::codegen

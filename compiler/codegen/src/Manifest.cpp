@@ -68,6 +68,10 @@ BufferInfo bufferInfo(uint32_t binding) {
         return {"activeDispatch", "uint", "8", "two VkDispatchIndirectCommand records (x, y, z) and each one's active tile count, written by the active-tiles kernels"};
     case kBindingSkipStats:
         return {"skipStats", "uint", "2", "active and candidate (tile, phase) pairs of a run (statistics only)"};
+    case kBindingTileOccupancy:
+        return {"tileOccupancy", "uint", "tiles * (1 << tile_shift)^3 / 32 (1 when tile_shift > 4)",
+                "per tile: a bit per voxel (x fastest, rows of 1 << tile_shift bits), set where the package's occupancy "
+                "level holds (the kernels' occupied()); recomputed with the tile's range, kept exact by the sweeps"};
     case kBindingMaterials:
         return {"materials", "uint", "chunk_slots * chunk^3",
                 "voxel material ids (0 = none, else materials[].id) at the densities' addresses"};

@@ -321,8 +321,12 @@ std::string applyRule(const IrGrammar& g, const IrSweep& sweep, std::string_view
             }
             if (info.writes) {
                 // `precise` keeps the value exactly what the interpreter's float arithmetic gives.
-                s += fmt::format("    precise float next{} = {}; // {} {}\n", c,
-                                 info.glsl(fmt::format("cell{}", c), glslFloat(t.value)),
+                // A zero amount is kept from the compilers (as opaque_constants.glsl does): they
+                // would fold d + 0 into d, keeping a -0 that the interpreter's addition makes +0.
+                const std::string amount = t.value == 0.0f
+                                               ? fmt::format("(gl_NumWorkGroups.x == 0u ? 1.0 : {})", glslFloat(t.value))
+                                               : glslFloat(t.value);
+                s += fmt::format("    precise float next{} = {}; // {} {}\n", c, info.glsl(fmt::format("cell{}", c), amount),
                                  printCell(sweep.cells[c].offset), printTransform(t));
                 // A value that is not finite (an ADD past the float range) is stored as 0 and counted.
                 const glm::ivec3 o = sweep.cells[c].offset;
@@ -349,7 +353,7 @@ DispatchShape sweepDispatchShape(const IrSweep&) {
 }
 
 std::string sweepKernelSource(const IrGrammar& grammar, const IrSweep& sweep, std::string_view kernelName,
-                              std::string_view sourceName) {
+                              std::string_view sourceName, const std::optional<OccupancyLevel>& level) {
     const std::string headerComment = header(grammar, sweep, kernelName, sourceName);
     const std::string shape = dispatchShapeGlsl(sweepDispatchShape(sweep));
     if (sweep.rules.empty())
@@ -367,7 +371,8 @@ std::string sweepKernelSource(const IrGrammar& grammar, const IrSweep& sweep, st
                                               {"RULE_TABLE", rules},
                                               {"MATCH_WINDOW", matchWindow(sweep, sourceName)},
                                               {"CHOOSE_RULE", chooseRule(sweep)},
-                                              {"APPLY_RULE", apply}});
+                                              {"APPLY_RULE", apply},
+                                              {"OCCUPANCY_LEVEL", occupancyLevelGlsl(level)}});
 }
 
 } // namespace voxc::codegen

@@ -87,7 +87,7 @@ struct VulkanExecutor::Impl {
     DeviceBuffer solveTables; // kBindingSolveTables: package.solveTables (solveTableWords)
     DeviceBuffer scratch;   // kBindingScratch: the largest StagePlan::scratchWords (at least one word)
     // Tile skipping (kBindingTileRanges..kBindingSkipStats); small, so they exist either way.
-    DeviceBuffer tileRanges, tileDirty, activeTiles, activeDispatch, skipStats;
+    DeviceBuffer tileRanges, tileDirty, activeTiles, activeDispatch, skipStats, tileOccupancy;
     NonFiniteCounters nonFinite; // kBindingNonFinite and its per-stage copies
     bool hasRun = false;         // the voxel buffer holds a run's result
     VkCommandPool commandPool = VK_NULL_HANDLE;
@@ -125,7 +125,7 @@ VulkanExecutor::Impl::~Impl() {
         if (frame.fence) ctx.api.vkDestroyFence(ctx.device, frame.fence, nullptr);
     if (commandPool) ctx.api.vkDestroyCommandPool(ctx.device, commandPool, nullptr);
     nonFinite.destroy(ctx);
-    for (DeviceBuffer* b : {&skipStats, &activeDispatch, &activeTiles, &tileDirty, &tileRanges})
+    for (DeviceBuffer* b : {&tileOccupancy, &skipStats, &activeDispatch, &activeTiles, &tileDirty, &tileRanges})
         destroyBuffer(ctx, *b);
     destroyBuffer(ctx, readback);
     destroyBuffer(ctx, pointSets);
@@ -194,6 +194,9 @@ void VulkanExecutor::Impl::createBuffers() {
     activeTiles = createBuffer(ctx, tiles * sizeof(uint32_t), storage, local);
     activeDispatch = createBuffer(ctx, 8 * sizeof(uint32_t), storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, local);
     skipStats = createBuffer(ctx, 2 * sizeof(uint32_t), storage, MemoryUse::HostAccess);
+    // A bit per voxel where tiles keep occupancy (tiles.glsl occupancyTracked); tile_ranges sets every word.
+    const VkDeviceSize occupancyWords = tileShift >= 3 && tileShift <= 4 ? tiles << (3 * tileShift - 5) : 1;
+    tileOccupancy = createBuffer(ctx, occupancyWords * sizeof(uint32_t), storage, local);
     nonFinite.create(ctx, package.stages.size(), local);
 }
 
@@ -344,6 +347,7 @@ VulkanExecutor::VulkanExecutor(VulkanContext& context, const KernelPackage& pack
     byBinding[kBindingActiveTiles] = s.activeTiles.buffer;
     byBinding[kBindingActiveDispatch] = s.activeDispatch.buffer;
     byBinding[kBindingSkipStats] = s.skipStats.buffer;
+    byBinding[kBindingTileOccupancy] = s.tileOccupancy.buffer;
     byBinding[kBindingMaterials] = s.materials.buffer;
     byBinding[kBindingNonFinite] = s.nonFinite.counterBuffer();
     byBinding[kBindingPointSets] = s.pointSets.buffer;

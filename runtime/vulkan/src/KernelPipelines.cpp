@@ -14,7 +14,7 @@ constexpr uint32_t kBindings[] = {kBindingVoxels,       kBindingChunkTable,   kB
                                   kBindingTileRanges,  kBindingTileDirty,   kBindingActiveTiles,
                                   kBindingActiveDispatch, kBindingSkipStats,  kBindingMaterials,
                                   kBindingNonFinite,     kBindingPointSets,   kBindingScratch,
-                                  kBindingSolveTables};
+                                  kBindingSolveTables,   kBindingTileOccupancy};
 static_assert(std::size(kBindings) == kKernelBindingCount);
 constexpr uint32_t kBindingCount = std::size(kBindings);
 

@@ -9,7 +9,7 @@
 
 namespace voxc::vulkan_detail {
 
-constexpr uint32_t kKernelBindingCount = 13; // bindings 0..12
+constexpr uint32_t kKernelBindingCount = 14; // bindings 0..13
 
 struct KernelPipelines : StorageSet {
     std::vector<VkPipeline> pipelines; // one per Kernel, same order

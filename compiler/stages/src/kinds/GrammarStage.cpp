@@ -94,6 +94,7 @@ std::string sweepKey(const ir::IrGrammar& grammar, const ir::IrSweep& sweep) {
 // stamp passes follow the sweep kernels, then the tile-skipping kernels (a sweep without live
 // rules needs none).
 void addKernels(PlanContext& context) {
+    const std::optional<codegen::OccupancyLevel> level = codegen::occupancyLevel(context.module);
     for (const ir::IrGrammar& grammar : context.module.grammars)
         for (const ir::IrSweep& sweep : grammar.sweeps) {
             const std::string name = sweepKey(grammar, sweep);
@@ -102,7 +103,7 @@ void addKernels(PlanContext& context) {
                             grammar.loc.column, grammar.name, sweep.window.x, sweep.window.y, sweep.window.z);
             context.kernels[name] =
                 context.addKernel(name, origin, codegen::sweepDispatchShape(sweep),
-                                  codegen::sweepKernelSource(grammar, sweep, name, context.sourceName));
+                                  codegen::sweepKernelSource(grammar, sweep, name, context.sourceName, level));
         }
     for (const ir::IrGrammar& grammar : context.module.grammars)
         for (const ir::IrSweep& sweep : grammar.sweeps) {
@@ -121,12 +122,12 @@ void addKernels(PlanContext& context) {
             const std::string origin = context.package.kernels[context.kernels.at(sweepKey(grammar, sweep))].origin;
             context.kernels[name] =
                 context.addKernel(name, origin, codegen::activeTilesDispatchShape(),
-                                  codegen::activeTilesKernelSource(grammar, sweep, name, context.sourceName));
+                                  codegen::activeTilesKernelSource(grammar, sweep, name, context.sourceName, level));
         }
     if (!context.module.grammars.empty())
         context.package.tileRangesKernel = context.addKernel("tile_ranges", "voxc runtime: tile density ranges",
                                                              codegen::tileRangesDispatchShape(),
-                                                             codegen::tileRangesKernelSource());
+                                                             codegen::tileRangesKernelSource(level));
 }
 
 // After a grammar the density bounds are not tracked.

@@ -4,7 +4,8 @@
 // flag in TileDirty is set (after a start stage, or where a sweep wrote), so the next sweep
 // classifies tiles on tight ranges. One invocation per tile id (tiles.glsl); a workgroup per
 // tile would cost more in workgroup overhead (llvmpipe) than the tile's reads. Only voxels
-// inside the grid count, since windows never read the padding.
+// inside the grid count, since windows never read the padding (their occupancy bits stay clear).
+// The same reads set the tile's occupancy bits (tiles.glsl).
 
 // ---- begin common.glsl ----
 // Declarations every voxc kernel shares: the push block (voxc::PushBlock in
@@ -75,7 +76,7 @@ layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 
 // ---- begin tiles.glsl ----
 // Per-tile bookkeeping that lets the runtime dispatch a sweep only over the tiles where some
-// rule may match (bindings 3-7, kBindingTileRanges.. in KernelPackage.h). Include after the
+// rule may match (bindings 3-7 and 13, kBindingTileRanges.. in KernelPackage.h). Include after the
 // kernel's local size layout.
 //
 // A tile is a cube of 2^push.anchorStep.w voxels per axis, aligned to world coordinates like
@@ -108,6 +109,18 @@ layout(std430, set = 0, binding = 7) buffer SkipStats {
     uint candidateTilePhases; // (tile, phase) pairs holding anchors of a classified phase
 } skipStats;
 
+layout(std430, set = 0, binding = 13) buffer TileOccupancy {
+    uint bits[]; // per tile: a bit per voxel, set where the occupancy level holds (occupancyBit)
+} tileOccupancy;
+
+// The package's occupancy level (ActiveTilesKernel.cpp, occupancyLevel): a density test many rule
+// cells need to pass or to fail, such as `d >= 0.5` for rock. Tiles of at most 16 voxels per axis
+// keep one bit per voxel of it, exact at all times (tile_ranges sets the bits, sweeps update the
+// bits they write), so the active-tiles kernels can look for a rule's pattern of rock and air
+// rows at a time instead of trusting a density range. NaN never holds.
+const bool OCCUPANCY_LEVEL = true;
+bool occupied(float density) { return density >= 0.5; }
+
 uint densityKey(float v) {
     uint bits = floatBitsToUint(v);
     return (bits & 0x80000000u) != 0u ? ~bits : bits | 0x80000000u;
@@ -118,6 +131,16 @@ int tileSize() { return push.gridOrigin.w >> (findMSB(push.gridOrigin.w) - push.
 int tilesPerAxis() { return push.gridOrigin.w >> push.anchorStep.w; } // per chunk, a power of two
 int tilesPerAxisShift() { return findMSB(push.gridOrigin.w) - push.anchorStep.w; } // its log2
 int tilesPerChunk() { return tilesPerAxis() * tilesPerAxis() * tilesPerAxis(); }
+
+// Whether tiles keep occupancy bits: a tile row of voxels and the next tile's then fit one uint.
+bool occupancyTracked() { return OCCUPANCY_LEVEL && tileShift() <= 4; }
+int occupancyWordsPerTile() { return 1 << (3 * tileShift() - 5); }
+// Where voxel `inside` (tile-local) of tile `index` keeps its bit: word, then the bit's position.
+// A row along x is tileSize() bits of one word (tiles of 8 or 16 voxels per axis).
+ivec2 occupancyBit(int index, ivec3 inside) {
+    int bit = (inside.x + tileSize() * (inside.y + tileSize() * inside.z));
+    return ivec2(index * occupancyWordsPerTile() + (bit >> 5), bit & 31);
+}
 
 // a / b for a >= 0, b >= 1 and a quotient below 2^21, as integer division computes it. llvmpipe
 // divides integers lane by lane (and guards each against zero); this is a few float and integer
@@ -209,17 +232,31 @@ void main() {
     int index = tileIndex(tile);
     if (tileDirty.flag[index] == 0u) return;
     ivec3 tileLow = tile * tileSize() - push.gridOrigin.xyz; // grid-local
-    ivec3 low = max(tileLow, ivec3(0));
-    ivec3 high = min(tileLow + tileSize(), push.gridSize.xyz);
+    ivec3 low = max(tileLow, ivec3(0)) - tileLow;             // tile-local, the in-grid part
+    ivec3 high = min(tileLow + tileSize(), push.gridSize.xyz) - tileLow;
+    bool occupancy = occupancyTracked();
     uint lo = 0xffffffffu;
     uint hi = 0u;
-    for (int z = low.z; z < high.z; ++z) {
-        for (int y = low.y; y < high.y; ++y) {
-            int address = voxelAddress(ivec3(low.x, y, z));
-            for (int x = low.x; x < high.x; ++x, ++address) { // a tile row never leaves its chunk
-                uint key = densityKey(voxels.density[address]);
-                lo = min(lo, key);
-                hi = max(hi, key);
+    uint word = 0u; // occupancy rows gathered for the word they fill
+    for (int z = 0; z < tileSize(); ++z) {
+        for (int y = 0; y < tileSize(); ++y) {
+            uint row = 0u;
+            if (z >= low.z && z < high.z && y >= low.y && y < high.y) {
+                int address = voxelAddress(tileLow + ivec3(low.x, y, z));
+                for (int x = low.x; x < high.x; ++x, ++address) { // a tile row never leaves its chunk
+                    float density = voxels.density[address];
+                    uint key = densityKey(density);
+                    lo = min(lo, key);
+                    hi = max(hi, key);
+                    row |= occupied(density) ? 1u << x : 0u;
+                }
+            }
+            if (!occupancy) continue;
+            ivec2 bit = occupancyBit(index, ivec3(0, y, z));
+            word |= row << bit.y;
+            if (bit.y + tileSize() == 32) {
+                tileOccupancy.bits[bit.x] = word;
+                word = 0u;
             }
         }
     }

@@ -135,7 +135,7 @@ const ivec3 ANCHORS_PER_INVOCATION = ivec3(1, 1, 1);
 
 // ---- begin tiles.glsl ----
 // Per-tile bookkeeping that lets the runtime dispatch a sweep only over the tiles where some
-// rule may match (bindings 3-7, kBindingTileRanges.. in KernelPackage.h). Include after the
+// rule may match (bindings 3-7 and 13, kBindingTileRanges.. in KernelPackage.h). Include after the
 // kernel's local size layout.
 //
 // A tile is a cube of 2^push.anchorStep.w voxels per axis, aligned to world coordinates like
@@ -168,6 +168,18 @@ layout(std430, set = 0, binding = 7) buffer SkipStats {
     uint candidateTilePhases; // (tile, phase) pairs holding anchors of a classified phase
 } skipStats;
 
+layout(std430, set = 0, binding = 13) buffer TileOccupancy {
+    uint bits[]; // per tile: a bit per voxel, set where the occupancy level holds (occupancyBit)
+} tileOccupancy;
+
+// The package's occupancy level (ActiveTilesKernel.cpp, occupancyLevel): a density test many rule
+// cells need to pass or to fail, such as `d >= 0.5` for rock. Tiles of at most 16 voxels per axis
+// keep one bit per voxel of it, exact at all times (tile_ranges sets the bits, sweeps update the
+// bits they write), so the active-tiles kernels can look for a rule's pattern of rock and air
+// rows at a time instead of trusting a density range. NaN never holds.
+const bool OCCUPANCY_LEVEL = true;
+bool occupied(float density) { return density >= 0.5; }
+
 uint densityKey(float v) {
     uint bits = floatBitsToUint(v);
     return (bits & 0x80000000u) != 0u ? ~bits : bits | 0x80000000u;
@@ -178,6 +190,16 @@ int tileSize() { return push.gridOrigin.w >> (findMSB(push.gridOrigin.w) - push.
 int tilesPerAxis() { return push.gridOrigin.w >> push.anchorStep.w; } // per chunk, a power of two
 int tilesPerAxisShift() { return findMSB(push.gridOrigin.w) - push.anchorStep.w; } // its log2
 int tilesPerChunk() { return tilesPerAxis() * tilesPerAxis() * tilesPerAxis(); }
+
+// Whether tiles keep occupancy bits: a tile row of voxels and the next tile's then fit one uint.
+bool occupancyTracked() { return OCCUPANCY_LEVEL && tileShift() <= 4; }
+int occupancyWordsPerTile() { return 1 << (3 * tileShift() - 5); }
+// Where voxel `inside` (tile-local) of tile `index` keeps its bit: word, then the bit's position.
+// A row along x is tileSize() bits of one word (tiles of 8 or 16 voxels per axis).
+ivec2 occupancyBit(int index, ivec3 inside) {
+    int bit = (inside.x + tileSize() * (inside.y + tileSize() * inside.z));
+    return ivec2(index * occupancyWordsPerTile() + (bit >> 5), bit & 31);
+}
 
 // a / b for a >= 0, b >= 1 and a quotient below 2^21, as integer division computes it. llvmpipe
 // divides integers lane by lane (and guards each against zero); this is a few float and integer
@@ -296,7 +318,8 @@ int windowCellAddress(WindowAddressing window, ivec3 offset) {
 }
 
 // Stores a written density and keeps its tile's range a superset of the tile's densities
-// (the range only widens; the next tile_ranges pass recomputes it exactly).
+// (the range only widens; the next tile_ranges pass recomputes it exactly) and the voxel's
+// occupancy bit exact (other lanes write other bits of the word, hence the atomics).
 void writeDensity(int address, float value) {
     voxels.density[address] = value;
     if (push.anchorCount.w == 0) return; // direct dispatch: no tile bookkeeping
@@ -304,12 +327,19 @@ void writeDensity(int address, float value) {
     int chunkShift = findMSB(chunkSize);
     int inside = address & (chunkSize * chunkSize * chunkSize - 1);
     int perAxis = tilesPerAxis();
-    ivec3 tile = (ivec3(inside, inside >> chunkShift, inside >> (2 * chunkShift)) & (push.gridOrigin.w - 1)) >> tileShift();
+    ivec3 voxel = ivec3(inside, inside >> chunkShift, inside >> (2 * chunkShift)) & (chunkSize - 1);
+    ivec3 tile = voxel >> tileShift();
     int index = (address >> (3 * chunkShift)) * tilesPerChunk() + tile.x + perAxis * (tile.y + perAxis * tile.z);
     uint key = densityKey(value);
     atomicMin(tileRanges.key[2 * index], key);
     atomicMax(tileRanges.key[2 * index + 1], key);
     tileDirty.flag[index] = 1u;
+    if (!occupancyTracked()) return;
+    ivec2 bit = occupancyBit(index, voxel & (tileSize() - 1));
+    if (occupied(value))
+        atomicOr(tileOccupancy.bits[bit.x], 1u << bit.y);
+    else
+        atomicAnd(tileOccupancy.bits[bit.x], ~(1u << bit.y));
 }
 
 // The anchor of this invocation in an indirect dispatch: false when it has none.

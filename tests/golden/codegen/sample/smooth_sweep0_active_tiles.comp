@@ -83,7 +83,7 @@ const ivec3 ANCHORS_PER_INVOCATION = ivec3(1, 1, 1);
 
 // ---- begin tiles.glsl ----
 // Per-tile bookkeeping that lets the runtime dispatch a sweep only over the tiles where some
-// rule may match (bindings 3-7, kBindingTileRanges.. in KernelPackage.h). Include after the
+// rule may match (bindings 3-7 and 13, kBindingTileRanges.. in KernelPackage.h). Include after the
 // kernel's local size layout.
 //
 // A tile is a cube of 2^push.anchorStep.w voxels per axis, aligned to world coordinates like
@@ -116,6 +116,18 @@ layout(std430, set = 0, binding = 7) buffer SkipStats {
     uint candidateTilePhases; // (tile, phase) pairs holding anchors of a classified phase
 } skipStats;
 
+layout(std430, set = 0, binding = 13) buffer TileOccupancy {
+    uint bits[]; // per tile: a bit per voxel, set where the occupancy level holds (occupancyBit)
+} tileOccupancy;
+
+// The package's occupancy level (ActiveTilesKernel.cpp, occupancyLevel): a density test many rule
+// cells need to pass or to fail, such as `d >= 0.5` for rock. Tiles of at most 16 voxels per axis
+// keep one bit per voxel of it, exact at all times (tile_ranges sets the bits, sweeps update the
+// bits they write), so the active-tiles kernels can look for a rule's pattern of rock and air
+// rows at a time instead of trusting a density range. NaN never holds.
+const bool OCCUPANCY_LEVEL = true;
+bool occupied(float density) { return density >= 0.5; }
+
 uint densityKey(float v) {
     uint bits = floatBitsToUint(v);
     return (bits & 0x80000000u) != 0u ? ~bits : bits | 0x80000000u;
@@ -126,6 +138,16 @@ int tileSize() { return push.gridOrigin.w >> (findMSB(push.gridOrigin.w) - push.
 int tilesPerAxis() { return push.gridOrigin.w >> push.anchorStep.w; } // per chunk, a power of two
 int tilesPerAxisShift() { return findMSB(push.gridOrigin.w) - push.anchorStep.w; } // its log2
 int tilesPerChunk() { return tilesPerAxis() * tilesPerAxis() * tilesPerAxis(); }
+
+// Whether tiles keep occupancy bits: a tile row of voxels and the next tile's then fit one uint.
+bool occupancyTracked() { return OCCUPANCY_LEVEL && tileShift() <= 4; }
+int occupancyWordsPerTile() { return 1 << (3 * tileShift() - 5); }
+// Where voxel `inside` (tile-local) of tile `index` keeps its bit: word, then the bit's position.
+// A row along x is tileSize() bits of one word (tiles of 8 or 16 voxels per axis).
+ivec2 occupancyBit(int index, ivec3 inside) {
+    int bit = (inside.x + tileSize() * (inside.y + tileSize() * inside.z));
+    return ivec2(index * occupancyWordsPerTile() + (bit >> 5), bit & 31);
+}
 
 // a / b for a >= 0, b >= 1 and a quotient below 2^21, as integer division computes it. llvmpipe
 // divides integers lane by lane (and guards each against zero); this is a few float and integer
@@ -241,11 +263,15 @@ struct TileNeighbourhood {
     uvec2 r000, r100, r010, r110, r001, r101, r011, r111;
 };
 
+// The tile index of a tile at or after the first of the chunk table, -1 past its end.
+int tileIndexOrNone(ivec3 tile) {
+    ivec3 tableHigh = (push.chunkBase.xyz + push.chunkCount.xyz) * tilesPerAxis() - 1;
+    return any(greaterThan(tile, tableHigh)) ? -1 : tileIndex(tile);
+}
+
 uvec2 tileRangeOrEmpty(ivec3 tile) {
-    ivec3 tableLow = push.chunkBase.xyz * tilesPerAxis();
-    ivec3 tableHigh = tableLow + push.chunkCount.xyz * tilesPerAxis() - 1;
-    if (any(greaterThan(tile, tableHigh))) return uvec2(0xffffffffu, 0u);
-    int index = tileIndex(tile);
+    int index = tileIndexOrNone(tile);
+    if (index < 0) return uvec2(0xffffffffu, 0u);
     return uvec2(tileRanges.key[2 * index], tileRanges.key[2 * index + 1]);
 }
 
@@ -285,6 +311,48 @@ uvec2 nearCellRange(TileNeighbourhood n, TileAnchors anchors, ivec3 offset) {
     range = uniteIf(range, here.x && next.y && next.z, n.r011);
     range = uniteIf(range, next.x && next.y && next.z, n.r111);
     return range;
+}
+
+// The tile indices (tileIndexOrNone) of a tile and its next
+// tiles along x, y and z: where the occupancy rows of a window whose offsets are below 8 lie.
+struct OccupancyNeighbourhood {
+    int i000, i100, i010, i110, i001, i101, i011, i111;
+};
+
+OccupancyNeighbourhood occupancyNeighbourhood(ivec3 tile) {
+    OccupancyNeighbourhood n;
+    n.i000 = tileIndexOrNone(tile);
+    n.i100 = tileIndexOrNone(tile + ivec3(1, 0, 0));
+    n.i010 = tileIndexOrNone(tile + ivec3(0, 1, 0));
+    n.i110 = tileIndexOrNone(tile + ivec3(1, 1, 0));
+    n.i001 = tileIndexOrNone(tile + ivec3(0, 0, 1));
+    n.i101 = tileIndexOrNone(tile + ivec3(1, 0, 1));
+    n.i011 = tileIndexOrNone(tile + ivec3(0, 1, 1));
+    n.i111 = tileIndexOrNone(tile + ivec3(1, 1, 1));
+    return n;
+}
+
+// The occupancy bits of row (y, z) of the neighbourhood (tile-local, 0 <= y, z < 2 * tileSize()),
+// bit x for x = 0 .. 2 * tileSize() - 1: the tile's row, then its next tile's along x. Outside
+// the chunk table no anchor's window reads, so those bits are clear.
+uint occupancyRow(OccupancyNeighbourhood n, int y, int z) {
+    int size = tileSize();
+    bool upY = y >= size;
+    bool upZ = z >= size;
+    int here = upZ ? (upY ? n.i011 : n.i001) : (upY ? n.i010 : n.i000);
+    int next = upZ ? (upY ? n.i111 : n.i101) : (upY ? n.i110 : n.i100);
+    ivec3 inside = ivec3(0, y & (size - 1), z & (size - 1));
+    uint rowMask = (1u << size) - 1u;
+    uint row = 0u;
+    if (here >= 0) {
+        ivec2 bit = occupancyBit(here, inside);
+        row = (tileOccupancy.bits[bit.x] >> bit.y) & rowMask;
+    }
+    if (next >= 0) {
+        ivec2 bit = occupancyBit(next, inside);
+        row |= ((tileOccupancy.bits[bit.x] >> bit.y) & rowMask) << size;
+    }
+    return row;
 }
 
 // Whether a density range (keys) meets the key interval [lo, hi].

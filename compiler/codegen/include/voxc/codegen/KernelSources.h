@@ -12,6 +12,15 @@
 
 namespace voxc::codegen {
 
+// The occupancy level of a package: tiles keep a bit per voxel of `density >= value` (`>` when
+// strict), chosen as the level that decides the most rule cells (a cell decided by it passes only
+// on one side), so an active-tiles kernel can look for a rule's pattern of such cells
+// (ActiveTilesKernel.cpp). The sweep kernels keep the bits of the voxels they write.
+struct OccupancyLevel {
+    float value = 0;
+    bool strict = false;
+};
+
 // How a kernel's invocations cover the anchors of a dispatch: Kernel::localSize and
 // Kernel::anchorsPerInvocation, which the generated source repeats as its layout and
 // ANCHORS_PER_INVOCATION.
@@ -70,7 +79,7 @@ std::string speleothemGrowKernelSource(const ir::IrModule& module, const Speleot
 
 DispatchShape sweepDispatchShape(const ir::IrSweep& sweep);
 std::string sweepKernelSource(const ir::IrGrammar& grammar, const ir::IrSweep& sweep, std::string_view kernelName,
-                              std::string_view sourceName);
+                              std::string_view sourceName, const std::optional<OccupancyLevel>& level);
 
 // A field evaluated in a stamp's frame (x, y, z = `stampPosition`, a vec3; wx, wy, wz from
 // `world`, an ivec3): straight-line statements, the root's name and the libraries they call.
@@ -100,11 +109,16 @@ uint64_t sweepFiredWords(const ir::IrSweep& sweep);
 glm::ivec3 sweepStampReach(const ir::IrSweep& sweep);
 
 // Tile skipping: the per-sweep kernel that lists the tiles where a live rule may match
-// (active_tiles.glsl), and the kernel that recomputes stale tile ranges (tile_ranges.glsl).
+// (active_tiles.glsl), and the kernel that recomputes stale tile ranges and occupancy bits
+// (tile_ranges.glsl), each with the package's occupancy level.
+std::optional<OccupancyLevel> occupancyLevel(const ir::IrModule& module); // none: no cell is decided
+// The OCCUPANCY_LEVEL section of tiles.glsl.
+std::string occupancyLevelGlsl(const std::optional<OccupancyLevel>& level);
 DispatchShape activeTilesDispatchShape();
 std::string activeTilesKernelSource(const ir::IrGrammar& grammar, const ir::IrSweep& sweep,
-                                     std::string_view kernelName, std::string_view sourceName);
+                                     std::string_view kernelName, std::string_view sourceName,
+                                     const std::optional<OccupancyLevel>& level);
 DispatchShape tileRangesDispatchShape();
-std::string tileRangesKernelSource();
+std::string tileRangesKernelSource(const std::optional<OccupancyLevel>& level);
 
 } // namespace voxc::codegen
