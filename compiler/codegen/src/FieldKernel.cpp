@@ -44,14 +44,24 @@ std::string constantGlsl(const FieldNode& node) {
     return "?";
 }
 
-// x, y, z are the grid index plus World::localBase (0 but in a region grid), summed as integers.
-std::string inputGlsl(FieldInput input, glm::ivec3 localBase) {
+// The file's grid-local coordinate along `axis` (x, y or z: grid index + World::localBase) of the
+// voxel whose world coordinate is the GLSL int `worldCoordinate`, as an int expression to pass as
+// an argument: that coordinate less the declared grid's origin (World::origin - localBase), which
+// every region of a world shares. So a region's place reaches the kernel only through the push
+// constants (gridOrigin), and equal-sized tiles of a world compile to the same kernels
+// (docs/scale.md, "Where a tile's time goes").
+std::string fileLocalGlsl(const World& world, int axis, std::string_view worldCoordinate) {
+    const int32_t declaredOrigin = world.origin[axis] - world.localBase[axis];
+    if (declaredOrigin == 0) return std::string(worldCoordinate);
+    return fmt::format("{} - ({})", worldCoordinate, declaredOrigin);
+}
+
+// wx, wy, wz are the voxel's world coordinate; x, y, z its file's grid-local one (fileLocalGlsl),
+// an integer difference converted once, as the interpreter sums grid index and World::localBase.
+std::string inputGlsl(FieldInput input, const World& world) {
     const int axis = int(input) % 3;
-    const bool world = input >= FieldInput::WorldX;
-    const bool perColumn = axis != 1;
-    const char* vector = world ? (perColumn ? "columnWorld" : "world") : (perColumn ? "columnLocal" : "local");
-    if (!world && localBase[axis] != 0) return fmt::format("float({}.{} + ({}))", vector, "xyz"[axis], localBase[axis]);
-    return fmt::format("float({}.{})", vector, "xyz"[axis]);
+    const std::string coordinate = fmt::format("{}.{}", axis != 1 ? "columnWorld" : "world", "xyz"[axis]);
+    return fmt::format("float({})", input >= FieldInput::WorldX ? coordinate : fileLocalGlsl(world, axis, coordinate));
 }
 
 // Declares binding kBindingPointSets and pointSetDistances.
@@ -121,8 +131,7 @@ bool emitColumnNoise(const ir::IrModule& module, const ir::IrField& field, uint3
         const FieldNode& leaf = field.nodes[n];
         if (leaf.kind != FieldNode::Kind::Input || int(leaf.input) % 3 != 1) return std::nullopt;
         if (leaf.input == FieldInput::WorldY) return "float(worldY)";
-        const int base = module.world.localBase.y;
-        return base == 0 ? "float(localY)" : fmt::format("float(localY + ({}))", base);
+        return fmt::format("float({})", fileLocalGlsl(module.world, 1, "worldY"));
     };
     const uint32_t point = node.operands[0];
     const std::optional<std::string> x = componentGlsl(field, point, 0, columnLeaf);
@@ -166,7 +175,7 @@ FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::s
         switch (node.kind) {
         case FieldNode::Kind::Constant: break;
         case FieldNode::Kind::Input:
-            value = stampFrame ? stampInputGlsl(node.input) : inputGlsl(node.input, module.world.localBase);
+            value = stampFrame ? stampInputGlsl(node.input) : inputGlsl(node.input, module.world);
             what = std::array{"x", "y", "z", "wx", "wy", "wz"}[int(node.input)];
             break;
         case FieldNode::Kind::Component:

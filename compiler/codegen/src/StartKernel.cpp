@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <fmt/format.h>
-#include <glm/vector_relational.hpp>
 
 namespace voxc::codegen {
 
@@ -33,10 +32,14 @@ std::string startKernelSource(const ir::IrModule& module, std::string_view sourc
         const std::string material = shape.material ? fmt::format(" material {}", *shape.material) : "";
         header += fmt::format("  {} value {}{} ({})\n", info.name, glslFloat(shape.value), material, where);
         shapes += fmt::format("// {} ({})\n{{\n", info.name, where);
-        // A region grid (World::localBase) tests the shape at the file's grid-local voxel.
-        const glm::ivec3 base = module.world.localBase;
-        if (base != glm::ivec3(0))
-            shapes += fmt::format("    ivec3 local = local + ivec3({}, {}, {});\n", base.x, base.y, base.z);
+        // The shape is tested at the file's grid-local voxel: the world place less the declared
+        // grid's origin, the same for every region of the world (a region grid's own index is not),
+        // so equal-sized tiles of a world share this kernel (docs/scale.md).
+        const glm::ivec3 declaredOrigin = module.world.origin - module.world.localBase;
+        shapes += declaredOrigin == glm::ivec3(0)
+                      ? "    ivec3 local = world;\n"
+                      : fmt::format("    ivec3 local = world - ivec3({}, {}, {});\n", declaredOrigin.x,
+                                    declaredOrigin.y, declaredOrigin.z);
         if (info.columnGlsl) {
             columns += fmt::format("float column{} = {}; // {} ({})\n", i, info.columnGlsl(shape), info.name, where);
             shapes += fmt::format("    float column = column{};\n", i);

@@ -483,7 +483,7 @@ void main() {
                     ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
                     ivec3 world = push.gridOrigin.xyz + local;
                     address = nextColumnAddress(address, y == first.y, local);
-                    precise float n15 = float(local.y); // y (fields.vox:29:18)
+                    precise float n15 = float(world.y); // y (fields.vox:29:18)
                     precise float n16 = (n14 - n15); // sub (fields.vox:29:9)
                     precise float n18 = mathMin(mathMax(n16, 0.0), 1.0); // clamp (fields.vox:29:3)
                     float fieldValue = finiteDensity(n18, local);

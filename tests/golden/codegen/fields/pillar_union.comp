@@ -206,8 +206,8 @@ void main() {
             ivec3 columnLocal = push.anchorStart.xyz + ivec3(x, first.y, z) * push.anchorStep.xyz;
             // Integer sum first, then one conversion, as the interpreter does.
             ivec3 columnWorld = push.gridOrigin.xyz + columnLocal;
-            precise float n10 = float(columnLocal.x); // x (fields.vox:37:25)
-            precise float n11 = float(columnLocal.z); // z (fields.vox:37:25)
+            precise float n10 = float(columnWorld.x); // x (fields.vox:37:25)
+            precise float n11 = float(columnWorld.z); // z (fields.vox:37:25)
             int address = 0;
             for (int blockY = first.y; blockY < last.y; blockY += COLUMN_BLOCK) {
                 int blockEnd = min(blockY + COLUMN_BLOCK, last.y);
@@ -216,7 +216,7 @@ void main() {
                     ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
                     ivec3 world = push.gridOrigin.xyz + local;
                     address = nextColumnAddress(address, y == first.y, local);
-                    precise float n0 = float(local.y); // y (fields.vox:36:16)
+                    precise float n0 = float(world.y); // y (fields.vox:36:16)
                     bool n2 = (n0 > 40.0); // gt (fields.vox:36:16)
                     precise float n5 = (n2 ? 2.0 : 0.0); // select (fields.vox:36:16)
                     precise float n7 = (4.0 + n5); // add (fields.vox:36:11)

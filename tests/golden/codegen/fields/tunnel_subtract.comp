@@ -530,8 +530,8 @@ void main() {
             precise float n2 = float(columnWorld.z); // wz (fields.vox:32:28)
             precise float noiseColumnX0 = (n0 * 0.0799999982);
             precise float noiseColumnZ0 = (n2 * 0.0799999982);
-            precise float n10 = float(columnLocal.x); // x (fields.vox:33:17)
-            precise float n12 = float(columnLocal.z); // z (fields.vox:33:17)
+            precise float n10 = float(columnWorld.x); // x (fields.vox:33:17)
+            precise float n12 = float(columnWorld.z); // z (fields.vox:33:17)
             int address = 0;
             for (int blockY = first.y; blockY < last.y; blockY += COLUMN_BLOCK) {
                 int blockEnd = min(blockY + COLUMN_BLOCK, last.y);
@@ -545,7 +545,7 @@ void main() {
                     precise vec3 n5 = (n3 * 0.0799999982); // mul (fields.vox:32:28)
                     precise float n7 = noiseColumnValues[0][y - blockY]; // perlin3 along the column (fields.vox:32:20)
                     precise float n9 = (3.0 * n7); // mul (fields.vox:32:16)
-                    precise float n11 = float(local.y); // y (fields.vox:33:17)
+                    precise float n11 = float(world.y); // y (fields.vox:33:17)
                     precise vec3 n13 = vec3(n10, n11, n12); // vec3 (fields.vox:33:17)
                     precise vec3 n17 = (n13 - vec3(0.0, 16.0, 20.0)); // sub (fields.vox:24:21)
                     precise float n18 = mathDot(n17, vec3(64.0, 6.0, 24.0)); // dot (fields.vox:24:17)

@@ -142,7 +142,7 @@ void main() {
             ivec3 columnLocal = push.anchorStart.xyz + ivec3(x, first.y, z) * push.anchorStep.xyz;
             // Integer sum first, then one conversion, as the interpreter does.
             ivec3 columnWorld = push.gridOrigin.xyz + columnLocal;
-            precise float n0 = float(columnLocal.x); // x (materials.vox:20:1)
+            precise float n0 = float(columnWorld.x - (-3)); // x (materials.vox:20:1)
             bool n2 = (n0 < 20.0); // lt (materials.vox:20:1)
             precise float n5 = (n2 ? 0.800000012 : 0.200000003); // select (materials.vox:20:1)
             int address = 0;

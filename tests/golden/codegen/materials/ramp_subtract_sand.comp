@@ -143,7 +143,7 @@ void main() {
             ivec3 columnLocal = push.anchorStart.xyz + ivec3(x, first.y, z) * push.anchorStep.xyz;
             // Integer sum first, then one conversion, as the interpreter does.
             ivec3 columnWorld = push.gridOrigin.xyz + columnLocal;
-            precise float n0 = float(columnLocal.x); // x (materials.vox:21:1)
+            precise float n0 = float(columnWorld.x - (-3)); // x (materials.vox:21:1)
             precise float n2 = (n0 * 0.0399999991); // mul (materials.vox:21:1)
             int address = 0;
             for (int blockY = first.y; blockY < last.y; blockY += COLUMN_BLOCK) {

@@ -142,7 +142,7 @@ void main() {
             ivec3 columnLocal = push.anchorStart.xyz + ivec3(x, first.y, z) * push.anchorStep.xyz;
             // Integer sum first, then one conversion, as the interpreter does.
             ivec3 columnWorld = push.gridOrigin.xyz + columnLocal;
-            precise float n0 = float(columnLocal.z); // z (materials.vox:22:1)
+            precise float n0 = float(columnWorld.z - (-9)); // z (materials.vox:22:1)
             precise float n2 = (n0 * 0.0500000007); // mul (materials.vox:22:1)
             precise float n4 = (n2 + 0.300000012); // add (materials.vox:22:1)
             int address = 0;

@@ -251,6 +251,7 @@ void main() {
                 uint material = 0u;
                 // fill (materials.vox:6:3)
                 {
+                    ivec3 local = world - ivec3(-3, 2, -9);
                     bool inside = false;
                     inside = true;
                     if (inside) {
@@ -259,6 +260,7 @@ void main() {
                 }
                 // box (materials.vox:7:3)
                 {
+                    ivec3 local = world - ivec3(-3, 2, -9);
                     bool inside = false;
                     inside = all(greaterThanEqual(vec3(local), vec3(0.0, 0.0, 0.0))) && all(lessThan(vec3(local), vec3(40.0, 14.0, 28.0)));
                     if (inside) {
@@ -268,6 +270,7 @@ void main() {
                 }
                 // sphere (materials.vox:8:3)
                 {
+                    ivec3 local = world - ivec3(-3, 2, -9);
                     bool inside = false;
                     precise vec3 d = vec3(local) - vec3(20.0, 16.0, 14.0);
                     precise float distanceSquared = d.x * d.x + d.y * d.y + d.z * d.z;
@@ -279,6 +282,7 @@ void main() {
                 }
                 // box (materials.vox:9:3)
                 {
+                    ivec3 local = world - ivec3(-3, 2, -9);
                     bool inside = false;
                     inside = all(greaterThanEqual(vec3(local), vec3(0.0, 4.0, 0.0))) && all(lessThan(vec3(local), vec3(1.0, 10.0, 28.0)));
                     if (inside) {

@@ -248,6 +248,7 @@ void main() {
                 uint material = 0u;
                 // fill (overhang.vox:34:3)
                 {
+                    ivec3 local = world;
                     bool inside = false;
                     inside = true;
                     if (inside) {
@@ -256,6 +257,7 @@ void main() {
                 }
                 // box (overhang.vox:36:3)
                 {
+                    ivec3 local = world;
                     bool inside = false;
                     inside = all(greaterThanEqual(vec3(local), vec3(0.0, 0.0, 0.0))) && all(lessThan(vec3(local), vec3(24.0, 64.0, 64.0)));
                     if (inside) {

@@ -249,6 +249,7 @@ void main() {
                 uint material = 0u;
                 // fill (sample.vox:3:3)
                 {
+                    ivec3 local = world - ivec3(-5, 3, -12);
                     bool inside = false;
                     inside = true;
                     if (inside) {
@@ -257,6 +258,7 @@ void main() {
                 }
                 // box (sample.vox:4:3)
                 {
+                    ivec3 local = world - ivec3(-5, 3, -12);
                     bool inside = false;
                     inside = all(greaterThanEqual(vec3(local), vec3(0.0, 0.0, 0.0))) && all(lessThan(vec3(local), vec3(10.0, 4.0, 10.0)));
                     if (inside) {
@@ -265,6 +267,7 @@ void main() {
                 }
                 // heightfield (sample.vox:5:3)
                 {
+                    ivec3 local = world - ivec3(-5, 3, -12);
                     float column = column2;
                     bool inside = false;
                     inside = float(local.y) < column;
