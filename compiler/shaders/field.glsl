@@ -15,6 +15,7 @@
 
 #include "common.glsl"
 #include "nonfinite.glsl"
+#include "opaque_constants.glsl"
 
 const int COLUMN_BLOCK = 256;
 // <<COLUMN_NOISE>>

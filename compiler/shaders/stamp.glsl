@@ -14,6 +14,7 @@
 
 #include "common.glsl"
 #include "nonfinite.glsl"
+#include "opaque_constants.glsl"
 // <<LIBRARIES>>
 
 // <<DISPATCH_SHAPE>>

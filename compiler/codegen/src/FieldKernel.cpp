@@ -1,6 +1,7 @@
 // GLSL for a field stage: the field's DAG as straight-line SSA code (one variable per node,
-// constants written inline), the per-column nodes before the y loop, then the combine of
-// FieldMode written exactly as voxc::combineField computes it with std::min / std::max.
+// constants written inline, those a driver could fold wrongly through opaqueConstant), the
+// per-column nodes before the y loop, then the combine of FieldMode written exactly as
+// voxc::combineField computes it with std::min / std::max.
 #include "voxc/codegen/KernelSources.h"
 #include "voxc/codegen/Template.h"
 
@@ -29,6 +30,31 @@ namespace voxc::codegen {
 namespace {
 
 bool isFloatType(Type t) { return t == Type::Float || t == Type::Vec2 || t == Type::Vec3; }
+
+// A float constant the compilers must not see (opaque_constants.glsl): one that is zero in some
+// component (their folds of x + 0, 0 - x, x * 0, x / 0 and 0 / x are not IEEE), an argument of a
+// record whose GLSL calls into a library (the library's own arithmetic may turn it into such a
+// zero: mix(x, y, 1) computes x * (1 - 1)), or an operand of a call on constants alone (one the IR
+// does not fold, such as 1 / 2 - 0.5, which the compilers would fold into a zero).
+std::vector<bool> opaqueConstants(const ir::IrField& field) {
+    const auto isConstant = [&](uint32_t n) { return field.nodes[n].kind == FieldNode::Kind::Constant; };
+    std::vector<bool> opaque(field.nodes.size(), false);
+    for (size_t i = 0; i < field.nodes.size(); ++i) {
+        const FieldNode& node = field.nodes[i];
+        if (node.kind == FieldNode::Kind::Constant && isFloatType(node.type))
+            for (int c = 0; c < (node.type == Type::Vec3 ? 3 : node.type == Type::Vec2 ? 2 : 1); ++c)
+                if (node.constant[c] == 0.0f) opaque[i] = true;
+        if (node.kind != FieldNode::Kind::Call) continue;
+        const bool library = !functions()[node.function].glslLibraries.empty();
+        const bool constantsAlone = std::all_of(node.operands.begin(), node.operands.end(), isConstant);
+        if (library || constantsAlone)
+            for (uint32_t o : node.operands)
+                if (isConstant(o) && isFloatType(field.nodes[o].type)) opaque[o] = true;
+    }
+    return opaque;
+}
+
+std::string opaqueGlsl(const std::string& constant) { return "opaqueConstant(" + constant + ")"; }
 
 std::string constantGlsl(const FieldNode& node) {
     const glm::vec3 c = node.constant;
@@ -85,25 +111,30 @@ struct FieldCode {
 // performs on that component, in the same order, so an expression assigned to a `precise`
 // variable has the same bits as the component of the node's value.
 template <class Leaf>
-std::optional<std::string> componentGlsl(const ir::IrField& field, uint32_t i, int axis, const Leaf& leaf) {
+std::optional<std::string> componentGlsl(const ir::IrField& field, const std::vector<bool>& opaque, uint32_t i, int axis,
+                                         const Leaf& leaf) {
     const FieldNode& node = field.nodes[i];
     if (node.type != Type::Float && node.type != Type::Vec3) return std::nullopt;
-    if (node.kind == FieldNode::Kind::Constant) return glslFloat(node.type == Type::Float ? node.constant.x : node.constant[axis]);
+    if (node.kind == FieldNode::Kind::Constant) {
+        const std::string c = glslFloat(node.type == Type::Float ? node.constant.x : node.constant[axis]);
+        return opaque[i] ? opaqueGlsl(c) : c;
+    }
     if (std::optional<std::string> named = leaf(i, axis)) return named;
     if (node.kind == FieldNode::Kind::Component)
-        return field.nodes[node.operands[0]].type == Type::Vec3 ? componentGlsl(field, node.operands[0], int(node.component), leaf)
-                                                                : std::nullopt;
+        return field.nodes[node.operands[0]].type == Type::Vec3
+                   ? componentGlsl(field, opaque, node.operands[0], int(node.component), leaf)
+                   : std::nullopt;
     if (node.kind != FieldNode::Kind::Call) return std::nullopt;
     const std::string_view name = functions()[node.function].name;
-    if (name == "vec3") return componentGlsl(field, node.operands[axis], axis, leaf);
+    if (name == "vec3") return componentGlsl(field, opaque, node.operands[axis], axis, leaf);
     if (name == "neg") {
-        const std::optional<std::string> a = componentGlsl(field, node.operands[0], axis, leaf);
+        const std::optional<std::string> a = componentGlsl(field, opaque, node.operands[0], axis, leaf);
         return a ? std::optional("(-" + *a + ")") : std::nullopt;
     }
     const char* op = name == "add" ? "+" : name == "sub" ? "-" : name == "mul" ? "*" : nullptr;
     if (!op) return std::nullopt;
-    const std::optional<std::string> a = componentGlsl(field, node.operands[0], axis, leaf);
-    const std::optional<std::string> b = componentGlsl(field, node.operands[1], axis, leaf);
+    const std::optional<std::string> a = componentGlsl(field, opaque, node.operands[0], axis, leaf);
+    const std::optional<std::string> b = componentGlsl(field, opaque, node.operands[1], axis, leaf);
     if (!a || !b) return std::nullopt;
     return fmt::format("({} {} {})", *a, op, *b);
 }
@@ -115,7 +146,8 @@ constexpr int kMaxColumnNoiseSites = 4;
 // Emits call `i` through noise_column.glsl when it is fbm, turbulence or perlin3 of a point whose
 // x and z are the same along the column and whose y depends on y alone, its other arguments the
 // same along the column; false otherwise (the call is then emitted per voxel).
-bool emitColumnNoise(const ir::IrModule& module, const ir::IrField& field, uint32_t i, int site, FieldCode& code) {
+bool emitColumnNoise(const ir::IrModule& module, const ir::IrField& field, const std::vector<bool>& opaque, uint32_t i,
+                     int site, FieldCode& code) {
     const FieldNode& node = field.nodes[i];
     const std::string_view name = functions()[node.function].name;
     const bool fractal = name == "fbm" || name == "turbulence";
@@ -134,9 +166,9 @@ bool emitColumnNoise(const ir::IrModule& module, const ir::IrField& field, uint3
         return fmt::format("float({})", fileLocalGlsl(module.world, 1, "worldY"));
     };
     const uint32_t point = node.operands[0];
-    const std::optional<std::string> x = componentGlsl(field, point, 0, columnLeaf);
-    const std::optional<std::string> y = componentGlsl(field, point, 1, alongYLeaf);
-    const std::optional<std::string> z = componentGlsl(field, point, 2, columnLeaf);
+    const std::optional<std::string> x = componentGlsl(field, opaque, point, 0, columnLeaf);
+    const std::optional<std::string> y = componentGlsl(field, opaque, point, 1, alongYLeaf);
+    const std::optional<std::string> z = componentGlsl(field, opaque, point, 2, columnLeaf);
     if (!x || !y || !z) return false;
     const std::vector<uint32_t>& a = node.operands;
     const std::string arguments =
@@ -163,12 +195,13 @@ FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::s
     const std::vector<std::shared_ptr<const SampledMap>> maps = mapsOf(module);
     FieldCode code;
     code.names.resize(field.nodes.size());
+    const std::vector<bool> opaque = opaqueConstants(field);
     std::set<std::string_view> seenLibraries;
     int columnNoiseSites = 0;
     for (size_t i = 0; i < field.nodes.size(); ++i) {
         const FieldNode& node = field.nodes[i];
         if (node.kind == FieldNode::Kind::Constant) {
-            code.names[i] = constantGlsl(node);
+            code.names[i] = opaque[i] ? opaqueGlsl(constantGlsl(node)) : constantGlsl(node);
             continue;
         }
         std::string value, what;
@@ -214,7 +247,8 @@ FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::s
             what = info.name;
             for (std::string_view library : info.glslLibraries)
                 if (seenLibraries.insert(library).second) code.libraries.push_back(library);
-            if (!stampFrame && !field.perColumn.at(i) && emitColumnNoise(module, field, uint32_t(i), columnNoiseSites, code)) {
+            if (!stampFrame && !field.perColumn.at(i) &&
+                emitColumnNoise(module, field, opaque, uint32_t(i), columnNoiseSites, code)) {
                 value = fmt::format("noiseColumnValues[{}][y - blockY]", columnNoiseSites++);
                 what += " along the column";
             }

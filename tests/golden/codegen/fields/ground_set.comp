@@ -101,6 +101,21 @@ float finiteDensity(float value, ivec3 local) {
     return 0.0;
 }
 // ---- end nonfinite.glsl ----
+// ---- begin opaque_constants.glsl ----
+// Field-expression constants that the shader compilers must not treat as constants.
+// llvmpipe (lavapipe's NIR passes and its LLVM code builder) rewrites an operation with a
+// constant zero operand as if signed zeros, infinities and NaN did not exist, `precise` or not:
+// x + 0 -> x (so -0 stays -0), 0 - x -> -x (so +0 becomes -0), x * 0 -> +0 (also for a
+// negative, infinite or NaN x), x / 0 -> NaN, 0 / x -> +0 (docs/fuzzing.md has the table).
+// The interpreter computes these as IEEE does. Codegen passes the constants that could reach
+// such an operation through opaqueConstant: the same value while the kernel runs (no dispatch
+// has zero workgroups), but not one the compilers can fold. The test is the same for every
+// invocation, so it costs a uniform select.
+bool dispatchIsEmpty() { return gl_NumWorkGroups.x == 0u; }
+float opaqueConstant(float c) { return dispatchIsEmpty() ? uintBitsToFloat(0x7FC00000u) : c; }
+vec2 opaqueConstant(vec2 c) { return dispatchIsEmpty() ? vec2(uintBitsToFloat(0x7FC00000u)) : c; }
+vec3 opaqueConstant(vec3 c) { return dispatchIsEmpty() ? vec3(uintBitsToFloat(0x7FC00000u)) : c; }
+// ---- end opaque_constants.glsl ----
 
 const int COLUMN_BLOCK = 256;
 // No noise call shares work along the column.
@@ -470,9 +485,9 @@ void main() {
             ivec3 columnWorld = push.gridOrigin.xyz + columnLocal;
             precise float n0 = float(columnWorld.x); // wx (fields.vox:28:35)
             precise float n1 = float(columnWorld.z); // wz (fields.vox:28:42)
-            precise vec3 n3 = vec3(n0, 0.0, n1); // vec3 (fields.vox:28:30)
+            precise vec3 n3 = vec3(n0, opaqueConstant(0.0), n1); // vec3 (fields.vox:28:30)
             precise vec3 n5 = (n3 * 0.0199999996); // mul (fields.vox:28:30)
-            precise float n10 = noiseFbm(n5, 5, 2.0, 0.5, 11); // fbm (fields.vox:28:26)
+            precise float n10 = noiseFbm(n5, 5, opaqueConstant(2.0), opaqueConstant(0.5), 11); // fbm (fields.vox:28:26)
             precise float n12 = (10.0 * n10); // mul (fields.vox:28:21)
             precise float n14 = (24.0 + n12); // add (fields.vox:28:16)
             int address = 0;
@@ -485,7 +500,7 @@ void main() {
                     address = nextColumnAddress(address, y == first.y, local);
                     precise float n15 = float(world.y); // y (fields.vox:29:18)
                     precise float n16 = (n14 - n15); // sub (fields.vox:29:9)
-                    precise float n18 = mathMin(mathMax(n16, 0.0), 1.0); // clamp (fields.vox:29:3)
+                    precise float n18 = mathMin(mathMax(n16, opaqueConstant(0.0)), opaqueConstant(1.0)); // clamp (fields.vox:29:3)
                     float fieldValue = finiteDensity(n18, local);
                     // set: d = f
                     voxels.density[address] = fieldValue;

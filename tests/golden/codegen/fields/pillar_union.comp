@@ -101,6 +101,21 @@ float finiteDensity(float value, ivec3 local) {
     return 0.0;
 }
 // ---- end nonfinite.glsl ----
+// ---- begin opaque_constants.glsl ----
+// Field-expression constants that the shader compilers must not treat as constants.
+// llvmpipe (lavapipe's NIR passes and its LLVM code builder) rewrites an operation with a
+// constant zero operand as if signed zeros, infinities and NaN did not exist, `precise` or not:
+// x + 0 -> x (so -0 stays -0), 0 - x -> -x (so +0 becomes -0), x * 0 -> +0 (also for a
+// negative, infinite or NaN x), x / 0 -> NaN, 0 / x -> +0 (docs/fuzzing.md has the table).
+// The interpreter computes these as IEEE does. Codegen passes the constants that could reach
+// such an operation through opaqueConstant: the same value while the kernel runs (no dispatch
+// has zero workgroups), but not one the compilers can fold. The test is the same for every
+// invocation, so it costs a uniform select.
+bool dispatchIsEmpty() { return gl_NumWorkGroups.x == 0u; }
+float opaqueConstant(float c) { return dispatchIsEmpty() ? uintBitsToFloat(0x7FC00000u) : c; }
+vec2 opaqueConstant(vec2 c) { return dispatchIsEmpty() ? vec2(uintBitsToFloat(0x7FC00000u)) : c; }
+vec3 opaqueConstant(vec3 c) { return dispatchIsEmpty() ? vec3(uintBitsToFloat(0x7FC00000u)) : c; }
+// ---- end opaque_constants.glsl ----
 
 const int COLUMN_BLOCK = 256;
 // No noise call shares work along the column.
@@ -218,7 +233,7 @@ void main() {
                     address = nextColumnAddress(address, y == first.y, local);
                     precise float n0 = float(world.y); // y (fields.vox:36:16)
                     bool n2 = (n0 > 40.0); // gt (fields.vox:36:16)
-                    precise float n5 = (n2 ? 2.0 : 0.0); // select (fields.vox:36:16)
+                    precise float n5 = (n2 ? 2.0 : opaqueConstant(0.0)); // select (fields.vox:36:16)
                     precise float n7 = (4.0 + n5); // add (fields.vox:36:11)
                     bool n9 = (n0 < 52.0); // lt (fields.vox:37:3)
                     precise vec3 n12 = vec3(n10, n0, n11); // vec3 (fields.vox:37:25)
@@ -228,8 +243,8 @@ void main() {
                     precise vec2 n17 = (n15 - vec2(44.0, 16.0)); // sub (fields.vox:37:25)
                     precise float n18 = mathLength(n17); // length (fields.vox:37:18)
                     precise float n19 = (n7 - n18); // sub (fields.vox:19:54)
-                    precise float n21 = mathMin(mathMax(n19, 0.0), 1.0); // clamp (fields.vox:19:48)
-                    precise float n22 = (n9 ? n21 : 0.0); // select (fields.vox:37:3)
+                    precise float n21 = mathMin(mathMax(n19, opaqueConstant(0.0)), opaqueConstant(1.0)); // clamp (fields.vox:19:48)
+                    precise float n22 = (n9 ? n21 : opaqueConstant(0.0)); // select (fields.vox:37:3)
                     float fieldValue = finiteDensity(n22, local);
                     // union: d = max(d, f)
                     float density = voxels.density[address];

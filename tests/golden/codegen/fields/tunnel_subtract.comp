@@ -101,6 +101,21 @@ float finiteDensity(float value, ivec3 local) {
     return 0.0;
 }
 // ---- end nonfinite.glsl ----
+// ---- begin opaque_constants.glsl ----
+// Field-expression constants that the shader compilers must not treat as constants.
+// llvmpipe (lavapipe's NIR passes and its LLVM code builder) rewrites an operation with a
+// constant zero operand as if signed zeros, infinities and NaN did not exist, `precise` or not:
+// x + 0 -> x (so -0 stays -0), 0 - x -> -x (so +0 becomes -0), x * 0 -> +0 (also for a
+// negative, infinite or NaN x), x / 0 -> NaN, 0 / x -> +0 (docs/fuzzing.md has the table).
+// The interpreter computes these as IEEE does. Codegen passes the constants that could reach
+// such an operation through opaqueConstant: the same value while the kernel runs (no dispatch
+// has zero workgroups), but not one the compilers can fold. The test is the same for every
+// invocation, so it costs a uniform select.
+bool dispatchIsEmpty() { return gl_NumWorkGroups.x == 0u; }
+float opaqueConstant(float c) { return dispatchIsEmpty() ? uintBitsToFloat(0x7FC00000u) : c; }
+vec2 opaqueConstant(vec2 c) { return dispatchIsEmpty() ? vec2(uintBitsToFloat(0x7FC00000u)) : c; }
+vec3 opaqueConstant(vec3 c) { return dispatchIsEmpty() ? vec3(uintBitsToFloat(0x7FC00000u)) : c; }
+// ---- end opaque_constants.glsl ----
 
 const int COLUMN_BLOCK = 256;
 float noiseColumnValues[1][COLUMN_BLOCK];
@@ -547,17 +562,17 @@ void main() {
                     precise float n9 = (3.0 * n7); // mul (fields.vox:32:16)
                     precise float n11 = float(world.y); // y (fields.vox:33:17)
                     precise vec3 n13 = vec3(n10, n11, n12); // vec3 (fields.vox:33:17)
-                    precise vec3 n17 = (n13 - vec3(0.0, 16.0, 20.0)); // sub (fields.vox:24:21)
-                    precise float n18 = mathDot(n17, vec3(64.0, 6.0, 24.0)); // dot (fields.vox:24:17)
+                    precise vec3 n17 = (n13 - opaqueConstant(vec3(0.0, 16.0, 20.0))); // sub (fields.vox:24:21)
+                    precise float n18 = mathDot(n17, opaqueConstant(vec3(64.0, 6.0, 24.0))); // dot (fields.vox:24:17)
                     precise float n20 = (n18 / 4708.0); // div (fields.vox:24:17)
-                    precise float n22 = mathMin(mathMax(n20, 0.0), 1.0); // clamp (fields.vox:24:11)
-                    precise vec3 n23 = (vec3(64.0, 6.0, 24.0) * n22); // mul (fields.vox:25:19)
-                    precise vec3 n24 = (vec3(0.0, 16.0, 20.0) + n23); // add (fields.vox:25:15)
+                    precise float n22 = mathMin(mathMax(n20, opaqueConstant(0.0)), opaqueConstant(1.0)); // clamp (fields.vox:24:11)
+                    precise vec3 n23 = (opaqueConstant(vec3(64.0, 6.0, 24.0)) * n22); // mul (fields.vox:25:19)
+                    precise vec3 n24 = (opaqueConstant(vec3(0.0, 16.0, 20.0)) + n23); // add (fields.vox:25:15)
                     precise vec3 n25 = (n13 - n24); // sub (fields.vox:25:10)
                     precise float n26 = mathLength(n25); // length (fields.vox:25:3)
                     precise float n27 = (n26 + n9); // add (fields.vox:33:9)
                     precise float n29 = (5.0 - n27); // sub (fields.vox:19:54)
-                    precise float n30 = mathMin(mathMax(n29, 0.0), 1.0); // clamp (fields.vox:19:48)
+                    precise float n30 = mathMin(mathMax(n29, opaqueConstant(0.0)), opaqueConstant(1.0)); // clamp (fields.vox:19:48)
                     float fieldValue = finiteDensity(n30, local);
                     // subtract: d = min(d, 1 - f)
                     float density = voxels.density[address];
