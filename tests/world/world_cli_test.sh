@@ -51,9 +51,13 @@ cmp -s "$work/c/tile_0_0_0.vdb" "$work/d/tile_0_0_0.vdb" && pass "lavapipe's til
 # The compile cache: a second lavapipe run compiles no kernel.
 VOXC_CACHE_DIR=$work/cache "$voxc" world "$scene" -o "$work/k1" --tile 48 --device lavapipe 2>"$work/k1.log" || { fail "cache run 1"; cat "$work/k1.log"; }
 VOXC_CACHE_DIR=$work/cache "$voxc" world "$scene" -o "$work/k2" --tile 48 --device lavapipe 2>"$work/k2.log" || { fail "cache run 2"; cat "$work/k2.log"; }
-grep -Eq "^kernels: [1-9][0-9]* from the cache, 0 compiled$" "$work/k2.log" \
+grep -Eq "^kernels: [1-9][0-9]* from the cache, 0 compiled; " "$work/k2.log" \
     && pass "a second run reads its kernels from the cache ($(grep kernels: "$work/k1.log"), then $(grep kernels: "$work/k2.log"))" \
     || { fail "cache"; cat "$work/k1.log" "$work/k2.log"; }
+# Tiles of one size share their kernels: the driver compiles each pipeline once, not once per tile.
+read -r created shared < <(sed -nE 's/^kernels: .*; pipelines: ([0-9]+) created, ([0-9]+) shared by tiles$/\1 \2/p' "$work/k1.log")
+[[ -n $created && $shared -gt $((3 * created)) ]] \
+    && pass "8 tiles create $created pipelines and share them $shared times" || { fail "shared pipelines"; cat "$work/k1.log"; }
 
 # --region: only the tiles meeting the box; the whole world later keeps them.
 "$voxc" world "$scene" -o "$work/r" --tile 48 --interpreter --region 50,10,0:60,20,10 2>"$work/r.log" || { fail "region"; cat "$work/r.log"; }

@@ -84,13 +84,17 @@ void writeWorldTiles(const WorldCommandOptions& options) {
     Program program = loadProgram(options.file, overrides);
     stages::solveBlocks(program); // once for every tile: a tile's program crops the tables
 
-    // Kernels compiled for a tile before (a rerun, another rank) come from the compile cache and
-    // the pipeline cache; a tile's place is written into some of them, so not from a neighbour's.
+    // Tiles of one size compile to the same kernels (a tile's place is in the push constants): a
+    // later tile takes their SPIR-V from the compile cache and their pipelines from the context, so
+    // the driver compiles each kernel once per run (per rank under mpirun); a rerun or another rank
+    // also finds the SPIR-V in the compile cache.
     const std::optional<std::filesystem::path> cache = options.noCache ? std::nullopt : codegen::defaultCacheDirectory();
     codegen::setCompileCacheDirectory(cache);
     std::optional<VulkanContext> context;
     if (!options.interpreter)
-        context.emplace(ContextOptions{.device = options.device, .pipelineCacheDirectory = cache ? cache->string() : ""});
+        context.emplace(ContextOptions{.device = options.device,
+                                       .pipelineCacheDirectory = cache ? cache->string() : "",
+                                       .shareKernelPipelines = true});
     world::WorldOptions worldOptions;
     worldOptions.directory = options.directory;
     worldOptions.tile = options.tile;
@@ -117,8 +121,10 @@ void writeWorldTiles(const WorldCommandOptions& options) {
     std::cerr << "\n";
     if (context && !onRanks) { // under mpirun rank 0 compiles nothing: the kernels ran on the others
         const codegen::CompileCacheCounts kernels = codegen::compileCacheCounts();
-        std::cerr << fmt::format("kernels: {} from the cache, {} compiled{}\n", kernels.hits, kernels.compiled,
-                                 cache ? "" : " (--no-cache)");
+        const KernelPipelineCounts pipelines = context->kernelPipelineCounts();
+        std::cerr << fmt::format("kernels: {} from the cache, {} compiled{}; pipelines: {} created, {} shared by tiles\n",
+                                 kernels.hits, kernels.compiled, cache ? "" : " (--no-cache)", pipelines.created,
+                                 pipelines.shared);
     }
 }
 

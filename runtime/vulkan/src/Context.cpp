@@ -237,6 +237,9 @@ std::string formatDeviceList(const std::vector<DeviceInfo>& devices) {
 VulkanContext::Impl::~Impl() {
     if (device) {
         api.vkDeviceWaitIdle(device);
+        for (const auto& [spirv, pipeline] : kernelPipelines) api.vkDestroyPipeline(device, pipeline, nullptr);
+        if (kernelPipelineLayout) api.vkDestroyPipelineLayout(device, kernelPipelineLayout, nullptr);
+        if (kernelSetLayout) api.vkDestroyDescriptorSetLayout(device, kernelSetLayout, nullptr);
         if (pipelineCache) {
             savePipelineCache(*this);
             api.vkDestroyPipelineCache(device, pipelineCache, nullptr);
@@ -285,6 +288,7 @@ VulkanContext::VulkanContext(const ContextOptions& options) : impl_(std::make_un
     vulkan_detail::loadDeviceApi(s.api, s.device);
     s.api.vkGetDeviceQueue(s.device, s.queueFamily, 0, &s.queue);
     openPipelineCache(s, options.pipelineCacheDirectory);
+    s.shareKernelPipelines = options.shareKernelPipelines;
 }
 
 VulkanContext::~VulkanContext() = default;
@@ -317,6 +321,11 @@ std::vector<ValidationMessage> VulkanContext::validationMessages() const {
 void VulkanContext::clearValidationMessages() {
     std::lock_guard<std::mutex> lock(impl_->messageMutex);
     impl_->messages.clear();
+}
+
+KernelPipelineCounts VulkanContext::kernelPipelineCounts() const {
+    std::lock_guard<std::mutex> lock(impl_->kernelPipelineMutex);
+    return impl_->kernelPipelineCounts;
 }
 
 } // namespace voxc

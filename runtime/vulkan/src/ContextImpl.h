@@ -3,6 +3,7 @@
 #include "VulkanApi.h"
 #include "voxc/vulkan/Context.h"
 
+#include <map>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -27,6 +28,16 @@ struct VulkanContext::Impl {
     VkPipelineCache pipelineCache = VK_NULL_HANDLE;
     std::string pipelineCacheFile;      // empty: not saved
     std::vector<char> pipelineCacheLoaded; // what the file held, to skip a save that changes nothing
+
+    // ContextOptions::shareKernelPipelines: the kernels' pipelines by SPIR-V (KernelPipelines.cpp),
+    // destroyed with the context. An executor binds its own pipeline layout, which is defined
+    // exactly as the one a shared pipeline was created with, so Vulkan counts them compatible.
+    bool shareKernelPipelines = false;
+    std::mutex kernelPipelineMutex;
+    std::map<std::vector<uint32_t>, VkPipeline> kernelPipelines;
+    VkPipelineLayout kernelPipelineLayout = VK_NULL_HANDLE; // what the shared pipelines were created with
+    VkDescriptorSetLayout kernelSetLayout = VK_NULL_HANDLE;
+    KernelPipelineCounts kernelPipelineCounts;
 
     mutable std::mutex messageMutex; // the layer may call back from driver threads
     std::vector<ValidationMessage> messages;

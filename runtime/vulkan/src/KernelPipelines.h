@@ -13,10 +13,12 @@ constexpr uint32_t kKernelBindingCount = 14; // bindings 0..13
 
 struct KernelPipelines : StorageSet {
     std::vector<VkPipeline> pipelines; // one per Kernel, same order
+    bool shared = false;               // the context owns them (ContextOptions::shareKernelPipelines)
 };
 
-// Fills `out` step by step, so destroyPipelines cleans up after a failure part way.
-// A kernel the driver rejects is an InternalError naming the kernel.
+// Fills `out` step by step, so destroyPipelines cleans up after a failure part way. With
+// ContextOptions::shareKernelPipelines a kernel whose SPIR-V an earlier executor had gets that
+// pipeline. A kernel the driver rejects is an InternalError naming the kernel.
 void createPipelines(VulkanContext::Impl& ctx, const std::vector<Kernel>& kernels, KernelPipelines& out);
 // `byBinding[b]` is the buffer of binding b.
 void bindBuffers(VulkanContext::Impl& ctx, const KernelPipelines& pipelines,

@@ -8,8 +8,8 @@
 
 namespace voxc::vulkan_detail {
 
-void createStorageSet(VulkanContext::Impl& ctx, std::span<const uint32_t> bindings, uint32_t pushBytes,
-                      StorageSet& out) {
+void createStorageLayout(VulkanContext::Impl& ctx, std::span<const uint32_t> bindings, uint32_t pushBytes,
+                         VkDescriptorSetLayout& setLayout, VkPipelineLayout& layout) {
     std::vector<VkDescriptorSetLayoutBinding> layoutBindings(bindings.size());
     for (size_t i = 0; i < bindings.size(); ++i) {
         layoutBindings[i].binding = bindings[i];
@@ -20,16 +20,20 @@ void createStorageSet(VulkanContext::Impl& ctx, std::span<const uint32_t> bindin
     VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     setInfo.bindingCount = uint32_t(layoutBindings.size());
     setInfo.pBindings = layoutBindings.data();
-    check(ctx.api.vkCreateDescriptorSetLayout(ctx.device, &setInfo, nullptr, &out.setLayout),
-          "vkCreateDescriptorSetLayout");
+    check(ctx.api.vkCreateDescriptorSetLayout(ctx.device, &setInfo, nullptr, &setLayout), "vkCreateDescriptorSetLayout");
 
     const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes};
     VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     layoutInfo.setLayoutCount = 1;
-    layoutInfo.pSetLayouts = &out.setLayout;
+    layoutInfo.pSetLayouts = &setLayout;
     layoutInfo.pushConstantRangeCount = 1;
     layoutInfo.pPushConstantRanges = &push;
-    check(ctx.api.vkCreatePipelineLayout(ctx.device, &layoutInfo, nullptr, &out.layout), "vkCreatePipelineLayout");
+    check(ctx.api.vkCreatePipelineLayout(ctx.device, &layoutInfo, nullptr, &layout), "vkCreatePipelineLayout");
+}
+
+void createStorageSet(VulkanContext::Impl& ctx, std::span<const uint32_t> bindings, uint32_t pushBytes,
+                      StorageSet& out) {
+    createStorageLayout(ctx, bindings, pushBytes, out.setLayout, out.layout);
 
     const VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, uint32_t(bindings.size())};
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};

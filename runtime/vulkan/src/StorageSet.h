@@ -20,6 +20,9 @@ struct StorageSet {
 // `out` step by step, so destroyStorageSet cleans up after a failure part way.
 void createStorageSet(VulkanContext::Impl& ctx, std::span<const uint32_t> bindings, uint32_t pushBytes,
                       StorageSet& out);
+// Only the layouts of such a set (no pool, no set), `setLayout` first.
+void createStorageLayout(VulkanContext::Impl& ctx, std::span<const uint32_t> bindings, uint32_t pushBytes,
+                         VkDescriptorSetLayout& setLayout, VkPipelineLayout& layout);
 // A compute pipeline of `spirv` over `layout`; InternalError naming `what` when the driver rejects it.
 VkPipeline createComputePipeline(VulkanContext::Impl& ctx, VkPipelineLayout layout, std::span<const uint32_t> spirv,
                                  const std::string& what);

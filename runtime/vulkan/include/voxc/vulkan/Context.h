@@ -42,6 +42,18 @@ struct ContextOptions {
     // Where the device's VkPipelineCache is kept between runs (one file per device and driver
     // version); empty: pipelines are cached for the life of the context only.
     std::string pipelineCacheDirectory = {};
+    // Keep every package kernel's pipeline until the context goes, and give it to every later
+    // executor whose kernel has the same SPIR-V, instead of having the driver compile it again
+    // (which lavapipe does even with the pipeline cache): what `voxc world` asks for, whose tiles
+    // of one size share their kernels (docs/scale.md). Off by default, since a context that runs
+    // many different packages (tests, the viewer's reloads) would hold all of their pipelines.
+    bool shareKernelPipelines = false;
+};
+
+// The package kernels' pipelines a context made and shared (ContextOptions::shareKernelPipelines).
+struct KernelPipelineCounts {
+    uint64_t created = 0; // compiled by the driver
+    uint64_t shared = 0;  // handed to an executor from an earlier one with the same SPIR-V
 };
 
 // A warning or error reported by the validation layer.
@@ -69,6 +81,7 @@ public:
     // Messages captured so far (warnings and errors); empty unless validation is enabled.
     std::vector<ValidationMessage> validationMessages() const;
     void clearValidationMessages();
+    KernelPipelineCounts kernelPipelineCounts() const;
 
     struct Impl; // Vulkan handles and entry points, defined in src/ContextImpl.h
 
