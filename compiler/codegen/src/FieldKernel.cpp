@@ -31,25 +31,35 @@ namespace {
 
 bool isFloatType(Type t) { return t == Type::Float || t == Type::Vec2 || t == Type::Vec3; }
 
-// A float constant the compilers must not see (opaque_constants.glsl): one that is zero in some
-// component (their folds of x + 0, 0 - x, x * 0, x / 0 and 0 / x are not IEEE), an argument of a
-// record whose GLSL calls into a library (the library's own arithmetic may turn it into such a
-// zero: mix(x, y, 1) computes x * (1 - 1)), or an operand of a call on constants alone (one the IR
-// does not fold, such as 1 / 2 - 0.5, which the compilers would fold into a zero).
+// Records the device evaluates through exp2 and log2, not exactly (docs/architecture.md): with
+// constant arguments the compilers evaluate them on the host (pow(2, 1.5)) or simplify them
+// exactly (pow(x, 2) into x * x), as the interpreter's results are, so theirs stay literal.
+constexpr std::string_view kInexactOnDevice[] = {"pow", "warped_fbm"};
+
+bool constantsAlone(const ir::IrField& field, const FieldNode& node) {
+    return std::all_of(node.operands.begin(), node.operands.end(),
+                       [&](uint32_t o) { return field.nodes[o].kind == FieldNode::Kind::Constant; });
+}
+
+// The float constants the compilers must not see (opaque_constants.glsl): those zero in some
+// component (their folds of x + 0, 0 - x, x * 0, x / 0 and 0 / x are not IEEE), and the arguments
+// of a record whose GLSL calls into a library, whose own arithmetic may turn them into such a
+// zero (mix(x, y, 1) computes x * (1 - 1)). A call on constants alone (one the IR does not fold,
+// such as 1 / 2) keeps its operands and has its value made opaque instead (emitField), so the
+// compilers still evaluate it on the host but cannot fold what follows (1 / 2 - 0.5 into a zero).
 std::vector<bool> opaqueConstants(const ir::IrField& field) {
-    const auto isConstant = [&](uint32_t n) { return field.nodes[n].kind == FieldNode::Kind::Constant; };
     std::vector<bool> opaque(field.nodes.size(), false);
     for (size_t i = 0; i < field.nodes.size(); ++i) {
         const FieldNode& node = field.nodes[i];
         if (node.kind == FieldNode::Kind::Constant && isFloatType(node.type))
             for (int c = 0; c < (node.type == Type::Vec3 ? 3 : node.type == Type::Vec2 ? 2 : 1); ++c)
                 if (node.constant[c] == 0.0f) opaque[i] = true;
-        if (node.kind != FieldNode::Kind::Call) continue;
-        const bool library = !functions()[node.function].glslLibraries.empty();
-        const bool constantsAlone = std::all_of(node.operands.begin(), node.operands.end(), isConstant);
-        if (library || constantsAlone)
-            for (uint32_t o : node.operands)
-                if (isConstant(o) && isFloatType(field.nodes[o].type)) opaque[o] = true;
+        if (node.kind != FieldNode::Kind::Call || constantsAlone(field, node)) continue;
+        const FunctionInfo& info = functions()[node.function];
+        if (info.glslLibraries.empty() || std::ranges::find(kInexactOnDevice, info.name) != std::end(kInexactOnDevice))
+            continue;
+        for (uint32_t o : node.operands)
+            if (field.nodes[o].kind == FieldNode::Kind::Constant && isFloatType(field.nodes[o].type)) opaque[o] = true;
     }
     return opaque;
 }
@@ -244,6 +254,7 @@ FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::s
                 types.push_back(field.nodes[o].type);
             }
             value = info.glsl(args, types);
+            if (isFloatType(node.type) && constantsAlone(field, node)) value = opaqueGlsl(value);
             what = info.name;
             for (std::string_view library : info.glslLibraries)
                 if (seenLibraries.insert(library).second) code.libraries.push_back(library);
