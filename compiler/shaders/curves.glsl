@@ -25,14 +25,16 @@ void main() {
 
     for (int z = first.z; z < last.z; ++z) {
         for (int x = first.x; x < last.x; ++x) {
-            int address = 0;
-            for (int y = first.y; y < last.y; ++y) {
-                ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
-                address = nextColumnAddress(address, y == first.y, local);
-                ivec3 cell = local - tableMin;
-                int at = cell.x + tableSize.x * (cell.y + tableSize.y * cell.z);
-                float f = intBitsToFloat(solveTables.words[densities + at]);
-                // <<COMBINE>>
+            for (int y = first.y; y < last.y;) {
+                ivec3 runStart = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                int runEnd = columnRunEnd(runStart, y, last.y);
+                for (int address = voxelAddress(runStart); y < runEnd; ++y, address += push.gridOrigin.w) {
+                    ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                    ivec3 cell = local - tableMin;
+                    int at = cell.x + tableSize.x * (cell.y + tableSize.y * cell.z);
+                    float f = intBitsToFloat(solveTables.words[densities + at]);
+                    // <<COMBINE>>
+                }
             }
         }
     }

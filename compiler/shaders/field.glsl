@@ -32,11 +32,13 @@ void main() {
         float constantValue = intBitsToFloat(push.anchorStart.w);
         for (int z = first.z; z < last.z; ++z) {
             for (int x = first.x; x < last.x; ++x) {
-                int address = 0;
-                for (int y = first.y; y < last.y; ++y) {
-                    ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
-                    address = nextColumnAddress(address, y == first.y, local);
-                    // <<CONSTANT_COMBINE>>
+                for (int y = first.y; y < last.y;) {
+                    ivec3 runStart = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                    int runEnd = columnRunEnd(runStart, y, last.y);
+                    for (int address = voxelAddress(runStart); y < runEnd; ++y, address += push.gridOrigin.w) {
+                        ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                        // <<CONSTANT_COMBINE>>
+                    }
                 }
             }
         }
@@ -49,16 +51,18 @@ void main() {
             // Integer sum first, then one conversion, as the interpreter does.
             ivec3 columnWorld = push.gridOrigin.xyz + columnLocal;
             // <<COLUMN_VALUES>>
-            int address = 0;
             for (int blockY = first.y; blockY < last.y; blockY += COLUMN_BLOCK) {
                 int blockEnd = min(blockY + COLUMN_BLOCK, last.y);
                 // <<BLOCK_VALUES>>
-                for (int y = blockY; y < blockEnd; ++y) {
-                    ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
-                    ivec3 world = push.gridOrigin.xyz + local;
-                    address = nextColumnAddress(address, y == first.y, local);
-                    // <<VOXEL_VALUES>>
-                    // <<COMBINE>>
+                for (int y = blockY; y < blockEnd;) {
+                    ivec3 runStart = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                    int runEnd = columnRunEnd(runStart, y, blockEnd);
+                    for (int address = voxelAddress(runStart); y < runEnd; ++y, address += push.gridOrigin.w) {
+                        ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                        ivec3 world = push.gridOrigin.xyz + local;
+                        // <<VOXEL_VALUES>>
+                        // <<COMBINE>>
+                    }
                 }
             }
         }

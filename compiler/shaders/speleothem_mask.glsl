@@ -20,14 +20,16 @@ void main() {
         for (int x = first.x; x < last.x; ++x) {
             ivec3 columnLocal = push.anchorStart.xyz + ivec3(x, 0, z) * push.anchorStep.xyz;
             int firstWord = speleothemColumnWord(columnLocal.xz);
-            int address = 0;
             uint bits = 0u;
-            for (int y = 0; y < push.gridSize.y; ++y) {
-                address = nextColumnAddress(address, y == 0, ivec3(columnLocal.x, y, columnLocal.z));
-                if (voxels.density[address] < 0.5) bits |= 1u << uint(y & 31);
-                if ((y & 31) == 31 || y == push.gridSize.y - 1) {
-                    airMask.bits[firstWord + y / 32] = bits;
-                    bits = 0u;
+            for (int y = 0; y < push.gridSize.y;) {
+                ivec3 runStart = ivec3(columnLocal.x, y, columnLocal.z);
+                int runEnd = columnRunEnd(runStart, y, push.gridSize.y);
+                for (int address = voxelAddress(runStart); y < runEnd; ++y, address += push.gridOrigin.w) {
+                    if (voxels.density[address] < 0.5) bits |= 1u << uint(y & 31);
+                    if ((y & 31) == 31 || y == push.gridSize.y - 1) {
+                        airMask.bits[firstWord + y / 32] = bits;
+                        bits = 0u;
+                    }
                 }
             }
         }

@@ -23,15 +23,17 @@ void main() {
             ivec3 columnLocal = push.anchorStart.xyz + ivec3(x, first.y, z) * push.anchorStep.xyz;
             ivec3 world = push.gridOrigin.xyz + columnLocal;
             // <<COLUMN_VALUES>>
-            int address = 0;
-            for (int y = first.y; y < last.y; ++y) {
-                ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
-                world = push.gridOrigin.xyz + local;
-                address = nextColumnAddress(address, y == first.y, local);
-                float density = 0.0;
-                uint material = 0u;
-                // <<SHAPES>>
-                voxels.density[address] = density;
+            for (int y = first.y; y < last.y;) {
+                ivec3 runStart = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                int runEnd = columnRunEnd(runStart, y, last.y);
+                for (int address = voxelAddress(runStart); y < runEnd; ++y, address += push.gridOrigin.w) {
+                    ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                    world = push.gridOrigin.xyz + local;
+                    float density = 0.0;
+                    uint material = 0u;
+                    // <<SHAPES>>
+                    voxels.density[address] = density;
+                }
             }
         }
     }

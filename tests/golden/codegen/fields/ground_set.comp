@@ -69,13 +69,15 @@ int voxelAddress(ivec3 local) {
     return slot * chunkSize * chunkSize * chunkSize + inside.x + chunkSize * (inside.y + chunkSize * inside.z);
 }
 
-// The address of the next voxel of a column walk along y (anchor step 1): looked up through the
-// chunk table at the column's first voxel and wherever the column enters a new chunk, otherwise
-// the previous voxel's address plus chunkSize (the next voxel along y inside a chunk).
-int nextColumnAddress(int previous, bool columnStart, ivec3 local) {
+// A column walk along y (anchor step 1) goes in runs that stay inside one chunk: the run starting
+// at grid-local voxel `local` (walk index y) ends before index columnRunEnd, at `last` at the latest;
+// its first address comes from the chunk table and each next one is chunkSize further. Every lane
+// of a dispatch walks the same y, so the runs end together: llvmpipe leaves a loop once all lanes
+// have, but runs both sides of a branch, so a lookup under `if` would cost every voxel.
+int columnRunEnd(ivec3 local, int y, int last) {
     int chunkSize = push.gridOrigin.w;
     int worldY = push.gridOrigin.y + local.y;
-    return (columnStart || (worldY & (chunkSize - 1)) == 0) ? voxelAddress(local) : previous + chunkSize;
+    return min(last, y + chunkSize - (worldY & (chunkSize - 1)));
 }
 // ---- end common.glsl ----
 // ---- begin nonfinite.glsl ----
@@ -466,12 +468,14 @@ void main() {
         float constantValue = intBitsToFloat(push.anchorStart.w);
         for (int z = first.z; z < last.z; ++z) {
             for (int x = first.x; x < last.x; ++x) {
-                int address = 0;
-                for (int y = first.y; y < last.y; ++y) {
-                    ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
-                    address = nextColumnAddress(address, y == first.y, local);
-                    // set: d = f
-                    voxels.density[address] = constantValue;
+                for (int y = first.y; y < last.y;) {
+                    ivec3 runStart = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                    int runEnd = columnRunEnd(runStart, y, last.y);
+                    for (int address = voxelAddress(runStart); y < runEnd; ++y, address += push.gridOrigin.w) {
+                        ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                        // set: d = f
+                        voxels.density[address] = constantValue;
+                    }
                 }
             }
         }
@@ -490,20 +494,22 @@ void main() {
             precise float n10 = noiseFbm(n5, 5, opaqueConstant(2.0), opaqueConstant(0.5), 11); // fbm (fields.vox:28:26)
             precise float n12 = (10.0 * n10); // mul (fields.vox:28:21)
             precise float n14 = (24.0 + n12); // add (fields.vox:28:16)
-            int address = 0;
             for (int blockY = first.y; blockY < last.y; blockY += COLUMN_BLOCK) {
                 int blockEnd = min(blockY + COLUMN_BLOCK, last.y);
                 // Nothing to fill per block.
-                for (int y = blockY; y < blockEnd; ++y) {
-                    ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
-                    ivec3 world = push.gridOrigin.xyz + local;
-                    address = nextColumnAddress(address, y == first.y, local);
-                    precise float n15 = float(world.y); // y (fields.vox:29:18)
-                    precise float n16 = (n14 - n15); // sub (fields.vox:29:9)
-                    precise float n18 = mathMin(mathMax(n16, opaqueConstant(0.0)), opaqueConstant(1.0)); // clamp (fields.vox:29:3)
-                    float fieldValue = finiteDensity(n18, local);
-                    // set: d = f
-                    voxels.density[address] = fieldValue;
+                for (int y = blockY; y < blockEnd;) {
+                    ivec3 runStart = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                    int runEnd = columnRunEnd(runStart, y, blockEnd);
+                    for (int address = voxelAddress(runStart); y < runEnd; ++y, address += push.gridOrigin.w) {
+                        ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                        ivec3 world = push.gridOrigin.xyz + local;
+                        precise float n15 = float(world.y); // y (fields.vox:29:18)
+                        precise float n16 = (n14 - n15); // sub (fields.vox:29:9)
+                        precise float n18 = mathMin(mathMax(n16, opaqueConstant(0.0)), opaqueConstant(1.0)); // clamp (fields.vox:29:3)
+                        float fieldValue = finiteDensity(n18, local);
+                        // set: d = f
+                        voxels.density[address] = fieldValue;
+                    }
                 }
             }
         }

@@ -69,13 +69,15 @@ int voxelAddress(ivec3 local) {
     return slot * chunkSize * chunkSize * chunkSize + inside.x + chunkSize * (inside.y + chunkSize * inside.z);
 }
 
-// The address of the next voxel of a column walk along y (anchor step 1): looked up through the
-// chunk table at the column's first voxel and wherever the column enters a new chunk, otherwise
-// the previous voxel's address plus chunkSize (the next voxel along y inside a chunk).
-int nextColumnAddress(int previous, bool columnStart, ivec3 local) {
+// A column walk along y (anchor step 1) goes in runs that stay inside one chunk: the run starting
+// at grid-local voxel `local` (walk index y) ends before index columnRunEnd, at `last` at the latest;
+// its first address comes from the chunk table and each next one is chunkSize further. Every lane
+// of a dispatch walks the same y, so the runs end together: llvmpipe leaves a loop once all lanes
+// have, but runs both sides of a branch, so a lookup under `if` would cost every voxel.
+int columnRunEnd(ivec3 local, int y, int last) {
     int chunkSize = push.gridOrigin.w;
     int worldY = push.gridOrigin.y + local.y;
-    return (columnStart || (worldY & (chunkSize - 1)) == 0) ? voxelAddress(local) : previous + chunkSize;
+    return min(last, y + chunkSize - (worldY & (chunkSize - 1)));
 }
 // ---- end common.glsl ----
 // ---- begin nonfinite.glsl ----
@@ -203,13 +205,15 @@ void main() {
         float constantValue = intBitsToFloat(push.anchorStart.w);
         for (int z = first.z; z < last.z; ++z) {
             for (int x = first.x; x < last.x; ++x) {
-                int address = 0;
-                for (int y = first.y; y < last.y; ++y) {
-                    ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
-                    address = nextColumnAddress(address, y == first.y, local);
-                    // union: d = max(d, f)
-                    float density = voxels.density[address];
-                    voxels.density[address] = density < constantValue ? constantValue : density;
+                for (int y = first.y; y < last.y;) {
+                    ivec3 runStart = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                    int runEnd = columnRunEnd(runStart, y, last.y);
+                    for (int address = voxelAddress(runStart); y < runEnd; ++y, address += push.gridOrigin.w) {
+                        ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                        // union: d = max(d, f)
+                        float density = voxels.density[address];
+                        voxels.density[address] = density < constantValue ? constantValue : density;
+                    }
                 }
             }
         }
@@ -223,32 +227,34 @@ void main() {
             ivec3 columnWorld = push.gridOrigin.xyz + columnLocal;
             precise float n10 = float(columnWorld.x); // x (fields.vox:37:25)
             precise float n11 = float(columnWorld.z); // z (fields.vox:37:25)
-            int address = 0;
             for (int blockY = first.y; blockY < last.y; blockY += COLUMN_BLOCK) {
                 int blockEnd = min(blockY + COLUMN_BLOCK, last.y);
                 // Nothing to fill per block.
-                for (int y = blockY; y < blockEnd; ++y) {
-                    ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
-                    ivec3 world = push.gridOrigin.xyz + local;
-                    address = nextColumnAddress(address, y == first.y, local);
-                    precise float n0 = float(world.y); // y (fields.vox:36:16)
-                    bool n2 = (n0 > 40.0); // gt (fields.vox:36:16)
-                    precise float n5 = (n2 ? 2.0 : opaqueConstant(0.0)); // select (fields.vox:36:16)
-                    precise float n7 = (4.0 + n5); // add (fields.vox:36:11)
-                    bool n9 = (n0 < 52.0); // lt (fields.vox:37:3)
-                    precise vec3 n12 = vec3(n10, n0, n11); // vec3 (fields.vox:37:25)
-                    precise float n13 = n12.x; // component (fields.vox:37:25)
-                    precise float n14 = n12.z; // component (fields.vox:37:25)
-                    precise vec2 n15 = vec2(n13, n14); // vec2 (fields.vox:37:25)
-                    precise vec2 n17 = (n15 - vec2(44.0, 16.0)); // sub (fields.vox:37:25)
-                    precise float n18 = mathLength(n17); // length (fields.vox:37:18)
-                    precise float n19 = (n7 - n18); // sub (fields.vox:19:54)
-                    precise float n21 = mathMin(mathMax(n19, opaqueConstant(0.0)), opaqueConstant(1.0)); // clamp (fields.vox:19:48)
-                    precise float n22 = (n9 ? n21 : opaqueConstant(0.0)); // select (fields.vox:37:3)
-                    float fieldValue = finiteDensity(n22, local);
-                    // union: d = max(d, f)
-                    float density = voxels.density[address];
-                    voxels.density[address] = density < fieldValue ? fieldValue : density;
+                for (int y = blockY; y < blockEnd;) {
+                    ivec3 runStart = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                    int runEnd = columnRunEnd(runStart, y, blockEnd);
+                    for (int address = voxelAddress(runStart); y < runEnd; ++y, address += push.gridOrigin.w) {
+                        ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                        ivec3 world = push.gridOrigin.xyz + local;
+                        precise float n0 = float(world.y); // y (fields.vox:36:16)
+                        bool n2 = (n0 > 40.0); // gt (fields.vox:36:16)
+                        precise float n5 = (n2 ? 2.0 : opaqueConstant(0.0)); // select (fields.vox:36:16)
+                        precise float n7 = (4.0 + n5); // add (fields.vox:36:11)
+                        bool n9 = (n0 < 52.0); // lt (fields.vox:37:3)
+                        precise vec3 n12 = vec3(n10, n0, n11); // vec3 (fields.vox:37:25)
+                        precise float n13 = n12.x; // component (fields.vox:37:25)
+                        precise float n14 = n12.z; // component (fields.vox:37:25)
+                        precise vec2 n15 = vec2(n13, n14); // vec2 (fields.vox:37:25)
+                        precise vec2 n17 = (n15 - vec2(44.0, 16.0)); // sub (fields.vox:37:25)
+                        precise float n18 = mathLength(n17); // length (fields.vox:37:18)
+                        precise float n19 = (n7 - n18); // sub (fields.vox:19:54)
+                        precise float n21 = mathMin(mathMax(n19, opaqueConstant(0.0)), opaqueConstant(1.0)); // clamp (fields.vox:19:48)
+                        precise float n22 = (n9 ? n21 : opaqueConstant(0.0)); // select (fields.vox:37:3)
+                        float fieldValue = finiteDensity(n22, local);
+                        // union: d = max(d, f)
+                        float density = voxels.density[address];
+                        voxels.density[address] = density < fieldValue ? fieldValue : density;
+                    }
                 }
             }
         }

@@ -69,13 +69,15 @@ int voxelAddress(ivec3 local) {
     return slot * chunkSize * chunkSize * chunkSize + inside.x + chunkSize * (inside.y + chunkSize * inside.z);
 }
 
-// The address of the next voxel of a column walk along y (anchor step 1): looked up through the
-// chunk table at the column's first voxel and wherever the column enters a new chunk, otherwise
-// the previous voxel's address plus chunkSize (the next voxel along y inside a chunk).
-int nextColumnAddress(int previous, bool columnStart, ivec3 local) {
+// A column walk along y (anchor step 1) goes in runs that stay inside one chunk: the run starting
+// at grid-local voxel `local` (walk index y) ends before index columnRunEnd, at `last` at the latest;
+// its first address comes from the chunk table and each next one is chunkSize further. Every lane
+// of a dispatch walks the same y, so the runs end together: llvmpipe leaves a loop once all lanes
+// have, but runs both sides of a branch, so a lookup under `if` would cost every voxel.
+int columnRunEnd(ivec3 local, int y, int last) {
     int chunkSize = push.gridOrigin.w;
     int worldY = push.gridOrigin.y + local.y;
-    return (columnStart || (worldY & (chunkSize - 1)) == 0) ? voxelAddress(local) : previous + chunkSize;
+    return min(last, y + chunkSize - (worldY & (chunkSize - 1)));
 }
 // ---- end common.glsl ----
 // ---- begin nonfinite.glsl ----
@@ -522,14 +524,16 @@ void main() {
         float constantValue = intBitsToFloat(push.anchorStart.w);
         for (int z = first.z; z < last.z; ++z) {
             for (int x = first.x; x < last.x; ++x) {
-                int address = 0;
-                for (int y = first.y; y < last.y; ++y) {
-                    ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
-                    address = nextColumnAddress(address, y == first.y, local);
-                    // subtract: d = min(d, 1 - f)
-                    float density = voxels.density[address];
-                    precise float carved = 1.0 - constantValue;
-                    voxels.density[address] = carved < density ? carved : density;
+                for (int y = first.y; y < last.y;) {
+                    ivec3 runStart = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                    int runEnd = columnRunEnd(runStart, y, last.y);
+                    for (int address = voxelAddress(runStart); y < runEnd; ++y, address += push.gridOrigin.w) {
+                        ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                        // subtract: d = min(d, 1 - f)
+                        float density = voxels.density[address];
+                        precise float carved = 1.0 - constantValue;
+                        voxels.density[address] = carved < density ? carved : density;
+                    }
                 }
             }
         }
@@ -547,37 +551,39 @@ void main() {
             precise float noiseColumnZ0 = (n2 * 0.0799999982);
             precise float n10 = float(columnWorld.x); // x (fields.vox:33:17)
             precise float n12 = float(columnWorld.z); // z (fields.vox:33:17)
-            int address = 0;
             for (int blockY = first.y; blockY < last.y; blockY += COLUMN_BLOCK) {
                 int blockEnd = min(blockY + COLUMN_BLOCK, last.y);
                 noiseColumnFill(0, blockY, blockEnd, noiseColumnX0, noiseColumnZ0, 1, 1.0, 1.0, uint(12), 0);
-                for (int y = blockY; y < blockEnd; ++y) {
-                    ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
-                    ivec3 world = push.gridOrigin.xyz + local;
-                    address = nextColumnAddress(address, y == first.y, local);
-                    precise float n1 = float(world.y); // wy (fields.vox:32:28)
-                    precise vec3 n3 = vec3(n0, n1, n2); // vec3 (fields.vox:32:28)
-                    precise vec3 n5 = (n3 * 0.0799999982); // mul (fields.vox:32:28)
-                    precise float n7 = noiseColumnValues[0][y - blockY]; // perlin3 along the column (fields.vox:32:20)
-                    precise float n9 = (3.0 * n7); // mul (fields.vox:32:16)
-                    precise float n11 = float(world.y); // y (fields.vox:33:17)
-                    precise vec3 n13 = vec3(n10, n11, n12); // vec3 (fields.vox:33:17)
-                    precise vec3 n17 = (n13 - opaqueConstant(vec3(0.0, 16.0, 20.0))); // sub (fields.vox:24:21)
-                    precise float n18 = mathDot(n17, opaqueConstant(vec3(64.0, 6.0, 24.0))); // dot (fields.vox:24:17)
-                    precise float n20 = (n18 / 4708.0); // div (fields.vox:24:17)
-                    precise float n22 = mathMin(mathMax(n20, opaqueConstant(0.0)), opaqueConstant(1.0)); // clamp (fields.vox:24:11)
-                    precise vec3 n23 = (opaqueConstant(vec3(64.0, 6.0, 24.0)) * n22); // mul (fields.vox:25:19)
-                    precise vec3 n24 = (opaqueConstant(vec3(0.0, 16.0, 20.0)) + n23); // add (fields.vox:25:15)
-                    precise vec3 n25 = (n13 - n24); // sub (fields.vox:25:10)
-                    precise float n26 = mathLength(n25); // length (fields.vox:25:3)
-                    precise float n27 = (n26 + n9); // add (fields.vox:33:9)
-                    precise float n29 = (5.0 - n27); // sub (fields.vox:19:54)
-                    precise float n30 = mathMin(mathMax(n29, opaqueConstant(0.0)), opaqueConstant(1.0)); // clamp (fields.vox:19:48)
-                    float fieldValue = finiteDensity(n30, local);
-                    // subtract: d = min(d, 1 - f)
-                    float density = voxels.density[address];
-                    precise float carved = 1.0 - fieldValue;
-                    voxels.density[address] = carved < density ? carved : density;
+                for (int y = blockY; y < blockEnd;) {
+                    ivec3 runStart = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                    int runEnd = columnRunEnd(runStart, y, blockEnd);
+                    for (int address = voxelAddress(runStart); y < runEnd; ++y, address += push.gridOrigin.w) {
+                        ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                        ivec3 world = push.gridOrigin.xyz + local;
+                        precise float n1 = float(world.y); // wy (fields.vox:32:28)
+                        precise vec3 n3 = vec3(n0, n1, n2); // vec3 (fields.vox:32:28)
+                        precise vec3 n5 = (n3 * 0.0799999982); // mul (fields.vox:32:28)
+                        precise float n7 = noiseColumnValues[0][y - blockY]; // perlin3 along the column (fields.vox:32:20)
+                        precise float n9 = (3.0 * n7); // mul (fields.vox:32:16)
+                        precise float n11 = float(world.y); // y (fields.vox:33:17)
+                        precise vec3 n13 = vec3(n10, n11, n12); // vec3 (fields.vox:33:17)
+                        precise vec3 n17 = (n13 - opaqueConstant(vec3(0.0, 16.0, 20.0))); // sub (fields.vox:24:21)
+                        precise float n18 = mathDot(n17, opaqueConstant(vec3(64.0, 6.0, 24.0))); // dot (fields.vox:24:17)
+                        precise float n20 = (n18 / 4708.0); // div (fields.vox:24:17)
+                        precise float n22 = mathMin(mathMax(n20, opaqueConstant(0.0)), opaqueConstant(1.0)); // clamp (fields.vox:24:11)
+                        precise vec3 n23 = (opaqueConstant(vec3(64.0, 6.0, 24.0)) * n22); // mul (fields.vox:25:19)
+                        precise vec3 n24 = (opaqueConstant(vec3(0.0, 16.0, 20.0)) + n23); // add (fields.vox:25:15)
+                        precise vec3 n25 = (n13 - n24); // sub (fields.vox:25:10)
+                        precise float n26 = mathLength(n25); // length (fields.vox:25:3)
+                        precise float n27 = (n26 + n9); // add (fields.vox:33:9)
+                        precise float n29 = (5.0 - n27); // sub (fields.vox:19:54)
+                        precise float n30 = mathMin(mathMax(n29, opaqueConstant(0.0)), opaqueConstant(1.0)); // clamp (fields.vox:19:48)
+                        float fieldValue = finiteDensity(n30, local);
+                        // subtract: d = min(d, 1 - f)
+                        float density = voxels.density[address];
+                        precise float carved = 1.0 - fieldValue;
+                        voxels.density[address] = carved < density ? carved : density;
+                    }
                 }
             }
         }

@@ -70,13 +70,15 @@ int voxelAddress(ivec3 local) {
     return slot * chunkSize * chunkSize * chunkSize + inside.x + chunkSize * (inside.y + chunkSize * inside.z);
 }
 
-// The address of the next voxel of a column walk along y (anchor step 1): looked up through the
-// chunk table at the column's first voxel and wherever the column enters a new chunk, otherwise
-// the previous voxel's address plus chunkSize (the next voxel along y inside a chunk).
-int nextColumnAddress(int previous, bool columnStart, ivec3 local) {
+// A column walk along y (anchor step 1) goes in runs that stay inside one chunk: the run starting
+// at grid-local voxel `local` (walk index y) ends before index columnRunEnd, at `last` at the latest;
+// its first address comes from the chunk table and each next one is chunkSize further. Every lane
+// of a dispatch walks the same y, so the runs end together: llvmpipe leaves a loop once all lanes
+// have, but runs both sides of a branch, so a lookup under `if` would cost every voxel.
+int columnRunEnd(ivec3 local, int y, int last) {
     int chunkSize = push.gridOrigin.w;
     int worldY = push.gridOrigin.y + local.y;
-    return (columnStart || (worldY & (chunkSize - 1)) == 0) ? voxelAddress(local) : previous + chunkSize;
+    return min(last, y + chunkSize - (worldY & (chunkSize - 1)));
 }
 // ---- end common.glsl ----
 // ---- begin nonfinite.glsl ----
@@ -136,16 +138,18 @@ void main() {
         float constantValue = intBitsToFloat(push.anchorStart.w);
         for (int z = first.z; z < last.z; ++z) {
             for (int x = first.x; x < last.x; ++x) {
-                int address = 0;
-                for (int y = first.y; y < last.y; ++y) {
-                    ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
-                    address = nextColumnAddress(address, y == first.y, local);
-                    // union: d = max(d, f); material 3 where f wins and is solid
-                    float density = voxels.density[address];
-                    bool wins = density < constantValue;
-                    float result = wins ? constantValue : density;
-                    voxels.density[address] = result;
-                    if (wins && result >= 0.5) materials.material[address] = 3u;
+                for (int y = first.y; y < last.y;) {
+                    ivec3 runStart = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                    int runEnd = columnRunEnd(runStart, y, last.y);
+                    for (int address = voxelAddress(runStart); y < runEnd; ++y, address += push.gridOrigin.w) {
+                        ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                        // union: d = max(d, f); material 3 where f wins and is solid
+                        float density = voxels.density[address];
+                        bool wins = density < constantValue;
+                        float result = wins ? constantValue : density;
+                        voxels.density[address] = result;
+                        if (wins && result >= 0.5) materials.material[address] = 3u;
+                    }
                 }
             }
         }
@@ -160,22 +164,24 @@ void main() {
             precise float n0 = float(columnWorld.x - (-3)); // x (materials.vox:20:1)
             bool n2 = (n0 < 20.0); // lt (materials.vox:20:1)
             precise float n5 = (n2 ? 0.800000012 : 0.200000003); // select (materials.vox:20:1)
-            int address = 0;
             for (int blockY = first.y; blockY < last.y; blockY += COLUMN_BLOCK) {
                 int blockEnd = min(blockY + COLUMN_BLOCK, last.y);
                 // Nothing to fill per block.
-                for (int y = blockY; y < blockEnd; ++y) {
-                    ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
-                    ivec3 world = push.gridOrigin.xyz + local;
-                    address = nextColumnAddress(address, y == first.y, local);
-                    // Every value is the same along the column.
-                    float fieldValue = finiteDensity(n5, local);
-                    // union: d = max(d, f); material 3 where f wins and is solid
-                    float density = voxels.density[address];
-                    bool wins = density < fieldValue;
-                    float result = wins ? fieldValue : density;
-                    voxels.density[address] = result;
-                    if (wins && result >= 0.5) materials.material[address] = 3u;
+                for (int y = blockY; y < blockEnd;) {
+                    ivec3 runStart = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                    int runEnd = columnRunEnd(runStart, y, blockEnd);
+                    for (int address = voxelAddress(runStart); y < runEnd; ++y, address += push.gridOrigin.w) {
+                        ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                        ivec3 world = push.gridOrigin.xyz + local;
+                        // Every value is the same along the column.
+                        float fieldValue = finiteDensity(n5, local);
+                        // union: d = max(d, f); material 3 where f wins and is solid
+                        float density = voxels.density[address];
+                        bool wins = density < fieldValue;
+                        float result = wins ? fieldValue : density;
+                        voxels.density[address] = result;
+                        if (wins && result >= 0.5) materials.material[address] = 3u;
+                    }
                 }
             }
         }

@@ -72,13 +72,15 @@ int voxelAddress(ivec3 local) {
     return slot * chunkSize * chunkSize * chunkSize + inside.x + chunkSize * (inside.y + chunkSize * inside.z);
 }
 
-// The address of the next voxel of a column walk along y (anchor step 1): looked up through the
-// chunk table at the column's first voxel and wherever the column enters a new chunk, otherwise
-// the previous voxel's address plus chunkSize (the next voxel along y inside a chunk).
-int nextColumnAddress(int previous, bool columnStart, ivec3 local) {
+// A column walk along y (anchor step 1) goes in runs that stay inside one chunk: the run starting
+// at grid-local voxel `local` (walk index y) ends before index columnRunEnd, at `last` at the latest;
+// its first address comes from the chunk table and each next one is chunkSize further. Every lane
+// of a dispatch walks the same y, so the runs end together: llvmpipe leaves a loop once all lanes
+// have, but runs both sides of a branch, so a lookup under `if` would cost every voxel.
+int columnRunEnd(ivec3 local, int y, int last) {
     int chunkSize = push.gridOrigin.w;
     int worldY = push.gridOrigin.y + local.y;
-    return (columnStart || (worldY & (chunkSize - 1)) == 0) ? voxelAddress(local) : previous + chunkSize;
+    return min(last, y + chunkSize - (worldY & (chunkSize - 1)));
 }
 // ---- end common.glsl ----
 // ---- begin random.glsl ----

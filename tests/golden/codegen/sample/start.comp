@@ -65,13 +65,15 @@ int voxelAddress(ivec3 local) {
     return slot * chunkSize * chunkSize * chunkSize + inside.x + chunkSize * (inside.y + chunkSize * inside.z);
 }
 
-// The address of the next voxel of a column walk along y (anchor step 1): looked up through the
-// chunk table at the column's first voxel and wherever the column enters a new chunk, otherwise
-// the previous voxel's address plus chunkSize (the next voxel along y inside a chunk).
-int nextColumnAddress(int previous, bool columnStart, ivec3 local) {
+// A column walk along y (anchor step 1) goes in runs that stay inside one chunk: the run starting
+// at grid-local voxel `local` (walk index y) ends before index columnRunEnd, at `last` at the latest;
+// its first address comes from the chunk table and each next one is chunkSize further. Every lane
+// of a dispatch walks the same y, so the runs end together: llvmpipe leaves a loop once all lanes
+// have, but runs both sides of a branch, so a lookup under `if` would cost every voxel.
+int columnRunEnd(ivec3 local, int y, int last) {
     int chunkSize = push.gridOrigin.w;
     int worldY = push.gridOrigin.y + local.y;
-    return (columnStart || (worldY & (chunkSize - 1)) == 0) ? voxelAddress(local) : previous + chunkSize;
+    return min(last, y + chunkSize - (worldY & (chunkSize - 1)));
 }
 // ---- end common.glsl ----
 // ---- begin random.glsl ----
@@ -240,42 +242,44 @@ void main() {
             ivec3 columnLocal = push.anchorStart.xyz + ivec3(x, first.y, z) * push.anchorStep.xyz;
             ivec3 world = push.gridOrigin.xyz + columnLocal;
             float column2 = heightfieldHeight(world.x, world.z, seed, 6.0, 3.0, 0.0299999993, 3, 2.0, 0.5); // heightfield (sample.vox:5:3)
-            int address = 0;
-            for (int y = first.y; y < last.y; ++y) {
-                ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
-                world = push.gridOrigin.xyz + local;
-                address = nextColumnAddress(address, y == first.y, local);
-                float density = 0.0;
-                uint material = 0u;
-                // fill (sample.vox:3:3)
-                {
-                    ivec3 local = world - ivec3(-5, 3, -12);
-                    bool inside = false;
-                    inside = true;
-                    if (inside) {
-                        density = 0.0;
+            for (int y = first.y; y < last.y;) {
+                ivec3 runStart = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                int runEnd = columnRunEnd(runStart, y, last.y);
+                for (int address = voxelAddress(runStart); y < runEnd; ++y, address += push.gridOrigin.w) {
+                    ivec3 local = push.anchorStart.xyz + ivec3(x, y, z) * push.anchorStep.xyz;
+                    world = push.gridOrigin.xyz + local;
+                    float density = 0.0;
+                    uint material = 0u;
+                    // fill (sample.vox:3:3)
+                    {
+                        ivec3 local = world - ivec3(-5, 3, -12);
+                        bool inside = false;
+                        inside = true;
+                        if (inside) {
+                            density = 0.0;
+                        }
                     }
-                }
-                // box (sample.vox:4:3)
-                {
-                    ivec3 local = world - ivec3(-5, 3, -12);
-                    bool inside = false;
-                    inside = all(greaterThanEqual(vec3(local), vec3(0.0, 0.0, 0.0))) && all(lessThan(vec3(local), vec3(10.0, 4.0, 10.0)));
-                    if (inside) {
-                        density = 1.0;
+                    // box (sample.vox:4:3)
+                    {
+                        ivec3 local = world - ivec3(-5, 3, -12);
+                        bool inside = false;
+                        inside = all(greaterThanEqual(vec3(local), vec3(0.0, 0.0, 0.0))) && all(lessThan(vec3(local), vec3(10.0, 4.0, 10.0)));
+                        if (inside) {
+                            density = 1.0;
+                        }
                     }
-                }
-                // heightfield (sample.vox:5:3)
-                {
-                    ivec3 local = world - ivec3(-5, 3, -12);
-                    float column = column2;
-                    bool inside = false;
-                    inside = float(local.y) < column;
-                    if (inside) {
-                        density = 1.0;
+                    // heightfield (sample.vox:5:3)
+                    {
+                        ivec3 local = world - ivec3(-5, 3, -12);
+                        float column = column2;
+                        bool inside = false;
+                        inside = float(local.y) < column;
+                        if (inside) {
+                            density = 1.0;
+                        }
                     }
+                    voxels.density[address] = density;
                 }
-                voxels.density[address] = density;
             }
         }
     }
