@@ -157,7 +157,6 @@ void main() {
     if (id >= uint(push.chunkCount.x * push.chunkCount.y * push.chunkCount.z * tilesPerChunk())) return;
     TileAnchors anchors = tileAnchors(tileOfId(id));
     if (any(greaterThan(anchors.first, anchors.last))) return;
-    atomicAdd(skipStats.candidateTilePhases, 1u);
 
     // <<MAY_MATCH>>
 

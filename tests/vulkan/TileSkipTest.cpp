@@ -10,7 +10,10 @@
 #include "voxc/vulkan/Context.h"
 #include "voxc/vulkan/Executor.h"
 
+#include <array>
 #include <cstring>
+#include <glm/common.hpp>
+#include <set>
 #include <stdexcept>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -77,11 +80,36 @@ grammar grow {
 }
 )";
 
+// The (tile, phase) pairs whose tile holds an anchor of the phase, anchor by anchor.
+uint64_t candidateTilePhases(const KernelPackage& package, int tileSize) {
+    uint64_t pairs = 0;
+    for (const StagePlan& stage : package.stages) {
+        if (!stage.grammar) continue;
+        for (uint32_t iteration = 0; iteration < stage.grammar->iterations; ++iteration)
+            for (const SweepPlan& sweep : stage.grammar->sweeps)
+                for (size_t p = 0; p < sweep.phaseStart.size(); ++p) {
+                    std::set<std::array<int, 3>> tiles;
+                    const glm::ivec3 count = sweep.phaseCount3[p];
+                    for (int z = 0; z < count.z; ++z)
+                        for (int y = 0; y < count.y; ++y)
+                            for (int x = 0; x < count.x; ++x) {
+                                const glm::ivec3 anchor = package.world.origin + sweep.phaseStart[p] +
+                                                          glm::ivec3(x, y, z) * sweep.phaseStep[p];
+                                const glm::ivec3 tile = glm::ivec3(glm::floor(glm::vec3(anchor) / float(tileSize)));
+                                tiles.insert({tile.x, tile.y, tile.z});
+                            }
+                    pairs += tiles.size();
+                }
+    }
+    return pairs;
+}
+
 TEST(vulkan_TileSkip, GrowthAcrossTileBordersMatchesTheInterpreter) {
     const Program program = checked(kGrowth);
     const DenseGrid expected = interpret(program);
     const RunResult skipping = run(program, true);
     ASSERT_TRUE(skipping.skip.enabled);
+    EXPECT_EQ(skipping.skip.tilePhases, candidateTilePhases(compileProgram(program, {}), skipping.skip.tileSize));
     EXPECT_LT(skipping.skip.activeTilePhases, skipping.skip.tilePhases);
     EXPECT_EQ(test::countBitDifferences(expected, skipping.grid.toDense()), 0u);
     // The rock reached tiles far from the seed.

@@ -67,7 +67,7 @@ BufferInfo bufferInfo(uint32_t binding) {
     case kBindingActiveDispatch:
         return {"activeDispatch", "uint", "8", "two VkDispatchIndirectCommand records (x, y, z) and each one's active tile count, written by the active-tiles kernels"};
     case kBindingSkipStats:
-        return {"skipStats", "uint", "2", "active and candidate (tile, phase) pairs of a run (statistics only)"};
+        return {"skipStats", "uint", "1", "the (tile, phase) pairs a run dispatched (statistics only)"};
     case kBindingTileOccupancy:
         return {"tileOccupancy", "uint", "tiles * (1 << tile_shift)^3 / 32 (1 when tile_shift > 4)",
                 "per tile: a bit per voxel (x fastest, rows of 1 << tile_shift bits), set where the package's occupancy "
@@ -106,7 +106,7 @@ Json bufferCount(uint32_t binding, const World& world) {
     case kBindingChunkTable: return chunkSlots;
     case kBindingNoiseTables: return 256;
     case kBindingActiveDispatch: return 8;
-    case kBindingSkipStats: return 2;
+    case kBindingSkipStats: return 1;
     case kBindingNonFinite: return 3;
     default: return nullptr;
     }

@@ -19,6 +19,18 @@ constexpr uint32_t kSpirvMagic = 0x07230203;
 
 void packageError(const std::string& what) { throw InternalError("invalid kernel package: " + what); }
 
+// The tiles of 2^tileShift voxels along one axis that hold an anchor origin + start + i * step,
+// i < count (world coordinates; the anchors ascend, so equal tiles are neighbours).
+uint64_t tilesHoldingAnchors(int32_t origin, int32_t start, int32_t step, int32_t count, int32_t tileShift) {
+    uint64_t tiles = 0;
+    for (int32_t i = 0, last = 0; i < count; ++i) {
+        const int32_t tile = (origin + start + i * step) >> tileShift;
+        tiles += (i == 0 || tile != last) ? 1 : 0;
+        last = tile;
+    }
+    return tiles;
+}
+
 void setXyz(int32_t (&field)[4], glm::ivec3 v, int32_t w) {
     field[0] = v.x;
     field[1] = v.y;
@@ -260,6 +272,11 @@ void DispatchCursor::appendSkippingSweep(const SweepPlan& sweep, int32_t iterati
     for (size_t p = 0; p < sweep.phaseStart.size(); ++p) {
         const glm::ivec3 count = sweep.phaseCount3[p];
         if (count.x <= 0 || count.y <= 0 || count.z <= 0) continue;
+        uint64_t candidates = 1;
+        for (int a = 0; a < 3; ++a)
+            candidates *= tilesHoldingAnchors(package_.world.origin[a], sweep.phaseStart[p][a], sweep.phaseStep[p][a],
+                                              count[a], tileShift_);
+        candidateTilePhases_ += candidates;
         Dispatch d;
         d.push = base_;
         d.push.chunkBase[3] = iteration;

@@ -193,7 +193,7 @@ void VulkanExecutor::Impl::createBuffers() {
     tileDirty = createBuffer(ctx, tiles * sizeof(uint32_t), storage, local);
     activeTiles = createBuffer(ctx, tiles * sizeof(uint32_t), storage, local);
     activeDispatch = createBuffer(ctx, 8 * sizeof(uint32_t), storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, local);
-    skipStats = createBuffer(ctx, 2 * sizeof(uint32_t), storage, MemoryUse::HostAccess);
+    skipStats = createBuffer(ctx, sizeof(uint32_t), storage, MemoryUse::HostAccess);
     // A bit per voxel where tiles keep occupancy (tiles.glsl occupancyTracked); tile_ranges sets every word.
     const VkDeviceSize occupancyWords = tileShift >= 3 && tileShift <= 4 ? tiles << (3 * tileShift - 5) : 1;
     tileOccupancy = createBuffer(ctx, occupancyWords * sizeof(uint32_t), storage, local);
@@ -460,9 +460,9 @@ RunResult VulkanExecutor::run() {
     }
     if (s.tileShift >= 0) {
         invalidateForHost(s.ctx, s.skipStats);
-        uint32_t counts[2];
-        std::memcpy(counts, s.skipStats.mapped, sizeof counts);
-        result.skip = TileSkipStats{true, 1 << s.tileShift, counts[1], counts[0]};
+        uint32_t active = 0;
+        std::memcpy(&active, s.skipStats.mapped, sizeof active);
+        result.skip = TileSkipStats{true, 1 << s.tileShift, cursor.candidateTilePhases(), active};
     }
     result.nonFinite = s.nonFinite.read(s.ctx);
     s.hasRun = true;

@@ -106,8 +106,7 @@ layout(std430, set = 0, binding = 6) buffer ActiveDispatch {
 } activeDispatch;
 
 layout(std430, set = 0, binding = 7) buffer SkipStats {
-    uint activeTilePhases;    // (tile, phase) pairs dispatched in this run
-    uint candidateTilePhases; // (tile, phase) pairs holding anchors of a classified phase
+    uint activeTilePhases; // (tile, phase) pairs dispatched in this run (the runtime counts the candidates)
 } skipStats;
 
 layout(std430, set = 0, binding = 13) buffer TileOccupancy {

@@ -114,8 +114,7 @@ layout(std430, set = 0, binding = 6) buffer ActiveDispatch {
 } activeDispatch;
 
 layout(std430, set = 0, binding = 7) buffer SkipStats {
-    uint activeTilePhases;    // (tile, phase) pairs dispatched in this run
-    uint candidateTilePhases; // (tile, phase) pairs holding anchors of a classified phase
+    uint activeTilePhases; // (tile, phase) pairs dispatched in this run (the runtime counts the candidates)
 } skipStats;
 
 layout(std430, set = 0, binding = 13) buffer TileOccupancy {
@@ -376,7 +375,6 @@ void main() {
     if (id >= uint(push.chunkCount.x * push.chunkCount.y * push.chunkCount.z * tilesPerChunk())) return;
     TileAnchors anchors = tileAnchors(tileOfId(id));
     if (any(greaterThan(anchors.first, anchors.last))) return;
-    atomicAdd(skipStats.candidateTilePhases, 1u);
 
     // The density range each tested cell can read (keys), over this tile's anchors.
     TileNeighbourhood neighbourhood = tileNeighbourhood(tileOfId(id));

@@ -42,7 +42,7 @@ constexpr uint32_t kBindingTileRanges = 3;     // uint[2 per tile]: lowest, high
 constexpr uint32_t kBindingTileDirty = 4;      // uint per tile: range stale (written since computed)
 constexpr uint32_t kBindingActiveTiles = 5;    // uint per tile: ids of the current phase's active tiles
 constexpr uint32_t kBindingActiveDispatch = 6; // uint[8]: two VkDispatchIndirectCommand records (+ active tile count)
-constexpr uint32_t kBindingSkipStats = 7;      // uint[2]: active and candidate (tile, phase) pairs of a run
+constexpr uint32_t kBindingSkipStats = 7;      // uint: the (tile, phase) pairs a run dispatched
 // uint words, a bit per voxel of every tile (tiles of at most 16 voxels per axis; else one word):
 // where the package's occupancy level holds (codegen::OccupancyLevel, tiles.glsl occupancyBit).
 constexpr uint32_t kBindingTileOccupancy = 13;

@@ -60,6 +60,10 @@ public:
     // Returns false when the plan is exhausted.
     bool next(Dispatch& out);
 
+    // When skipping tiles: the (tile, phase) pairs of the sweeps expanded so far whose tile holds
+    // anchors of the phase, which the active-tiles kernels classify (TileSkipStats::tilePhases).
+    uint64_t candidateTilePhases() const { return candidateTilePhases_; }
+
 private:
     // Queues the dispatches of the next stage step (a stage's grid pass, or one iteration of its sweeps).
     bool expandNextStep();
@@ -80,6 +84,7 @@ private:
     uint32_t stageStep_ = 0;   // steps of the current stage expanded so far
     std::vector<Dispatch> step_;
     size_t position_ = 0;
+    uint64_t candidateTilePhases_ = 0;
 };
 
 // Number of dispatches a package expands to (walks the whole plan).
