@@ -86,8 +86,8 @@ void writeWorldTiles(const WorldCommandOptions& options) {
 
     // Tiles of one size compile to the same kernels (a tile's place is in the push constants): a
     // later tile takes their SPIR-V from the compile cache and their pipelines from the context, so
-    // the driver compiles each kernel once per run (per rank under mpirun); a rerun or another rank
-    // also finds the SPIR-V in the compile cache.
+    // the Vulkan driver compiles each kernel once per run (per rank under mpirun); a rerun or
+    // another rank also finds the SPIR-V in the compile cache.
     const std::optional<std::filesystem::path> cache = options.noCache ? std::nullopt : codegen::defaultCacheDirectory();
     codegen::setCompileCacheDirectory(cache);
     std::optional<VulkanContext> context;
