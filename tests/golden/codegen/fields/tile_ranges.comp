@@ -238,17 +238,20 @@ void main() {
     uint lo = 0xffffffffu;
     uint hi = 0u;
     uint word = 0u; // occupancy rows gathered for the word they fill
+    // A tile lies inside one chunk: its voxels' addresses step by 1, chunkSize and chunkSize^2.
+    int chunkSize = push.gridOrigin.w;
+    int lowAddress = voxelAddress(tileLow + low);
     for (int z = 0; z < tileSize(); ++z) {
         for (int y = 0; y < tileSize(); ++y) {
             uint row = 0u;
             if (z >= low.z && z < high.z && y >= low.y && y < high.y) {
-                int address = voxelAddress(tileLow + ivec3(low.x, y, z));
-                for (int x = low.x; x < high.x; ++x, ++address) { // a tile row never leaves its chunk
+                int address = lowAddress + chunkSize * ((y - low.y) + chunkSize * (z - low.z));
+                for (int x = low.x; x < high.x; ++x, ++address) {
                     float density = voxels.density[address];
                     uint key = densityKey(density);
                     lo = min(lo, key);
                     hi = max(hi, key);
-                    row |= occupied(density) ? 1u << x : 0u;
+                    row |= uint(occupied(density)) << x;
                 }
             }
             if (!occupancy) continue;
