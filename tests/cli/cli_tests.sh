@@ -265,7 +265,7 @@ expect curves_solve_phase 0 "solve +[0-9.]+  curves blocks" -- "$voxc" run "$src
     --timings --voxels "$work/curves_cliff_timed.npy"
 # --solve-on device: every curves pass on lavapipe, the host's voxels but for the noise
 # displacement's last bits (warped_fbm's exp2, docs/curves.md "What runs where")
-expect curves_solve_on_device 0 "curves 'cliffs' \(64x32x64 cells, solved, the multigrid on 'llvmpipe" -- \
+expect curves_solve_on_device 0 "curves 'cliffs' \(64x32x64 cells, solved, its global passes on 'llvmpipe" -- \
     "$voxc" run "$src/examples/curves_cliff.vox" --device lavapipe --solve-on device --voxels "$work/curves_cliff_device.npy"
 expect curves_solve_on_device_close_voxels 0 "^ok$" -- /usr/bin/python3 -c "
 import numpy as np, sys

@@ -115,12 +115,12 @@ void run(const RunOptions& options) {
     };
     WorldOverrides overrides = options.overrides;
     overrides.keepSolveChannels = !dumps.empty();
-    std::string multigridDevice; // the device's name once a curves pass ran there
+    std::string curvesDevice; // the device's name once a curves pass ran there
     if (options.solveOn != "host")
         overrides.curvesSolver = vulkanCurvesSolvers([&]() -> VulkanContext* {
             VulkanContext& solver = openDevice();
             if (options.solveOn.empty() && solver.device().type == DeviceType::Cpu) return nullptr;
-            multigridDevice = solver.device().name;
+            curvesDevice = solver.device().name;
             return &solver;
         });
     std::string erosionDevice; // the device's name once erosion steps ran there
@@ -152,7 +152,7 @@ void run(const RunOptions& options) {
                 fmt::format("{} kernels: {} from the cache, {} compiled{}", package.kernels.size(),
                             spirvAfter.hits - spirvBefore.hits, spirvAfter.compiled - spirvBefore.compiled,
                             cache ? "" : " (--no-cache)"));
-    status() << formatSolveReport(program, false, multigridDevice);
+    status() << formatSolveReport(program, false, curvesDevice);
     if (!erosionDevice.empty()) status() << fmt::format("terrain erosion steps ran on {}\n", erosionDevice);
     VulkanContext& context = openDevice();
     times.add("device", deviceMs, "instance, device, pipeline cache");

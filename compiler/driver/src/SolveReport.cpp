@@ -9,15 +9,15 @@
 
 namespace voxc::driver {
 
-std::string formatSolveReport(const Program& program, bool perCycle, const std::string& multigridDevice) {
+std::string formatSolveReport(const Program& program, bool perCycle, const std::string& passDevice) {
     std::string out;
     for (const Stage& stage : program.pipeline) {
         if (stage.kind != Stage::Kind::Curves) continue;
         const CurvesBlock& block = program.curves.at(stage.index);
         const SolveTable& table = block.solved();
         const std::string where = table.source != "curves"    ? std::string("solved on the host when checked")
-                                  : multigridDevice.empty() ? std::string("solved on the host")
-                                                            : fmt::format("solved, the multigrid on '{}'", multigridDevice);
+                                  : passDevice.empty() ? std::string("solved on the host")
+                                                            : fmt::format("solved, its global passes on '{}'", passDevice);
         out += fmt::format("{} '{}' ({}x{}x{} cells, {}):", table.source, block.name, table.size.x, table.size.y,
                            table.size.z, where);
         for (const SolveSummary& solve : table.solves)

@@ -15,9 +15,10 @@ namespace voxc::driver {
 // Per curves stage of the pipeline (its block solved: stages::solveBlocks): its box and, per solve, multigrid levels, V-cycles and the
 // max residual after the full-multigrid start and at the end; with `perCycle` (voxc interp
 // --trace) also a line per solve listing the max residual after each cycle. Empty without
-// curves stages. `multigridDevice`: the Vulkan device the curves' multigrid ran on (voxc run
-// --solve-on), empty when it ran on the host.
-std::string formatSolveReport(const Program& program, bool perCycle = false, const std::string& multigridDevice = "");
+// curves stages. `passDevice`: the Vulkan device the curves' global passes (multigrid,
+// Perona-Malik sweeps, fronts, smoothing, displacement) ran on (voxc run --solve-on), empty when
+// they ran on the host.
+std::string formatSolveReport(const Program& program, bool perCycle = false, const std::string& passDevice = "");
 
 // `--dump [BLOCK.]CHANNEL=FILE.npy` (run, interp): one channel of a curves block's solve as a
 // float32 .npy over its box, shaped like --voxels (arr[x, y, z] is box cell (x, y, z)).
