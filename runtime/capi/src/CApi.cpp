@@ -16,12 +16,18 @@
 #include <cmath>
 #include <exception>
 #include <fmt/format.h>
+#include <memory>
 #include <new>
 #include <string>
 
 struct voxc_program {
     voxc::Program program;
     voxc::KernelPackage package;
+    // The Vulkan context of every Vulkan generation on this program, made by the first: it keeps
+    // each kernel's pipeline, and regions of one size compile to the same SPIR-V (a region's place
+    // is run-time input), so the driver compiles their kernels once instead of once per region.
+    // Mutable: the generate functions take a const program (one thread at a time, voxc.h).
+    mutable std::unique_ptr<voxc::VulkanContext> context = nullptr;
 };
 
 struct voxc_grid {
@@ -78,11 +84,19 @@ voxc::Program checkedProgram(const char* path, const voxc_load_options* options)
     return program;
 }
 
-// The program's whole grid, run by `backend`; `package` is the program's compiled package.
-voxc::ChunkedGrid runGrid(const voxc::Program& program, const voxc::KernelPackage& package, voxc_backend backend) {
+// The handle's Vulkan context, made on first use; throws UserError when there is no device.
+voxc::VulkanContext& contextOf(const voxc_program& handle) {
+    if (!handle.context)
+        handle.context = std::make_unique<voxc::VulkanContext>(voxc::ContextOptions{.shareKernelPipelines = true});
+    return *handle.context;
+}
+
+// `program`'s whole grid, run by `backend` on `handle`'s context; `package` is `program`'s
+// compiled package (`program` is the handle's or a region of it).
+voxc::ChunkedGrid runGrid(const voxc_program& handle, const voxc::Program& program, const voxc::KernelPackage& package,
+                          voxc_backend backend) {
     if (backend == VOXC_BACKEND_VULKAN) {
-        voxc::VulkanContext context(voxc::ContextOptions{});
-        voxc::VulkanExecutor executor(context, package);
+        voxc::VulkanExecutor executor(contextOf(handle), package);
         return executor.run().grid;
     }
     const voxc::World& world = program.world;
@@ -148,7 +162,7 @@ voxc_status voxc_generate(const voxc_program* program, voxc_backend backend, vox
     if (!validBackend(backend))
         return fail(VOXC_ERROR_ARGUMENT, fmt::format("voxc_generate: unknown backend {}", int(backend)));
     *out = nullptr;
-    return guarded([&] { *out = gridOf(runGrid(program->program, program->package, backend)); });
+    return guarded([&] { *out = gridOf(runGrid(*program, program->program, program->package, backend)); });
 }
 
 voxc_status voxc_generate_region(const voxc_program* program, const int32_t min[3], const int32_t max[3],
@@ -175,13 +189,20 @@ voxc_status voxc_generate_region(const voxc_program* program, const int32_t min[
         const voxc::Program regionProgram = voxc::stages::regionProgram(program->program, computed);
         const voxc::KernelPackage package =
             backend == VOXC_BACKEND_VULKAN ? voxc::compileProgram(regionProgram) : voxc::KernelPackage{};
-        const voxc::ChunkedGrid grid = runGrid(regionProgram, package, backend);
+        const voxc::ChunkedGrid grid = runGrid(*program, regionProgram, package, backend);
         const glm::ivec3 offset = region.min - computed.min;
         const voxc::DenseGrid voxels = voxc::stages::cropGrid(grid.toDense(), {offset, offset + region.size()});
         const voxc::ChunkLayout& layout = grid.layout();
         *out = gridOf(voxc::ChunkedGrid::fromDense(
             voxels, voxc::ChunkLayout::make(layout.gridOrigin + offset, voxels.size(), layout.chunkSize)));
     });
+}
+
+void voxc_program_pipeline_counts(const voxc_program* program, uint64_t* created, uint64_t* shared) {
+    const voxc::KernelPipelineCounts counts =
+        program && program->context ? program->context->kernelPipelineCounts() : voxc::KernelPipelineCounts{};
+    if (created) *created = counts.created;
+    if (shared) *shared = counts.shared;
 }
 
 void voxc_grid_free(voxc_grid* grid) { delete grid; }

@@ -6,6 +6,10 @@
  * marching cubes, and read the arrays. Every handle is freed by its own voxc_*_free; arrays a
  * handle returns live as long as the handle. No C++ exception crosses this boundary: a function
  * that can fail returns a voxc_status and leaves a message for voxc_last_error().
+ *
+ * Threads: call libvoxc from one thread at a time. In particular a program is not safe to use
+ * from two threads at once, even through the functions that take it as const: its first Vulkan
+ * generation makes the Vulkan context that it keeps for the later ones.
  */
 #ifndef VOXC_VOXC_H
 #define VOXC_VOXC_H
@@ -69,13 +73,21 @@ VOXC_API void voxc_program_grid(const voxc_program* program, int32_t size[3], in
 /* Material names by id (1..255; 0 is "none"); null for an id the file does not declare. */
 VOXC_API const char* voxc_program_material_name(const voxc_program* program, uint8_t id);
 
-/* Runs the program over its grid. On success *out holds a grid to free with voxc_grid_free. */
+/* Runs the program over its grid. On success *out holds a grid to free with voxc_grid_free.
+ * The first Vulkan generation on a program (whole or region) makes a Vulkan context that the
+ * program keeps, with every kernel's pipeline, until voxc_program_free: later generations of the
+ * same size (regions of one size whose grown boxes are not clipped by the grid's border) reuse
+ * the pipelines instead of the driver compiling them again. */
 VOXC_API voxc_status voxc_generate(const voxc_program* program, voxc_backend backend, voxc_grid** out);
 /* Computes only the box min <= p < max (world coordinates) of the program's grid, grown by the
  * pipeline's halo and cropped back, so its voxels equal the whole grid's there, bit for bit
  * (`voxc run --region`). VOXC_ERROR_ARGUMENT for an empty box or one not inside the grid. */
 VOXC_API voxc_status voxc_generate_region(const voxc_program* program, const int32_t min[3], const int32_t max[3],
                                           voxc_backend backend, voxc_grid** out);
+/* The kernel pipelines the program's Vulkan generations have used so far: `created` compiled by
+ * the driver, `shared` reused from an earlier generation's kernel with the same SPIR-V. Both 0
+ * before the first Vulkan generation; either pointer may be null. */
+VOXC_API void voxc_program_pipeline_counts(const voxc_program* program, uint64_t* created, uint64_t* shared);
 VOXC_API void voxc_grid_free(voxc_grid* grid);
 
 VOXC_API void voxc_grid_size(const voxc_grid* grid, int32_t size[3]);
