@@ -35,10 +35,14 @@ TEST(codegen_OpaqueConstants, LibraryArgumentsAreOpaqueButPows) {
     EXPECT_TRUE(has(fieldGlsl("pow(x, 2)"), "mathPow(n0, 2.0)"));
 }
 
-TEST(codegen_OpaqueConstants, CallsOnConstantsAloneKeepTheirOperandsAndHideTheirValue) {
-    const std::string glsl = fieldGlsl("x * (sqrt(4) - 2) + pow(2, 1.5)");
-    EXPECT_TRUE(has(glsl, "= opaqueConstant(sqrt(4.0));"));
-    EXPECT_TRUE(has(glsl, "= opaqueConstant(mathPow(2.0, 1.5));"));
+// Their operands are variables, which the driver folds in float (glslang would fold literals in
+// double), and their value is opaque, so nothing after them is folded.
+TEST(codegen_OpaqueConstants, CallsOnConstantsAloneAreFoldedInFloatAndHideTheirValue) {
+    const std::string glsl = fieldGlsl("x * (sqrt(4) - 2) + pow(2, 1.5) + div(mul(10.64, 17.23), -3.612)");
+    EXPECT_TRUE(has(glsl, "precise float n1 = 4.0; // constant, for the driver to fold in float"));
+    EXPECT_TRUE(has(glsl, "= opaqueConstant(sqrt(n1));"));
+    EXPECT_TRUE(has(glsl, "= opaqueConstant(mathPow(n"));
+    EXPECT_TRUE(has(glsl, "= 183.327194; // constant, for the driver to fold in float"));
 }
 
 } // namespace

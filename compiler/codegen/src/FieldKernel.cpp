@@ -64,6 +64,18 @@ std::vector<bool> opaqueConstants(const ir::IrField& field) {
     return opaque;
 }
 
+// The float constants that are operands of a call on constants alone. They are emitted as
+// variables: glslang folds an expression of literals in double, from their decimal text
+// (183.327209 / -3.612 is 1 ulp off the float quotient), while the driver folds the call on the
+// variables' float values, as the interpreter computes it.
+std::vector<bool> constantCallOperands(const ir::IrField& field) {
+    std::vector<bool> operand(field.nodes.size(), false);
+    for (const FieldNode& node : field.nodes)
+        if (node.kind == FieldNode::Kind::Call && constantsAlone(field, node))
+            for (uint32_t o : node.operands) operand[o] = isFloatType(field.nodes[o].type);
+    return operand;
+}
+
 std::string opaqueGlsl(const std::string& constant) { return "opaqueConstant(" + constant + ")"; }
 
 std::string constantGlsl(const FieldNode& node) {
@@ -206,17 +218,21 @@ FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::s
     FieldCode code;
     code.names.resize(field.nodes.size());
     const std::vector<bool> opaque = opaqueConstants(field);
+    const std::vector<bool> asVariable = constantCallOperands(field);
     std::set<std::string_view> seenLibraries;
     int columnNoiseSites = 0;
     for (size_t i = 0; i < field.nodes.size(); ++i) {
         const FieldNode& node = field.nodes[i];
         if (node.kind == FieldNode::Kind::Constant) {
             code.names[i] = opaque[i] ? opaqueGlsl(constantGlsl(node)) : constantGlsl(node);
-            continue;
+            if (!asVariable[i]) continue;
         }
         std::string value, what;
         switch (node.kind) {
-        case FieldNode::Kind::Constant: break;
+        case FieldNode::Kind::Constant:
+            value = code.names[i];
+            what = "constant, for the driver to fold in float";
+            break;
         case FieldNode::Kind::Input:
             value = stampFrame ? stampInputGlsl(node.input) : inputGlsl(node.input, module.world);
             what = std::array{"x", "y", "z", "wx", "wy", "wz"}[int(node.input)];
