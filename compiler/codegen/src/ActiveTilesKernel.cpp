@@ -236,9 +236,7 @@ std::string mayMatch(const IrSweep& sweep, const std::optional<OccupancyLevel>& 
          "// patterns of voxels holding (row bits) and failing it (~) at this phase's anchors, a row\n"
          "// of anchors at a time (bit x: the anchor at tile-local x).\n";
     s += fmt::format("if (!mayMatch && ({})) {{\n", fmt::join(candidates, " || "));
-    s += "    ivec3 tile = tileOfId(id);\n"
-         "    OccupancyNeighbourhood occupancy = occupancyNeighbourhood(tile);\n"
-         "    ivec3 localStart = push.gridOrigin.xyz + push.anchorStart.xyz - tile * tileSize();\n"
+    s += "    ivec3 localStart = push.gridOrigin.xyz + push.anchorStart.xyz - neighbourhood.tile * tileSize();\n"
          "    uint anchorsX = 0u;\n"
          "    for (int i = anchors.first.x; i <= anchors.last.x; ++i) anchorsX |= 1u << (localStart.x + i * push.anchorStep.x);\n"
          "    for (int iz = anchors.first.z; iz <= anchors.last.z && !mayMatch; ++iz) {\n"
@@ -246,7 +244,7 @@ std::string mayMatch(const IrSweep& sweep, const std::optional<OccupancyLevel>& 
          "        for (int iy = anchors.first.y; iy <= anchors.last.y && !mayMatch; ++iy) {\n"
          "            int y = localStart.y + iy * push.anchorStep.y;\n";
     for (const auto& [dz, dy] : rows)
-        s += fmt::format("            uint {} = occupancyRow(occupancy, y + {}, z + {});\n",
+        s += fmt::format("            uint {} = occupancyRow(neighbourhood, y + {}, z + {});\n",
                          rowName(glm::ivec3(0, dy, dz)), dy, dz);
     for (uint32_t r = 0; r < sweep.rules.size(); ++r)
         if (!patterns[r].empty())

@@ -254,39 +254,32 @@ uvec2 cellRange(TileAnchors anchors, ivec3 offset) {
     return range;
 }
 
-// The ranges of a tile and of its next tiles along x, y and z (rxyz: x, y, z steps of 0 or 1),
-// each read once per invocation instead of once per tested cell; a tile outside the chunk table
-// has the empty range, as cellRange leaves it out. Every cell of a window whose offsets are
-// below 8, the smallest tile size (skipTileShift), reads from the anchors of a tile only that
-// tile and the next ones (nearCellRange).
-struct TileNeighbourhood {
-    ivec3 tile;
-    uvec2 r000, r100, r010, r110, r001, r101, r011, r111;
-};
-
 // The tile index of a tile at or after the first of the chunk table, -1 past its end.
 int tileIndexOrNone(ivec3 tile) {
     ivec3 tableHigh = (push.chunkBase.xyz + push.chunkCount.xyz) * tilesPerAxis() - 1;
     return any(greaterThan(tile, tableHigh)) ? -1 : tileIndex(tile);
 }
 
-uvec2 tileRangeOrEmpty(ivec3 tile) {
-    int index = tileIndexOrNone(tile);
-    if (index < 0) return uvec2(0xffffffffu, 0u);
-    return uvec2(tileRanges.key[2 * index], tileRanges.key[2 * index + 1]);
-}
+// A tile and its next tiles along x, y and z, neighbour k the step (k & 1, k >> 1 & 1, k >> 2):
+// their tile indices (tileIndexOrNone) and density ranges (empty outside the chunk table, as
+// cellRange leaves such tiles out), each read once per invocation instead of once per tested
+// cell. Every cell of a window whose offsets are below 8, the smallest tile size
+// (skipTileShift), reads from the anchors of a tile only that tile and the next ones
+// (nearCellRange, occupancyRow).
+struct TileNeighbourhood {
+    ivec3 tile;
+    int index[8];
+    uvec2 range[8];
+};
 
 TileNeighbourhood tileNeighbourhood(ivec3 tile) {
     TileNeighbourhood n;
     n.tile = tile;
-    n.r000 = tileRangeOrEmpty(tile);
-    n.r100 = tileRangeOrEmpty(tile + ivec3(1, 0, 0));
-    n.r010 = tileRangeOrEmpty(tile + ivec3(0, 1, 0));
-    n.r110 = tileRangeOrEmpty(tile + ivec3(1, 1, 0));
-    n.r001 = tileRangeOrEmpty(tile + ivec3(0, 0, 1));
-    n.r101 = tileRangeOrEmpty(tile + ivec3(1, 0, 1));
-    n.r011 = tileRangeOrEmpty(tile + ivec3(0, 1, 1));
-    n.r111 = tileRangeOrEmpty(tile + ivec3(1, 1, 1));
+    for (int k = 0; k < 8; ++k) {
+        n.index[k] = tileIndexOrNone(tile + ivec3(k & 1, (k >> 1) & 1, k >> 2));
+        n.range[k] = uvec2(0xffffffffu, 0u);
+        if (n.index[k] >= 0) n.range[k] = uvec2(tileRanges.key[2 * n.index[k]], tileRanges.key[2 * n.index[k] + 1]);
+    }
     return n;
 }
 
@@ -303,45 +296,22 @@ uvec2 nearCellRange(TileNeighbourhood n, TileAnchors anchors, ivec3 offset) {
     bvec3 here = equal(from >> tileShift(), n.tile);       // the reads start in this tile, else in the next
     bvec3 next = greaterThan(to >> tileShift(), n.tile);  // the reads reach the next tile
     uvec2 range = uvec2(0xffffffffu, 0u);
-    range = uniteIf(range, here.x && here.y && here.z, n.r000);
-    range = uniteIf(range, next.x && here.y && here.z, n.r100);
-    range = uniteIf(range, here.x && next.y && here.z, n.r010);
-    range = uniteIf(range, next.x && next.y && here.z, n.r110);
-    range = uniteIf(range, here.x && here.y && next.z, n.r001);
-    range = uniteIf(range, next.x && here.y && next.z, n.r101);
-    range = uniteIf(range, here.x && next.y && next.z, n.r011);
-    range = uniteIf(range, next.x && next.y && next.z, n.r111);
+    for (int k = 0; k < 8; ++k) {
+        bvec3 step = bvec3((k & 1) != 0, (k & 2) != 0, (k & 4) != 0);
+        range = uniteIf(range, all(mix(here, next, step)), n.range[k]);
+    }
     return range;
-}
-
-// The tile indices (tileIndexOrNone) of a tile and its next
-// tiles along x, y and z: where the occupancy rows of a window whose offsets are below 8 lie.
-struct OccupancyNeighbourhood {
-    int i000, i100, i010, i110, i001, i101, i011, i111;
-};
-
-OccupancyNeighbourhood occupancyNeighbourhood(ivec3 tile) {
-    OccupancyNeighbourhood n;
-    n.i000 = tileIndexOrNone(tile);
-    n.i100 = tileIndexOrNone(tile + ivec3(1, 0, 0));
-    n.i010 = tileIndexOrNone(tile + ivec3(0, 1, 0));
-    n.i110 = tileIndexOrNone(tile + ivec3(1, 1, 0));
-    n.i001 = tileIndexOrNone(tile + ivec3(0, 0, 1));
-    n.i101 = tileIndexOrNone(tile + ivec3(1, 0, 1));
-    n.i011 = tileIndexOrNone(tile + ivec3(0, 1, 1));
-    n.i111 = tileIndexOrNone(tile + ivec3(1, 1, 1));
-    return n;
 }
 
 // The occupancy bits of row (y, z) of the neighbourhood (tile-local, 0 <= y, z < 2 * tileSize()),
 // bit x for x = 0 .. 2 * tileSize() - 1: the tile's row, then its next tile's along x. Outside
 // the chunk table no anchor's window reads, so those bits are clear.
-uint occupancyRow(OccupancyNeighbourhood n, int y, int z) {
+uint occupancyRow(TileNeighbourhood n, int y, int z) {
     int size = tileSize();
     bool upY = y >= size;
     bool upZ = z >= size;
-    int here = upZ ? (upY ? n.i011 : n.i001) : (upY ? n.i010 : n.i000);
-    int next = upZ ? (upY ? n.i111 : n.i101) : (upY ? n.i110 : n.i100);
+    int here = upZ ? (upY ? n.index[6] : n.index[4]) : (upY ? n.index[2] : n.index[0]);
+    int next = upZ ? (upY ? n.index[7] : n.index[5]) : (upY ? n.index[3] : n.index[1]);
     ivec3 inside = ivec3(0, y & (size - 1), z & (size - 1));
     uint rowMask = (1u << size) - 1u;
     uint row = 0u;
