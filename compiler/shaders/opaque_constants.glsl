@@ -1,4 +1,4 @@
-// Field-expression constants that the shader compilers must not treat as constants.
+// Field-expression constants kept from the shader compilers' own folding (docs/fuzzing.md).
 // llvmpipe (lavapipe's NIR passes and its LLVM code builder) rewrites an operation with a
 // constant zero operand as if signed zeros, infinities and NaN did not exist, `precise` or not:
 // x + 0 -> x (so -0 stays -0), 0 - x -> -x (so +0 becomes -0), x * 0 -> +0 (also for a
@@ -11,3 +11,8 @@ bool dispatchIsEmpty() { return gl_NumWorkGroups.x == 0u; }
 float opaqueConstant(float c) { return dispatchIsEmpty() ? uintBitsToFloat(0x7FC00000u) : c; }
 vec2 opaqueConstant(vec2 c) { return dispatchIsEmpty() ? vec2(uintBitsToFloat(0x7FC00000u)) : c; }
 vec3 opaqueConstant(vec3 c) { return dispatchIsEmpty() ? vec3(uintBitsToFloat(0x7FC00000u)) : c; }
+
+// A constant glslang leaves alone: it folds an expression of literals itself, in double from their
+// decimal text, where the driver, which inlines this call, folds it in float as the interpreter
+// computes it.
+float driverFolded(float c) { return c; }

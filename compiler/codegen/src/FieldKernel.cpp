@@ -127,6 +127,21 @@ struct FieldCode {
     std::string columnNoise, block;
 };
 
+// Whether componentGlsl's expression for node `i`'s component `axis` is built from constants alone.
+template <class Leaf>
+bool constantComponent(const ir::IrField& field, uint32_t i, int axis, const Leaf& leaf) {
+    const FieldNode& node = field.nodes[i];
+    if (node.kind == FieldNode::Kind::Constant) return true;
+    if (leaf(i, axis)) return false;
+    if (node.kind == FieldNode::Kind::Component) return constantComponent(field, node.operands[0], int(node.component), leaf);
+    if (node.kind != FieldNode::Kind::Call) return false;
+    const std::string_view name = functions()[node.function].name;
+    if (name == "vec3") return constantComponent(field, node.operands[axis], axis, leaf);
+    if (name == "neg") return constantComponent(field, node.operands[0], axis, leaf);
+    return (name == "add" || name == "sub" || name == "mul") && constantComponent(field, node.operands[0], axis, leaf) &&
+           constantComponent(field, node.operands[1], axis, leaf);
+}
+
 // A float or vec3 node's component `axis` as one GLSL expression, when the node is built from
 // vec3 constructors, constants, component reads, sums, differences, products and negations over
 // leaves that `leaf` names (scalar nodes it accepts). The operations are the ones the vector code
@@ -158,7 +173,12 @@ std::optional<std::string> componentGlsl(const ir::IrField& field, const std::ve
     const std::optional<std::string> a = componentGlsl(field, opaque, node.operands[0], axis, leaf);
     const std::optional<std::string> b = componentGlsl(field, opaque, node.operands[1], axis, leaf);
     if (!a || !b) return std::nullopt;
-    return fmt::format("({} {} {})", *a, op, *b);
+    // glslang folds an operation on literals itself, in double from their decimal text (5.0 *
+    // 0.300000012 is 1.5000001, the float product 1.5); through driverFolded the driver folds it,
+    // in float.
+    const bool literals = constantComponent(field, node.operands[0], axis, leaf) &&
+                          constantComponent(field, node.operands[1], axis, leaf);
+    return fmt::format("({} {} {})", literals ? "driverFolded(" + *a + ")" : *a, op, *b);
 }
 
 // Each column noise call holds a block of COLUMN_BLOCK floats per invocation (1 KiB); past this
