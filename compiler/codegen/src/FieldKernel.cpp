@@ -45,8 +45,9 @@ bool constantsAlone(const ir::IrField& field, const FieldNode& node) {
 // component (their folds of x + 0, 0 - x, x * 0, x / 0 and 0 / x are not IEEE), and the arguments
 // of a record whose GLSL calls into a library, whose own arithmetic may turn them into such a
 // zero (mix(x, y, 1) computes x * (1 - 1)). A call on constants alone (one the IR does not fold,
-// such as sqrt(4)) keeps its operands and has its value made opaque instead (emitField), so the
-// compilers still evaluate it on the host but cannot fold what follows (sqrt(4) - 2 into a zero).
+// such as sqrt(4)) gets its operands as variables instead (constantCallOperands) and has its
+// value made opaque (emitField), so the driver still evaluates it on the host but cannot fold what
+// follows (sqrt(4) - 2 into a zero).
 std::vector<bool> opaqueConstants(const ir::IrField& field) {
     std::vector<bool> opaque(field.nodes.size(), false);
     for (size_t i = 0; i < field.nodes.size(); ++i) {
@@ -66,7 +67,7 @@ std::vector<bool> opaqueConstants(const ir::IrField& field) {
 
 // The float constants that are operands of a call on constants alone. They are emitted as
 // variables: glslang folds an expression of literals in double, from their decimal text
-// (183.327209 / -3.612 is 1 ulp off the float quotient), while the driver folds the call on the
+// (183.327194 / -3.612 is 1 ulp off the float quotient), while the driver folds the call on the
 // variables' float values, as the interpreter computes it.
 std::vector<bool> constantCallOperands(const ir::IrField& field) {
     std::vector<bool> operand(field.nodes.size(), false);
