@@ -100,5 +100,32 @@ TEST_F(CompileCache, OffByDefault) {
     EXPECT_FALSE(fs::exists(directory));
 }
 
+// libvoxc's per-program memo: with the cache directory off, a kernel compiled inside a scope of
+// the memo is not compiled again inside a later one; outside, or with other GLSL, it is.
+TEST(SpirvMemoScopes, CompileAKernelOncePerMemo) {
+    setCompileCacheDirectory(std::nullopt);
+    SpirvMemo memo;
+    const CompileCacheCounts before = compileCacheCounts();
+    std::vector<uint32_t> first;
+    {
+        const SpirvMemoScope scope(memo);
+        first = compileComputeShader("double", kKernel);
+    }
+    {
+        const SpirvMemoScope scope(memo);
+        EXPECT_EQ(compileComputeShader("double", kKernel), first);
+        // Other GLSL is compiled (to the same SPIR-V: only a comment differs).
+        EXPECT_EQ(compileComputeShader("double", kKernel + "// another comment\n"), first);
+    }
+    const CompileCacheCounts inScopes = compileCacheCounts();
+    EXPECT_EQ(inScopes.compiled - before.compiled, 2u);
+    EXPECT_EQ(inScopes.remembered - before.remembered, 1u);
+    ASSERT_NE(memo.find("double", kKernel), nullptr);
+    EXPECT_EQ(memo.find("triple", kKernel), nullptr);
+
+    EXPECT_EQ(compileComputeShader("double", kKernel), first);
+    EXPECT_EQ(compileCacheCounts().compiled - inScopes.compiled, 1u) << "no memo outside its scopes";
+}
+
 } // namespace
 } // namespace voxc::codegen

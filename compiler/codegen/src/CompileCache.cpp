@@ -25,6 +25,14 @@ struct CacheState {
     CompileCacheCounts counts;
 };
 
+thread_local SpirvMemo* memoInScope = nullptr;
+
+std::string memoKey(std::string_view kernelName, const std::string& glsl) {
+    std::string key(kernelName);
+    key += '\n';
+    return key += glsl;
+}
+
 CacheState& state() {
     static CacheState instance;
     return instance;
@@ -93,13 +101,30 @@ CompileCacheCounts compileCacheCounts() {
     return state().counts;
 }
 
-std::vector<uint32_t> cachedCompile(std::string_view kernelName, const std::string& glsl,
-                                    const std::function<std::vector<uint32_t>()>& compile) {
+const std::vector<uint32_t>* SpirvMemo::find(std::string_view kernelName, const std::string& glsl) const {
+    const auto it = spirv_.find(memoKey(kernelName, glsl));
+    return it == spirv_.end() ? nullptr : &it->second;
+}
+
+void SpirvMemo::insert(std::string_view kernelName, const std::string& glsl, const std::vector<uint32_t>& spirv) {
+    spirv_.emplace(memoKey(kernelName, glsl), spirv);
+}
+
+SpirvMemoScope::SpirvMemoScope(SpirvMemo& memo) : outer_(memoInScope) { memoInScope = &memo; }
+
+SpirvMemoScope::~SpirvMemoScope() { memoInScope = outer_; }
+
+namespace {
+
+void count(const std::function<void(CompileCacheCounts&)>& update) {
+    std::lock_guard lock(state().mutex);
+    update(state().counts);
+}
+
+// cachedCompile without the memo.
+std::vector<uint32_t> directoryCachedCompile(std::string_view kernelName, const std::string& glsl,
+                                             const std::function<std::vector<uint32_t>()>& compile) {
     const std::optional<std::filesystem::path> directory = compileCacheDirectory();
-    const auto count = [](auto update) {
-        std::lock_guard lock(state().mutex);
-        update(state().counts);
-    };
     std::filesystem::path entry;
     bool corrupted = false;
     if (directory) {
@@ -129,6 +154,21 @@ std::vector<uint32_t> cachedCompile(std::string_view kernelName, const std::stri
         const double writeMs = millisecondsSince(writeStart);
         count([&](CompileCacheCounts& c) { c.cacheMs += writeMs; });
     }
+    return spirv;
+}
+
+} // namespace
+
+std::vector<uint32_t> cachedCompile(std::string_view kernelName, const std::string& glsl,
+                                    const std::function<std::vector<uint32_t>()>& compile) {
+    SpirvMemo* memo = memoInScope;
+    if (!memo) return directoryCachedCompile(kernelName, glsl, compile);
+    if (const std::vector<uint32_t>* kept = memo->find(kernelName, glsl)) {
+        count([](CompileCacheCounts& c) { ++c.remembered; });
+        return *kept;
+    }
+    std::vector<uint32_t> spirv = directoryCachedCompile(kernelName, glsl, compile);
+    memo->insert(kernelName, glsl, spirv);
     return spirv;
 }
 

@@ -8,8 +8,8 @@
 
 namespace voxc::codegen {
 
-// The SPIR-V of kernel `kernelName` with source `glsl` from the cache, or from `compile` (then
-// stored) when there is no valid entry.
+// The SPIR-V of kernel `kernelName` with source `glsl` from the SpirvMemo in scope, else from the
+// cache, else from `compile` (then stored) when there is no valid entry.
 std::vector<uint32_t> cachedCompile(std::string_view kernelName, const std::string& glsl,
                                     const std::function<std::vector<uint32_t>()>& compile);
 

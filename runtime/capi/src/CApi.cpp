@@ -4,6 +4,7 @@
 
 #include "voxc/check/Check.h"
 #include "voxc/check/LoadPackage.h"
+#include "voxc/codegen/CompileCache.h"
 #include "voxc/core/Errors.h"
 #include "voxc/grid/Grid.h"
 #include "voxc/mesh/MarchingCubes.h"
@@ -25,9 +26,11 @@ struct voxc_program {
     voxc::KernelPackage package;
     // The Vulkan context of every Vulkan generation on this program, made by the first: it keeps
     // each kernel's pipeline, and regions of one size compile to the same SPIR-V (a region's place
-    // is run-time input), so the driver compiles their kernels once instead of once per region.
-    // Mutable: the generate functions take a const program (one thread at a time, voxc.h).
+    // is run-time input), so the driver compiles their kernels once instead of once per region,
+    // and `regionKernels` keeps that SPIR-V, so glslang compiles them once too. Mutable: the
+    // generate functions take a const program (one thread at a time, voxc.h).
     mutable std::unique_ptr<voxc::VulkanContext> context = nullptr;
+    mutable voxc::codegen::SpirvMemo regionKernels = {};
 };
 
 struct voxc_grid {
@@ -187,8 +190,11 @@ voxc_status voxc_generate_region(const voxc_program* program, const int32_t min[
         const voxc::stages::PipelineHalo halo = voxc::stages::pipelineHalo(program->program);
         const voxc::stages::GridBox computed = voxc::stages::haloBox(program->program, region, halo.radius);
         const voxc::Program regionProgram = voxc::stages::regionProgram(program->program, computed);
-        const voxc::KernelPackage package =
-            backend == VOXC_BACKEND_VULKAN ? voxc::compileProgram(regionProgram) : voxc::KernelPackage{};
+        voxc::KernelPackage package;
+        if (backend == VOXC_BACKEND_VULKAN) {
+            const voxc::codegen::SpirvMemoScope kernels(program->regionKernels);
+            package = voxc::compileProgram(regionProgram);
+        }
         const voxc::ChunkedGrid grid = runGrid(*program, regionProgram, package, backend);
         const glm::ivec3 offset = region.min - computed.min;
         const voxc::DenseGrid voxels = voxc::stages::cropGrid(grid.toDense(), {offset, offset + region.size()});

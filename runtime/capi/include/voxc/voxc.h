@@ -75,9 +75,9 @@ VOXC_API const char* voxc_program_material_name(const voxc_program* program, uin
 
 /* Runs the program over its grid. On success *out holds a grid to free with voxc_grid_free.
  * The first Vulkan generation on a program (whole or region) makes a Vulkan context that the
- * program keeps, with every kernel's pipeline, until voxc_program_free: later generations of the
- * same size (regions of one size whose grown boxes are not clipped by the grid's border) reuse
- * the pipelines instead of the driver compiling them again. */
+ * program keeps, with every kernel's pipeline, until voxc_program_free; the program also keeps
+ * its regions' SPIR-V. Later generations of the same size (regions of one size whose grown boxes
+ * are not clipped by the grid's border) reuse both instead of compiling their kernels again. */
 VOXC_API voxc_status voxc_generate(const voxc_program* program, voxc_backend backend, voxc_grid** out);
 /* Computes only the box min <= p < max (world coordinates) of the program's grid, grown by the
  * pipeline's halo and cropped back, so its voxels equal the whole grid's there, bit for bit

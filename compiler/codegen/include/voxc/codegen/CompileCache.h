@@ -9,6 +9,10 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
 
 namespace voxc::codegen {
 
@@ -25,9 +29,35 @@ struct CompileCacheCounts {
     uint64_t hits = 0;
     uint64_t compiled = 0;   // no entry, or the cache is off
     uint64_t corrupted = 0;  // an entry that failed its check, compiled again (also in `compiled`)
+    uint64_t remembered = 0; // taken from a SpirvMemo in scope (neither a hit nor compiled)
     double compileMs = 0.0;  // time in glslang and the validator
     double cacheMs = 0.0;    // time reading and writing entries
 };
 CompileCacheCounts compileCacheCounts();
+
+// Kernels' SPIR-V kept in memory by their owner, by kernel name and GLSL: libvoxc keeps one per
+// program, whose regions of one size compile to the same GLSL, so a later region runs neither
+// glslang nor the validator even with the cache directory off (an engine's process has none).
+class SpirvMemo {
+public:
+    const std::vector<uint32_t>* find(std::string_view kernelName, const std::string& glsl) const;
+    void insert(std::string_view kernelName, const std::string& glsl, const std::vector<uint32_t>& spirv);
+
+private:
+    std::unordered_map<std::string, std::vector<uint32_t>> spirv_; // by name, a newline, the GLSL
+};
+
+// While one lives on a thread, compileComputeShader on that thread takes a kernel's SPIR-V from
+// `memo` when it holds it and adds what it compiles or reads from the cache directory.
+class SpirvMemoScope {
+public:
+    explicit SpirvMemoScope(SpirvMemo& memo);
+    ~SpirvMemoScope();
+    SpirvMemoScope(const SpirvMemoScope&) = delete;
+    SpirvMemoScope& operator=(const SpirvMemoScope&) = delete;
+
+private:
+    SpirvMemo* outer_;
+};
 
 } // namespace voxc::codegen
