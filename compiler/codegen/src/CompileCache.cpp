@@ -101,6 +101,10 @@ CompileCacheCounts compileCacheCounts() {
     return state().counts;
 }
 
+SpirvMemo::SpirvMemo() = default;
+
+SpirvMemo::~SpirvMemo() = default;
+
 const std::vector<uint32_t>* SpirvMemo::find(std::string_view kernelName, const std::string& glsl) const {
     const auto it = spirv_.find(memoKey(kernelName, glsl));
     return it == spirv_.end() ? nullptr : &it->second;

@@ -40,6 +40,9 @@ CompileCacheCounts compileCacheCounts();
 // glslang nor the validator even with the cache directory off (an engine's process has none).
 class SpirvMemo {
 public:
+    // Out of line, so libvoxc (which exports only its C API) instantiates none of the map's code.
+    SpirvMemo();
+    ~SpirvMemo();
     const std::vector<uint32_t>* find(std::string_view kernelName, const std::string& glsl) const;
     void insert(std::string_view kernelName, const std::string& glsl, const std::vector<uint32_t>& spirv);
 
