@@ -326,7 +326,7 @@ std::string activeTilesKernelSource(const ir::IrGrammar& grammar, const IrSweep&
          {"MAY_MATCH", mayMatch(sweep, level)}});
 }
 
-DispatchShape tileRangesDispatchShape() { return DispatchShape{{64, 1, 1}, {1, 1, 1}}; }
+DispatchShape tileRangesDispatchShape() { return DispatchShape{{8, 1, 1}, {1, 1, 1}}; }
 
 std::string tileRangesKernelSource(const std::optional<OccupancyLevel>& level) {
     return instantiateTemplate("tile_ranges.glsl", {{"OCCUPANCY_LEVEL", occupancyLevelGlsl(level)}});

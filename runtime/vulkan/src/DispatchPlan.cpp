@@ -107,10 +107,11 @@ int32_t skipTileShift(const KernelPackage& package, std::array<uint32_t, 3> maxG
     // the active-tiles kernels rely on tiles of at least 8 (ActiveTilesKernel.cpp, kMinTileSize).
     for (int32_t shift = 3; shift <= layout.chunkShift; ++shift) {
         const uint64_t tiles = tileCount(package, shift);
-        // Workgroups of 64 invocations: the tile kernels' one per tile, the sweep's one per anchor
-        // (a tile holds at most 8^shift anchors).
+        // The tile kernels run an invocation per tile in workgroups of 8 (tile_ranges) or 64
+        // (active tiles); the sweep's workgroups of 64 invocations hold one anchor each (a tile
+        // holds at most 8^shift anchors).
         const uint64_t groupsPerTile = ((uint64_t(1) << (3 * shift)) + 63) / 64;
-        if (tiles <= maxGroups[1] && (tiles + 63) / 64 <= maxGroups[0] && groupsPerTile <= maxGroups[0])
+        if (tiles <= maxGroups[1] && (tiles + 7) / 8 <= maxGroups[0] && groupsPerTile <= maxGroups[0])
             return shift;
     }
     return -1;

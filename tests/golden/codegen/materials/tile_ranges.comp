@@ -3,7 +3,8 @@
 // voxc runtime kernel "tile_ranges": recomputes the exact density range of every tile whose
 // flag in TileDirty is set (after a start stage, or where a sweep wrote), so the next sweep
 // classifies tiles on tight ranges. One invocation per tile id (tiles.glsl); a workgroup per
-// tile would cost more in workgroup overhead (llvmpipe) than the tile's reads. Only voxels
+// tile would cost more in workgroup overhead (llvmpipe) than the tile's reads, and workgroups of
+// 8 (one llvmpipe batch) spread the tiles over its threads more evenly than 64 did. Only voxels
 // inside the grid count, since windows never read the padding (their occupancy bits stay clear).
 // The same reads set the tile's occupancy bits (tiles.glsl).
 
@@ -74,7 +75,7 @@ int columnRunEnd(ivec3 local, int y, int last) {
 }
 // ---- end common.glsl ----
 
-layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
+layout(local_size_x = 8, local_size_y = 1, local_size_z = 1) in;
 
 // ---- begin tiles.glsl ----
 // Per-tile bookkeeping that lets the runtime dispatch a sweep only over the tiles where some
