@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 #include <algorithm>
 #include <map>
+#include <set>
 
 namespace voxc {
 
@@ -40,6 +41,18 @@ const ast::Block* uniqueBlock(Context& context, const ast::File& file, std::stri
             first = &block;
     }
     return first;
+}
+
+// The W0209s of lsystem_cave features a pipeline stage carves (`staged`: the field stages'
+// names), or that nothing stamps.
+void warnCarvesNothing(Context& context, const Program& program, const std::set<std::string>& staged) {
+    for (const Context::CarveWarning& warning : context.carveWarnings) {
+        bool stamped = false;
+        for (const Grammar& grammar : program.grammars)
+            for (const Rule& rule : grammar.rules)
+                for (const Stamp& stamp : rule.stamps) stamped = stamped || stamp.fieldName == warning.feature;
+        if (staged.contains(warning.feature) || !stamped) context.diagnostics.warning("W0209", warning.loc, warning.message);
+    }
 }
 
 void reportUnknownBlocks(Context& context, const ast::File& file) {
@@ -125,6 +138,7 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
 
     program.pipeline.push_back({Stage::Kind::Start, 0, FieldMode::Set, {}, std::nullopt});
     const ast::Block* pipelineBlock = uniqueBlock(context, file, "pipeline");
+    std::set<std::string> stagedFields; // the fields and features the pipeline runs as stages
     if (const ast::Block* block = pipelineBlock) {
         std::vector<std::string> fieldNames;
         for (const ast::FieldDecl& field : file.fields) fieldNames.push_back(field.name);
@@ -137,11 +151,14 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
         std::vector<std::optional<uint8_t>> fieldMaterials(file.fields.size()); // plain fields name none
         fieldMaterials.insert(fieldMaterials.end(), features.materials.begin(), features.materials.end());
         for (const Stage& stage : checkPipeline(context, *block, grammarNames, fieldNames, fieldMaterials, lsystemNames,
-                                                speleothemNames, speleothemMaterials))
+                                                speleothemNames, speleothemMaterials)) {
+            if (stage.kind == Stage::Kind::Field) stagedFields.insert(fieldNames.at(stage.index));
             program.pipeline.push_back(stage);
+        }
     } else {
         for (uint32_t i = 0; i < program.grammars.size(); ++i) program.pipeline.push_back({Stage::Kind::Grammar, i, FieldMode::Set, {}, std::nullopt});
     }
+    warnCarvesNothing(context, program, stagedFields);
     // The estimate and the warnings only make sense about a program that is otherwise correct.
     if (!context.diagnostics.hasErrors()) {
         stages::describePipeline(program);

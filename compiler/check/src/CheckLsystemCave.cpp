@@ -67,24 +67,17 @@ const CheckedLsystem* readLsystemKey(Context& context, const ast::Assignment& a,
 }
 
 // W0209: no centre or segment reaches the grid, so the feature leaves every voxel as it is.
-void warnCarvesNothing(Context& context, SourceLoc loc, const std::string& name, const lsystem::Skeleton& skeleton,
-                       const World& world) {
-    if (skeleton.segments.empty()) {
-        context.diagnostics.warning("W0209", loc,
-                                    fmt::format("lsystem '{}' draws no segment, so this carve changes nothing", name));
-        return;
-    }
+std::string carvesNothing(const std::string& name, const lsystem::Skeleton& skeleton, const World& world) {
+    if (skeleton.segments.empty()) return fmt::format("lsystem '{}' draws no segment, so this carve changes nothing", name);
     glm::dvec3 lo = skeleton.segments.front().from, hi = lo;
     for (const lsystem::Segment& s : skeleton.segments)
         for (glm::dvec3 p : {s.from, s.to}) lo = glm::min(lo, p), hi = glm::max(hi, p);
     const glm::ivec3 last = world.origin + world.size - 1;
-    context.diagnostics.warning(
-        "W0209", loc,
-        fmt::format("the skeleton of lsystem '{}' ([{}, {}, {}] to [{}, {}, {}]) is too far from the grid "
-                    "([{}, {}, {}] to [{}, {}, {}]) for this carve to reach it; move its 'start'",
-                    name, formatNumber(lo.x), formatNumber(lo.y), formatNumber(lo.z), formatNumber(hi.x),
-                    formatNumber(hi.y), formatNumber(hi.z), world.origin.x, world.origin.y, world.origin.z, last.x,
-                    last.y, last.z));
+    return fmt::format("the skeleton of lsystem '{}' ([{}, {}, {}] to [{}, {}, {}]) is too far from the grid "
+                       "([{}, {}, {}] to [{}, {}, {}]) for this carve to reach it; move its 'start'",
+                       name, formatNumber(lo.x), formatNumber(lo.y), formatNumber(lo.z), formatNumber(hi.x),
+                       formatNumber(hi.y), formatNumber(hi.z), world.origin.x, world.origin.y, world.origin.z, last.x,
+                       last.y, last.z);
 }
 
 } // namespace
@@ -149,7 +142,7 @@ std::optional<CheckedLsystemCave> checkLsystemCave(Context& context, const ast::
         auto set = lsystem::carvePointSet(skeleton, params, world.seed, world.origin, world.size, limits);
         context.pointSetListEntries += set->bins.centreItems.size() + set->bins.segmentItems.size();
         if (set->bins.centreItems.empty() && set->bins.segmentItems.empty())
-            warnCarvesNothing(context, lsystemKey->value.loc, net->name, skeleton, world);
+            context.carveWarnings.push_back({decl.name, lsystemKey->value.loc, carvesNothing(net->name, skeleton, world)});
         // A stamp's turtle starts at its frame's origin: the network moved back by its start.
         out.stampField = lsystem::carveField(movedPointSet(*set, -definition.params.start), params, world.seed,
                                              lsystem::CarveFrame::Stamp);

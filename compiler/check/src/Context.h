@@ -31,6 +31,14 @@ struct Context {
     std::optional<uint32_t> seed{}; // CheckOptions::seed
     std::optional<std::pair<glm::ivec3, glm::ivec3>> region{}; // CheckOptions::region
     std::function<std::optional<std::string>(const std::string&)> readRuleFile{}; // CheckOptions::readRuleFile
+    // W0209 of an lsystem_cave whose carve reaches none of the grid: given once the pipeline is
+    // known, and not for a feature only stamps use (a stamp carves around its anchor instead).
+    struct CarveWarning {
+        std::string feature;
+        SourceLoc loc;
+        std::string message;
+    };
+    std::vector<CarveWarning> carveWarnings{};
 };
 
 } // namespace voxc::check
