@@ -169,14 +169,17 @@ std::string rangeTest(const IrSweep& sweep, const IrRule& rule) {
 std::string rowName(glm::ivec3 offset) { return fmt::format("row_{}_{}", offset.y, offset.z); }
 
 // A rule's occupancy pattern over the anchors of one anchor row, as a uint expression (a bit
-// per anchor x), or "" when the level decides none of its cells.
-std::string patternTest(const IrSweep& sweep, const IrRule& rule, const OccupancyLevel& level) {
+// per anchor x), or "" when the level decides none of its cells; adds the window rows (z, y) it
+// reads to `rows`.
+std::string patternTest(const IrSweep& sweep, const IrRule& rule, const OccupancyLevel& level,
+                        std::set<std::pair<int, int>>& rows) {
     std::vector<std::string> terms;
     for (uint32_t c = 0; c < sweep.cells.size(); ++c) {
         const glm::ivec3 o = sweep.cells[c].offset;
         const LevelSide side = levelSide(rule, c, o, level);
         if (side == LevelSide::Any) continue;
         terms.push_back(fmt::format("({}{} >> {})", side == LevelSide::Holds ? "" : "~", rowName(o), o.x));
+        rows.insert({o.z, o.y});
     }
     if (terms.empty()) return "";
     return fmt::format("anchorsX & {}", fmt::join(terms, " & "));
@@ -204,10 +207,11 @@ std::string mayMatch(const IrSweep& sweep, const std::optional<OccupancyLevel>& 
     s += "\n// A rule may match when each of its tested cells' value sets meets that cell's range.\n";
     s += "bool mayMatch = false;\n";
     std::vector<std::string> patterns(sweep.rules.size());
+    std::set<std::pair<int, int>> rows; // the window rows (z, y) the patterns read, from the anchor row
     for (uint32_t r = 0; r < sweep.rules.size(); ++r) {
         const IrRule& rule = sweep.rules[r];
         const std::string ranges = rangeTest(sweep, rule);
-        if (near && level) patterns[r] = patternTest(sweep, rule, *level);
+        if (near && level) patterns[r] = patternTest(sweep, rule, *level, rows);
         s += fmt::format("// {}: {}\n", r, rule.name);
         if (ranges.empty()) {
             s += testsMaterial(rule) ? "mayMatch = true; // material tests only, which tiles do not track\n"
@@ -221,14 +225,8 @@ std::string mayMatch(const IrSweep& sweep, const std::optional<OccupancyLevel>& 
             s += fmt::format("mayMatch = mayMatch || (ranges{} && !occupancyTracked());\n", r);
         }
     }
-    if (std::all_of(patterns.begin(), patterns.end(), [](const std::string& p) { return p.empty(); })) return s;
+    if (rows.empty()) return s; // no rule has a pattern
 
-    // The rows each pattern reads, relative to the anchor row.
-    std::set<std::pair<int, int>> rows;
-    for (uint32_t r = 0; r < sweep.rules.size(); ++r)
-        for (uint32_t c = 0; c < sweep.cells.size(); ++c)
-            if (!patterns[r].empty() && levelSide(sweep.rules[r], c, sweep.cells[c].offset, *level) != LevelSide::Any)
-                rows.insert({sweep.cells[c].offset.z, sweep.cells[c].offset.y});
     std::vector<std::string> candidates;
     for (uint32_t r = 0; r < sweep.rules.size(); ++r)
         if (!patterns[r].empty()) candidates.push_back(fmt::format("ranges{}", r));
