@@ -133,6 +133,13 @@ Rows rowsAt(int32_t y, int32_t w, int32_t h) {
     return {size_t(y) * width, size_t(std::max(y - 1, 0)) * width, size_t(std::min(y + 1, h - 1)) * width, y > 0, y < h - 1};
 }
 
+// The row kernels run columns 1 .. w - 2 in a vectorised loop and the edge columns 0 and w - 1
+// (one column when w = 1) through `cell(x)`, which handles a missing left or right neighbour.
+template <class Cell> void edgeColumns(int32_t w, Cell cell) {
+    cell(0);
+    if (w > 1) cell(w - 1);
+}
+
 // Rain (not in the drain), then surface = (base + S_h) + d for the flux.
 VOXC_ROW_KERNEL void rainAndSurfaceRows(ErosionGrid& g, const ErosionParams& p, const Drop& drop, bool rain, int32_t y0, int32_t y1) {
     const int32_t w = g.width();
@@ -208,10 +215,10 @@ VOXC_ROW_KERNEL void fluxRows(ErosionGrid& g, const ErosionParams& p, int32_t y0
 #pragma omp simd
         for (int32_t x = 1; x < w - 1; ++x)
             fluxCell(c, s[x], s[x - 1], s[x + 1], down[x], up[x], true, true, hasDown, hasUp, d[x], fl[x], fr[x], ft[x], fb[x]);
-        for (const int32_t x : {0, w - 1}) // the edges (once when w = 1): a missing neighbour gets no flux
-            if (x == 0 || w > 1)
-                fluxCell(c, s[x], s[std::max(x - 1, 0)], s[std::min(x + 1, w - 1)], down[x], up[x], x > 0, x < w - 1, hasDown,
-                         hasUp, d[x], fl[x], fr[x], ft[x], fb[x]);
+        edgeColumns(w, [&](int32_t x) { // a missing neighbour gets no flux
+            fluxCell(c, s[x], s[std::max(x - 1, 0)], s[std::min(x + 1, w - 1)], down[x], up[x], x > 0, x < w - 1, hasDown,
+                     hasUp, d[x], fl[x], fr[x], ft[x], fb[x]);
+        });
     }
 }
 
@@ -260,13 +267,12 @@ VOXC_ROW_KERNEL void waterRows(ErosionGrid& g, const ErosionParams& p, float kee
             waterCell(c, fr[x - 1], fl[x + 1], hasDown ? inTop : 0.0f, hasUp ? inBottom : 0.0f, fl[x], fr[x], ft[x], fb[x], d[x],
                       u[x], v[x]);
         }
-        for (const int32_t x : {0, w - 1}) // the edges, once when w = 1
-            if (x == 0 || w > 1) {
-                const float inRight = x > 0 ? fr[x - 1] : 0.0f, inLeft = x < w - 1 ? fl[x + 1] : 0.0f;
-                const float inTop = topBelow[x], inBottom = bottomAbove[x];
-                waterCell(c, inRight, inLeft, hasDown ? inTop : 0.0f, hasUp ? inBottom : 0.0f, fl[x], fr[x], ft[x], fb[x], d[x],
-                          u[x], v[x]);
-            }
+        edgeColumns(w, [&](int32_t x) {
+            const float inRight = x > 0 ? fr[x - 1] : 0.0f, inLeft = x < w - 1 ? fl[x + 1] : 0.0f;
+            const float inTop = topBelow[x], inBottom = bottomAbove[x];
+            waterCell(c, inRight, inLeft, hasDown ? inTop : 0.0f, hasUp ? inBottom : 0.0f, fl[x], fr[x], ft[x], fb[x], d[x], u[x],
+                      v[x]);
+        });
     }
     if (bed) bedRows(g, y0, y1);
 }
@@ -314,10 +320,10 @@ VOXC_ROW_KERNEL void erodeRows(ErosionGrid& g, const ErosionParams& p, int32_t y
 #pragma omp simd
         for (int32_t x = 1; x < w - 1; ++x)
             erodeCell(c, bed[x], bed[x - 1], bed[x + 1], down[x], up[x], u[x], v[x], capacity[x], sh[x], s[x], shNext[x], s1[x]);
-        for (const int32_t x : {0, w - 1}) // the edges, once when w = 1
-            if (x == 0 || w > 1)
-                erodeCell(c, bed[x], bed[std::max(x - 1, 0)], bed[std::min(x + 1, w - 1)], down[x], up[x], u[x], v[x],
-                          capacity[x], sh[x], s[x], shNext[x], s1[x]);
+        edgeColumns(w, [&](int32_t x) {
+            erodeCell(c, bed[x], bed[std::max(x - 1, 0)], bed[std::min(x + 1, w - 1)], down[x], up[x], u[x], v[x], capacity[x],
+                      sh[x], s[x], shNext[x], s1[x]);
+        });
     }
 }
 
