@@ -1,10 +1,13 @@
 #version 450
 // The offscreen renderer's fragment stage: ambient plus one directional light on the material's
 // linear colour, then the sRGB transfer curve, since the image is stored as plain 8-bit RGBA.
+// The ambient term is scaled by the vertex's ambient occlusion, the directional one by its sun
+// visibility (both 1 where the caller measured none).
 // A zero normal (a line) takes its colour unlit.
 
 layout(location = 0) in vec3 surfaceNormal;
 layout(location = 1) in vec3 surfaceColour;
+layout(location = 2) in vec2 surfaceLight;
 
 layout(push_constant) uniform Frame {
     mat4 viewProjection;
@@ -24,7 +27,7 @@ void main() {
     if (length2 > 0.0) {
         const vec3 n = surfaceNormal * inversesqrt(length2);
         const float ambient = frame.light.w;
-        lit *= ambient + (1.0 - ambient) * max(dot(n, frame.light.xyz), 0.0);
+        lit *= ambient * surfaceLight.x + (1.0 - ambient) * surfaceLight.y * max(dot(n, frame.light.xyz), 0.0);
     }
     lit = clamp(lit, 0.0, 1.0);
     pixel = vec4(encodeSrgb(lit.r), encodeSrgb(lit.g), encodeSrgb(lit.b), 1.0);

@@ -41,18 +41,31 @@ expect iso_size 0 "^320x200$" -- png_size "$work/iso.png"
 expect top 0 "wrote .*top.png \(64x48" -- "$voxc" render "$scene" -o "$work/top.png" --size 64x48 --camera top --device lavapipe
 expect top_again 0 "" -- "$voxc" render "$scene" -o "$work/top2.png" --size 64x48 --camera top --device lavapipe
 expect deterministic 0 "" -- cmp "$work/top.png" "$work/top2.png"
+expect plain_top 0 "" -- "$voxc" render "$scene" -o "$work/plain-top.png" --size 64x48 --camera top --device lavapipe --no-ao --no-shadows
 expect side 0 "" -- "$voxc" render "$scene" -o "$work/side.png" --size 64x48 --camera side --device lavapipe
 expect top_differs_from_side 1 "" -- cmp -s "$work/top.png" "$work/side.png"
 expect explicit_camera 0 "camera 150,90,150:48,20,48" -- \
     "$voxc" render "$scene" -o "$work/eye.png" --size 64x48 --camera 150,90,150:48,20,48 --device lavapipe
 expect mesh_run 0 "" -- "$voxc" run "$scene" -o "$work/scene.ply" --device lavapipe
 expect mesh_file 0 "wrote .*mesh.png" -- "$voxc" render "$work/scene.ply" -o "$work/mesh.png" --size 64x48 --device lavapipe
-expect program_same_size 0 "" -- "$voxc" render "$scene" -o "$work/program.png" --size 64x48 --device lavapipe
+# A mesh file has no voxels to measure light in: compared with the program drawn without it.
+expect program_same_size 0 "" -- "$voxc" render "$scene" -o "$work/program.png" --size 64x48 --device lavapipe --no-ao --no-shadows
 # The PLY's colours are its materials' as bytes: the two pictures differ by rounding at most.
 expect mesh_file_in_its_colours 0 "^max [0-2], " -- png_compare "$work/mesh.png" "$work/program.png"
 expect mesh_file_no_chunks 1 "--chunk-borders needs a .vox file" -- \
     "$voxc" render "$work/scene.ply" -o "$work/mesh2.png" --chunk-borders
 expect mesh_file_no_edits 1 "--edits needs a .vox file" -- \
     "$voxc" render "$work/scene.ply" --edits "$src/examples/scene.edits.json" -o "$work/edits.png"
+expect mesh_file_no_cut 1 "--cut needs a .vox file" -- "$voxc" render "$work/scene.ply" -o "$work/cut.png" --cut x>3
+expect_no_file mesh_file_no_cut_nothing_written "$work/cut.png"
+
+# Light measured in the voxels and cut-aways (tests/render/LightingTest.cpp checks what they show).
+expect bad_cut 1 "--cut x=4: not a plane or a box; expected x>N" -- \
+    "$voxc" render "$scene" -o "$work/cut.png" --cut x=4 --device lavapipe
+expect_no_file bad_cut_nothing_written "$work/cut.png"
+expect lit_differs_from_plain 1 "" -- cmp -s "$work/top.png" "$work/plain-top.png"
+expect cut_validated 0 "cut away [0-9]+ voxels \(z>40\)" -- \
+    "$voxc" render "$scene" -o "$work/cut.png" --size 64x48 --cut 'z>40' --device lavapipe --validate -v
+expect cut_differs 1 "" -- cmp -s "$work/cut.png" "$work/program.png"
 
 finish

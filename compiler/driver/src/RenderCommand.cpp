@@ -11,6 +11,8 @@
 #include "voxc/explore/Png.h"
 #include "voxc/mesh/Export.h"
 #include "voxc/mesh/MarchingCubes.h"
+#include "voxc/render/CutAway.h"
+#include "voxc/render/Lighting.h"
 #include "voxc/render/MeshRenderer.h"
 #include "voxc/stages/Pipeline.h"
 #include "voxc/vulkan/Executor.h"
@@ -35,18 +37,23 @@ struct RenderOptions {
     std::string camera = "iso";
     std::string size = "1280x720";
     std::string device = "auto";
+    std::string cut;
     float iso = 0.5f;
+    bool noOcclusion = false;
+    bool noShadows = false;
     bool wireframe = false;
     bool chunkBorders = false;
     bool validate = false;
     WorldOverrides overrides;
 };
 
-// What is drawn: the mesh, its materials, and the grid's chunks when it came from a program.
+// What is drawn: the mesh, its materials, and the grid's chunks and voxels when it came from a
+// program (the voxels light the mesh: voxc/render/Lighting.h).
 struct Scene {
     Mesh mesh;
     std::vector<Material> materials;
     std::optional<ChunkLayout> chunks;
+    std::optional<DenseGrid> voxels;
     rendering::Bounds worldBox; // the grid's voxel box, or the mesh's bounds for a mesh file
 };
 
@@ -60,12 +67,16 @@ Scene runProgram(VulkanContext& context, const RenderOptions& options) {
     const std::vector<Brush> edits =
         options.editsPath.empty() ? std::vector<Brush>{} : loadEdits(options.editsPath, program.materials);
     if (!edits.empty()) status() << describeEdits(edits.size(), applyEdits(result.grid, edits));
+    if (!options.cut.empty())
+        status() << fmt::format("cut away {} voxels ({})\n",
+                                 rendering::applyCutAway(result.grid, rendering::parseCutAway(options.cut)), options.cut);
     // The device's marching cubes and the host's give the same mesh bit for bit (`voxc run`); an
-    // edited grid is meshed on the host, as `voxc run --edits` does.
+    // edited or cut grid is meshed on the host, as `voxc run --edits` does.
     const MeshOptions meshOptions{.iso = options.iso};
-    Scene scene{context.hasShaderFloat64() && edits.empty() ? GpuMarchingCubes(executor).mesh(meshOptions)
-                                                            : meshMarchingCubes(result.grid, meshOptions),
-                program.materials, result.grid.layout(), {}};
+    const bool meshOnDevice = context.hasShaderFloat64() && edits.empty() && options.cut.empty();
+    Scene scene{meshOnDevice ? GpuMarchingCubes(executor).mesh(meshOptions) : meshMarchingCubes(result.grid, meshOptions),
+                program.materials, result.grid.layout(), {}, {}};
+    if (!options.noOcclusion || !options.noShadows) scene.voxels = result.grid.toDense();
     const ChunkLayout& layout = result.grid.layout();
     scene.worldBox = {glm::vec3(layout.gridOrigin), glm::vec3(layout.gridOrigin + layout.gridSize - 1)};
     return scene;
@@ -82,6 +93,8 @@ void renderFile(const RenderOptions& options) {
     const float aspect = float(size.width) / float(size.height);
     rendering::parseCamera(options.camera, {}, aspect); // the spelling, before the run
     if (meshFile && !options.editsPath.empty()) throw UserError("render: --edits needs a .vox file; a mesh file has no grid");
+    if (meshFile && !options.cut.empty()) throw UserError("render: --cut needs a .vox file; a mesh file has no grid");
+    if (!options.cut.empty()) rendering::parseCutAway(options.cut); // the spelling, before the run
     const RolePath inputs[] = {{"the input", options.file}, {"--edits", options.editsPath}};
     const RolePath outputs[] = {{"-o", options.output}};
     refuseClashingPaths(inputs, outputs);
@@ -110,8 +123,16 @@ void renderFile(const RenderOptions& options) {
     enclosed.max = glm::max(enclosed.max, frame.max);
     const rendering::Camera camera = rendering::parseCamera(options.camera, enclosed, aspect);
 
+    // A mesh file has no voxels to measure light in: it is drawn with plain shading.
+    std::optional<rendering::VertexLight> light;
+    if (scene.voxels)
+        light = rendering::lightVertices(scene.mesh, *scene.voxels, scene.chunks->gridOrigin,
+                                         {.ambientOcclusion = !options.noOcclusion,
+                                          .shadows = !options.noShadows,
+                                          .towardsLight = rendering::towardsLight(camera),
+                                          .iso = options.iso});
     MeshRenderer renderer(context, size);
-    renderer.setScene(scene.mesh, scene.materials, lines);
+    renderer.setScene(scene.mesh, scene.materials, lines, light ? &*light : nullptr);
     const rendering::Picture picture = renderer.draw(camera);
     explore::Image image(int(picture.width), int(picture.height), {});
     image.rgb = picture.rgb;
@@ -141,6 +162,11 @@ void addRenderCommand(CLI::App& app) {
     addEditsFlag(*command, options->editsPath);
     command->add_flag("--wireframe", options->wireframe, "Draw the mesh's edges over its faces");
     command->add_flag("--chunk-borders", options->chunkBorders, "Draw the boxes of the grid's chunks");
+    command->add_option("--cut", options->cut,
+                        "Remove rock before meshing so caves show: x>N, x<N (y, z likewise) or "
+                        "MINX,MINY,MINZ:MAXX,MAXY,MAXZ (world voxels, max excluded)");
+    command->add_flag("--no-ao", options->noOcclusion, "Plain ambient light, without occlusion measured in the voxels");
+    command->add_flag("--no-shadows", options->noShadows, "No shadows of the directional light");
     addDeviceFlag(*command, options->device);
     command->add_option("--iso", options->iso, "Surface level for meshing (default 0.5)");
     command->add_flag("--validate", options->validate, "Enable the Khronos validation layer; fail on any message");

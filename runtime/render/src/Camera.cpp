@@ -76,25 +76,43 @@ Camera parseCamera(std::string_view spec, const Bounds& bounds, float aspect) {
         throw UserError(fmt::format("--camera {}: expected {}", spec, kCameraForms));
     }
     // The nearest eye on this side of the box from which all eight corners are in the picture:
-    // a corner at offset o from the centre needs a distance of o.t + |o.right| / tan(half fov x)
-    // along t (and the same upwards), plus a margin.
-    const glm::vec3 centre = 0.5f * (bounds.min + bounds.max);
+    // a corner at offset o from the target needs a distance of o.t + |o.right| / tan(half fov x)
+    // along t (and the same upwards). Perspective draws the box off-centre around its centre, so
+    // the target then moves to the middle of the corners' extent in the picture and the distance
+    // is fitted again: the box fills the frame instead of leaving a margin on one side.
     const glm::vec3 right = glm::normalize(glm::cross(camera.up, towardsEye));
     const glm::vec3 up = glm::cross(towardsEye, right);
     const float tanHalfY = std::tan(glm::radians(camera.fovYDegrees) * 0.5f);
     const float tanHalfX = tanHalfY * aspect;
+    const auto corner = [&](int c) {
+        return glm::vec3{c & 1 ? bounds.max.x : bounds.min.x, c & 2 ? bounds.max.y : bounds.min.y,
+                         c & 4 ? bounds.max.z : bounds.min.z};
+    };
+    glm::vec3 target = 0.5f * (bounds.min + bounds.max);
     float distance = 1.0f;
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p{corner & 1 ? bounds.max.x : bounds.min.x, corner & 2 ? bounds.max.y : bounds.min.y,
-                          corner & 4 ? bounds.max.z : bounds.min.z};
-        const glm::vec3 o = p - centre;
-        const float along = glm::dot(o, towardsEye);
-        distance = std::max({distance, along + std::abs(glm::dot(o, right)) / tanHalfX,
-                             along + std::abs(glm::dot(o, up)) / tanHalfY});
+    for (int fit = 0; fit < 3; ++fit) {
+        distance = 1.0f;
+        for (int c = 0; c < 8; ++c) {
+            const glm::vec3 o = corner(c) - target;
+            const float along = glm::dot(o, towardsEye);
+            distance = std::max({distance, along + std::abs(glm::dot(o, right)) / tanHalfX,
+                                 along + std::abs(glm::dot(o, up)) / tanHalfY});
+        }
+        if (fit == 2) break;
+        glm::vec2 lo(INFINITY), hi(-INFINITY); // the corners in the picture, in units of its half size
+        for (int c = 0; c < 8; ++c) {
+            const glm::vec3 o = corner(c) - target;
+            const float depth = distance - glm::dot(o, towardsEye);
+            const glm::vec2 at{glm::dot(o, right) / (depth * tanHalfX), glm::dot(o, up) / (depth * tanHalfY)};
+            lo = glm::min(lo, at);
+            hi = glm::max(hi, at);
+        }
+        const glm::vec2 middle = 0.5f * (lo + hi);
+        target += distance * (middle.x * tanHalfX * right + middle.y * tanHalfY * up);
     }
-    distance *= 1.08f;
-    camera.target = centre;
-    camera.eye = centre + towardsEye * distance;
+    distance *= 1.08f; // a margin
+    camera.target = target;
+    camera.eye = target + towardsEye * distance;
     enclose(camera, bounds);
     return camera;
 }

@@ -20,6 +20,12 @@ float encodeSrgb(float linear) {
     return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
 }
 
+glm::vec3 towardsLight(const Camera& camera) {
+    const glm::vec3 towardsEye = glm::normalize(camera.eye - camera.target);
+    const glm::vec3 right = glm::normalize(glm::cross(camera.up, towardsEye));
+    return glm::normalize(glm::vec3(0.0f, 1.0f, 0.0f) + 0.5f * towardsEye - 0.6f * right);
+}
+
 void LineSet::add(glm::vec3 from, glm::vec3 to, glm::vec3 colour) {
     points.push_back(from);
     points.push_back(to);
@@ -86,6 +92,7 @@ struct Vertex {
     glm::vec3 position;
     glm::vec3 normal; // zero for lines: drawn unlit
     glm::vec3 colour;
+    glm::vec2 light{1.0f}; // ambient occlusion and sun visibility (rendering::VertexLight)
 };
 
 struct FramePush {
@@ -300,10 +307,11 @@ VkPipeline MeshRenderer::Impl::createPipeline(VkShaderModule vertex, VkShaderMod
     stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
     stages[1].module = fragment;
     const VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
-    const std::array<VkVertexInputAttributeDescription, 3> attributes{{
+    const std::array<VkVertexInputAttributeDescription, 4> attributes{{
         {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
         {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
         {2, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, colour)},
+        {3, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, light)},
     }};
     VkPipelineVertexInputStateCreateInfo input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     input.vertexBindingDescriptionCount = 1;
@@ -415,12 +423,8 @@ void MeshRenderer::Impl::record(const rendering::Camera& camera) {
     api.vkCmdBeginRenderPass(commands, &pass, VK_SUBPASS_CONTENTS_INLINE);
 
     const float aspect = float(size.width) / float(size.height);
-    // The light comes from above and over the viewer's left shoulder, so the faces the camera sees
-    // are lit, and faces turned right or down are shaded apart from those turned left or up.
-    const glm::vec3 towardsEye = glm::normalize(camera.eye - camera.target);
-    const glm::vec3 right = glm::normalize(glm::cross(camera.up, towardsEye));
-    const glm::vec3 light = glm::normalize(glm::vec3(0.0f, 1.0f, 0.0f) + 0.5f * towardsEye - 0.6f * right);
-    FramePush push{rendering::viewProjection(camera, aspect), glm::vec4(camera.eye, 0.0f), glm::vec4(light, 0.3f)};
+    FramePush push{rendering::viewProjection(camera, aspect), glm::vec4(camera.eye, 0.0f),
+                   glm::vec4(rendering::towardsLight(camera), 0.3f)};
     const VkShaderStageFlags pushStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     const VkDeviceSize offset = 0;
     if (faceIndexCount > 0) {
@@ -487,18 +491,21 @@ MeshRenderer::MeshRenderer(VulkanContext& context, rendering::ImageSize size)
 
 MeshRenderer::~MeshRenderer() = default;
 
-void MeshRenderer::setScene(const Mesh& mesh, std::span<const Material> materials, const rendering::LineSet& lines) {
+void MeshRenderer::setScene(const Mesh& mesh, std::span<const Material> materials, const rendering::LineSet& lines,
+                            const rendering::VertexLight* light) {
     Impl& s = *impl_;
     VOXC_ASSERT(lines.points.size() == lines.colours.size() && lines.points.size() % 2 == 0);
+    VOXC_ASSERT(!light || (light->ambient.size() == mesh.positions.size() && light->sun.size() == mesh.positions.size()));
     std::array<glm::vec3, 256> palette;
     palette.fill(kUnknownMaterial);
     for (const Material& material : materials) palette[material.id] = material.color;
     std::vector<Vertex> vertices(mesh.positions.size());
     for (size_t v = 0; v < vertices.size(); ++v)
         vertices[v] = {mesh.positions[v], mesh.normals[v],
-                       mesh.vertexMaterials.empty() ? kUnknownMaterial : palette[mesh.vertexMaterials[v]]};
+                       mesh.vertexMaterials.empty() ? kUnknownMaterial : palette[mesh.vertexMaterials[v]],
+                       light ? glm::vec2(light->ambient[v], light->sun[v]) : glm::vec2(1.0f)};
     std::vector<Vertex> lineVertices(lines.points.size());
-    for (size_t v = 0; v < lineVertices.size(); ++v) lineVertices[v] = {lines.points[v], glm::vec3(0.0f), lines.colours[v]};
+    for (size_t v = 0; v < lineVertices.size(); ++v) lineVertices[v] = {lines.points[v], glm::vec3(0.0f), lines.colours[v], glm::vec2(1.0f)};
     if (mesh.triangles.size() > size_t(UINT32_MAX) || lineVertices.size() > size_t(UINT32_MAX))
         throw UserError("render: the mesh is too large to draw in one call");
     s.ctx.api.vkDeviceWaitIdle(s.ctx.device); // the buffers may still be in use by a frame

@@ -1,13 +1,15 @@
 #pragma once
 // Offscreen pictures of a mesh with a Vulkan graphics pipeline on the generation device
 // (VulkanContext; lavapipe works): no window, no swapchain. Faces take their material's colour,
-// lit by ambient plus one directional light (shaders render_mesh_vert/frag.glsl); lines
+// lit by ambient plus one directional light (shaders render_mesh_vert/frag.glsl), each scaled per
+// vertex by the light that reaches it when the caller measured it (voxc/render/Lighting.h); lines
 // (wireframe, chunk borders) are drawn unlit over them. The same scene, camera and size give the
 // same pixels on the same device and driver.
 #include "voxc/grid/Grid.h"
 #include "voxc/mesh/Mesh.h"
 #include "voxc/program/Program.h"
 #include "voxc/render/Camera.h"
+#include "voxc/render/Lighting.h"
 #include "voxc/vulkan/Context.h"
 
 #include <memory>
@@ -44,6 +46,11 @@ inline constexpr glm::vec3 kBackground{0.55f, 0.62f, 0.70f}; // linear RGB
 // picture is stored encoded, and the background is cleared to its encoded value.
 float encodeSrgb(float linear);
 
+// The unit direction towards the directional light for a camera: from above and over the
+// viewer's left shoulder, so the faces the camera sees are lit, and faces turned right or down are
+// shaded apart from those turned left or up.
+glm::vec3 towardsLight(const Camera& camera);
+
 } // namespace voxc::rendering
 
 namespace voxc {
@@ -59,8 +66,10 @@ public:
     MeshRenderer& operator=(const MeshRenderer&) = delete;
 
     // Uploads the faces (vertex colours from `materials`: id 0 and unknown ids neutral grey) and
-    // the lines drawn over them; replaces the previous scene.
-    void setScene(const Mesh& mesh, std::span<const Material> materials, const rendering::LineSet& lines = {});
+    // the lines drawn over them; replaces the previous scene. `light`, when given, scales each
+    // vertex's ambient and directional terms (measured for the camera draw() is given).
+    void setScene(const Mesh& mesh, std::span<const Material> materials, const rendering::LineSet& lines = {},
+                  const rendering::VertexLight* light = nullptr);
     // Draws the scene, waits, and reads the picture back.
     rendering::Picture draw(const rendering::Camera& camera);
 
