@@ -107,47 +107,39 @@ void peronaMalikSweeps(const Constraints& cs, NormalField& n, float k, uint32_t 
 MaterialField propagateMaterial(const Constraints& cs) {
     const Box& b = cs.box;
     MaterialField out{std::vector<uint16_t>(b.cellCount(), 0), Field3(b), std::vector<uint8_t>(b.cellCount(), 0), 0};
-    std::vector<size_t> front;
+    std::vector<int32_t> layer(b.cellCount(), -1);
+    std::vector<uint32_t> front;
     for (size_t i = 0; i < out.assigned.size(); ++i)
         if (cs.flags[i] & kInParams) {
             out.assigned[i] = 1, out.material[i] = cs.material[i], out.confidence.values[i] = 1.0f;
-            front.push_back(i);
+            layer[i] = 0;
+            front.push_back(uint32_t(i));
         }
-    std::vector<int32_t> stamp(b.cellCount(), -1);
-    for (int32_t layer = 1;; ++layer) {
-        const std::vector<size_t> cells = nextLayer(b, front, out.assigned, stamp, layer);
-        if (cells.empty()) break;
-        out.layers = layer;
-        std::vector<std::pair<uint16_t, float>> votes(cells.size());
-        for (size_t c = 0; c < cells.size(); ++c) {
-            const glm::ivec3 p = coordinates(b, cells[c]);
-            uint16_t ids[6];
-            float weights[6];
-            int32_t distinct = 0;
-            float total = 0.0f;
-            for (const auto& d : kNeighbourOffsets) {
-                if (!b.contains(p.x + d[0], p.y + d[1], p.z + d[2])) continue;
-                const size_t j = b.index(p.x + d[0], p.y + d[1], p.z + d[2]);
-                if (!out.assigned[j]) continue;
-                const float conf = out.confidence.values[j];
-                total += conf;
-                int32_t slot = 0;
-                while (slot < distinct && ids[slot] != out.material[j]) ++slot;
-                if (slot == distinct) ids[distinct] = out.material[j], weights[distinct++] = 0.0f;
-                weights[slot] += conf;
-            }
-            int32_t best = 0;
-            for (int32_t s = 1; s < distinct; ++s)
-                if (weights[s] > weights[best] || (weights[s] == weights[best] && ids[s] < ids[best])) best = s;
-            votes[c] = {ids[best], weights[best] / total};
+    const size_t row = size_t(b.size.x), slice = row * size_t(b.size.y);
+    out.layers = growLayers(b, std::move(front), layer, [&](size_t p, glm::ivec3 q, int32_t l) {
+        const bool inside[6] = {q.x > 0, q.x + 1 < b.size.x, q.y > 0, q.y + 1 < b.size.y, q.z > 0, q.z + 1 < b.size.z};
+        const size_t neighbour[6] = {p - 1, p + 1, p - row, p + row, p - slice, p + slice};
+        uint16_t ids[6];
+        float weights[6];
+        int32_t distinct = 0;
+        float total = 0.0f;
+        for (int32_t n = 0; n < 6; ++n) {
+            if (!inside[n] || !setBefore(layer, neighbour[n], l)) continue;
+            const size_t j = neighbour[n];
+            const float conf = out.confidence.values[j];
+            total += conf;
+            int32_t slot = 0;
+            while (slot < distinct && ids[slot] != out.material[j]) ++slot;
+            if (slot == distinct) ids[distinct] = out.material[j], weights[distinct++] = 0.0f;
+            weights[slot] += conf;
         }
-        for (size_t c = 0; c < cells.size(); ++c) {
-            out.assigned[cells[c]] = 1;
-            out.material[cells[c]] = votes[c].first;
-            out.confidence.values[cells[c]] = votes[c].second;
-        }
-        front = cells;
-    }
+        int32_t best = 0;
+        for (int32_t s = 1; s < distinct; ++s)
+            if (weights[s] > weights[best] || (weights[s] == weights[best] && ids[s] < ids[best])) best = s;
+        out.assigned[p] = 1;
+        out.material[p] = ids[best];
+        out.confidence.values[p] = weights[best] / total;
+    });
     return out;
 }
 

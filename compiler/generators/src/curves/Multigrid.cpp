@@ -3,7 +3,9 @@
 #include "Parallel.h"
 
 #include <algorithm>
+#include <barrier>
 #include <cmath>
+#include <thread>
 
 namespace voxc::curves {
 namespace {
@@ -20,6 +22,9 @@ struct Level {
     glm::vec3 weight{1.0f};
     std::vector<uint8_t> fixed;
     std::vector<std::vector<float>> u, f; // per component: unknowns (or corrections) and right-hand side
+    // Per row parity p: 1 where a half sweep of a row with (y + z + colour) & 1 == p leaves the
+    // cell alone (fixed, or of the other colour), so the sweep's store is a branch-free select.
+    std::vector<uint8_t> keep[2];
 };
 
 // Visits the in-box face neighbours in the order -x, +x, -y, +y, -z, +z as (index, axis).
@@ -43,6 +48,16 @@ void forNeighbours(const Box& b, int32_t x, int32_t y, int32_t z, Visit&& visit)
 
 // Slices of at least this many cells are split between two threads (order-free passes only).
 constexpr int32_t kMinSlicesForThreads = 16;
+// Levels of at least this many cells smooth on two threads (smooth: half the rows of each slice).
+constexpr uint64_t kMinCellsForThreadedSmoothing = 1u << 15;
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+// An AVX2 clone where the CPU has it: elementwise IEEE +, x, / give the same bits at every width,
+// and the build has -ffp-contract=off (no FMA changes a rounding).
+#define VOXC_ROW_KERNEL __attribute__((target_clones("avx2", "default")))
+#else
+#define VOXC_ROW_KERNEL
+#endif
 
 // A row's own values and its four y/z neighbour rows (`absent` where outside the box).
 struct RowNeighbours {
@@ -57,6 +72,7 @@ RowNeighbours rowNeighbours(const Box& b, const float* u, int32_t y, int32_t z, 
 // out[x] = (sum_j w_j u_j - rhs[x]) / weights for x in [1, n - 1), the sum from 0 in neighbour
 // order. Plain arguments and restrict pointers let the compiler vectorise it (elementwise only:
 // no operation is reordered).
+VOXC_ROW_KERNEL
 void relaxRow(const float* __restrict centre, const float* __restrict ym, const float* __restrict yp,
               const float* __restrict zm, const float* __restrict zp, const float* __restrict rhs, float wx, float wy,
               float wz, float weights, int32_t n, float* __restrict out) {
@@ -72,53 +88,103 @@ void relaxRow(const float* __restrict centre, const float* __restrict ym, const 
     }
 }
 
-// Red-black Gauss-Seidel half sweep: u_i = (sum_j w_j u_j - f_i) / sum_j w_j, both sums from 0
-// in neighbour order (on the finest level w = 1: the plain neighbour sum over the count). A
-// colour's cells read only the other colour, so slices may run in any order.
-void smoothColour(Level& level, int32_t colour, bool zeroRhs) {
-    const Box& b = level.box;
-    const int32_t n = b.size.x;
-    const float wx = level.weight.x, wy = level.weight.y, wz = level.weight.z;
-    const std::vector<float> zeros(size_t(n), 0.0f);
-    for (size_t c = 0; c < level.u.size(); ++c) {
-        float* u = level.u[c].data();
-        const float* f = zeroRhs ? zeros.data() : level.f[c].data();
-        forTwoSlabs(b.size.z, kMinSlicesForThreads, [&](int32_t z0, int32_t z1) {
-            std::vector<float> relaxed(size_t(n), 0.0f);
-            for (int32_t z = z0; z < z1; ++z)
-                for (int32_t y = 0; y < b.size.y; ++y) {
-                    const size_t i0 = b.index(0, y, z);
-                    const float* rhs = zeroRhs ? zeros.data() : f + i0;
-                    const RowNeighbours r = rowNeighbours(b, u, y, z, zeros.data());
-                    // Weights of the present neighbours, in neighbour order.
-                    float weights = 0.0f;
-                    weights += wx, weights += wx;
-                    if (y > 0) weights += wy;
-                    if (y + 1 < b.size.y) weights += wy;
-                    if (z > 0) weights += wz;
-                    if (z + 1 < b.size.z) weights += wz;
-                    relaxRow(u + i0, r.ym, r.yp, r.zm, r.zp, rhs, wx, wy, wz, weights, n, relaxed.data());
-                    const uint8_t* fixed = level.fixed.data() + i0;
-                    for (int32_t x = (y + z + colour) & 1; x < n; x += 2) {
-                        if (fixed[x]) continue;
-                        if (x > 0 && x + 1 < n) {
-                            u[i0 + size_t(x)] = relaxed[size_t(x)];
-                            continue;
-                        }
-                        float sum = 0.0f, total = 0.0f;
-                        forNeighbours(b, x, y, z, [&](size_t j, int32_t axis) {
-                            sum += level.weight[axis] * u[j];
-                            total += level.weight[axis];
-                        });
-                        if (total > 0.0f) u[i0 + size_t(x)] = (sum - rhs[x]) / total;
-                    }
-                }
-        });
+// u[x] = relaxed[x] for x in [1, n - 1) where keep[x] is 0; a select, so it vectorises.
+VOXC_ROW_KERNEL
+void storeRelaxed(const float* __restrict relaxed, const uint8_t* __restrict keep, int32_t n, float* __restrict u) {
+    for (int32_t x = 1; x + 1 < n; ++x) u[x] = keep[x] ? u[x] : relaxed[x];
+}
+
+void computeKeepMasks(Level& level) {
+    const int32_t n = level.box.size.x;
+    for (int32_t p = 0; p < 2; ++p) {
+        level.keep[p].resize(level.fixed.size());
+        for (size_t r = 0; r < level.fixed.size(); r += size_t(n))
+            for (int32_t x = 0; x < n; ++x)
+                level.keep[p][r + size_t(x)] = level.fixed[r + size_t(x)] || ((x + p) & 1) ? 1 : 0;
     }
 }
 
+// Red-black Gauss-Seidel half sweep of colour `colour` on row (y, z) of component c:
+// u_i = (sum_j w_j u_j - f_i) / sum_j w_j, both sums from 0 in neighbour order (on the finest
+// level w = 1: the plain neighbour sum over the count). A colour's cells read only the other
+// colour, so rows and slices may run in any order. `relaxed` is a scratch row of n floats.
+// `exactWrites`: store only the colour's cells (a row another thread reads during the sweep);
+// otherwise the select rewrites the other colour's cells with their own values.
+void relaxColourRow(Level& level, size_t c, int32_t colour, bool zeroRhs, int32_t y, int32_t z, bool exactWrites,
+                    const float* zeros, float* relaxed) {
+    const Box& b = level.box;
+    const int32_t n = b.size.x;
+    const float wx = level.weight.x, wy = level.weight.y, wz = level.weight.z;
+    float* u = level.u[c].data();
+    const size_t i0 = b.index(0, y, z);
+    const float* rhs = zeroRhs ? zeros : level.f[c].data() + i0;
+    const RowNeighbours r = rowNeighbours(b, u, y, z, zeros);
+    // Weights of the present neighbours, in neighbour order.
+    float weights = 0.0f;
+    weights += wx, weights += wx;
+    if (y > 0) weights += wy;
+    if (y + 1 < b.size.y) weights += wy;
+    if (z > 0) weights += wz;
+    if (z + 1 < b.size.z) weights += wz;
+    relaxRow(u + i0, r.ym, r.yp, r.zm, r.zp, rhs, wx, wy, wz, weights, n, relaxed);
+    const int32_t parity = (y + z + colour) & 1;
+    const uint8_t* fixed = level.fixed.data() + i0;
+    if (exactWrites) {
+        for (int32_t x = 2 - parity; x + 1 < n; x += 2)
+            if (!fixed[x]) u[i0 + size_t(x)] = relaxed[x];
+    } else {
+        storeRelaxed(relaxed, level.keep[parity].data() + i0, n, u + i0);
+    }
+    // The end cells, on the per-cell path (a missing x neighbour).
+    auto endCell = [&](int32_t x) {
+        if (((x + parity) & 1) || fixed[x]) return;
+        float sum = 0.0f, total = 0.0f;
+        forNeighbours(b, x, y, z, [&](size_t j, int32_t axis) {
+            sum += level.weight[axis] * u[j];
+            total += level.weight[axis];
+        });
+        if (total > 0.0f) u[i0 + size_t(x)] = (sum - rhs[x]) / total;
+    };
+    endCell(0);
+    if (n > 1) endCell(n - 1);
+}
+
+// `sweeps` red-black sweeps of every component in one pass over the z slices (a wavefront):
+// step t runs half sweep h (colour h & 1) on slice t - h, h = 0 .. 2 sweeps - 1 in order. Half
+// sweep h of slice z reads the other colour of slices z - 1 .. z + 1 as half sweep h - 1 left
+// them: slice z + 1 got it earlier in the same step, slice z in the step before, slice z - 1 two
+// steps before, and half sweep h + 1 reaches none of them before h is done. So each cell takes
+// the value the plain sweep-by-sweep loop gives it, bit for bit, while a sweep's slices are still
+// in cache for the next. On two threads each takes half the rows of every slice: a cell's z
+// neighbours lie in its own rows, and the other colour's cells of its slice (rows y +- 1) do not
+// change during the step, so one barrier per step keeps the order.
 void smooth(Level& level, int32_t sweeps, bool zeroRhs) {
-    for (int32_t s = 0; s < sweeps; ++s) smoothColour(level, 0, zeroRhs), smoothColour(level, 1, zeroRhs);
+    if (sweeps <= 0) return;
+    const Box& b = level.box;
+    const std::vector<float> zeros(size_t(b.size.x), 0.0f);
+    const int32_t halfSweeps = 2 * sweeps, steps = b.size.z + halfSweeps - 1;
+    // Nothing below allocates or throws: the scratch rows exist before the threads start.
+    std::vector<float> scratch(2 * size_t(b.size.x), 0.0f);
+    const bool threaded = b.cellCount() >= kMinCellsForThreadedSmoothing && b.size.y >= 2;
+    auto rows = [&](int32_t y0, int32_t y1, float* relaxed, auto&& sync) {
+        for (int32_t t = 0; t < steps; ++t) {
+            for (int32_t h = 0; h < halfSweeps; ++h) {
+                const int32_t z = t - h;
+                if (z < 0 || z >= b.size.z) continue;
+                for (size_t c = 0; c < level.u.size(); ++c)
+                    for (int32_t y = y0; y < y1; ++y)
+                        relaxColourRow(level, c, h & 1, zeroRhs, y, z, threaded && (y == y0 || y + 1 == y1), zeros.data(),
+                                       relaxed);
+            }
+            sync();
+        }
+    };
+    if (!threaded) return rows(0, b.size.y, scratch.data(), [] {});
+    const int32_t mid = b.size.y / 2;
+    std::barrier<> step(2);
+    std::thread other([&] { rows(0, mid, scratch.data() + b.size.x, [&] { step.arrive_and_wait(); }); });
+    rows(mid, b.size.y, scratch.data(), [&] { step.arrive_and_wait(); });
+    other.join();
 }
 
 // r = f - sum_j w_j (u_j - u_i) on free cells (the caller skips fixed ones).
@@ -353,7 +419,7 @@ std::vector<std::vector<uint8_t>> multigridMasks(const std::vector<MultigridLeve
 
 float maxResidual(const std::vector<uint8_t>& fixed, const Field3& u) {
     if (u.values.size() != fixed.size()) throw InternalError("curves: a residual with a mask of another size");
-    Level level{u.box, glm::vec3(1.0f), fixed, {u.values}, {}};
+    Level level{u.box, glm::vec3(1.0f), fixed, {u.values}, {}, {}};
     return maxResidualOf(level);
 }
 
@@ -368,7 +434,8 @@ SolveReport solveLaplace(const std::string& name, const std::vector<uint8_t>& fi
     std::vector<std::vector<uint8_t>> masks = multigridMasks(shapes, fixed);
     std::vector<Level> levels;
     for (size_t l = 0; l < shapes.size(); ++l)
-        levels.push_back(Level{Box{glm::ivec3(0), shapes[l].size}, shapes[l].weight, std::move(masks[l]), {}, {}});
+        levels.push_back(Level{Box{glm::ivec3(0), shapes[l].size}, shapes[l].weight, std::move(masks[l]), {}, {}, {}});
+    for (Level& level : levels) computeKeepMasks(level);
 
     // Full multigrid start: Dirichlet values restricted to every level (mean of the fixed
     // children), free cells 0; solve the coarsest, then prolongate and V-cycle level by level.
@@ -377,7 +444,7 @@ SolveReport solveLaplace(const std::string& name, const std::vector<uint8_t>& fi
         top.u.push_back(component->values);
         for (size_t i = 0; i < top.fixed.size(); ++i)
             if (!top.fixed[i]) top.u.back()[i] = 0.0f;
-        top.f.emplace_back(box.cellCount(), 0.0f);
+        top.f.emplace_back(); // the finest right-hand side is 0 and never read (zeroRhs)
         for (size_t l = 1; l < levels.size(); ++l) {
             const Level& fine = levels[l - 1];
             std::vector<float> values;

@@ -16,48 +16,35 @@ SurfaceField propagateSurface(const Constraints& cs, const Field3& nx, const Fie
                               PropagateRule rule) {
     const Box& b = cs.box;
     SurfaceField out{Field3(b, std::numeric_limits<float>::infinity()), std::vector<int32_t>(b.cellCount(), -1), 0};
-    std::vector<uint8_t> set(b.cellCount(), 0);
-    std::vector<size_t> front;
-    for (size_t i = 0; i < set.size(); ++i)
+    std::vector<uint32_t> front;
+    for (size_t i = 0; i < out.layer.size(); ++i)
         if (cs.flags[i] & kInSurface) {
-            set[i] = 1, out.layer[i] = 0, out.distance.values[i] = cs.surface.values[i];
-            front.push_back(i);
+            out.layer[i] = 0, out.distance.values[i] = cs.surface.values[i];
+            front.push_back(uint32_t(i));
         }
     const Field3* normal[3] = {&nx, &ny, &nz};
-    std::vector<int32_t> stamp(b.cellCount(), -1);
-    for (int32_t layer = 1;; ++layer) {
-        const std::vector<size_t> cells = nextLayer(b, front, set, stamp, layer);
-        if (cells.empty()) break;
-        out.layers = layer;
-        std::vector<float> values(cells.size());
-        for (size_t c = 0; c < cells.size(); ++c) {
-            const size_t p = cells[c];
-            const glm::ivec3 q = coordinates(b, p);
-            float best = 0.0f;
-            bool found = false;
-            for (const auto& d : kNeighbourOffsets) {
-                if (!b.contains(q.x + d[0], q.y + d[1], q.z + d[2])) continue;
-                const size_t x = b.index(q.x + d[0], q.y + d[1], q.z + d[2]);
-                if (!set[x]) continue;
-                const int32_t axis = d[0] != 0 ? 0 : d[1] != 0 ? 1 : 2;
-                const int32_t sign = -(d[0] + d[1] + d[2]); // p - x along the axis
-                const float candidate = propagationCandidate(out.distance.values[x], normal[axis]->values[p],
-                                                             normal[axis]->values[x], sign);
-                const bool better = rule == PropagateRule::SignedMin
-                                        ? candidate < best
-                                        : std::abs(candidate) < std::abs(best) ||
-                                              (std::abs(candidate) == std::abs(best) && candidate < best);
-                if (!found || better) best = candidate, found = true;
-            }
-            values[c] = best;
+    const size_t row = size_t(b.size.x), slice = row * size_t(b.size.y);
+    out.layers = growLayers(b, std::move(front), out.layer, [&](size_t p, glm::ivec3 q, int32_t layer) {
+        // Candidates from the neighbours set in earlier layers, in neighbour order.
+        const bool inside[6] = {q.x > 0, q.x + 1 < b.size.x, q.y > 0, q.y + 1 < b.size.y, q.z > 0, q.z + 1 < b.size.z};
+        const size_t neighbour[6] = {p - 1, p + 1, p - row, p + row, p - slice, p + slice};
+        float best = 0.0f;
+        bool found = false;
+        for (int32_t n = 0; n < 6; ++n) {
+            if (!inside[n] || !setBefore(out.layer, neighbour[n], layer)) continue;
+            const size_t x = neighbour[n];
+            const int32_t axis = n / 2;
+            const int32_t sign = (n & 1) ? -1 : 1; // p - x along the axis
+            const float candidate = propagationCandidate(out.distance.values[x], normal[axis]->values[p],
+                                                         normal[axis]->values[x], sign);
+            const bool better = rule == PropagateRule::SignedMin
+                                    ? candidate < best
+                                    : std::abs(candidate) < std::abs(best) ||
+                                          (std::abs(candidate) == std::abs(best) && candidate < best);
+            if (!found || better) best = candidate, found = true;
         }
-        for (size_t c = 0; c < cells.size(); ++c) {
-            set[cells[c]] = 1;
-            out.layer[cells[c]] = layer;
-            out.distance.values[cells[c]] = values[c];
-        }
-        front = cells;
-    }
+        out.distance.values[p] = best;
+    });
     return out;
 }
 
