@@ -40,3 +40,10 @@ done
 for example in scene valley; do
     "$voxc" render "$root/examples/$example.vox" -o "$root/docs/images/$example.png" --size 640x400 --device lavapipe
 done
+# docs/tutorial.md: each step's file as its command draws it.
+for step in 01_ground 02_weathering 03_arch 05_cliff 06_valley; do
+    "$voxc" render "$root/examples/tutorial/$step.vox" -o "$root/docs/images/tutorial-${step%%_*}.png" --size 640x360 \
+        --device lavapipe
+done
+"$voxc" render "$root/examples/tutorial/04_cave.vox" -o "$root/docs/images/tutorial-04.png" --size 640x360 \
+    --cut 'z>104' --device lavapipe
