@@ -29,7 +29,7 @@ TEST(CurvesSolve, MultigridConvergesHalvingTheResidualEachCycle) {
     for (const SolveReport& s : r.solves) {
         EXPECT_EQ(s.levels, 5); // 64x32x64, 32x16x32, 16x8x16, 8x4x8, 4x2x4
         EXPECT_LE(s.cycles(), Limits{}.maxCycles);
-        const float tolerance = s.name == "parameters" ? 6e-5f : 1e-5f; // 1e-5 * max amplitude 6
+        const float tolerance = s.name == "parameters" ? 6e-4f : 1e-4f; // 1e-4 * max amplitude 6
         EXPECT_LE(s.residuals.back(), tolerance) << s.name;
         // Full multigrid's stages, coarsest first, end on the finest level's start residual.
         ASSERT_EQ(s.fullMultigrid.size(), 5u) << s.name;
@@ -192,6 +192,62 @@ TEST(CurvesSolve, FlatBoxCoarsensItsLongAxes) {
     EXPECT_EQ(report.levels, 6); // 128x6x96, 64x3x48, 32x2x24, 16x1x12, 8x1x6, 4x1x3
     EXPECT_LE(report.residuals.back(), 8e-5f);
     EXPECT_NEAR(amplitude.at(64, 3, 48), 4.0f, 0.2f); // half-way along the linear ramp
+}
+
+// The convergence factor per V-cycle (max residual after a cycle over the one before) on the
+// spec's two geometries with values that vary along the constraints, so the solve has work to do:
+// a tilted seed plane through a 64x32x64 box (A4.5's plane, voxelised) and the cave roof's two
+// seed planes (A4.6) across a 64x17x64 box. Measured: 0.25-0.39 on the plane and 0.14-0.23 on
+// the cave roof (V(3,3), Dirichlet coarse cells wherever a child is fixed), not the 0.1 a
+// textbook Poisson multigrid reaches: a coarse cell with one fixed child holds its whole
+// correction at 0, so the coarse correction is weak near the constraints (docs/curves.md).
+std::vector<float> cycleFactors(const std::vector<uint8_t>& fixed, Field3& values) {
+    // Down to 1e-5, ten times float32's rounding floor for values of order 1 (past it, rounding
+    // decides the residual and the ratio says nothing about the schedule).
+    const SolveReport report = solveLaplace("values", fixed, {&values}, 1e-5f, Limits{});
+    std::vector<float> factors;
+    for (size_t c = 1; c < report.residuals.size(); ++c) factors.push_back(report.residuals[c] / report.residuals[c - 1]);
+    return factors;
+}
+
+// Dirichlet values that vary smoothly along the constrained cells (between -1 and 1).
+Field3 varyingValues(const Box& box, const std::vector<uint8_t>& fixed) {
+    Field3 values(box);
+    for (int32_t z = 0; z < box.size.z; ++z)
+        for (int32_t y = 0; y < box.size.y; ++y)
+            for (int32_t x = 0; x < box.size.x; ++x)
+                if (fixed[box.index(x, y, z)])
+                    values.at(x, y, z) = float(0.6 * std::sin(0.21 * x + 0.1 * y) + 0.4 * std::cos(0.17 * z - 0.05 * x));
+    return values;
+}
+
+void expectFactors(const char* scene, const std::vector<float>& factors, float bound) {
+    ASSERT_GE(factors.size(), 4u) << scene; // the solve ran cycles to measure
+    for (size_t c = 0; c < factors.size(); ++c) {
+        std::printf("%s: V-cycle %zu convergence factor %.3f\n", scene, c + 1, factors[c]);
+        EXPECT_LE(factors[c], bound) << scene << " cycle " << c + 1;
+    }
+}
+
+TEST(CurvesSolve, ConvergenceFactorPerVCycleOnThePlane) {
+    const glm::dvec3 n = glm::normalize(glm::dvec3(1.0, 2.0, 0.5));
+    const glm::dvec3 tangent = glm::normalize(glm::cross(n, glm::dvec3(0.0, 0.0, 1.0)));
+    const Constraints cs = voxelize({test::planeCurve(glm::dvec3(31.7, 15.6, 32.2), n, tangent, 60.0)}, test::box643(),
+                                    SeedValue::PlaneDistance, Limits{});
+    std::vector<uint8_t> fixed(cs.flags.size());
+    for (size_t i = 0; i < fixed.size(); ++i) fixed[i] = (cs.flags[i] & kInNormals) ? 1 : 0;
+    Field3 values = varyingValues(cs.box, fixed);
+    expectFactors("plane", cycleFactors(fixed, values), 0.4f);
+}
+
+TEST(CurvesSolve, ConvergenceFactorPerVCycleOnTheCaveRoof) {
+    const Box box{glm::ivec3(0), glm::ivec3(64, 17, 64)};
+    std::vector<uint8_t> fixed(box.cellCount(), 0);
+    for (int32_t z = 0; z < box.size.z; ++z)
+        for (int32_t x = 0; x < box.size.x; ++x)
+            for (int32_t y : {4, 12}) fixed[box.index(x, y, z)] = 1;
+    Field3 values = varyingValues(box, fixed);
+    expectFactors("cave roof", cycleFactors(fixed, values), 0.4f);
 }
 
 TEST(CurvesSolve, CycleCapIsATypedErrorWithTheNumbers) {
