@@ -158,6 +158,7 @@ void runGrammar(const Program& program, uint32_t grammarIndex, DenseGrid& grid, 
     NonFiniteCount& replaced = nonFinite ? *nonFinite : uncounted;
 
     for (uint32_t iteration = 0; iteration < uint32_t(grammar.iterations); ++iteration) {
+        if (options.progress) options.progress(double(iteration) / double(grammar.iterations));
         for (uint32_t s = 0; s < prepared.size(); ++s) {
             const PreparedSweep& sweep = prepared[s];
             for (uint32_t phase = 0; phase < sweep.phases.size(); ++phase) {

@@ -3,23 +3,31 @@
 #include "voxc/voxc.h"
 
 #include "voxc/check/Check.h"
+#include "voxc/check/FeatureOverrides.h"
 #include "voxc/check/LoadPackage.h"
 #include "voxc/codegen/CompileCache.h"
 #include "voxc/core/Errors.h"
 #include "voxc/grid/Grid.h"
+#include "voxc/mesh/Lod.h"
 #include "voxc/mesh/MarchingCubes.h"
 #include "voxc/stages/Pipeline.h"
 #include "voxc/stages/Region.h"
 #include "voxc/stages/Solve.h"
+#include "voxc/syntax/Parser.h"
 #include "voxc/vulkan/Context.h"
 #include "voxc/vulkan/Executor.h"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <fmt/format.h>
+#include <functional>
+#include <map>
 #include <memory>
 #include <new>
+#include <optional>
 #include <string>
+#include <vector>
 
 struct voxc_program {
     voxc::Program program;
@@ -30,6 +38,7 @@ struct voxc_program {
     // and `regionKernels` keeps that SPIR-V, so glslang compiles them once too. Mutable: the
     // generate functions take a const program (one thread at a time, voxc.h).
     mutable std::unique_ptr<voxc::VulkanContext> context = nullptr;
+    std::string device = "auto"; // voxc_program_set_device
     mutable voxc::codegen::SpirvMemo regionKernels = {};
 };
 
@@ -42,9 +51,36 @@ struct voxc_mesh {
     voxc::Mesh mesh;
 };
 
+struct voxc_diagnostics {
+    // The strings voxc_diagnostic points into, one entry per diagnostic.
+    struct Entry {
+        std::string code, file, message, rendered;
+        voxc_severity severity;
+        voxc::SourceLoc loc;
+    };
+    std::vector<Entry> entries;
+};
+
 namespace {
 
 thread_local std::string lastError;
+
+// The calling thread's progress callback (voxc_set_progress).
+thread_local voxc_progress_fn progressFn = nullptr;
+thread_local void* progressUser = nullptr;
+
+// Thrown out of the compiler and the runtime when the progress callback asks to stop.
+struct Cancelled {};
+
+void reportProgress(const char* phase, double fraction) {
+    if (progressFn && progressFn(progressUser, phase, fraction) != 0) throw Cancelled{};
+}
+
+// What the engines call between their steps: the thread's callback in the given phase, or nothing.
+std::function<void(double)> progressOf(const char* phase) {
+    if (!progressFn) return {};
+    return [phase](double fraction) { reportProgress(phase, fraction); };
+}
 
 voxc_status fail(voxc_status status, std::string message) {
     lastError = std::move(message);
@@ -58,6 +94,8 @@ voxc_status guarded(Body&& body) {
         lastError.clear();
         body();
         return VOXC_OK;
+    } catch (const Cancelled&) {
+        return fail(VOXC_CANCELLED, "cancelled by the progress callback");
     } catch (const voxc::UserError& error) {
         return fail(VOXC_ERROR_USER, error.what());
     } catch (const voxc::InternalError& error) {
@@ -71,12 +109,63 @@ voxc_status guarded(Body&& body) {
     }
 }
 
-voxc::Program checkedProgram(const char* path, const voxc_load_options* options) {
+// The .vox text to check: `text` (length bytes, named `path`) or, when null, the file at `path`.
+struct Source {
+    const char* path;
+    const char* text;
+    size_t length;
+};
+
+// Checks `source` with `options`' seed and overrides, as `voxc check` and `voxc view` would.
+voxc::CheckResult checkWith(const Source& source, const voxc_load_options* options) {
     voxc::CheckOptions checkOptions;
+    std::map<std::string, double> featureKeys;
     if (options && options->has_seed) checkOptions.seed = options->seed;
-    voxc::CheckResult result = voxc::checkFile(path, checkOptions);
+    if (options && options->override_count > 0) {
+        if (!options->overrides) throw voxc::UserError("overrides: override_count is set but overrides is null");
+        for (size_t i = 0; i < options->override_count; ++i) {
+            const voxc_override& o = options->overrides[i];
+            if (!o.name || !*o.name) throw voxc::UserError(fmt::format("override {}: the name is empty", i));
+            if (!std::isfinite(o.value)) throw voxc::UserError(fmt::format("override '{}': the value is not a finite number", o.name));
+            const std::string name = o.name;
+            if (name.find('.') == std::string::npos) checkOptions.constOverrides[name] = o.value;
+            else featureKeys[name] = o.value;
+        }
+    }
+    voxc::Diagnostics readErrors;
+    std::optional<voxc::SourceFile> file;
+    if (!source.text) {
+        file = voxc::loadSourceFile(source.path, readErrors, size_t(checkOptions.limits.maxSourceBytes));
+    } else if (source.length > size_t(checkOptions.limits.maxSourceBytes)) {
+        readErrors.error("E0012", {},
+                         fmt::format("the text of '{}' is larger than the limit of {} bytes ({} MiB)", source.path,
+                                     checkOptions.limits.maxSourceBytes, checkOptions.limits.maxSourceBytes >> 20));
+    } else {
+        file = voxc::SourceFile(source.path, std::string(source.text, source.length));
+    }
+    if (!file) {
+        voxc::CheckResult result;
+        result.source = voxc::SourceFile(source.path, "");
+        result.diagnostics = readErrors.take();
+        return result;
+    }
+    if (!featureKeys.empty()) {
+        // As the viewer's sliders: the keys are written into the text the checker reads.
+        voxc::Diagnostics parseErrors;
+        const voxc::ast::File parsed = voxc::parse(*file, parseErrors);
+        if (const std::string errors = voxc::featureOverrideErrors(parsed, featureKeys); !errors.empty())
+            throw voxc::UserError(errors);
+        file = voxc::SourceFile(source.path, voxc::overrideFeatureKeys(file->text(), parsed, featureKeys));
+    }
+    return voxc::checkSource(*file, checkOptions);
+}
+
+voxc::Program checkedProgram(const Source& source, const voxc_load_options* options) {
+    reportProgress("check", 0.0);
+    voxc::CheckResult result = checkWith(source, options);
     if (result.hasErrors() || !result.program)
         throw voxc::UserError(result.rendered());
+    reportProgress("check", 1.0);
     voxc::Program program = std::move(*result.program);
     if (options && options->chunk_size != 0) {
         const int32_t c = options->chunk_size;
@@ -87,10 +176,23 @@ voxc::Program checkedProgram(const char* path, const voxc_load_options* options)
     return program;
 }
 
+voxc_status loadProgram(const Source& source, const voxc_load_options* options, voxc_program** out) {
+    *out = nullptr;
+    return guarded([&] {
+        voxc::Program program = checkedProgram(source, options);
+        voxc::stages::solveBlocks(program); // once: the package, the interpreter and every region read the tables
+        reportProgress("compile", 0.0);
+        voxc::KernelPackage package = voxc::compileProgram(program);
+        reportProgress("compile", 1.0);
+        *out = new voxc_program{std::move(program), std::move(package)};
+    });
+}
+
 // The handle's Vulkan context, made on first use; throws UserError when there is no device.
 voxc::VulkanContext& contextOf(const voxc_program& handle) {
     if (!handle.context)
-        handle.context = std::make_unique<voxc::VulkanContext>(voxc::ContextOptions{.shareKernelPipelines = true});
+        handle.context =
+            std::make_unique<voxc::VulkanContext>(voxc::ContextOptions{.device = handle.device, .shareKernelPipelines = true});
     return *handle.context;
 }
 
@@ -98,13 +200,17 @@ voxc::VulkanContext& contextOf(const voxc_program& handle) {
 // compiled package (`program` is the handle's or a region of it).
 voxc::ChunkedGrid runGrid(const voxc_program& handle, const voxc::Program& program, const voxc::KernelPackage& package,
                           voxc_backend backend) {
+    reportProgress("generate", 0.0);
     if (backend == VOXC_BACKEND_VULKAN) {
-        voxc::VulkanExecutor executor(contextOf(handle), package);
-        return executor.run().grid;
+        voxc::VulkanExecutor executor(contextOf(handle), package, voxc::ExecutorOptions{.progress = progressOf("generate")});
+        voxc::ChunkedGrid grid = executor.run().grid;
+        reportProgress("generate", 1.0);
+        return grid;
     }
     const voxc::World& world = program.world;
-    return voxc::ChunkedGrid::fromDense(voxc::interpret(program),
-                                        voxc::ChunkLayout::make(world.origin, world.size, world.chunkSize));
+    voxc::DenseGrid dense = voxc::interpret(program, voxc::InterpOptions{.progress = progressOf("generate")});
+    reportProgress("generate", 1.0);
+    return voxc::ChunkedGrid::fromDense(dense, voxc::ChunkLayout::make(world.origin, world.size, world.chunkSize));
 }
 
 voxc_grid* gridOf(voxc::ChunkedGrid chunked) {
@@ -124,16 +230,52 @@ const char* voxc_version(void) { return "voxc 0.1.0"; }
 
 const char* voxc_last_error(void) { return lastError.c_str(); }
 
+void voxc_set_progress(voxc_progress_fn fn, void* user) {
+    progressFn = fn;
+    progressUser = fn ? user : nullptr;
+}
+
 voxc_status voxc_program_load(const char* path, const voxc_load_options* options, voxc_program** out) {
     if (!path || !out) return fail(VOXC_ERROR_ARGUMENT, "voxc_program_load: path and out must not be null");
+    return loadProgram(Source{path, nullptr, 0}, options, out);
+}
+
+voxc_status voxc_program_load_source(const char* path, const char* text, size_t length, const voxc_load_options* options,
+                                     voxc_program** out) {
+    if (!path || !text || !out)
+        return fail(VOXC_ERROR_ARGUMENT, "voxc_program_load_source: path, text and out must not be null");
+    return loadProgram(Source{path, text, length}, options, out);
+}
+
+voxc_status voxc_check(const char* path, const char* text, size_t length, const voxc_load_options* options,
+                       voxc_diagnostics** out) {
+    if (!path || !out) return fail(VOXC_ERROR_ARGUMENT, "voxc_check: path and out must not be null");
     *out = nullptr;
     return guarded([&] {
-        voxc::Program program = checkedProgram(path, options);
-        voxc::stages::solveBlocks(program); // once: the package, the interpreter and every region read the tables
-        voxc::KernelPackage package = voxc::compileProgram(program);
-        *out = new voxc_program{std::move(program), std::move(package)};
+        const voxc::CheckResult result = checkWith(Source{path, text, length}, options);
+        auto diagnostics = std::make_unique<voxc_diagnostics>();
+        for (const voxc::Diagnostic& d : result.diagnostics) {
+            const voxc_severity severity = d.severity == voxc::Severity::Error     ? VOXC_SEVERITY_ERROR
+                                           : d.severity == voxc::Severity::Warning ? VOXC_SEVERITY_WARNING
+                                                                                   : VOXC_SEVERITY_NOTE;
+            diagnostics->entries.push_back({d.code, d.file ? d.file->path() : result.source.path(), d.message,
+                                            voxc::render(d, result.source), severity, d.loc});
+        }
+        *out = diagnostics.release();
     });
 }
+
+size_t voxc_diagnostics_count(const voxc_diagnostics* diagnostics) { return diagnostics ? diagnostics->entries.size() : 0; }
+
+int voxc_diagnostics_get(const voxc_diagnostics* diagnostics, size_t index, voxc_diagnostic* out) {
+    if (!diagnostics || !out || index >= diagnostics->entries.size()) return 0;
+    const voxc_diagnostics::Entry& e = diagnostics->entries[index];
+    *out = voxc_diagnostic{e.code.c_str(), e.severity,      e.file.c_str(),    e.loc.line,
+                           e.loc.column,   e.loc.length,    e.message.c_str(), e.rendered.c_str()};
+    return 1;
+}
+
+void voxc_diagnostics_free(voxc_diagnostics* diagnostics) { delete diagnostics; }
 
 voxc_status voxc_package_load(const char* directory, voxc_program** out) {
     if (!directory || !out) return fail(VOXC_ERROR_ARGUMENT, "voxc_package_load: directory and out must not be null");
@@ -160,12 +302,22 @@ const char* voxc_program_material_name(const voxc_program* program, uint8_t id) 
     return material ? material->name.c_str() : nullptr;
 }
 
+int voxc_program_material_color(const voxc_program* program, uint8_t id, float rgb[3]) {
+    const voxc::Material* material = program && rgb ? program->program.findMaterial(id) : nullptr;
+    if (!material) return 0;
+    for (int c = 0; c < 3; ++c) rgb[c] = material->color[c];
+    return 1;
+}
+
 voxc_status voxc_generate(const voxc_program* program, voxc_backend backend, voxc_grid** out) {
     if (!program || !out) return fail(VOXC_ERROR_ARGUMENT, "voxc_generate: program and out must not be null");
     if (!validBackend(backend))
         return fail(VOXC_ERROR_ARGUMENT, fmt::format("voxc_generate: unknown backend {}", int(backend)));
     *out = nullptr;
-    return guarded([&] { *out = gridOf(runGrid(*program, program->program, program->package, backend)); });
+    return guarded([&] {
+        std::unique_ptr<voxc_grid> grid(gridOf(runGrid(*program, program->program, program->package, backend)));
+        *out = grid.release();
+    });
 }
 
 voxc_status voxc_generate_region(const voxc_program* program, const int32_t min[3], const int32_t max[3],
@@ -192,8 +344,10 @@ voxc_status voxc_generate_region(const voxc_program* program, const int32_t min[
         const voxc::Program regionProgram = voxc::stages::regionProgram(program->program, computed);
         voxc::KernelPackage package;
         if (backend == VOXC_BACKEND_VULKAN) {
+            reportProgress("compile", 0.0);
             const voxc::codegen::SpirvMemoScope kernels(program->regionKernels);
             package = voxc::compileProgram(regionProgram);
+            reportProgress("compile", 1.0);
         }
         const voxc::ChunkedGrid grid = runGrid(*program, regionProgram, package, backend);
         const glm::ivec3 offset = region.min - computed.min;
@@ -201,6 +355,15 @@ voxc_status voxc_generate_region(const voxc_program* program, const int32_t min[
         const voxc::ChunkLayout& layout = grid.layout();
         *out = gridOf(voxc::ChunkedGrid::fromDense(
             voxels, voxc::ChunkLayout::make(layout.gridOrigin + offset, voxels.size(), layout.chunkSize)));
+    });
+}
+
+voxc_status voxc_program_set_device(voxc_program* program, const char* device) {
+    if (!program || !device) return fail(VOXC_ERROR_ARGUMENT, "voxc_program_set_device: program and device must not be null");
+    return guarded([&] {
+        if (program->device == device) return;
+        program->context.reset();
+        program->device = device;
     });
 }
 
@@ -231,7 +394,31 @@ voxc_status voxc_mesh_grid(const voxc_grid* grid, float iso, voxc_mesh** out) {
     if (!grid || !out) return fail(VOXC_ERROR_ARGUMENT, "voxc_mesh_grid: grid and out must not be null");
     if (!std::isfinite(iso)) return fail(VOXC_ERROR_ARGUMENT, "voxc_mesh_grid: iso must be a finite number");
     *out = nullptr;
-    return guarded([&] { *out = new voxc_mesh{voxc::meshMarchingCubes(grid->chunked, voxc::MeshOptions{.iso = iso})}; });
+    return guarded([&] {
+        reportProgress("mesh", 0.0);
+        auto mesh = std::make_unique<voxc_mesh>(voxc_mesh{voxc::meshMarchingCubes(grid->chunked, voxc::MeshOptions{.iso = iso})});
+        reportProgress("mesh", 1.0);
+        *out = mesh.release();
+    });
+}
+
+voxc_status voxc_mesh_grid_lod(const voxc_grid* grid, float iso, int32_t level, voxc_mesh** out) {
+    if (!grid || !out) return fail(VOXC_ERROR_ARGUMENT, "voxc_mesh_grid_lod: grid and out must not be null");
+    if (!std::isfinite(iso)) return fail(VOXC_ERROR_ARGUMENT, "voxc_mesh_grid_lod: iso must be a finite number");
+    const int32_t chunkSize = grid->chunked.layout().chunkSize;
+    if (level < 0 || level > voxc::kMaxLodLevel || (1 << level) > chunkSize)
+        return fail(VOXC_ERROR_ARGUMENT,
+                    fmt::format("voxc_mesh_grid_lod: level {} is not from 0 to {} with cells at most the {}-voxel chunk size",
+                                level, voxc::kMaxLodLevel, chunkSize));
+    *out = nullptr;
+    return guarded([&] {
+        reportProgress("mesh", 0.0);
+        const voxc::LodPyramid pyramid(grid->chunked, level);
+        auto mesh = std::make_unique<voxc_mesh>(voxc_mesh{voxc::meshLod(
+            pyramid, voxc::LodLayout::uniform(grid->chunked.layout(), level), voxc::MeshOptions{.iso = iso})});
+        reportProgress("mesh", 1.0);
+        *out = mesh.release();
+    });
 }
 
 void voxc_mesh_free(voxc_mesh* mesh) { delete mesh; }

@@ -1,6 +1,7 @@
 #include "voxc/viewer/Session.h"
 
 #include "voxc/check/Check.h"
+#include "voxc/check/FeatureOverrides.h"
 #include "voxc/core/AtomicWrite.h"
 #include "voxc/core/Errors.h"
 #include "voxc/generators/dey/Generators.h"
@@ -31,17 +32,6 @@ std::optional<double> literalNumber(const ast::Expr* expr) {
     return std::nullopt;
 }
 
-size_t offsetOf(const std::vector<size_t>& lineStarts, SourceLoc loc) {
-    return lineStarts[std::min<size_t>(loc.line - 1, lineStarts.size() - 1)] + loc.column - 1;
-}
-
-std::vector<size_t> lineStartsOf(const std::string& text) {
-    std::vector<size_t> starts{0};
-    for (size_t i = 0; i < text.size(); ++i)
-        if (text[i] == '\n') starts.push_back(i + 1);
-    return starts;
-}
-
 // A constant has no declared range: its slider spans from 0 to twice the file's value (or -1..1
 // for 0), integers when the file wrote an integer.
 Parameter constantParameter(const std::string& name, double written) {
@@ -50,14 +40,6 @@ Parameter constantParameter(const std::string& name, double written) {
     p.integer = written == std::floor(written) && std::abs(written) >= 1.0;
     return p;
 }
-
-const ast::Assignment* findAssignment(const ast::Block& block, std::string_view key) {
-    for (const ast::Assignment& a : block.assignments)
-        if (a.key == key) return &a;
-    return nullptr;
-}
-
-std::string formatNumber(double value) { return fmt::format("{}", value); }
 
 } // namespace
 
@@ -87,32 +69,7 @@ bool Session::fileChanged() const {
 }
 
 std::string Session::textWithOverrides(const std::string& text, const ast::File& file) const {
-    if (featureOverrides_.empty()) return text;
-    const std::vector<size_t> lineStarts = lineStartsOf(text);
-    struct Splice {
-        size_t offset, length;
-        std::string text;
-    };
-    std::vector<Splice> splices;
-    for (const auto& [name, value] : featureOverrides_) {
-        const size_t dot = name.find('.');
-        const std::string feature = name.substr(0, dot), key = name.substr(dot + 1);
-        for (const ast::FeatureDecl& decl : file.features) {
-            if (decl.name != feature) continue;
-            if (const ast::Assignment* a = findAssignment(decl.body, key)) {
-                if (a->value.scalar && a->value.loc.line > 0)
-                    splices.push_back({offsetOf(lineStarts, a->value.loc), a->value.loc.length, formatNumber(value)});
-            } else if (decl.body.end.line > 0) {
-                splices.push_back({offsetOf(lineStarts, decl.body.end), 0, fmt::format("{} = {}; ", key, formatNumber(value))});
-            }
-        }
-    }
-    // From the end backwards, so each splice's offset still holds.
-    std::sort(splices.begin(), splices.end(), [](const Splice& a, const Splice& b) { return a.offset > b.offset; });
-    std::string out = text;
-    for (const Splice& splice : splices)
-        if (splice.offset + splice.length <= out.size()) out.replace(splice.offset, splice.length, splice.text);
-    return out;
+    return overrideFeatureKeys(text, file, featureOverrides_);
 }
 
 void Session::listParameters(const ast::File& file) {

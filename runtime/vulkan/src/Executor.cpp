@@ -384,6 +384,15 @@ RunResult VulkanExecutor::run() {
     for (uint32_t batch = 0;; ++batch) {
         Impl::Frame& frame = s.frames[batch % 2];
         s.wait(frame); // the batch before the previous one; the previous may still run meanwhile
+        if (s.options.progress) {
+            try {
+                s.options.progress(double(stage == kNoStage ? 0 : stage) / double(std::max<size_t>(1, s.package.stages.size())));
+            } catch (...) {
+                s.wait(s.frames[0]);
+                s.wait(s.frames[1]);
+                throw;
+            }
+        }
         const Clock::time_point recordStart = Clock::now();
         check(api.vkResetCommandBuffer(frame.cmd, 0), "vkResetCommandBuffer");
         VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};

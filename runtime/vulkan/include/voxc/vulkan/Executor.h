@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -38,6 +39,10 @@ struct ExecutorOptions {
     // buffers only (deviceVoxels(), for the GPU mesher) and the grid empty: a caller that meshes
     // on the device and writes no voxels skips copying (and allocating) the whole grid.
     bool readBack = true;
+    // When set, called before each batch is recorded with the fraction of the package's stages
+    // reached (0 to 1); it may throw to stop the run: the batches in flight are waited for and the
+    // exception leaves run() (libvoxc's progress callback, docs/embedding.md).
+    std::function<void(double fraction)> progress{};
 };
 
 // How much tile skipping saved in one run: counts of (tile, phase) pairs, summed over every
