@@ -14,6 +14,9 @@ packages=(
   libglfw3-dev libimgui-dev libstb-dev # voxc view: the window and its panel (runtime/viewer)
   xvfb xauth # xvfb-run: the viewer's test under a virtual display (tests/viewer)
   ccache python3-numpy
+  python3-dev pybind11-dev python3-pytest python3-setuptools python3-venv python3-pip # the Python module (python/, tests/python)
+  python3-matplotlib # docs/python.md's walk-through (tests/python)
+  blender # the Blender add-on's headless test (editors/blender); 153 packages, 570 MB installed
   clang libclang-rt-14-dev
 )
 missing=()
