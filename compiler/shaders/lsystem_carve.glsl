@@ -23,6 +23,46 @@ layout(std430, set = 0, binding = 10) readonly buffer PointSets {
 
 float pointSetFloat(int at) { return intBitsToFloat(pointSets.words[at]); }
 
+// The list loops visit POINT_SET_BLOCK items per iteration, one step call each, because lavapipe
+// (llvmpipe) caps the loop iterations of one invocation group at 65535 for all its loops together
+// and silently leaves every loop after that: a cell may list kMaxPointSetPerCell (8,192) centres
+// and as many segments, so a voxel takes at most 2 * 8192 / POINT_SET_BLOCK = 1,024 iterations
+// here, and field kernels that read a point set walk at most kPointSetAnchorsAlongY voxels per
+// invocation (codegen/FieldKernel.cpp). A step returns false where the loop stops: the list's end,
+// or a lower bound not below the nearest so far (every later one is not either).
+const int POINT_SET_BLOCK = 16;
+
+bool pointSetCentreStep(vec3 p, int centres, int item, int i, int count, inout float nearest) {
+    if (i >= count || pointSetFloat(item + 2 * i + 1) >= nearest) return false;
+    int at = centres + 4 * pointSets.words[item + 2 * i];
+    precise float dx = p.x - pointSetFloat(at);
+    precise float dy = p.y - pointSetFloat(at + 1);
+    precise float dz = p.z - pointSetFloat(at + 2);
+    precise float scale = pointSetFloat(at + 3);
+    precise float d2 = (dx * dx + dy * dy + dz * dz) * (scale * scale);
+    nearest = d2 < nearest ? d2 : nearest;
+    return true;
+}
+
+bool pointSetSegmentStep(vec3 p, int segments, int item, int i, int count, inout float nearest) {
+    if (i >= count || pointSetFloat(item + 2 * i + 1) >= nearest) return false;
+    int at = segments + 7 * pointSets.words[item + 2 * i];
+    precise float px = p.x - pointSetFloat(at);
+    precise float py = p.y - pointSetFloat(at + 1);
+    precise float pz = p.z - pointSetFloat(at + 2);
+    precise float ex = pointSetFloat(at + 3);
+    precise float ey = pointSetFloat(at + 4);
+    precise float ez = pointSetFloat(at + 5);
+    precise float along = (px * ex + py * ey + pz * ez) * pointSetFloat(at + 6);
+    precise float t = along < 0.0 ? 0.0 : (along > 1.0 ? 1.0 : along);
+    precise float dx = px - t * ex;
+    precise float dy = py - t * ey;
+    precise float dz = pz - t * ez;
+    precise float d2 = dx * dx + dy * dy + dz * dz;
+    nearest = d2 < nearest ? d2 : nearest;
+    return true;
+}
+
 vec2 pointSetDistances(int set, vec3 p) {
     int header = pointSets.words[set];
     float centreReach = pointSetFloat(header + 3);
@@ -37,38 +77,50 @@ vec2 pointSetDistances(int set, vec3 p) {
     int centres = pointSets.words[header];
     int centreItem = pointSets.words[list];
     int centreCount = pointSets.words[list + 1];
-    precise float nearestCentre = 3.4028234663852886e38;
-    for (int i = 0; i < centreCount; ++i) {
-        if (pointSetFloat(centreItem + 2 * i + 1) >= nearestCentre) break;
-        int at = centres + 4 * pointSets.words[centreItem + 2 * i];
-        precise float dx = p.x - pointSetFloat(at);
-        precise float dy = p.y - pointSetFloat(at + 1);
-        precise float dz = p.z - pointSetFloat(at + 2);
-        precise float scale = pointSetFloat(at + 3);
-        precise float d2 = (dx * dx + dy * dy + dz * dz) * (scale * scale);
-        nearestCentre = d2 < nearestCentre ? d2 : nearestCentre;
+    float nearestCentre = 3.4028234663852886e38;
+    for (int i = 0; i < centreCount; i += POINT_SET_BLOCK) {
+        // Sixteen steps written out (a constant loop here could stay a loop).
+        if (!(pointSetCentreStep(p, centres, centreItem, i, centreCount, nearestCentre) &&
+              pointSetCentreStep(p, centres, centreItem, i + 1, centreCount, nearestCentre) &&
+              pointSetCentreStep(p, centres, centreItem, i + 2, centreCount, nearestCentre) &&
+              pointSetCentreStep(p, centres, centreItem, i + 3, centreCount, nearestCentre) &&
+              pointSetCentreStep(p, centres, centreItem, i + 4, centreCount, nearestCentre) &&
+              pointSetCentreStep(p, centres, centreItem, i + 5, centreCount, nearestCentre) &&
+              pointSetCentreStep(p, centres, centreItem, i + 6, centreCount, nearestCentre) &&
+              pointSetCentreStep(p, centres, centreItem, i + 7, centreCount, nearestCentre) &&
+              pointSetCentreStep(p, centres, centreItem, i + 8, centreCount, nearestCentre) &&
+              pointSetCentreStep(p, centres, centreItem, i + 9, centreCount, nearestCentre) &&
+              pointSetCentreStep(p, centres, centreItem, i + 10, centreCount, nearestCentre) &&
+              pointSetCentreStep(p, centres, centreItem, i + 11, centreCount, nearestCentre) &&
+              pointSetCentreStep(p, centres, centreItem, i + 12, centreCount, nearestCentre) &&
+              pointSetCentreStep(p, centres, centreItem, i + 13, centreCount, nearestCentre) &&
+              pointSetCentreStep(p, centres, centreItem, i + 14, centreCount, nearestCentre) &&
+              pointSetCentreStep(p, centres, centreItem, i + 15, centreCount, nearestCentre)))
+            break;
     }
 
     int segments = pointSets.words[header + 1];
     int segmentItem = pointSets.words[list + 2];
     int segmentCount = pointSets.words[list + 3];
-    precise float nearestSegment = 3.4028234663852886e38;
-    for (int i = 0; i < segmentCount; ++i) {
-        if (pointSetFloat(segmentItem + 2 * i + 1) >= nearestSegment) break;
-        int at = segments + 7 * pointSets.words[segmentItem + 2 * i];
-        precise float px = p.x - pointSetFloat(at);
-        precise float py = p.y - pointSetFloat(at + 1);
-        precise float pz = p.z - pointSetFloat(at + 2);
-        precise float ex = pointSetFloat(at + 3);
-        precise float ey = pointSetFloat(at + 4);
-        precise float ez = pointSetFloat(at + 5);
-        precise float along = (px * ex + py * ey + pz * ez) * pointSetFloat(at + 6);
-        precise float t = along < 0.0 ? 0.0 : (along > 1.0 ? 1.0 : along);
-        precise float dx = px - t * ex;
-        precise float dy = py - t * ey;
-        precise float dz = pz - t * ez;
-        precise float d2 = dx * dx + dy * dy + dz * dz;
-        nearestSegment = d2 < nearestSegment ? d2 : nearestSegment;
+    float nearestSegment = 3.4028234663852886e38;
+    for (int i = 0; i < segmentCount; i += POINT_SET_BLOCK) {
+        if (!(pointSetSegmentStep(p, segments, segmentItem, i, segmentCount, nearestSegment) &&
+              pointSetSegmentStep(p, segments, segmentItem, i + 1, segmentCount, nearestSegment) &&
+              pointSetSegmentStep(p, segments, segmentItem, i + 2, segmentCount, nearestSegment) &&
+              pointSetSegmentStep(p, segments, segmentItem, i + 3, segmentCount, nearestSegment) &&
+              pointSetSegmentStep(p, segments, segmentItem, i + 4, segmentCount, nearestSegment) &&
+              pointSetSegmentStep(p, segments, segmentItem, i + 5, segmentCount, nearestSegment) &&
+              pointSetSegmentStep(p, segments, segmentItem, i + 6, segmentCount, nearestSegment) &&
+              pointSetSegmentStep(p, segments, segmentItem, i + 7, segmentCount, nearestSegment) &&
+              pointSetSegmentStep(p, segments, segmentItem, i + 8, segmentCount, nearestSegment) &&
+              pointSetSegmentStep(p, segments, segmentItem, i + 9, segmentCount, nearestSegment) &&
+              pointSetSegmentStep(p, segments, segmentItem, i + 10, segmentCount, nearestSegment) &&
+              pointSetSegmentStep(p, segments, segmentItem, i + 11, segmentCount, nearestSegment) &&
+              pointSetSegmentStep(p, segments, segmentItem, i + 12, segmentCount, nearestSegment) &&
+              pointSetSegmentStep(p, segments, segmentItem, i + 13, segmentCount, nearestSegment) &&
+              pointSetSegmentStep(p, segments, segmentItem, i + 14, segmentCount, nearestSegment) &&
+              pointSetSegmentStep(p, segments, segmentItem, i + 15, segmentCount, nearestSegment)))
+            break;
     }
     precise float centre = sqrt(nearestCentre);
     precise float segment = sqrt(nearestSegment);

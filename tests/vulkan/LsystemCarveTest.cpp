@@ -87,6 +87,98 @@ TEST(vulkan_LsystemCarve, MatchesTheInterpreterAtEveryChunkSize) {
     }
 }
 
+// A dense network: short steps and centres every quarter voxel make thousands of centres in one
+// cell's list (2,832 here; lavapipe used to leave the list loops once an invocation had looped
+// 65,535 times, from about 1,500 centres per cell on).
+std::string denseCaveProgram(int expansions, const std::string& keys) {
+    return fmt::format(R"(
+world {{ size = [48, 32, 48]; seed = 3; }}
+start {{ fill {{ value = 1; }} }}
+lsystem net {{
+  axiom = "Z"; expansions = {}; angle = 45; step = 0.5; start = [24, 16, 24];
+  production Z {{ "FZ[RFZ]FZ[LFZ[RF]]"; }}
+}}
+feature tunnels = lsystem_cave {{ lsystem = net; {} }}
+pipeline {{ start; subtract tunnels; }}
+)",
+                       expansions, keys);
+}
+
+const PointSet& pointSetOf(const Program& program) {
+    const PointSet* set = nullptr;
+    for (const FieldNode& node : program.fields.back().nodes)
+        if (node.kind == FieldNode::Kind::PointSet) set = node.pointSet.get();
+    EXPECT_NE(set, nullptr);
+    return *set;
+}
+
+uint32_t longestList(const std::vector<uint32_t>& start) {
+    uint32_t longest = 0;
+    for (size_t i = 0; i + 1 < start.size(); ++i) longest = std::max(longest, start[i + 1] - start[i]);
+    return longest;
+}
+
+TEST(vulkan_LsystemCarve, DenseNetworksMatchTheInterpreterAtEveryChunkSize) {
+    CheckResult result = checked(denseCaveProgram(4, "radius = 8; spacing = 0.25; clearance = 1;"));
+    ASSERT_TRUE(result.program);
+    Program program = *result.program;
+    EXPECT_GT(longestList(pointSetOf(program).bins.centreStart), 2000u);
+    const DenseGrid expected = interpret(program);
+    for (int chunk : {8, 16, 32, 64}) {
+        program.world.chunkSize = chunk;
+        EXPECT_EQ(test::countBitDifferences(expected, test::runOnLavapipe(program)), 0u) << "chunk " << chunk;
+    }
+}
+
+// The worst lists the checker accepts: kMaxPointSetPerCell centres and as many segments, packed so
+// tight that no lower bound stops a loop early (every voxel of a cell reads its whole lists), in
+// the carve of a 64-high world (long columns) at every chunk size.
+TEST(vulkan_LsystemCarve, ListsAtTheLimitMatchTheInterpreter) {
+    CheckResult result = checked(caveProgram("size = [24, 64, 24]; seed = 4;", "radius = 2; clearance = 1;"));
+    ASSERT_TRUE(result.program);
+    Program program = *result.program;
+    auto set = std::make_shared<PointSet>(pointSetOf(program));
+    set->centres.clear();
+    set->centreScales.clear();
+    set->segments.clear();
+    const uint32_t n = kMaxPointSetPerCell;
+    for (uint32_t i = 0; i < n; ++i) {
+        // Within 0.01 of (12.5, 30.5, 12.5): the same distance, to a float ulp or so, for all.
+        const float jitter = 0.01f * float(i % 97) / 97.0f;
+        set->centres.push_back({12.5f + jitter, 30.5f - jitter, 12.5f + 0.5f * jitter});
+        set->centreScales.push_back(0.125f); // radius 8
+        PointSetSegment segment;
+        segment.from = {12.5f - jitter, 31.5f, 12.5f + jitter};
+        segment.delta = {0.0f, 0.0f, 0.0f};
+        set->segments.push_back(segment);
+    }
+    set->bins = binPointSetOverGrid(*set, program.world.origin, program.world.size, kMaxPointSetListEntries, n);
+    ASSERT_EQ(longestList(set->bins.centreStart), n);
+    ASSERT_EQ(longestList(set->bins.segmentStart), n);
+    for (FieldNode& node : program.fields.back().nodes)
+        if (node.kind == FieldNode::Kind::PointSet) node.pointSet = set;
+    EXPECT_THROW(binPointSetOverGrid(*set, program.world.origin, program.world.size, kMaxPointSetListEntries, n - 1),
+                 PointSetLimitError);
+    const DenseGrid expected = interpret(program);
+    size_t air = 0;
+    for (float d : expected.data()) air += d < 0.5f;
+    EXPECT_GT(air, 1000u);
+    for (int chunk : {8, 64}) {
+        program.world.chunkSize = chunk;
+        EXPECT_EQ(test::countBitDifferences(expected, test::runOnLavapipe(program)), 0u) << "chunk " << chunk;
+    }
+}
+
+// One past the limit: the checker refuses the file at the carve's `lsystem` key (E0012).
+TEST(vulkan_LsystemCarve, ListsPastTheLimitAreALocatedE0012) {
+    const CheckResult result =
+        checkSource(SourceFile("carve.vox", denseCaveProgram(5, "radius = 8; spacing = 0.25; clearance = 1;")));
+    ASSERT_TRUE(result.hasErrors());
+    const std::string text = result.rendered();
+    EXPECT_NE(text.find("carve.vox:8:44: error E0012"), std::string::npos) << text;
+    EXPECT_NE(text.find("8193 (CarveLimits::maxPerCell is 8192)"), std::string::npos) << text;
+}
+
 // Spec tests 14 and 15 on the device, over noise settings that distort hard.
 TEST(vulkan_LsystemCarve, ClearanceAndSupportHoldOnTheDevice) {
     struct Setting {

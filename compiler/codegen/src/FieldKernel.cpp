@@ -404,7 +404,13 @@ std::vector<std::shared_ptr<const PointSet>> pointSetsOf(const ir::IrModule& mod
     return sets;
 }
 
-DispatchShape fieldDispatchShape(const ir::IrModule& module) { return startDispatchShape(module); }
+DispatchShape fieldDispatchShape(const ir::IrModule& module, const ir::IrField& field) {
+    DispatchShape shape = startDispatchShape(module);
+    const bool readsPointSet = std::any_of(field.nodes.begin(), field.nodes.end(),
+                                           [](const FieldNode& node) { return node.kind == FieldNode::Kind::PointSet; });
+    if (readsPointSet) shape.anchorsPerInvocation[1] = std::min(shape.anchorsPerInvocation[1], kPointSetAnchorsAlongY);
+    return shape;
+}
 
 namespace {
 
@@ -520,7 +526,7 @@ std::string fieldKernelSource(const ir::IrModule& module, const ir::IrField& fie
         "field.glsl",
         {{"HEADER", prefixLines(header, "// ")},
          {"LIBRARIES", libraries},
-         {"DISPATCH_SHAPE", dispatchShapeGlsl(fieldDispatchShape(module))},
+         {"DISPATCH_SHAPE", dispatchShapeGlsl(fieldDispatchShape(module, field))},
          {"COLUMN_NOISE", code.columnNoise.empty() ? "// No noise call shares work along the column.\n" : code.columnNoise},
          {"COLUMN_VALUES", code.column.empty() ? "// No value is the same along the column.\n" : code.column},
          {"BLOCK_VALUES", code.block.empty() ? "// Nothing to fill per block.\n" : code.block},

@@ -67,7 +67,7 @@ void addKernels(PlanContext& context) {
         const std::string origin = fmt::format("{}:{}:{} field {}, {}", context.sourceName, field.loc.line,
                                                field.loc.column, field.name, ir::fieldModeName(mode));
         context.kernels[name] = context.addKernel(
-            name, origin, codegen::fieldDispatchShape(context.module),
+            name, origin, codegen::fieldDispatchShape(context.module, field),
             codegen::fieldKernelSource(context.module, field, mode, material, stages, name, context.sourceName));
     }
 }
