@@ -4,7 +4,9 @@
 #include "voxc/core/Errors.h"
 #include "voxc/edit/EditableWorld.h"
 #include "voxc/mesh/Lod.h"
+#include "voxc/mesh/Export.h"
 #include "voxc/mesh/MarchingCubes.h"
+#include "voxc/mesh/MeshQuality.h"
 #include "voxc/stages/Pipeline.h"
 #include "voxc/vulkan/Executor.h"
 #include "voxc/vulkan/GpuMesher.h"
@@ -76,6 +78,8 @@ void setCounters(benchmark::State& state, int n, size_t triangles) {
 }
 
 std::string hostDescription() { return fmt::format("cpu ({} threads)", std::thread::hardware_concurrency()); }
+// voxc's host meshers also name how they classify samples (AVX2 or scalar) on this CPU.
+std::string hostMesherDescription() { return fmt::format("cpu ({} threads, {} classification)", std::thread::hardware_concurrency(), hostMeshSimd()); }
 
 // edit_remesh: one brush on examples/scene.vox at 256^3, from the brush to the re-meshed chunks
 // (EditableWorld::edit: the brush, its diff, marching cubes over the chunks R2 names). The brush sits
@@ -134,7 +138,7 @@ void registerMeshCases(JsonReporter& reporter, VulkanContext& context, const std
                 reporter.describe(name + "/real_time", {caseName, n, backend, device});
             };
             if (host) {
-                add(mc, "host", hostDescription(), [input, &context](benchmark::State& state) {
+                add(mc, "host", hostMesherDescription(), [input, &context](benchmark::State& state) {
                     input->make(context);
                     size_t triangles = meshMarchingCubes(*input->grid, {}).triangles.size() / 3; // warm-up
                     for (auto _ : state) triangles = meshMarchingCubes(*input->grid, {}).triangles.size() / 3;
@@ -149,6 +153,25 @@ void registerMeshCases(JsonReporter& reporter, VulkanContext& context, const std
                     size_t triangles = meshLod(pyramid, layout, {}).triangles.size() / 3; // warm-up
                     for (auto _ : state) triangles = meshLod(pyramid, layout, {}).triangles.size() / 3;
                     setCounters(state, input->n, triangles);
+                });
+                // What `voxc run` does with the mesh after extracting it: the quality report it
+                // prints, and the .glb (meshoptimizer's vertex cache and fetch order, encoding);
+                // the marching-cubes mesh is made once, outside the timing.
+                add(fmt::format("mesh_quality_{}", example), "host", hostDescription(), [input, &context](benchmark::State& state) {
+                    input->make(context);
+                    const Mesh mesh = meshMarchingCubes(*input->grid, {});
+                    size_t edges = measureMeshQuality(mesh).boundaryEdges; // warm-up
+                    for (auto _ : state) edges += measureMeshQuality(mesh).boundaryEdges;
+                    if (edges != 0) throw InternalError("mesh_quality: the marching-cubes mesh has boundary edges");
+                    setCounters(state, input->n, mesh.triangles.size() / 3);
+                });
+                add(fmt::format("mesh_glb_{}", example), "host", hostDescription(), [input, &context](benchmark::State& state) {
+                    input->make(context);
+                    const Mesh mesh = meshMarchingCubes(*input->grid, {});
+                    size_t bytes = encodeGlb(mesh).size(); // warm-up
+                    for (auto _ : state) bytes = encodeGlb(mesh).size();
+                    state.counters["bytes"] = double(bytes);
+                    setCounters(state, input->n, mesh.triangles.size() / 3);
                 });
                 add(sn, "host", hostDescription(), [input, &context](benchmark::State& state) {
                     input->make(context);

@@ -164,6 +164,87 @@ TEST(mesh_MarchingCubes, meshIsIdenticalForEveryChunkSizeAndOrigin) {
     }
 }
 
+// The whole-grid mesher reads sign bits and visits only crossed cells; the chunk-by-chunk
+// extraction (extractChunk + mergeChunks) gathers every chunk's samples and visits every cell.
+// Both give the same bytes: at every chunk size and origin, for iso levels that make the outside
+// of the grid air or solid, with non-finite densities, materials and sub-word rows.
+TEST(mesh_MarchingCubes, sparseExtractionEqualsTheChunkByChunkMesh) {
+    for (const glm::ivec3 origin : {glm::ivec3(0), glm::ivec3(-37, -5, -70), glm::ivec3(1000, 17, -999)})
+        for (const glm::ivec3 size : {glm::ivec3(70, 23, 41), glm::ivec3(3, 130, 9)})
+            for (int32_t chunk : {2, 8, 32}) {
+                ChunkedGrid grid = noiseGrid(origin, size, chunk, 5);
+                const ChunkLayout& layout = grid.layout();
+                std::mt19937 random{unsigned(chunk)};
+                std::uniform_int_distribution<int> pick(0, 199);
+                const glm::vec3 centre = glm::vec3(size) * 0.4f;
+                for (int z = 0; z < size.z; ++z)
+                    for (int y = 0; y < size.y; ++y)
+                        for (int x = 0; x < size.x; ++x) {
+                            float& d = grid.at({x, y, z});
+                            // A smooth ball (uniform runs of words) with noise at its rim, in [-1, 1].
+                            const float ball = 1.0f - glm::length(glm::vec3(x, y, z) - centre) / 9.0f;
+                            d = std::abs(ball) < 0.2f ? 2.0f * d - 1.0f : std::clamp(ball, -1.0f, 1.0f);
+                            const int r = pick(random);
+                            if (r == 0) d = NAN;
+                            if (r == 1) d = INFINITY;
+                            if (r == 2) d = -INFINITY;
+                        }
+                for (float iso : {0.5f, 0.0f, -0.25f}) {
+                    std::vector<marching_cubes::ChunkMesh> parts;
+                    const glm::ivec3 first = (layout.gridOrigin - 1) >> layout.chunkShift,
+                                     last = (layout.gridOrigin + layout.gridSize - 1) >> layout.chunkShift;
+                    for (int z = first.z; z <= last.z; ++z)
+                        for (int y = first.y; y <= last.y; ++y)
+                            for (int x = first.x; x <= last.x; ++x) parts.push_back(marching_cubes::extractChunk(grid, iso, {x, y, z}));
+                    const Mesh oracle = marching_cubes::mergeChunks(std::move(parts));
+                    const std::string what = "origin " + std::to_string(origin.x) + " size " + std::to_string(size.x) + " chunk " +
+                                             std::to_string(chunk) + " iso " + std::to_string(iso);
+                    ASSERT_GT(oracle.triangles.size(), 300u) << what;
+                    expectIdentical(meshMarchingCubes(grid, MeshOptions{.iso = iso}), oracle, what);
+                    expectIdentical(meshMarchingCubes(grid, MeshOptions{.iso = iso, .skipUniformChunks = false}), oracle,
+                                    "without skipping, " + what);
+                }
+            }
+}
+
+// A surface inside one world-aligned 8^3 tile: the mesher looks up the cases of that tile's crossed
+// cells only, and no other tile holds a crossed cell (MeshStats' counters).
+TEST(mesh_MarchingCubes, surfaceInOneTileVisitsOnlyThatTile) {
+    for (const glm::ivec3 origin : {glm::ivec3(0), glm::ivec3(-40, 8, 3)}) {
+        // A ball of radius ~1.8 around world (11.5, 11.5, 11.5): solid voxels 10-13, crossed cells 9-13.
+        const ChunkedGrid grid = makeGrid(origin, {64, 64, 64}, 32, test::coneBall(glm::vec3(11.5f), 3.6f));
+        const ChunkLayout& layout = grid.layout();
+        size_t crossed = 0;
+        for (int z = -1; z < 64; ++z)
+            for (int y = -1; y < 64; ++y)
+                for (int x = -1; x < 64; ++x) {
+                    int solid = 0;
+                    for (int c = 0; c < 8; ++c) {
+                        const glm::ivec3 p = glm::ivec3(x, y, z) + marching_cubes::cornerOffset(c);
+                        const bool inside = glm::all(glm::greaterThanEqual(p, glm::ivec3(0))) && glm::all(glm::lessThan(p, layout.gridSize));
+                        solid += inside && grid.at(p) > 0.5f;
+                    }
+                    if (solid != 0 && solid != 8) {
+                        ++crossed;
+                        const glm::ivec3 tile = (layout.gridOrigin + glm::ivec3(x, y, z)) >> 3;
+                        EXPECT_EQ(tile, glm::ivec3(1)) << "the ball's cells lie in world tile (1, 1, 1)";
+                    }
+                }
+        ASSERT_GT(crossed, 20u);
+        MeshStats stats, full;
+        const Mesh mesh = meshMarchingCubes(grid, MeshOptions{}, &stats);
+        const glm::ivec3 tilesPerAxis = ((layout.gridOrigin + 63) >> 3) - ((layout.gridOrigin - 1) >> 3) + 1;
+        EXPECT_EQ(stats.tiles, size_t(tilesPerAxis.x) * tilesPerAxis.y * tilesPerAxis.z);
+        EXPECT_EQ(stats.activeTiles, 1u);
+        EXPECT_EQ(stats.cellsVisited, crossed);
+        EXPECT_EQ(stats.skippedChunks, stats.chunks - 1);
+        expectIdentical(meshMarchingCubes(grid, MeshOptions{.skipUniformChunks = false}, &full), mesh, "without skipping");
+        EXPECT_EQ(full.cellsVisited, size_t(65) * 65 * 65);
+        EXPECT_EQ(full.activeTiles, 1u);
+        EXPECT_GT(mesh.triangles.size(), 0u);
+    }
+}
+
 // M7: chunks meshed separately agree on every border vertex, and welding them by edge key gives
 // the whole mesh.
 TEST(mesh_MarchingCubes, chunksMeshedSeparatelyAgreeOnTheirBorders) {

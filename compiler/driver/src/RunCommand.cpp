@@ -42,7 +42,7 @@ struct RunOptions {
     std::string device = "auto";
     float iso = 0.5f;
     std::string mesher = "mc";
-    std::string meshOn; // "device" or "host"; empty: the device for mc, the host for surface nets
+    std::string meshOn; // "device" or "host"; empty: a GPU for mc, else the host
     std::string solveOn; // "device" or "host"; empty: the device unless it is a CPU (lavapipe)
     bool validate = false;
     bool listDevices = false;
@@ -157,11 +157,15 @@ void run(const RunOptions& options) {
     VulkanContext& context = openDevice();
     times.add("device", deviceMs, "instance, device, pipeline cache");
     // Without shaderFloat64 the default falls back to the host mesher (the same mesh, bit for bit);
-    // asking for the device explicitly is then GpuMarchingCubes' error.
+    // asking for the device explicitly is then GpuMarchingCubes' error. On a CPU device (lavapipe)
+    // the host mesher, which visits only the cells the surface crosses, is the faster of the two
+    // on the same cores (docs/performance.md, "Meshing"), so it is the default there.
     const bool marchingCubes = options.mesher == "mc";
     const bool deviceCanMesh = context.hasShaderFloat64();
-    const bool meshOnDevice = marchingCubes && options.lod.empty() && !options.meshPath.empty() && !run.region &&
-                              edits.empty() && (options.meshOn == "device" || (options.meshOn.empty() && deviceCanMesh));
+    const bool deviceIsCpu = context.device().type == DeviceType::Cpu;
+    const bool meshOnDevice =
+        marchingCubes && options.lod.empty() && !options.meshPath.empty() && !run.region && edits.empty() &&
+        (options.meshOn == "device" || (options.meshOn.empty() && deviceCanMesh && !deviceIsCpu));
     // The grid comes back to the host only for what reads it there: a region's crop, edits, the
     // .npy files, material counts, the LOD meshes and the host meshers.
     const bool hostNeedsGrid = !meshOnDevice || !options.voxelsPath.empty() || !options.materialsPath.empty() ||
@@ -207,7 +211,7 @@ void run(const RunOptions& options) {
         });
     } else if (!options.meshPath.empty()) {
         MeshStats stats;
-        if (marchingCubes && options.meshOn.empty() && !deviceCanMesh && !run.region && edits.empty())
+        if (marchingCubes && options.meshOn.empty() && !deviceCanMesh && !deviceIsCpu && !run.region && edits.empty())
             std::cerr << fmt::format("voxc: note: the device '{}' has no shaderFloat64; marching cubes runs on the host\n",
                                      context.device().name);
         const MeshOptions meshOptions{.iso = options.iso};
@@ -218,7 +222,7 @@ void run(const RunOptions& options) {
         });
         // Both meshers promise a closed mesh of finite vertices, marching cubes a manifold one too;
         // naive surface nets may join four faces at a saddle of the field (reported, not an error).
-        const MeshQuality quality = measureMeshQuality(mesh);
+        const MeshQuality quality = times.time("quality", [&] { return measureMeshQuality(mesh); });
         if (quality.boundaryEdges != 0 || quality.nonFiniteVertices != 0 || quality.misorientedEdges != 0 ||
             (marchingCubes && !quality.manifold()))
             throw InternalError("the " + options.mesher + " mesh is broken: " + describeMeshQuality(quality));
@@ -262,8 +266,9 @@ void addRunCommand(CLI::App& app) {
     command->add_option("--mesher", options->mesher, "mc (marching cubes, manifold; the default) or surface-nets")
         ->check(CLI::IsMember({"mc", "surface-nets"}));
     command->add_option("--mesh-on", options->meshOn,
-                        "device (marching cubes on the Vulkan device, over its voxel buffer; the default for mc) or "
-                        "host (the CPU mesher; always for surface-nets)")
+                        "device (marching cubes on the Vulkan device, over its voxel buffer; the default for mc on a "
+                        "GPU) or host (the CPU mesher; the default on a CPU device such as lavapipe, and always for "
+                        "surface-nets)")
         ->check(CLI::IsMember({"device", "host"}));
     command->add_option("--solve-on", options->solveOn,
                         "device or host: where curves blocks run their multigrid solves and terrain blocks their "

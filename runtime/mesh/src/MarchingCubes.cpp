@@ -2,12 +2,17 @@
 
 #include "CellExtraction.h"
 #include "ChunkWorkers.h"
+#include "SignBits.h"
 #include "voxc/core/Errors.h"
 
 #include <algorithm>
+#include <atomic>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <glm/geometric.hpp>
+#include <memory>
+#include <thread>
 
 namespace voxc::marching_cubes {
 namespace {
@@ -62,7 +67,10 @@ glm::ivec3 axisStep(int axis) {
     return step;
 }
 
-EdgeVertex edgeVertex(const Samples& samples, glm::ivec3 lower, int axis, float iso, float margin, glm::ivec3 gridOrigin) {
+// Samples is a chunk's gathered block, SampleReader reads the grid in place: both return the same
+// densities, so a vertex has the same bits from either.
+template <class SampleSource>
+EdgeVertex edgeVertex(const SampleSource& samples, glm::ivec3 lower, int axis, float iso, float margin, glm::ivec3 gridOrigin) {
     const glm::ivec3 upper = lower + axisStep(axis);
     const float d0 = samples.at(lower), d1 = samples.at(upper);
     const float t = crossing(d0, d1, iso, margin);
@@ -82,14 +90,19 @@ EdgeVertex edgeVertex(const Samples& samples, glm::ivec3 lower, int axis, float 
 }
 
 // The most common material among the solid corners; ties go to the lowest id.
-uint8_t majorityMaterial(const Samples& samples, glm::ivec3 cell, unsigned solid) {
-    int votes[256] = {};
+template <class SampleSource> uint8_t majorityMaterial(const SampleSource& samples, glm::ivec3 cell, unsigned solid) {
+    uint8_t materials[8];
+    int count = 0;
+    for (int c = 0; c < 8; ++c)
+        if ((solid >> c) & 1u) materials[count++] = samples.materialAt(cell + cornerOffset(c));
     uint8_t best = kMaterialNone;
-    for (int c = 0; c < 8; ++c) {
-        if (!((solid >> c) & 1u)) continue;
-        const uint8_t m = samples.materialAt(cell + cornerOffset(c));
-        ++votes[m];
-        if (votes[m] > votes[best] || (votes[m] == votes[best] && m < best)) best = m;
+    int bestVotes = 0;
+    for (int i = 0; i < count; ++i) {
+        const int votes = int(std::count(materials, materials + count, materials[i]));
+        if (votes > bestVotes || (votes == bestVotes && materials[i] < best)) {
+            best = materials[i];
+            bestVotes = votes;
+        }
     }
     return best;
 }
@@ -154,6 +167,342 @@ ChunkMesh extractCells(const ChunkedGrid& grid, float iso, const CellRange& cell
     return mesh;
 }
 
+
+// The grid's samples read in place, as Samples reads its gathered copy: outside the grid and not
+// finite read 0, outside has no material.
+class SampleReader {
+public:
+    explicit SampleReader(const ChunkedGrid& grid)
+        : layout_(grid.layout()), densities_(grid.data().data()), materials_(grid.materials().data()) {}
+    float at(glm::ivec3 p) const {
+        if (!inside(p)) return 0.0f;
+        const float d = densities_[address(p)];
+        return std::isfinite(d) ? d : 0.0f;
+    }
+    uint8_t materialAt(glm::ivec3 p) const { return inside(p) ? materials_[address(p)] : kMaterialNone; }
+    glm::vec3 gradient(glm::ivec3 p) const {
+        return 0.5f * glm::vec3(at(p + glm::ivec3(1, 0, 0)) - at(p - glm::ivec3(1, 0, 0)),
+                                at(p + glm::ivec3(0, 1, 0)) - at(p - glm::ivec3(0, 1, 0)),
+                                at(p + glm::ivec3(0, 0, 1)) - at(p - glm::ivec3(0, 0, 1)));
+    }
+
+    // The samples p + [low, high] read as offsets from p's address, without bounds checks: most
+    // vertices and cells lie inside one chunk of the grid with their neighbours.
+    class Window {
+    public:
+        Window(const SampleReader& reader, glm::ivec3 p)
+            : densities_(reader.densities_), materials_(reader.materials_), p_(p), address_(ptrdiff_t(reader.address(p))),
+              stride_(ptrdiff_t(reader.layout_.chunkSize)) {}
+        float at(glm::ivec3 q) const {
+            const float d = densities_[offset(q)];
+            return std::isfinite(d) ? d : 0.0f;
+        }
+        uint8_t materialAt(glm::ivec3 q) const { return materials_[offset(q)]; }
+        glm::vec3 gradient(glm::ivec3 p) const {
+            return 0.5f * glm::vec3(at(p + glm::ivec3(1, 0, 0)) - at(p - glm::ivec3(1, 0, 0)),
+                                    at(p + glm::ivec3(0, 1, 0)) - at(p - glm::ivec3(0, 1, 0)),
+                                    at(p + glm::ivec3(0, 0, 1)) - at(p - glm::ivec3(0, 0, 1)));
+        }
+
+    private:
+        ptrdiff_t offset(glm::ivec3 q) const {
+            const glm::ivec3 d = q - p_;
+            return address_ + d.x + stride_ * (d.y + stride_ * d.z);
+        }
+        const float* densities_;
+        const uint8_t* materials_;
+        glm::ivec3 p_;
+        ptrdiff_t address_, stride_;
+    };
+    // Whether p + [low, high] lies inside the grid and inside p's chunk (then Window reads it).
+    bool windowFits(glm::ivec3 p, glm::ivec3 low, glm::ivec3 high) const {
+        const glm::ivec3 in = (layout_.gridOrigin + p) & (layout_.chunkSize - 1);
+        return glm::all(glm::greaterThanEqual(p + low, glm::ivec3(0))) && glm::all(glm::lessThan(p + high, layout_.gridSize)) &&
+               glm::all(glm::greaterThanEqual(in + low, glm::ivec3(0))) && glm::all(glm::lessThan(in + high, glm::ivec3(layout_.chunkSize)));
+    }
+
+private:
+    bool inside(glm::ivec3 p) const {
+        return unsigned(p.x) < unsigned(layout_.gridSize.x) && unsigned(p.y) < unsigned(layout_.gridSize.y) &&
+               unsigned(p.z) < unsigned(layout_.gridSize.z);
+    }
+    // ChunkLayout::address, inline for the vertex loop.
+    size_t address(glm::ivec3 local) const {
+        const glm::ivec3 world = layout_.gridOrigin + local;
+        const glm::ivec3 entry = (world >> layout_.chunkShift) - layout_.chunkBase;
+        const glm::ivec3 in = world & (layout_.chunkSize - 1);
+        const size_t slot = size_t(entry.x) + size_t(layout_.chunkCount.x) * (size_t(entry.y) + size_t(layout_.chunkCount.y) * size_t(entry.z));
+        const size_t c = size_t(layout_.chunkSize);
+        return (slot << (3 * layout_.chunkShift)) + size_t(in.x) + c * (size_t(in.y) + c * size_t(in.z));
+    }
+
+    const ChunkLayout& layout_;
+    const float* densities_;
+    const uint8_t* materials_;
+};
+
+// The low `bits` bits of word `w` of a row of bits.
+uint64_t rowMask(size_t w, int bits) {
+    const int first = int(w) * 64;
+    if (bits >= first + 64) return ~uint64_t(0);
+    if (bits <= first) return 0;
+    return (uint64_t(1) << (bits - first)) - 1;
+}
+
+// Bit x of the result is bit x + 1 of the row: the sample one step along +x.
+uint64_t nextBits(const uint64_t* row, size_t w) { return (row[w] >> 1) | (row[w + 1] << 63); }
+
+// A box of cells meshed from the sign bits of its samples: the cells the surface crosses are
+// found 64 at a time (the corners' bits ORed and ANDed over the four sample rows a cell row reads),
+// and only they, and the crossed edges, read densities. A count pass sizes every row's vertices
+// and triangles, a prefix sum places them, and an emit pass writes them in place, so vertices come
+// out in global edge order and triangles in global cell order, as mergeChunks orders the chunks'
+// shares: the same mesh, bit for bit.
+class SparseExtraction {
+public:
+    SparseExtraction(const ChunkedGrid& grid, const CellRange& cells, float iso, float margin, bool skip)
+        : grid_(grid), reader_(grid), cells_(cells), iso_(iso), margin_(margin), skip_(skip),
+          signs_(mesh_bits::classifySamples(grid, iso, cells.begin, cells.end - cells.begin + 1)),
+          extent_(signs_.extent), table_(caseTable()) {
+        for (int e = 0; e < 12; ++e) {
+            const glm::ivec3 o = cornerOffset(edgeCorners(e)[0]);
+            edgeRefs_[e] = {o.x, o.y, o.z, edgeAxis(e)};
+        }
+    }
+
+    Mesh run(MeshStats* stats) {
+        const size_t rows = size_t(extent_.y) * size_t(extent_.z);
+        rowVertices_.assign(rows + 1, 0);
+        rowTriangles_.assign(rows + 1, 0);
+        prepareCounters();
+        forEachChunk(size_t(extent_.z), [&](size_t z) {
+            countSlice(int(z));
+            return true;
+        });
+        // Exclusive prefix sums: the first vertex and triangle of every row.
+        uint64_t vertices = 0, triangles = 0;
+        for (size_t r = 0; r <= rows; ++r) {
+            const uint64_t v = rowVertices_[r], t = rowTriangles_[r];
+            rowVertices_[r] = vertices;
+            rowTriangles_[r] = triangles;
+            vertices += v;
+            triangles += t;
+        }
+        VOXC_ASSERT(vertices <= UINT32_MAX);
+        // Sizing the arrays writes (and first touches) every page of the mesh: the two halves of
+        // its bytes on two workers.
+        Mesh mesh;
+        forEachChunk(2, [&](size_t half) {
+            if (half == 0) {
+                mesh.triangles.resize(triangles * 3);
+                mesh.triangleMaterials.resize(triangles);
+            } else {
+                mesh.positions.resize(vertices);
+                mesh.normals.resize(vertices);
+                mesh.vertexMaterials.resize(vertices);
+            }
+            return true;
+        });
+        // Slabs of slices, a few per thread so that a slab near the surface does not hold the others up.
+        const size_t slabs = std::min<size_t>(size_t(extent_.z), 4 * std::max(1u, std::thread::hardware_concurrency()));
+        forEachChunk(slabs, [&](size_t s) {
+            emitSlab(int(size_t(extent_.z) * s / slabs), int(size_t(extent_.z) * (s + 1) / slabs), mesh);
+            return true;
+        });
+        if (stats) fillStats(*stats);
+        return mesh;
+    }
+
+private:
+    struct EdgeRef {
+        int dx, dy, dz, axis;
+    };
+    struct RowEdges {
+        uint64_t x, y, z;
+    };
+
+    size_t rowIndex(int y, int z) const { return size_t(z) * size_t(extent_.y) + size_t(y); }
+    size_t usedWords() const { return signs_.words - 1; }
+
+    // Crossed edges whose lower sample is in row (y, z), by the axis they run along. An edge
+    // belongs to a cell of the box when its lower sample is in the box and it ends in the box.
+    RowEdges rowEdges(int y, int z, size_t w) const {
+        const uint64_t* s = signs_.row(y, z);
+        RowEdges e{(s[w] ^ nextBits(s, w)) & rowMask(w, extent_.x - 1), 0, 0};
+        if (y + 1 < extent_.y) e.y = (s[w] ^ signs_.row(y + 1, z)[w]) & rowMask(w, extent_.x);
+        if (z + 1 < extent_.z) e.z = (s[w] ^ signs_.row(y, z + 1)[w]) & rowMask(w, extent_.x);
+        return e;
+    }
+
+    // The four sample rows of cell row (y, z) and their bits one step along x: corner c of the
+    // cell at bit i is bit i of corners[c].
+    struct CellRowWord {
+        uint64_t corners[8];
+        uint64_t crossed;
+    };
+    CellRowWord cellRowWord(int y, int z, size_t w) const {
+        CellRowWord c;
+        const uint64_t* rows[4] = {signs_.row(y, z), signs_.row(y + 1, z), signs_.row(y, z + 1), signs_.row(y + 1, z + 1)};
+        uint64_t any = 0, all = ~uint64_t(0);
+        for (int r = 0; r < 4; ++r) {
+            c.corners[2 * r] = rows[r][w];
+            c.corners[2 * r + 1] = nextBits(rows[r], w);
+            any |= c.corners[2 * r] | c.corners[2 * r + 1];
+            all &= c.corners[2 * r] & c.corners[2 * r + 1];
+        }
+        const uint64_t cellsInRow = rowMask(w, extent_.x - 1);
+        c.crossed = skip_ ? any & ~all & cellsInRow : cellsInRow;
+        return c;
+    }
+    static unsigned caseAt(const CellRowWord& c, int bit) {
+        unsigned solid = 0;
+        for (int k = 0; k < 8; ++k) solid |= unsigned((c.corners[k] >> bit) & 1u) << k;
+        return solid;
+    }
+
+    // World-aligned 8^3 tiles and the layout's chunks over the box's cells, for the counters.
+    void prepareCounters() {
+        const ChunkLayout& layout = grid_.layout();
+        const glm::ivec3 firstCell = layout.gridOrigin + cells_.begin, lastCell = layout.gridOrigin + cells_.end - 1;
+        tileFirst_ = firstCell >> 3;
+        tileCount_ = (lastCell >> 3) - tileFirst_ + 1;
+        chunkFirst_ = firstCell >> layout.chunkShift;
+        chunkCount_ = (lastCell >> layout.chunkShift) - chunkFirst_ + 1;
+        tileHit_ = std::vector<std::atomic<uint8_t>>(size_t(tileCount_.x) * tileCount_.y * tileCount_.z);
+        chunkHit_ = std::vector<std::atomic<uint8_t>>(size_t(chunkCount_.x) * chunkCount_.y * chunkCount_.z);
+    }
+    // Written only when not yet set, so that the two threads do not fight over the cache line.
+    static void markHit(std::atomic<uint8_t>& hit) {
+        if (!hit.load(std::memory_order_relaxed)) hit.store(1, std::memory_order_relaxed);
+    }
+    static size_t flat(glm::ivec3 p, glm::ivec3 count) { return size_t(p.x) + size_t(count.x) * (size_t(p.y) + size_t(count.y) * size_t(p.z)); }
+
+    void countSlice(int z) {
+        const glm::ivec3 origin = grid_.layout().gridOrigin + signs_.first;
+        const int shift = grid_.layout().chunkShift;
+        size_t visited = 0;
+        for (int y = 0; y < extent_.y; ++y) {
+            uint64_t vertices = 0, triangles = 0;
+            for (size_t w = 0; w < usedWords(); ++w) {
+                const RowEdges e = rowEdges(y, z, w);
+                vertices += uint64_t(std::popcount(e.x) + std::popcount(e.y) + std::popcount(e.z));
+                if (y + 1 >= extent_.y || z + 1 >= extent_.z) continue;
+                const CellRowWord c = cellRowWord(y, z, w);
+                for (uint64_t bits = c.crossed; bits != 0; bits &= bits - 1) {
+                    const int bit = std::countr_zero(bits);
+                    ++visited;
+                    const uint8_t count = table_[caseAt(c, bit)].triangleCount;
+                    if (count == 0) continue;
+                    triangles += count;
+                    const glm::ivec3 world = origin + glm::ivec3(int(w) * 64 + bit, y, z);
+                    markHit(tileHit_[flat((world >> 3) - tileFirst_, tileCount_)]);
+                    markHit(chunkHit_[flat((world >> shift) - chunkFirst_, chunkCount_)]);
+                }
+            }
+            rowVertices_[rowIndex(y, z)] = vertices;
+            rowTriangles_[rowIndex(y, z)] = triangles;
+        }
+        cellsVisited_ += visited;
+    }
+
+    // Slices [begin, end) of vertices and of cells; the slice after the last is read for the
+    // indices of its vertices (the next slab writes them).
+    void emitSlab(int begin, int end, Mesh& mesh) {
+        const size_t sliceSize = size_t(extent_.x) * size_t(extent_.y) * 3;
+        // Vertex index of edge (x, y, axis) of the slices z (slot z & 1); entries are written for
+        // crossed edges only, and only those are read.
+        std::unique_ptr<uint32_t[]> indices(new uint32_t[2 * sliceSize]);
+        for (int z = begin; z <= end && z < extent_.z; ++z) {
+            indexSlice(z, indices.get() + size_t(z & 1) * sliceSize, z < end ? &mesh : nullptr);
+            if (z > begin && z - 1 < extent_.z - 1) emitCells(z - 1, indices.get(), sliceSize, mesh);
+        }
+    }
+
+    void indexSlice(int z, uint32_t* index, Mesh* mesh) const {
+        const glm::ivec3 origin = grid_.layout().gridOrigin;
+        for (int y = 0; y < extent_.y; ++y) {
+            uint32_t next = uint32_t(rowVertices_[rowIndex(y, z)]);
+            for (size_t w = 0; w < usedWords(); ++w) {
+                const RowEdges e = rowEdges(y, z, w);
+                for (uint64_t bits = e.x | e.y | e.z; bits != 0; bits &= bits - 1) {
+                    const int bit = std::countr_zero(bits), x = int(w) * 64 + bit;
+                    const uint64_t axes[3] = {e.x, e.y, e.z};
+                    for (int axis = 0; axis < 3; ++axis) {
+                        if (!((axes[axis] >> bit) & 1u)) continue;
+                        index[(size_t(y) * size_t(extent_.x) + size_t(x)) * 3 + size_t(axis)] = next;
+                        if (mesh) {
+                            const glm::ivec3 lower = signs_.first + glm::ivec3(x, y, z);
+                            const EdgeVertex v =
+                                reader_.windowFits(lower, glm::ivec3(-1), glm::ivec3(1) + axisStep(axis))
+                                    ? edgeVertex(SampleReader::Window(reader_, lower), lower, axis, iso_, margin_, origin)
+                                    : edgeVertex(reader_, lower, axis, iso_, margin_, origin);
+                            mesh->positions[next] = v.position;
+                            mesh->normals[next] = v.normal;
+                            mesh->vertexMaterials[next] = v.material;
+                        }
+                        ++next;
+                    }
+                }
+            }
+        }
+    }
+
+    void emitCells(int z, const uint32_t* indices, size_t sliceSize, Mesh& mesh) const {
+        for (int y = 0; y + 1 < extent_.y; ++y) {
+            size_t triangle = size_t(rowTriangles_[rowIndex(y, z)]);
+            for (size_t w = 0; w < usedWords(); ++w) {
+                const CellRowWord c = cellRowWord(y, z, w);
+                for (uint64_t bits = c.crossed; bits != 0; bits &= bits - 1) {
+                    const int bit = std::countr_zero(bits), x = int(w) * 64 + bit;
+                    const unsigned solid = caseAt(c, bit);
+                    const CellCase& cellCase = table_[solid];
+                    if (cellCase.triangleCount == 0) continue;
+                    const glm::ivec3 cell = signs_.first + glm::ivec3(x, y, z);
+                    const uint8_t material = reader_.windowFits(cell, glm::ivec3(0), glm::ivec3(1))
+                                                 ? majorityMaterial(SampleReader::Window(reader_, cell), cell, solid)
+                                                 : majorityMaterial(reader_, cell, solid);
+                    for (int t = 0; t < cellCase.triangleCount; ++t, ++triangle) {
+                        for (int k = 0; k < 3; ++k) {
+                            const EdgeRef& r = edgeRefs_[cellCase.edges[size_t(t * 3 + k)]];
+                            const uint32_t* slice = indices + size_t((z + r.dz) & 1) * sliceSize;
+                            mesh.triangles[triangle * 3 + size_t(k)] =
+                                slice[(size_t(y + r.dy) * size_t(extent_.x) + size_t(x + r.dx)) * 3 + size_t(r.axis)];
+                        }
+                        mesh.triangleMaterials[triangle] = material;
+                    }
+                }
+            }
+        }
+    }
+
+    void fillStats(MeshStats& stats) const {
+        const ChunkLayout& layout = grid_.layout();
+        stats.chunks = cellChunks(layout).size();
+        size_t hit = 0;
+        for (const auto& h : chunkHit_) hit += h.load(std::memory_order_relaxed);
+        // Without skipping only the chunks outside the box go unvisited.
+        stats.skippedChunks = stats.chunks - (skip_ ? hit : chunkHit_.size());
+        stats.tiles = tileHit_.size();
+        stats.activeTiles = 0;
+        for (const auto& h : tileHit_) stats.activeTiles += h.load(std::memory_order_relaxed);
+        stats.cellsVisited = cellsVisited_.load();
+    }
+
+    const ChunkedGrid& grid_;
+    const SampleReader reader_;
+    const CellRange cells_;
+    const float iso_, margin_;
+    const bool skip_;
+    const mesh_bits::SignBits signs_;
+    const glm::ivec3 extent_;
+    const std::array<CellCase, 256>& table_;
+    EdgeRef edgeRefs_[12];
+    std::vector<uint64_t> rowVertices_, rowTriangles_;
+    glm::ivec3 tileFirst_{0}, tileCount_{0}, chunkFirst_{0}, chunkCount_{0};
+    std::vector<std::atomic<uint8_t>> tileHit_, chunkHit_;
+    std::atomic<size_t> cellsVisited_{0};
+};
+
 } // namespace
 
 ChunkMesh extractChunk(const ChunkedGrid& grid, float iso, glm::ivec3 worldChunk) {
@@ -182,20 +531,17 @@ Mesh meshMarchingCubes(const ChunkedGrid& grid, const MeshOptions& options, Mesh
                                   stats);
 }
 
+const char* hostMeshSimd() { return mesh_bits::classificationPath(); }
+
 Mesh meshMarchingCubesCells(const ChunkedGrid& grid, const CellBox& cells, float margin, const MeshOptions& options,
                             MeshStats* stats) {
-    const std::vector<glm::ivec3> chunks = cellChunks(grid.layout());
-    std::vector<ChunkMesh> parts(chunks.size());
-    const size_t skipped = forEachChunk(chunks.size(), [&](size_t i) {
-        const surface_nets::CellRange chunk = surface_nets::chunkCells(grid.layout(), chunks[i]);
-        const surface_nets::CellRange share{glm::max(chunk.begin, cells.begin), glm::min(chunk.end, cells.end)};
-        if (share.empty() || (options.skipUniformChunks && surface_nets::cellsAreUniform(grid, options.iso, share)))
-            return false;
-        parts[i] = marching_cubes::extractCells(grid, options.iso, share, margin);
-        return true;
-    });
-    if (stats) *stats = MeshStats{chunks.size(), skipped};
-    return marching_cubes::mergeChunks(std::move(parts));
+    // The box's cells that are cells of the grid (-1 to its size - 1).
+    const surface_nets::CellRange share{glm::max(cells.begin, glm::ivec3(-1)), glm::min(cells.end, grid.layout().gridSize)};
+    if (share.empty()) {
+        if (stats) *stats = MeshStats{cellChunks(grid.layout()).size(), cellChunks(grid.layout()).size()};
+        return {};
+    }
+    return marching_cubes::SparseExtraction(grid, share, options.iso, margin, options.skipUniformChunks).run(stats);
 }
 
 Mesh marching_cubes::mergeChunks(std::vector<ChunkMesh> parts) {

@@ -29,7 +29,13 @@ namespace voxc {
 // float spacings wide for world coordinates below 2^10.
 inline constexpr float kCrossingMargin = 1.0f / 1024.0f;
 
+// The whole grid on the chunk workers. The samples are classified into solid/air bits in one
+// streaming pass (AVX2 where the CPU has it); cells are then tested 64 at a time on those bits, and
+// only the cells the surface crosses, and their crossed edges, read densities and materials. The
+// result equals marching_cubes::mergeChunks over every chunk's extractChunk, byte for byte.
 Mesh meshMarchingCubes(const ChunkedGrid& grid, const MeshOptions& options, MeshStats* stats = nullptr);
+// "avx2" or "scalar": the sample classification the host meshers run on this CPU.
+const char* hostMeshSimd();
 
 // Cells named by their minimum corner, grid-local, begin <= cell < end; the grid's cells run from
 // -1 to its size - 1 (the air outside closes the surface).
