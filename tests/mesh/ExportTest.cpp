@@ -5,6 +5,7 @@
 #include "voxc/mesh/SurfaceNets.h"
 
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
@@ -107,6 +108,30 @@ Mesh materialBallMesh() {
     return meshSurfaceNets(grid, 0.5f);
 }
 
+// sRGB encoding of a linear channel (IEC 61966-2-1), in double, independent of the exporter's.
+double srgb(double linear) { return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055; }
+
+// A .mtl of one `newmtl` + `Kd` per material, in order, with Kd the sRGB encoding of the linear colour.
+void expectMaterialLibrary(const std::string& text, const std::vector<std::pair<std::string, glm::vec3>>& expected) {
+    std::istringstream lines(text);
+    std::string line;
+    std::getline(lines, line);
+    EXPECT_EQ(line, "# voxc materials");
+    for (const auto& [name, linear] : expected) {
+        std::getline(lines, line);
+        EXPECT_EQ(line, "newmtl " + name);
+        std::string keyword;
+        double r = -1, g = -1, b = -1;
+        lines >> keyword >> r >> g >> b;
+        lines.ignore(1);
+        EXPECT_EQ(keyword, "Kd") << name;
+        EXPECT_NEAR(r, srgb(linear.r), 1e-6) << name;
+        EXPECT_NEAR(g, srgb(linear.g), 1e-6) << name;
+        EXPECT_NEAR(b, srgb(linear.b), 1e-6) << name;
+    }
+    EXPECT_FALSE(std::getline(lines, line)) << "more lines than materials: " << line;
+}
+
 std::vector<Material> rockAndSand() {
     Material rock{.name = "rock", .loc = {}, .id = 1, .color = {1.0f, 0.5f, 0.0f}};
     Material sand{.name = "sand", .loc = {}, .id = 2, .color = {0.2f, 0.4f, 0.6f}};
@@ -131,16 +156,18 @@ TEST(mesh_Export, plyCarriesVertexMaterialsAndColours) {
     EXPECT_EQ(back.triangles, mesh.triangles);
     EXPECT_EQ(back.vertexMaterials, mesh.vertexMaterials);
     EXPECT_EQ(back.triangleMaterials, mesh.triangleMaterials);
-    // The colours as bytes: rock and sand as declared, the undeclared id 7 neutral grey (153/255).
+    // The colours read back (decoded from sRGB bytes): rock and sand as declared, the undeclared
+    // id 7 neutral grey (0.6), each within the rounding of a byte.
     ASSERT_EQ(colours.size(), 3u);
+    const auto near = [](glm::vec3 a, glm::vec3 b) { return glm::all(glm::lessThan(glm::abs(a - b), glm::vec3(0.004f))); };
     EXPECT_EQ(colours[0].id, 1);
-    EXPECT_EQ(colours[0].color, glm::vec3(1.0f, 128.0f / 255.0f, 0.0f));
+    EXPECT_TRUE(near(colours[0].color, {1.0f, 0.5f, 0.0f}));
     EXPECT_EQ(colours[1].id, 2);
-    EXPECT_EQ(colours[1].color, glm::vec3(51.0f / 255.0f, 102.0f / 255.0f, 153.0f / 255.0f));
+    EXPECT_TRUE(near(colours[1].color, {0.2f, 0.4f, 0.6f}));
     EXPECT_EQ(colours[2].name, "material7");
-    EXPECT_EQ(colours[2].color, glm::vec3(153.0f / 255.0f));
-    // Colours: rock (255,128,0), sand (51,102,153), undeclared id 7 grey (153,153,153).
-    const std::map<uint8_t, std::array<uint8_t, 3>> colors = {{1, {255, 128, 0}}, {2, {51, 102, 153}}, {7, {153, 153, 153}}};
+    EXPECT_TRUE(near(colours[2].color, glm::vec3(0.6f)));
+    // The bytes are sRGB, as PLY viewers read them: linear 0.5 -> 188, 0.2 -> 124, 0.4 -> 170, 0.6 -> 203.
+    const std::map<uint8_t, std::array<uint8_t, 3>> colors = {{1, {255, 188, 0}}, {2, {124, 170, 203}}, {7, {203, 203, 203}}};
     std::set<uint8_t> seen;
     for (size_t v = 0; v < mesh.positions.size(); ++v) {
         const char* record = bytes.data() + header.size() + v * 28 + 24;
@@ -172,8 +199,7 @@ TEST(mesh_Export, objGroupsFacesByMaterialWithALibraryBesideIt) {
     std::filesystem::create_directories(dir);
     writeMesh(dir + "ball.OBJ", mesh, rockAndSand());
     ASSERT_TRUE(std::filesystem::exists(dir + "ball.mtl"));
-    EXPECT_EQ(readText(dir + "ball.mtl"),
-              "# voxc materials\nnewmtl rock\nKd 1 0.5 0\nnewmtl sand\nKd 0.2 0.4 0.6\nnewmtl material7\nKd 0.6 0.6 0.6\n");
+    expectMaterialLibrary(readText(dir + "ball.mtl"), {{"rock", {1.0f, 0.5f, 0.0f}}, {"sand", {0.2f, 0.4f, 0.6f}}, {"material7", glm::vec3(0.6f)}});
 
     std::istringstream lines(readText(dir + "ball.OBJ"));
     std::string line, group;
@@ -218,7 +244,7 @@ TEST(mesh_Export, objMaterialGroupOfNoneWhenOnlyTheListIsGiven) {
     const std::string text = readText(path);
     EXPECT_NE(text.find("mtllib mesh_none.mtl\n"), std::string::npos);
     EXPECT_NE(text.find("g none\nusemtl none\n"), std::string::npos);
-    EXPECT_EQ(readText(testing::TempDir() + "mesh_none.mtl"), "# voxc materials\nnewmtl none\nKd 0.6 0.6 0.6\n");
+    expectMaterialLibrary(readText(testing::TempDir() + "mesh_none.mtl"), {{"none", glm::vec3(0.6f)}});
 }
 
 TEST(mesh_Export, unwritableObjLeavesNoFiles) {

@@ -18,6 +18,16 @@ MaterialLook lookOf(uint8_t id, std::span<const Material> materials) {
 
 uint8_t colorByte(float channel) { return uint8_t(std::lround(std::clamp(channel, 0.0f, 1.0f) * 255.0f)); }
 
+float linearToSrgb(float linear) {
+    const float c = std::clamp(linear, 0.0f, 1.0f);
+    return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+}
+
+float srgbToLinear(float srgb) {
+    const float c = std::clamp(srgb, 0.0f, 1.0f);
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
 bool writesMaterials(const Mesh& mesh, std::span<const Material> materials) {
     auto nonZero = [](uint8_t id) { return id != kMaterialNone; };
     return !materials.empty() || std::any_of(mesh.vertexMaterials.begin(), mesh.vertexMaterials.end(), nonZero) ||

@@ -18,6 +18,12 @@ MaterialLook lookOf(uint8_t id, std::span<const Material> materials);
 // Colour channel as a byte: [0, 1] rounded to 0..255.
 uint8_t colorByte(float channel);
 
+// Declared colours are linear RGB (glTF's baseColorFactor takes them as they are). OBJ's Kd and
+// PLY's vertex colours are read as sRGB by their viewers (assimp, three.js, MeshLab, Blender), so
+// those files carry the sRGB encoding (IEC 61966-2-1) and their readers decode it.
+float linearToSrgb(float linear);
+float srgbToLinear(float srgb);
+
 // Materials are written when the caller names some (a program that declares materials) or the
 // mesh carries a non-zero id; a plain mesh keeps the plain format.
 bool writesMaterials(const Mesh& mesh, std::span<const Material> materials);

@@ -19,13 +19,15 @@ void appendFace(fmt::memory_buffer& out, const Mesh& mesh, size_t triangle) {
     fmt::format_to(std::back_inserter(out), "f {}//{} {}//{} {}//{}\n", a, a, b, b, c, c);
 }
 
-// One `newmtl` per id the faces use, ascending; Kd is the only property viewers need here.
+// One `newmtl` per id the faces use, ascending; Kd is the only property viewers need here, in
+// sRGB as OBJ readers take it.
 std::string materialLibrary(const std::set<uint8_t>& ids, std::span<const Material> materials) {
     fmt::memory_buffer out;
     fmt::format_to(std::back_inserter(out), "# voxc materials\n");
     for (uint8_t id : ids) {
         const mesh_export::MaterialLook look = mesh_export::lookOf(id, materials);
-        fmt::format_to(std::back_inserter(out), "newmtl {}\nKd {} {} {}\n", look.name, look.color.r, look.color.g, look.color.b);
+        fmt::format_to(std::back_inserter(out), "newmtl {}\nKd {} {} {}\n", look.name, mesh_export::linearToSrgb(look.color.r),
+                       mesh_export::linearToSrgb(look.color.g), mesh_export::linearToSrgb(look.color.b));
     }
     return std::string(out.data(), out.size());
 }

@@ -81,7 +81,7 @@ void writePly(OutputFiles& outputs, const std::string& path, const Mesh& mesh, s
         const uint8_t id = mesh_export::vertexMaterial(mesh, v);
         const glm::vec3 color = mesh_export::lookOf(id, materials).color;
         append(bytes, id);
-        for (int c = 0; c < 3; ++c) append(bytes, mesh_export::colorByte(color[c]));
+        for (int c = 0; c < 3; ++c) append(bytes, mesh_export::colorByte(mesh_export::linearToSrgb(color[c])));
     }
     for (size_t t = 0; t < mesh.triangles.size(); t += 3) {
         append(bytes, uint8_t(3));
@@ -144,7 +144,7 @@ Mesh readPly(const std::string& path, std::vector<Material>* materials) {
             const uint8_t id = mesh.vertexMaterials[v];
             if (id != 0 && !coloured[id]) {
                 coloured[id] = true;
-                const auto channel = [&](int c) { return float(uint8_t(at[kVertexBytes + 1 + c])) / 255.0f; };
+                const auto channel = [&](int c) { return mesh_export::srgbToLinear(float(uint8_t(at[kVertexBytes + 1 + c])) / 255.0f); };
                 found[id] = glm::vec3(channel(0), channel(1), channel(2));
             }
         }

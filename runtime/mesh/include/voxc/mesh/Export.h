@@ -15,14 +15,15 @@ namespace voxc {
 // is `none`, and an id not in the list is written as `material<id>`, both in neutral grey.
 
 // Binary little-endian PLY: vertex x y z nx ny nz (float), and when the mesh has materials
-// `uchar material` plus `uchar red green blue` (the material's colour, so viewers show it);
+// `uchar material` plus `uchar red green blue` (the material's colour in sRGB, as viewers read
+// vertex colours);
 // face list uchar int vertex_indices, and with materials `uchar material` (the triangle's).
 void writePly(const std::string& path, const Mesh& mesh, std::span<const Material> materials = {});
 void writePly(OutputFiles& outputs, const std::string& path, const Mesh& mesh, std::span<const Material> materials = {});
 // Wavefront OBJ: `v`, `vn`, and `f a//a b//b c//c` with 1-based indices. When the mesh has
 // materials, faces are grouped by material (`g NAME` + `usemtl NAME`, ascending id) and
 // `mtllib STEM.mtl` names a material library written beside the OBJ (objMaterialLibraryPath),
-// Kd = colour. The two files are one set: the .mtl is renamed first, so an OBJ on disk never
+// Kd = colour in sRGB (as OBJ viewers read it). The two files are one set: the .mtl is renamed first, so an OBJ on disk never
 // names a missing library, and a failure leaves both previous files as they were.
 void writeObj(const std::string& path, const Mesh& mesh, std::span<const Material> materials = {});
 void writeObj(OutputFiles& outputs, const std::string& path, const Mesh& mesh, std::span<const Material> materials = {});
@@ -48,7 +49,7 @@ std::string objMaterialLibraryPath(const std::string& objPath);
 // Reads the PLY subset writePly produces (triangles only; vertex and triangle materials when the
 // file has them); UserError on anything else. `materials`, when given, receives each non-zero
 // material id the vertices carry, ascending, named `material<id>`, with the colour the file gives
-// it (bytes / 255: what `voxc render` draws a mesh file with).
+// it (the sRGB bytes decoded to linear: what `voxc render` draws a mesh file with).
 Mesh readPly(const std::string& path, std::vector<Material>* materials = nullptr);
 
 } // namespace voxc
