@@ -2,6 +2,9 @@
 #include "CheckTestUtil.h"
 
 #include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
 #include <gtest/gtest.h>
 
 namespace voxc {
@@ -72,6 +75,25 @@ TEST(check_Aggregates, AnAllIgnSymbolWithATestIsNotW0201) {
     };
     EXPECT_FALSE(warnsW0201(check(ruleWhere("where { mean = [0, 1]; }"))));
     EXPECT_TRUE(warnsW0201(check(ruleWhere(""))));
+}
+
+// A mean's bounds times the box's cells bound its sum as floats: a product past the largest float
+// (3e38 * 15) is a located E0007 at the bound, not an infinite bound for the kernels to write;
+// the largest bound whose product is a float passes, and its sum bound is finite.
+TEST(check_Aggregates, MeanBoundsWhoseSumBoundIsNoFloatAreLocatedErrors) {
+    const CheckResult tooLarge = check(ruleWhere("where { mean = [0, 3e38]; }"));
+    EXPECT_EQ(codes(tooLarge), Codes{"E0007"});
+    EXPECT_NE(tooLarge.rendered().find("test.vox:8:20: error E0007: 'mean' bounds lie in"), std::string::npos)
+        << tooLarge.rendered();
+    EXPECT_NE(tooLarge.rendered().find("15 cells"), std::string::npos) << tooLarge.rendered();
+    EXPECT_EQ(codes(check(ruleWhere("where { mean = [-3e38, 0]; }"))), Codes{"E0007"});
+    EXPECT_FALSE(check(ruleWhere("where { box = [[0, 0, 0], [1, 1, 1]]; mean = [0, 3e38]; }")).hasErrors());
+    const double largest = double(std::numeric_limits<float>::max()) / 15.0 * (1.0 - 1e-12);
+    const auto tests = testsOf(check(ruleWhere(fmt::format("where {{ mean = [-{0:.15f}e37, {0:.15f}e37]; }}", largest / 1e37))));
+    ASSERT_EQ(tests.size(), 1u);
+    EXPECT_TRUE(std::isfinite(tests[0].low) && std::isfinite(tests[0].high));
+    EXPECT_EQ(tests[0].high, std::numeric_limits<float>::max());
+    EXPECT_FALSE(check(ruleWhere("where { max = [0, 3e38]; }")).hasErrors()); // a value, not a sum
 }
 
 TEST(check_Aggregates, BadBlocksAreLocatedErrors) {

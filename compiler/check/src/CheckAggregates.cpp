@@ -2,7 +2,10 @@
 
 #include "Values.h"
 
+#include "voxc/core/Errors.h"
+
 #include <cmath>
+#include <limits>
 #include <fmt/format.h>
 
 namespace voxc::check {
@@ -14,9 +17,19 @@ namespace {
 uint32_t fewestCells(double low, int64_t n) { return uint32_t(std::ceil(std::round(low * double(n) * 1e9) / 1e9)); }
 uint32_t mostCells(double high, int64_t n) { return uint32_t(std::floor(std::round(high * double(n) * 1e9) / 1e9)); }
 
+// The largest bound b with float(b * scale) finite: the largest float over scale, rounded down to
+// a double whose product with scale stays at or below the largest float.
+double largestFiniteBound(double scale) {
+    const double largest = std::numeric_limits<float>::max();
+    double bound = largest / scale;
+    while (bound * scale > largest) bound = std::nextafter(bound, 0.0);
+    return bound;
+}
+
 // `[low, high]` with low <= high, each within [min, max] (E0010 for another shape, E0007 out of range).
 std::optional<std::array<double, 2>> readBounds(Context& context, const ast::Assignment& a,
-                                                const std::vector<const ast::Value*>& values, double min, double max) {
+                                                const std::vector<const ast::Value*>& values, double min, double max,
+                                                std::string_view why = "") {
     std::array<double, 2> bounds{};
     for (size_t i = 0; i < 2; ++i) {
         const ast::Value& value = *values[i];
@@ -28,8 +41,8 @@ std::optional<std::array<double, 2>> readBounds(Context& context, const ast::Ass
         if (!number) return std::nullopt;
         if (!(*number >= min && *number <= max)) {
             context.diagnostics.error("E0007", value.loc,
-                                      fmt::format("'{}' bounds lie in [{}, {}], got {}", a.key, formatNumber(min),
-                                                  formatNumber(max), formatNumber(*number)));
+                                      fmt::format("'{}' bounds lie in [{}, {}]{}, got {}", a.key, formatNumber(min),
+                                                  formatNumber(max), why, formatNumber(*number)));
             return std::nullopt;
         }
         bounds[i] = *number;
@@ -90,14 +103,21 @@ std::vector<AggregateTest> checkWhereBlock(Context& context, const ast::Block& b
         if (!a) return;
         auto values = listOf(context, *a, 2, "[low, high]");
         if (!values) return;
-        const double limit = std::numeric_limits<float>::max();
-        auto bounds = readBounds(context, *a, *values, -limit, limit);
+        // The mean's bounds bound the sum of the box's cells: low * n and high * n must be floats
+        // too (finite once rounded), so a mean's bounds lie within the largest float over n.
+        const double scale = kind == AggregateKind::Mean ? double(cells) : 1.0;
+        const double limit = largestFiniteBound(scale);
+        const std::string why =
+            kind == AggregateKind::Mean
+                ? fmt::format(" (their products with the box's {} cells, which bound its sum, must be floats)", cells)
+                : std::string();
+        auto bounds = readBounds(context, *a, *values, -limit, limit, why);
         if (!bounds) return;
         AggregateTest test = base;
         test.kind = kind;
-        const double scale = kind == AggregateKind::Mean ? double(cells) : 1.0; // the mean's bounds bound the sum
         test.low = float((*bounds)[0] * scale);
         test.high = float((*bounds)[1] * scale);
+        VOXC_ASSERT(std::isfinite(test.low) && std::isfinite(test.high));
         tests.push_back(test);
     };
     valueRange("mean", AggregateKind::Mean);
