@@ -149,44 +149,6 @@ void relaxColourRow(Level& level, size_t c, int32_t colour, bool zeroRhs, int32_
     if (n > 1) endCell(n - 1);
 }
 
-// `sweeps` red-black sweeps of every component in one pass over the z slices (a wavefront):
-// step t runs half sweep h (colour h & 1) on slice t - h, h = 0 .. 2 sweeps - 1 in order. Half
-// sweep h of slice z reads the other colour of slices z - 1 .. z + 1 as half sweep h - 1 left
-// them: slice z + 1 got it earlier in the same step, slice z in the step before, slice z - 1 two
-// steps before, and half sweep h + 1 reaches none of them before h is done. So each cell takes
-// the value the plain sweep-by-sweep loop gives it, bit for bit, while a sweep's slices are still
-// in cache for the next. On two threads each takes half the rows of every slice: a cell's z
-// neighbours lie in its own rows, and the other colour's cells of its slice (rows y +- 1) do not
-// change during the step, so one barrier per step keeps the order.
-void smooth(Level& level, int32_t sweeps, bool zeroRhs) {
-    if (sweeps <= 0) return;
-    const Box& b = level.box;
-    const std::vector<float> zeros(size_t(b.size.x), 0.0f);
-    const int32_t halfSweeps = 2 * sweeps, steps = b.size.z + halfSweeps - 1;
-    // Nothing below allocates or throws: the scratch rows exist before the threads start.
-    std::vector<float> scratch(2 * size_t(b.size.x), 0.0f);
-    const bool threaded = b.cellCount() >= kMinCellsForThreadedSmoothing && b.size.y >= 2;
-    auto rows = [&](int32_t y0, int32_t y1, float* relaxed, auto&& sync) {
-        for (int32_t t = 0; t < steps; ++t) {
-            for (int32_t h = 0; h < halfSweeps; ++h) {
-                const int32_t z = t - h;
-                if (z < 0 || z >= b.size.z) continue;
-                for (size_t c = 0; c < level.u.size(); ++c)
-                    for (int32_t y = y0; y < y1; ++y)
-                        relaxColourRow(level, c, h & 1, zeroRhs, y, z, threaded && (y == y0 || y + 1 == y1), zeros.data(),
-                                       relaxed);
-            }
-            sync();
-        }
-    };
-    if (!threaded) return rows(0, b.size.y, scratch.data(), [] {});
-    const int32_t mid = b.size.y / 2;
-    std::barrier<> step(2);
-    std::thread other([&] { rows(0, mid, scratch.data() + b.size.x, [&] { step.arrive_and_wait(); }); });
-    rows(mid, b.size.y, scratch.data(), [&] { step.arrive_and_wait(); });
-    other.join();
-}
-
 // r = f - sum_j w_j (u_j - u_i) on free cells (the caller skips fixed ones).
 float residualAt(const Level& level, const std::vector<float>& u, float f, int32_t x, int32_t y, int32_t z) {
     const size_t i = level.box.index(x, y, z);
@@ -242,6 +204,132 @@ glm::ivec3 halvedAxes(const Box& b) {
 
 glm::ivec3 parentOf(const glm::ivec3& halved, int32_t x, int32_t y, int32_t z) {
     return {x >> halved.x, y >> halved.y, z >> halved.z};
+}
+
+// Trilinear cell-centred interpolation of coarse values at every free fine cell, along x, then
+// y, then z: on a halved axis weights 3/4 (own parent) and 1/4 (the next parent towards the
+// child, clamped at the box), on a kept axis 1 and 0; added to or written into u. Pointwise, so
+// rows may be done in any order, on any thread.
+class Prolongation {
+public:
+    Prolongation(const Box& coarse, const Level& fine) : coarse_(coarse), fine_(fine), halved_(halvedAxes(fine.box)) {
+        for (int32_t a = 0; a < 3; ++a) near_[a] = halved_[a] ? 0.75f : 1.0f, far_[a] = 1.0f - near_[a];
+        // Per fine x: the own and the other parent column.
+        xs0_.resize(size_t(fine.box.size.x)), xs1_.resize(size_t(fine.box.size.x));
+        for (int32_t x = 0; x < fine.box.size.x; ++x)
+            xs0_[size_t(x)] = x >> halved_.x, xs1_[size_t(x)] = other(x, coarse.size.x, halved_.x);
+    }
+
+    void row(const std::vector<float>& e, std::vector<float>& u, bool add, int32_t y, int32_t z) const {
+        const Box& b = fine_.box;
+        const int32_t ys[2] = {y >> halved_.y, other(y, coarse_.size.y, halved_.y)};
+        const int32_t zs[2] = {z >> halved_.z, other(z, coarse_.size.z, halved_.z)};
+        const float* rows[2][2]; // [k][j]: coarse row (ys[j], zs[k])
+        for (int32_t k = 0; k < 2; ++k)
+            for (int32_t j = 0; j < 2; ++j) rows[k][j] = e.data() + coarse_.index(0, ys[j], zs[k]);
+        const size_t i0 = b.index(0, y, z);
+        const uint8_t* fixed = fine_.fixed.data() + i0;
+        float* out = u.data() + i0;
+        for (int32_t x = 0; x < b.size.x; ++x) {
+            if (fixed[x]) continue;
+            const int32_t x0 = xs0_[size_t(x)], x1 = xs1_[size_t(x)];
+            float alongY[2];
+            for (int32_t k = 0; k < 2; ++k) {
+                const float alongX0 = near_[0] * rows[k][0][x0] + far_[0] * rows[k][0][x1];
+                const float alongX1 = near_[0] * rows[k][1][x0] + far_[0] * rows[k][1][x1];
+                alongY[k] = near_[1] * alongX0 + far_[1] * alongX1;
+            }
+            const float v = near_[2] * alongY[0] + far_[2] * alongY[1];
+            out[x] = add ? out[x] + v : v;
+        }
+    }
+
+private:
+    static int32_t other(int32_t v, int32_t n, int32_t h) {
+        return h ? std::clamp((v & 1) ? v / 2 + 1 : v / 2 - 1, 0, n - 1) : v;
+    }
+    const Box& coarse_;
+    const Level& fine_;
+    glm::ivec3 halved_;
+    float near_[3], far_[3];
+    std::vector<int32_t> xs0_, xs1_;
+};
+
+void prolong(const Box& coarse, const std::vector<float>& e, const Level& fine, std::vector<float>& u, bool add) {
+    const Prolongation p(coarse, fine);
+    forTwoSlabs(fine.box.size.z, kMinSlicesForThreads, [&](int32_t z0, int32_t z1) {
+        for (int32_t z = z0; z < z1; ++z)
+            for (int32_t y = 0; y < fine.box.size.y; ++y) p.row(e, u, add, y, z);
+    });
+}
+
+// `sweeps` red-black sweeps of every component in one pass over the z slices (a wavefront):
+// step t runs half sweep h (colour h & 1) on slice t - h, h = 0 .. 2 sweeps - 1 in order. Half
+// sweep h of slice z reads the other colour of slices z - 1 .. z + 1 as half sweep h - 1 left
+// them: slice z + 1 got it earlier in the same step, slice z in the step before, slice z - 1 two
+// steps before, and half sweep h + 1 reaches none of them before h is done. So each cell takes
+// the value the plain sweep-by-sweep loop gives it, bit for bit, while a sweep's slices are still
+// in cache for the next. On two threads each takes half the rows of every slice: a cell's z
+// neighbours lie in its own rows, and the other colour's cells of its slice (rows y +- 1) do not
+// change during the step, so one barrier per step keeps the order.
+// The same pass may first add a coarse correction (`correction`: slice t at step t, the sweeps
+// one slice behind, so half sweep 0 of a slice finds its neighbour slices corrected, those of
+// the other thread's rows in an earlier step) and measure the max residual with f = 0 at the end
+// (`maxResidual`: the slice two sweeps behind the last half sweep, once its neighbour slices are
+// final; as maxResidualOf, and a max does not depend on the order).
+struct Correction {
+    const Prolongation& prolongation;
+    const Level& coarse;
+};
+
+void smooth(Level& level, int32_t sweeps, bool zeroRhs, const Correction* correction = nullptr,
+            float* maxResidual = nullptr) {
+    const Box& b = level.box;
+    const std::vector<float> zeros(size_t(b.size.x), 0.0f);
+    const int32_t halfSweeps = 2 * std::max(sweeps, 0);
+    // With a correction, step t adds it to slice t and the sweeps run one slice behind.
+    const int32_t lag = correction ? 1 : 0;
+    const int32_t steps = b.size.z + halfSweeps - 1 + lag + (maxResidual ? 1 : 0);
+    // Nothing below allocates or throws: the scratch rows exist before the threads start.
+    std::vector<float> scratch(4 * size_t(b.size.x), 0.0f);
+    const bool threaded = b.cellCount() >= kMinCellsForThreadedSmoothing && b.size.y >= 2;
+    float worst[2] = {0.0f, 0.0f};
+    auto rows = [&](int32_t y0, int32_t y1, float* relaxed, float* residual, float& w, auto&& sync) {
+        for (int32_t t = 0; t < steps; ++t) {
+            if (correction && t < b.size.z)
+                for (size_t c = 0; c < level.u.size(); ++c)
+                    for (int32_t y = y0; y < y1; ++y)
+                        correction->prolongation.row(correction->coarse.u[c], level.u[c], true, y, t);
+            for (int32_t h = 0; h < halfSweeps; ++h) {
+                const int32_t z = t - lag - h;
+                if (z < 0 || z >= b.size.z) continue;
+                for (size_t c = 0; c < level.u.size(); ++c)
+                    for (int32_t y = y0; y < y1; ++y)
+                        relaxColourRow(level, c, h & 1, zeroRhs, y, z, threaded && (y == y0 || y + 1 == y1), zeros.data(),
+                                       relaxed);
+            }
+            const int32_t measured = t - lag - halfSweeps;
+            if (maxResidual && measured >= 0 && measured < b.size.z)
+                for (const std::vector<float>& u : level.u)
+                    for (int32_t y = y0; y < y1; ++y) {
+                        residualRow(level, u, nullptr, y, measured, residual);
+                        for (int32_t x = 0; x < b.size.x; ++x) w = std::max(w, std::abs(residual[x]));
+                    }
+            sync();
+        }
+    };
+    float* first = scratch.data();
+    float* second = scratch.data() + 2 * size_t(b.size.x);
+    if (!threaded) {
+        rows(0, b.size.y, first, first + b.size.x, worst[0], [] {});
+    } else {
+        const int32_t mid = b.size.y / 2;
+        std::barrier<> step(2);
+        std::thread other([&] { rows(0, mid, second, second + b.size.x, worst[1], [&] { step.arrive_and_wait(); }); });
+        rows(mid, b.size.y, first, first + b.size.x, worst[0], [&] { step.arrive_and_wait(); });
+        other.join();
+    }
+    if (maxResidual) *maxResidual = std::max(worst[0], worst[1]);
 }
 
 // `mean` of each coarse cell's children of fine values; with `onlyFixed`, only of fixed children.
@@ -307,62 +395,29 @@ void restrictResidual(const Level& fine, size_t c, bool zeroRhs, Level& coarse) 
     });
 }
 
-// Trilinear cell-centred interpolation of coarse values at every free fine cell, along x, then
-// y, then z: on a halved axis weights 3/4 (own parent) and 1/4 (the next parent towards the
-// child, clamped at the box), on a kept axis 1 and 0; added to or written into u. Pointwise, so
-// two threads give the same bits.
-void prolong(const Box& coarse, const std::vector<float>& e, const Level& fine, std::vector<float>& u, bool add) {
-    const Box& b = fine.box;
-    const glm::ivec3 halved = halvedAxes(b);
-    auto other = [](int32_t v, int32_t n, int32_t h) {
-        return h ? std::clamp((v & 1) ? v / 2 + 1 : v / 2 - 1, 0, n - 1) : v;
-    };
-    const float near[3] = {halved.x ? 0.75f : 1.0f, halved.y ? 0.75f : 1.0f, halved.z ? 0.75f : 1.0f};
-    const float far[3] = {1.0f - near[0], 1.0f - near[1], 1.0f - near[2]};
-    // Per fine x: the own and the other parent column.
-    std::vector<int32_t> xs0(size_t(b.size.x)), xs1(size_t(b.size.x));
-    for (int32_t x = 0; x < b.size.x; ++x) xs0[size_t(x)] = x >> halved.x, xs1[size_t(x)] = other(x, coarse.size.x, halved.x);
-    forTwoSlabs(b.size.z, kMinSlicesForThreads, [&](int32_t z0, int32_t z1) {
-        for (int32_t z = z0; z < z1; ++z)
-            for (int32_t y = 0; y < b.size.y; ++y) {
-                const int32_t ys[2] = {y >> halved.y, other(y, coarse.size.y, halved.y)};
-                const int32_t zs[2] = {z >> halved.z, other(z, coarse.size.z, halved.z)};
-                const float* rows[2][2]; // [k][j]: coarse row (ys[j], zs[k])
-                for (int32_t k = 0; k < 2; ++k)
-                    for (int32_t j = 0; j < 2; ++j) rows[k][j] = e.data() + coarse.index(0, ys[j], zs[k]);
-                const size_t i0 = b.index(0, y, z);
-                const uint8_t* fixed = fine.fixed.data() + i0;
-                float* out = u.data() + i0;
-                for (int32_t x = 0; x < b.size.x; ++x) {
-                    if (fixed[x]) continue;
-                    const int32_t x0 = xs0[size_t(x)], x1 = xs1[size_t(x)];
-                    float alongY[2];
-                    for (int32_t k = 0; k < 2; ++k) {
-                        const float alongX0 = near[0] * rows[k][0][x0] + far[0] * rows[k][0][x1];
-                        const float alongX1 = near[0] * rows[k][1][x0] + far[0] * rows[k][1][x1];
-                        alongY[k] = near[1] * alongX0 + far[1] * alongX1;
-                    }
-                    const float v = near[2] * alongY[0] + far[2] * alongY[1];
-                    out[x] = add ? out[x] + v : v;
-                }
-            }
-    });
-}
-
-// One V(3,3) cycle from level l down; the finest level's right-hand side is 0 (zeroRhs).
-void vCycle(std::vector<Level>& levels, size_t l) {
+// One V(3,3) cycle from level l down; the finest level's right-hand side is 0 (zeroRhs). With
+// `measure`, returns level l's max residual with f = 0 at its end (maxResidualOf), measured in
+// the pass of its last sweeps; otherwise 0.
+float vCycle(std::vector<Level>& levels, size_t l, bool measure = true) {
     Level& level = levels[l];
     const bool zeroRhs = l == 0;
-    if (l + 1 == levels.size()) return smooth(level, kCoarsestSweeps, zeroRhs);
+    float residual = 0.0f;
+    float* measured = measure ? &residual : nullptr;
+    if (l + 1 == levels.size()) {
+        smooth(level, kCoarsestSweeps, zeroRhs, nullptr, measured);
+        return residual;
+    }
     smooth(level, kPreSmooth, zeroRhs);
     Level& coarse = levels[l + 1];
     for (size_t c = 0; c < level.u.size(); ++c) {
         restrictResidual(level, c, zeroRhs, coarse);
         std::fill(coarse.u[c].begin(), coarse.u[c].end(), 0.0f);
     }
-    vCycle(levels, l + 1);
-    for (size_t c = 0; c < level.u.size(); ++c) prolong(coarse.box, coarse.u[c], level, level.u[c], true);
-    smooth(level, kPostSmooth, zeroRhs);
+    vCycle(levels, l + 1, false);
+    const Prolongation prolongation(coarse.box, level);
+    const Correction correction{prolongation, coarse};
+    smooth(level, kPostSmooth, zeroRhs, &correction, measured);
+    return residual;
 }
 
 // max over free cells and components of |r| with f = 0 (a max is order-free: two threads give
@@ -461,16 +516,14 @@ SolveReport solveLaplace(const std::string& name, const std::vector<uint8_t>& fi
     stages.push_back({levels.back().box.size, maxResidualOf(levels.back())});
     for (size_t l = levels.size() - 1; l-- > 0;) {
         for (size_t c = 0; c < components.size(); ++c) prolong(levels[l + 1].box, levels[l + 1].u[c], levels[l], levels[l].u[c], false);
-        vCycle(levels, l);
-        stages.push_back({levels[l].box.size, maxResidualOf(levels[l])});
+        stages.push_back({levels[l].box.size, vCycle(levels, l)});
     }
 
     SolveReport report{name, int32_t(levels.size()), {stages.back().residual}, std::move(stages)};
     while (!(report.residuals.back() <= tolerance)) {
         if (report.cycles() >= limits.maxCycles)
             throw ConvergenceError(name, report.cycles(), report.residuals.back(), tolerance);
-        vCycle(levels, 0);
-        report.residuals.push_back(maxResidualOf(levels.front()));
+        report.residuals.push_back(vCycle(levels, 0));
     }
     for (size_t c = 0; c < components.size(); ++c) components[c]->values = levels.front().u[c];
     return report;
