@@ -214,7 +214,7 @@ SourceArg sourceOf(const py::object& source, const std::optional<std::string>& t
         return {py::str(py::module_::import("os").attr("fspath")(source)).cast<std::string>(), std::nullopt};
     const std::string s = source.cast<std::string>();
     const bool isPath = s.find('\n') == std::string::npos && s.size() >= 4 &&
-                        std::equal(s.end() - 4, s.end(), ".vox", [](char a, char b) { return std::tolower(a) == b; });
+                        std::equal(s.end() - 4, s.end(), ".vox", [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; });
     if (isPath) return {s, std::nullopt};
     return {name, s};
 }

@@ -64,14 +64,16 @@ const std::vector<Value>& FieldEvaluator::evaluateAt(glm::vec3 position, glm::iv
     return values_;
 }
 
-void runField(const Program& program, const Stage& stage, DenseGrid& grid, NonFiniteCount* nonFinite) {
+void runField(const Program& program, const Stage& stage, DenseGrid& grid, NonFiniteCount* nonFinite,
+              const std::function<void(double)>& progress) {
     VOXC_ASSERT(stage.kind == Stage::Kind::Field && stage.index < program.fields.size());
     VOXC_ASSERT(grid.size() == program.world.size);
     FieldEvaluator evaluator(program.fields[stage.index], program.world.origin, program.world.localBase);
     NonFiniteCount uncounted;
     NonFiniteCount& replaced = nonFinite ? *nonFinite : uncounted;
     const glm::ivec3 size = grid.size();
-    for (int z = 0; z < size.z; ++z)
+    for (int z = 0; z < size.z; ++z) {
+        if (progress) progress(double(z) / double(size.z));
         for (int y = 0; y < size.y; ++y)
             for (int x = 0; x < size.x; ++x) {
                 float& d = grid.at({x, y, z});
@@ -81,6 +83,7 @@ void runField(const Program& program, const Stage& stage, DenseGrid& grid, NonFi
                 d = voxel.density;
                 m = voxel.material;
             }
+    }
 }
 
 } // namespace voxc

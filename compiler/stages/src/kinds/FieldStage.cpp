@@ -49,9 +49,9 @@ StageRadius dependencyRadius(const Program&, const Stage&) {
     return {glm::ivec3(0), "the field is a function of position, combined with the voxel's own density"};
 }
 
-void interpret(const Program& program, const Stage& stage, DenseGrid& grid, const InterpOptions&,
+void interpret(const Program& program, const Stage& stage, DenseGrid& grid, const InterpOptions& options,
                NonFiniteCount* nonFinite) {
-    runField(program, stage, grid, nonFinite);
+    runField(program, stage, grid, nonFinite, options.progress);
 }
 
 // In (field, mode, material) order, whatever the pipeline order, so kernel order is stable.

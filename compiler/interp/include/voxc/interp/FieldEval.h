@@ -6,6 +6,7 @@
 #include "voxc/grid/NonFinite.h"
 #include "voxc/program/Program.h"
 
+#include <functional>
 #include <glm/vec3.hpp>
 #include <vector>
 
@@ -36,6 +37,8 @@ private:
 
 // Runs one field stage over the whole grid in place: voxc::combineField at every voxel with the
 // field's value, or with 0 where that value is not finite (counted in `nonFinite` when set).
-void runField(const Program& program, const Stage& stage, DenseGrid& grid, NonFiniteCount* nonFinite = nullptr);
+// `progress`, when set, is called before each z slice with the fraction done (InterpOptions::progress).
+void runField(const Program& program, const Stage& stage, DenseGrid& grid, NonFiniteCount* nonFinite = nullptr,
+              const std::function<void(double)>& progress = {});
 
 } // namespace voxc

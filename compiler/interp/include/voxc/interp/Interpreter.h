@@ -23,7 +23,7 @@ struct InterpOptions {
     // When set, voxc::interpret resizes it to one entry per pipeline stage and counts there the
     // non-finite densities each stage replaced by 0 (voxc/grid/NonFinite.h).
     std::vector<NonFiniteCount>* nonFinite = nullptr;
-    // When set, called before each stage and each grammar iteration with the fraction of the run
+    // When set, called before each stage, grammar iteration and field z slice with the fraction of the run
     // done (0 to 1, growing); it may throw to stop the run, which then leaves nothing behind
     // (libvoxc's progress callback, docs/embedding.md).
     std::function<void(double fraction)> progress{};
