@@ -311,6 +311,8 @@ struct Program {
     }
 };
 
+py::tuple tupleOf(const std::array<int32_t, 3>& v) { return py::make_tuple(v[0], v[1], v[2]); }
+
 std::vector<int> levelsOf(const py::object& lod) {
     if (py::isinstance<py::int_>(lod)) return {lod.cast<int>()};
     return lod.cast<std::vector<int>>();
@@ -369,8 +371,9 @@ PYBIND11_MODULE(_native, m) {
                                "--voxels` writes it; solid where > 0.5. A view of the grid (Fortran-ordered), not a copy.")
         .def_property_readonly("material", &Grid::material,
                                "uint8, same shape and indexing as density: each voxel's material id (0 is none).")
-        .def_readonly("size", &Grid::size, "Voxels per axis (x, y, z).")
-        .def_readonly("origin", &Grid::origin, "World coordinate of voxel [0, 0, 0]: the program's origin or the region's corner.")
+        .def_property_readonly("size", [](const Grid& grid) { return tupleOf(grid.size); }, "Voxels per axis (x, y, z).")
+        .def_property_readonly("origin", [](const Grid& grid) { return tupleOf(grid.origin); },
+                               "World coordinate of voxel [0, 0, 0]: the program's origin or the region's corner.")
         .def(
             "mesh",
             [](const Grid& grid, float iso, const py::object& lod, const py::object& progress) {
@@ -391,8 +394,9 @@ PYBIND11_MODULE(_native, m) {
              py::arg("source") = py::none(), py::kw_only(), py::arg("text") = py::none(), py::arg("package") = py::none(),
              py::arg("name") = "<text>.vox", py::arg("seed") = py::none(), py::arg("chunk") = py::none(),
              py::arg("overrides") = py::none(), py::arg("progress") = py::none())
-        .def_readonly("size", &Program::size, "The world's grid: voxels per axis (x, y, z).")
-        .def_readonly("origin", &Program::origin, "World coordinate of the grid's voxel (0, 0, 0).")
+        .def_property_readonly("size", [](const Program& p) { return tupleOf(p.size); }, "The world's grid: voxels per axis (x, y, z).")
+        .def_property_readonly("origin", [](const Program& p) { return tupleOf(p.origin); },
+                               "World coordinate of the grid's voxel (0, 0, 0).")
         .def_property_readonly("materials", &Program::materials, "{id: name} of the file's materials.")
         .def_property_readonly("material_colors", &Program::materialColors,
                                "{id: (r, g, b)}: each material's colour as the file declares it, linear RGB in [0, 1].")

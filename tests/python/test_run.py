@@ -25,7 +25,7 @@ def cli_grid(tmp, verb, path, *extra):
 def test_run_equals_cli(tmp, example, device, verb):
     density, material = cli_grid(tmp, verb, EXAMPLES / example)
     grid = voxc.Program(EXAMPLES / example).run(device=device)
-    assert grid.density.shape == density.shape == tuple(grid.size)
+    assert grid.density.shape == density.shape == grid.size
     assert same_bits(grid.density, density)
     assert same_bits(grid.material, material)
 
@@ -34,7 +34,7 @@ def test_run_equals_cli(tmp, example, device, verb):
 def test_region_equals_cli(tmp, device, verb):
     density, material = cli_grid(tmp, verb, EXAMPLES / "scene.vox", "--region", "10,3,7:41,40,30")
     grid = voxc.Program(EXAMPLES / "scene.vox").run(region=((10, 3, 7), (41, 40, 30)), device=device)
-    assert grid.origin == [10, 3, 7] and grid.size == [31, 37, 23]
+    assert grid.origin == (10, 3, 7) and grid.size == (31, 37, 23)
     assert same_bits(grid.density, density)
     assert same_bits(grid.material, material)
 
