@@ -1,8 +1,9 @@
 # Headless test of the Blender add-on (editors/blender/voxc_import), run as
 #   blender -b --factory-startup --python-exit-code 1 --python import_test.py -- VOXC SOURCE_DIR WORK_DIR
 # with VOXC_PYTHONPATH naming the built module. Imports examples/scene.vox and checks its objects,
-# materials and vertex and triangle counts against the mesh `voxc run` writes; then that a saved
-# edit is imported again by the watch, and that a file with errors is reported with file:line.
+# materials and vertex and triangle counts against the mesh `voxc run` writes, and the seed, region
+# and LOD options likewise; then that a saved edit is imported again by the watch, and that a file
+# with errors is reported with file:line.
 import shutil
 import subprocess
 import sys
@@ -68,7 +69,15 @@ for obj in collection.objects:
     expect(name in declared and np.allclose(material.diffuse_color[:3], declared[name]),
            f"{obj.name}: material {material.name} in the .vox's colour {tuple(material.diffuse_color[:3])}")
 
+# The options: a region at LOD 1 and another seed, as `voxc run --region --lod 1 --seed` meshes it.
+bpy.ops.import_scene.voxc(filepath=str(scene), device="interp", use_seed=True, seed=9, use_region=True,
+                          region_min=(8, 0, 8), region_max=(72, 48, 72), lod=1)
+subprocess.run([voxc_command, "run", str(scene), "--region", "8,0,8:72,48,72", "--lod", "1", "--seed", "9",
+                "-o", str(work / "part.ply")], check=True, capture_output=True)
+check_against_cli(collection, "scene", read_ply(work / "part.lod1.ply"))
+
 # The watch: a saved edit is imported again, replacing the objects.
+bpy.ops.import_scene.voxc(filepath=str(scene), device="lavapipe", watch=True)
 before = sum(len(o.data.vertices) for o in collection.objects)
 expect(voxc_import.reimport_changed() == [], "nothing imported again while the file is unchanged")
 time.sleep(0.01)
