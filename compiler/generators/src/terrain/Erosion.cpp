@@ -8,6 +8,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <thread>
+#include <vector>
 
 namespace voxc::terrain {
 
@@ -327,64 +328,122 @@ VOXC_ROW_KERNEL void erodeRows(ErosionGrid& g, const ErosionParams& p, int32_t y
     }
 }
 
-// Mei's backward sample (Eq 3.27): bilinear from the clamped departure point.
-void transportMeiRows(ErosionGrid& g, const ErosionParams& p, int32_t y0, int32_t y1) {
+// Mei's backward sample (Eq 3.27): bilinear from the clamped departure point. The four samples
+// are gathers (AVX2 `vgatherdps` in the vectorised clone); the float operations are the scalar's.
+VOXC_ROW_KERNEL void transportMeiRows(ErosionGrid& g, const ErosionParams& p, int32_t y0, int32_t y1) {
     const int32_t w = g.width(), h = g.height();
-    const Field2& s1 = g.suspended;
-    for (int32_t y = y0; y < y1; ++y)
+    const float dt = p.dt, cellSize = p.cellSize, right = float(w - 1), top = float(h - 1);
+    const float* __restrict s1 = g.suspended.values.data();
+    for (int32_t y = y0; y < y1; ++y) {
+        const size_t row = size_t(y) * size_t(w);
+        const float* __restrict u = g.velocityU.values.data() + row;
+        const float* __restrict v = g.velocityV.values.data() + row;
+        float* __restrict sediment = g.sediment.values.data() + row;
+#pragma omp simd
         for (int32_t x = 0; x < w; ++x) {
-            const size_t i = g.water.index(x, y);
-            const float sx = std::clamp(float(x) - (g.velocityU.values[i] * p.dt) / p.cellSize, 0.0f, float(w - 1));
-            const float sy = std::clamp(float(y) - (g.velocityV.values[i] * p.dt) / p.cellSize, 0.0f, float(h - 1));
+            const float sx = std::clamp(float(x) - (u[x] * dt) / cellSize, 0.0f, right);
+            const float sy = std::clamp(float(y) - (v[x] * dt) / cellSize, 0.0f, top);
             const int32_t x0 = int32_t(std::floor(sx)), yy0 = int32_t(std::floor(sy));
             const int32_t x1 = std::min(x0 + 1, w - 1), yy1 = std::min(yy0 + 1, h - 1);
             const float fx = sx - float(x0), fy = sy - float(yy0);
-            const float low = (1.0f - fx) * s1.at(x0, yy0) + fx * s1.at(x1, yy0);
-            const float high = (1.0f - fx) * s1.at(x0, yy1) + fx * s1.at(x1, yy1);
-            g.sediment.values[i] = low * (1.0f - fy) + high * fy;
+            const float low = (1.0f - fx) * s1[yy0 * w + x0] + fx * s1[yy0 * w + x1];
+            const float high = (1.0f - fx) * s1[yy1 * w + x0] + fx * s1[yy1 * w + x1];
+            sediment[x] = low * (1.0f - fy) + high * fy;
         }
+    }
 }
 
-// Forward splat (B3.4 step 5): each source sends s1 bilinearly to its arrival point clamped into the
-// grid; |u dt| <= 0.5 cell keeps every arrival within its 3x3 neighbourhood. Defined as a gather: cell
-// (x, y) sums its sources' contributions s1 * (w_x * w_y), w = 1 - frac at floor(arrival) and frac
-// one cell further, sources in row-major order, zero weights skipped. Scattering the sources in
-// row-major order adds to every cell in exactly that order, so this loop is that gather bit for bit
-// (a GPU kernel gathers). The band [y0, y1) owns its rows: it scatters the sources of rows y0 - 1
-// to y1, in row-major order, and adds only into its own rows. A source without sediment adds +0 to
-// a sum that is never -0: skipped.
-void transportConservativeRows(ErosionGrid& g, const ErosionParams& p, int32_t y0, int32_t y1) {
+// One row of conservative-transport sources, padded by a zero source at columns -1 and w: the
+// sediment and, per axis, the weights it gives the cells one before, at and one after it.
+struct SourceRow {
+    float *sediment, *x[3], *y[3];
+};
+
+// The sources of row sy: an arrival t = clamp(x + (u dt)/l_x, 0, W - 1) lies within half a cell
+// (the velocity clamp), so floor(t) is x - 1 or x, and the weights 1 - frac(t) and frac(t) land
+// on (x - 1, x) or (x, x + 1); the third offset gets 0.
+VOXC_ROW_KERNEL void conservativeSourceRow(const ErosionGrid& g, const ErosionParams& p, int32_t sy, SourceRow out) {
     const int32_t w = g.width(), h = g.height();
-    float* target = g.sediment.values.data();
-    std::fill(target + size_t(y0) * size_t(w), target + size_t(y1) * size_t(w), 0.0f);
-    const auto add = [&](int32_t x, int32_t y, float amount) {
-        if (y >= y0 && y < y1) target[g.water.index(x, y)] = target[g.water.index(x, y)] + amount;
-    };
-    for (int32_t y = std::max(y0 - 1, 0); y < std::min(y1 + 1, h); ++y)
-        for (int32_t x = 0; x < w; ++x) {
-            const size_t i = g.water.index(x, y);
-            const float sediment = g.suspended.values[i];
-            if (sediment == 0.0f) continue;
-            const float tx = std::clamp(float(x) + (g.velocityU.values[i] * p.dt) / p.cellSize, 0.0f, float(w - 1));
-            const float ty = std::clamp(float(y) + (g.velocityV.values[i] * p.dt) / p.cellSize, 0.0f, float(h - 1));
-            const float floorX = std::floor(tx), floorY = std::floor(ty);
-            const float fx = tx - floorX, fy = ty - floorY;
-            const float wx0 = 1.0f - fx, wy0 = 1.0f - fy;
-            const int32_t ax = int32_t(floorX), ay = int32_t(floorY);
-            add(ax, ay, sediment * (wx0 * wy0));
-            if (fx != 0.0f) add(ax + 1, ay, sediment * (fx * wy0));
-            if (fy != 0.0f) {
-                add(ax, ay + 1, sediment * (wx0 * fy));
-                if (fx != 0.0f) add(ax + 1, ay + 1, sediment * (fx * fy));
-            }
-        }
+    const size_t row = size_t(sy) * size_t(w);
+    const float dt = p.dt, cellSize = p.cellSize, right = float(w - 1), top = float(h - 1);
+    const float* __restrict s1 = g.suspended.values.data() + row;
+    const float* __restrict u = g.velocityU.values.data() + row;
+    const float* __restrict v = g.velocityV.values.data() + row;
+    float* __restrict sediment = out.sediment + 1;
+    float* __restrict x0 = out.x[0] + 1;
+    float* __restrict x1 = out.x[1] + 1;
+    float* __restrict x2 = out.x[2] + 1;
+    float* __restrict wy0 = out.y[0] + 1;
+    float* __restrict wy1 = out.y[1] + 1;
+    float* __restrict wy2 = out.y[2] + 1;
+#pragma omp simd
+    for (int32_t x = 0; x < w; ++x) {
+        const float tx = std::clamp(float(x) + (u[x] * dt) / cellSize, 0.0f, right);
+        const float ty = std::clamp(float(sy) + (v[x] * dt) / cellSize, 0.0f, top);
+        const float floorX = std::floor(tx), floorY = std::floor(ty);
+        const float fx = tx - floorX, fy = ty - floorY;
+        const float restX = 1.0f - fx, restY = 1.0f - fy;
+        const bool before = floorX < float(x), below = floorY < float(sy);
+        sediment[x] = s1[x];
+        x0[x] = before ? restX : 0.0f;
+        x1[x] = before ? fx : restX;
+        x2[x] = before ? 0.0f : fx;
+        wy0[x] = below ? restY : 0.0f;
+        wy1[x] = below ? fy : restY;
+        wy2[x] = below ? 0.0f : fy;
+    }
 }
 
-void transportRows(ErosionGrid& g, const ErosionParams& p, int32_t y0, int32_t y1) {
+// Adds the three sources x - 1, x, x + 1 of one source row to every cell x of a target row, in
+// that order; `dy` is the weight index along y (the target row's offset from the source's + 1).
+VOXC_ROW_KERNEL void gatherSourceRow(float* __restrict target, const SourceRow& source, int dy, int32_t w) {
+    const float* __restrict s = source.sediment;
+    const float* __restrict x0 = source.x[0];
+    const float* __restrict x1 = source.x[1];
+    const float* __restrict x2 = source.x[2];
+    const float* __restrict ys = source.y[dy];
+#pragma omp simd
+    for (int32_t x = 0; x < w; ++x) { // padded index x + 1 is source column x
+        float sum = target[x];
+        sum = sum + s[x] * (x2[x] * ys[x]);
+        sum = sum + s[x + 1] * (x1[x + 1] * ys[x + 1]);
+        sum = sum + s[x + 2] * (x0[x + 2] * ys[x + 2]);
+        target[x] = sum;
+    }
+}
+
+// The documented gather (B3.4 step 5): cell (x, y) sums its 3x3 sources' contributions
+// s1 * (w_x * w_y), sources in row-major order, from +0. A source adds the product for every
+// neighbour, weight 0 and sediment 0 included: s1 and the weights are finite, so such a term is
+// +-0, and adding +-0 to a sum that is never -0 (it starts at +0, and x + -x is +0) leaves it as
+// it was, which is the documented "zero weights skipped" bit for bit. The sources' weights come
+// from a ring of three rows in `scratch`; the band [y0, y1) reads sources from rows y0 - 1 to y1.
+void transportConservativeRows(ErosionGrid& g, const ErosionParams& p, int32_t y0, int32_t y1, std::vector<float>& scratch) {
+    const int32_t w = g.width(), h = g.height();
+    const size_t padded = size_t(w) + 2;
+    scratch.assign(3 * 7 * padded, 0.0f); // the pads stay 0: a source outside the grid adds +0
+    const auto ring = [&](int32_t sy) {
+        float* base = scratch.data() + size_t(sy % 3) * 7 * padded;
+        return SourceRow{base, {base + padded, base + 2 * padded, base + 3 * padded},
+                         {base + 4 * padded, base + 5 * padded, base + 6 * padded}};
+    };
+    if (y0 > 0) conservativeSourceRow(g, p, y0 - 1, ring(y0 - 1));
+    conservativeSourceRow(g, p, y0, ring(y0));
+    for (int32_t y = y0; y < y1; ++y) {
+        if (y + 1 < h) conservativeSourceRow(g, p, y + 1, ring(y + 1));
+        float* target = g.sediment.values.data() + size_t(y) * size_t(w);
+        std::fill(target, target + w, 0.0f);
+        if (y > 0) gatherSourceRow(target, ring(y - 1), 2, w);
+        gatherSourceRow(target, ring(y), 1, w);
+        if (y + 1 < h) gatherSourceRow(target, ring(y + 1), 0, w);
+    }
+}
+
+void transportRows(ErosionGrid& g, const ErosionParams& p, int32_t y0, int32_t y1, std::vector<float>& scratch) {
     if (p.transport == Transport::Mei)
         transportMeiRows(g, p, y0, y1);
     else
-        transportConservativeRows(g, p, y0, y1);
+        transportConservativeRows(g, p, y0, y1, scratch);
 }
 
 // Grids with fewer rows run on one thread: a 128-row pass is too short to pay for the
@@ -412,7 +471,10 @@ void erodeAndDeposit(ErosionGrid& g, const ErosionParams& p) {
     std::swap(g.difference, g.differenceNext);
 }
 
-void transportSediment(ErosionGrid& g, const ErosionParams& p) { transportRows(g, p, 0, g.height()); }
+void transportSediment(ErosionGrid& g, const ErosionParams& p) {
+    std::vector<float> scratch;
+    transportRows(g, p, 0, g.height(), scratch);
+}
 
 void evaporate(ErosionGrid& g, float keep) {
     for (float& d : g.water.values) d = d * keep;
@@ -425,6 +487,7 @@ void evaporate(ErosionGrid& g, float keep) {
 void erosionSteps(ErosionGrid& g, const ErosionParams& p, int32_t level, uint32_t firstStep, uint32_t steps, bool drain) {
     const float keep = drain ? 1.0f - 0.9f : 1.0f - p.evaporation * p.dt;
     const auto band = [&](auto&& wait, int32_t y0, int32_t y1) {
+        std::vector<float> scratch; // the conservative transport's source rows
         for (uint32_t step = firstStep; step < firstStep + steps; ++step) {
             const bool rain = !drain && p.rain != RainMode::None;
             const Drop drop = rain && p.rain == RainMode::Drops ? dropAt(p, g.width(), g.height(), level, step) : Drop{};
@@ -436,7 +499,7 @@ void erosionSteps(ErosionGrid& g, const ErosionParams& p, int32_t level, uint32_
             wait();
             erodeRows(g, p, y0, y1);
             wait(); // S_h's halves swap here
-            transportRows(g, p, y0, y1);
+            transportRows(g, p, y0, y1, scratch);
         }
     };
     // Between passes, once every band has arrived (a barrier's completion with two threads);
