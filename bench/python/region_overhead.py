@@ -5,7 +5,8 @@
 One process, alternating: the C API called directly (ctypes, the grid's densities wrapped as a
 NumPy array without a copy) and voxc.Program.run (the same library through the module, the
 arrays views of the grid), each on its own program whose Vulkan pipelines were made by a first,
-untimed region; then what a copy of the densities would cost. Prints medians in milliseconds.
+untimed region, taking turns going first; then what a copy of the densities would cost. Prints
+medians in milliseconds.
 """
 import ctypes
 import statistics
@@ -60,17 +61,26 @@ py = voxc.Program(text=TEXT, name="bench.vox")
 capi.voxc_grid_free(c_region(c)[0])  # pipelines and SPIR-V made, untimed
 py.run(region=(LO, HI), device="auto")
 c_ms, py_ms, view_ms, copy_ms = [], [], [], []
-for _ in range(ROUNDS):
-    ms, (grid, c_density) = timed(lambda: c_region(c))
-    c_ms.append(ms)
-    ms, result = timed(lambda: py.run(region=(LO, HI), device="auto"))
-    py_ms.append(ms)
-    ms, density = timed(lambda: result.density)
-    view_ms.append(ms)
-    assert np.array_equal(density, c_density)
-    ms, _ = timed(lambda: np.array(density))
-    copy_ms.append(ms)
-    capi.voxc_grid_free(grid)
+for round in range(ROUNDS):
+    # Each round starts with no grid alive, and the two take turns going first.
+    def c_side():
+        ms, (grid, c_density) = timed(lambda: c_region(c))
+        c_ms.append(ms)
+        total = float(c_density.sum())
+        capi.voxc_grid_free(grid)
+        return total
+
+    def py_side():
+        ms, result = timed(lambda: py.run(region=(LO, HI), device="auto"))
+        py_ms.append(ms)
+        ms, density = timed(lambda: result.density)
+        view_ms.append(ms)
+        ms, _ = timed(lambda: np.array(density))
+        copy_ms.append(ms)
+        return float(density.sum())
+
+    sides = (c_side, py_side) if round % 2 == 0 else (py_side, c_side)
+    assert sides[0]() == sides[1]()
 med = statistics.median
 print(f"256^3 region, {ROUNDS} rounds, medians: C API {med(c_ms):.0f} ms, voxc.Program.run {med(py_ms):.0f} ms "
       f"(ratio {med(py_ms) / med(c_ms):.3f}); .density view {med(view_ms) * 1000:.0f} us; a copy of it {med(copy_ms):.0f} ms")
