@@ -21,7 +21,8 @@ tile=$work/world/tile_1_0_1.vdb
 vdb_print -l "$tile" >"$work/print.txt" 2>&1 && pass "vdb_print opens the tile" || { fail "vdb_print"; cat "$work/print.txt"; }
 expect "voxc interp --region of the tile's box" 0 "" -- "$voxc" interp "$scene" --region 48,0,48:96,48,96 \
     --voxels "$work/region.npy" --materials "$work/region_materials.npy"
-# pyopenvdb reads float grids only, so the int32 material grid is checked by vdb_print's statistics.
+# pyopenvdb's readAll opens the whole tile: both grids are float, the density a fog volume, and the
+# material ids come back exactly; vdb_print's statistics agree.
 expect "OpenVDB's reader sees the whole world's voxels in the tile" 0 "^same: 110592 voxels" -- "$python" - "$tile" \
     "$work/region.npy" "$work/region_materials.npy" "$work/print.txt" <<'PY'
 import re
@@ -42,8 +43,21 @@ def check(what, got, want):
         print(f"{what}: vdb_print says {got}, the region run {want}")
         sys.exit(1)
 
+grids, _ = vdb.readAll(tile)
+by_name = {g.name: g for g in grids}
+if sorted(by_name) != ["density", "material"]:
+    print("readAll gives the grids", sorted(by_name))
+    sys.exit(1)
+if by_name["density"].gridClass != vdb.GridClass.FOG_VOLUME:
+    print("the density grid's class is", by_name["density"].gridClass)
+    sys.exit(1)
+ids = np.zeros(materials.shape, dtype=np.float32)
+by_name["material"].copyToArray(ids, ijk=(48, 0, 48))
+if ids.tobytes() != materials.astype(np.float32).tobytes():
+    print("materials differ at", np.argwhere(ids != materials)[:5].tolist())
+    sys.exit(1)
 got = np.zeros(densities.shape, dtype=np.float32)
-vdb.read(tile, "density").copyToArray(got, ijk=(48, 0, 48))
+by_name["density"].copyToArray(got, ijk=(48, 0, 48))
 if got.tobytes() != densities.astype(np.float32).tobytes():
     print("densities differ at", np.argwhere(got != densities)[:5].tolist())
     sys.exit(1)

@@ -4,6 +4,7 @@
 #include "voxc/core/Sha256.h"
 
 #include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
 #include <mutex>
 #include <openvdb/io/Stream.h>
@@ -42,9 +43,13 @@ void initialiseOnce() {
 
 std::string tileVdbBytes(const DenseGrid& grid, glm::ivec3 worldMin) {
     initialiseOnce();
+    // Densities are in [0, 1] with 0 (air) outside: a fog volume in OpenVDB's terms. Material ids
+    // are stored as floats (0..255 exactly) because float grids are what every reader opens:
+    // pyopenvdb's readAll fails on an Int32 grid, and Houdini and Blender import float grids.
     openvdb::FloatGrid::Ptr density = openvdb::FloatGrid::create(0.0f);
-    openvdb::Int32Grid::Ptr material = openvdb::Int32Grid::create(0);
+    openvdb::FloatGrid::Ptr material = openvdb::FloatGrid::create(0.0f);
     density->setName("density");
+    density->setGridClass(openvdb::GRID_FOG_VOLUME);
     material->setName("material");
     auto densities = density->getAccessor();
     auto materials = material->getAccessor();
@@ -55,7 +60,7 @@ std::string tileVdbBytes(const DenseGrid& grid, glm::ivec3 worldMin) {
                 const openvdb::Coord at(worldMin.x + x, worldMin.y + y, worldMin.z + z);
                 const float d = grid.at({x, y, z});
                 if (d != 0.0f) densities.setValue(at, d);
-                if (const uint8_t m = grid.materialAt({x, y, z})) materials.setValue(at, int32_t(m));
+                if (const uint8_t m = grid.materialAt({x, y, z})) materials.setValue(at, float(m));
             }
     openvdb::tools::prune(density->tree());
     openvdb::tools::prune(material->tree());
@@ -76,8 +81,8 @@ DenseGrid readTileVdb(const std::string& path, glm::ivec3 worldMin, glm::ivec3 s
         throw UserError(fmt::format("cannot read '{}': {}", path, error.what()));
     }
     const auto density = openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid("density"));
-    const auto material = openvdb::gridPtrCast<openvdb::Int32Grid>(file.readGrid("material"));
-    if (!density || !material) throw UserError(fmt::format("'{}' is not a voxc tile (no density and material grids)", path));
+    const auto material = openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid("material"));
+    if (!density || !material) throw UserError(fmt::format("'{}' is not a voxc tile (no float density and material grids)", path));
     auto densities = density->getConstAccessor();
     auto materials = material->getConstAccessor();
     DenseGrid grid(size);
@@ -86,7 +91,10 @@ DenseGrid readTileVdb(const std::string& path, glm::ivec3 worldMin, glm::ivec3 s
             for (int32_t x = 0; x < size.x; ++x) {
                 const openvdb::Coord at(worldMin.x + x, worldMin.y + y, worldMin.z + z);
                 grid.at({x, y, z}) = densities.getValue(at);
-                grid.materialAt({x, y, z}) = uint8_t(materials.getValue(at));
+                const float m = materials.getValue(at);
+                if (!(m >= 0.0f && m <= 255.0f && m == std::floor(m)))
+                    throw UserError(fmt::format("'{}' holds material {} at ({}, {}, {}), not an id 0..255", path, m, at.x(), at.y(), at.z()));
+                grid.materialAt({x, y, z}) = uint8_t(m);
             }
     return grid;
 }

@@ -1,6 +1,7 @@
 #pragma once
-// One tile as an OpenVDB file (Houdini, Blender and OpenVDB's own tools read it): a float grid
-// "density" and an int32 grid "material", both with background 0, voxel (i, j, k) at world
+// One tile as an OpenVDB file (Houdini, Blender, pyopenvdb and OpenVDB's own tools read it): a
+// float grid "density" (class fog volume) and a float grid "material" holding the ids 0..255
+// exactly, both with background 0, voxel (i, j, k) at world
 // coordinate (i, j, k); every 8^3 block of one value is stored as a constant tile (pruned). The
 // file's UUID is made from its contents, so the same voxels always give the same bytes.
 #include "voxc/grid/Grid.h"
