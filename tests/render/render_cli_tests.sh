@@ -58,6 +58,13 @@ expect mesh_file_no_edits 1 "--edits needs a .vox file" -- \
     "$voxc" render "$work/scene.ply" --edits "$src/examples/scene.edits.json" -o "$work/edits.png"
 expect mesh_file_no_cut 1 "--cut needs a .vox file" -- "$voxc" render "$work/scene.ply" -o "$work/cut.png" --cut x>3
 expect_no_file mesh_file_no_cut_nothing_written "$work/cut.png"
+# The other mesh formats are refused in one line that says what render reads, not parsed as .vox.
+expect mesh_glb 0 "" -- "$voxc" run "$scene" -o "$work/scene.glb" --device lavapipe
+expect mesh_glb_refused 1 "render: '.*scene.glb' is a glTF mesh; render reads a .vox program or a .ply mesh" -- \
+    "$voxc" render "$work/scene.glb" -o "$work/glb.png"
+expect mesh_obj_refused 1 "is a Wavefront OBJ mesh; render reads a .vox program or a .ply mesh" -- \
+    "$voxc" render "$work/scene.OBJ" -o "$work/obj.png"
+expect_no_file mesh_glb_nothing_written "$work/glb.png"
 
 # Light measured in the voxels and cut-aways (tests/render/LightingTest.cpp checks what they show).
 expect bad_cut 1 "--cut x=4: not a plane or a box; expected x>N" -- \

@@ -18,7 +18,10 @@
 #include "voxc/vulkan/Executor.h"
 #include "voxc/vulkan/GpuMesher.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fmt/format.h>
 #include <iostream>
 #include <optional>
@@ -87,7 +90,15 @@ void renderFile(const RenderOptions& options) {
     if (options.output.empty()) throw UserError("render: nothing to write; give -o PICTURE.png");
     requireExtension(options.output, {".png"}, "picture");
     if (!std::isfinite(options.iso)) throw UserError(fmt::format("--iso {}: the surface level must be a finite number", options.iso));
-    const bool meshFile = options.file.ends_with(".ply");
+    std::string extension = std::filesystem::path(options.file).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    // The other mesh formats voxc writes carry no more than the .ply does; rather than parse them
+    // as a program (a screen of syntax errors), say what render reads.
+    if (extension == ".glb" || extension == ".gltf" || extension == ".obj")
+        throw UserError(fmt::format("render: '{}' is a {} mesh; render reads a .vox program or a .ply mesh "
+                                    "(voxc run FILE.vox -o mesh.ply writes one)",
+                                    options.file, extension == ".obj" ? "Wavefront OBJ" : "glTF"));
+    const bool meshFile = extension == ".ply";
     if (meshFile && options.chunkBorders) throw UserError("render: --chunk-borders needs a .vox file; a mesh file has no chunks");
     const rendering::ImageSize size = rendering::parseImageSize(options.size);
     const float aspect = float(size.width) / float(size.height);
@@ -154,7 +165,7 @@ void addRenderCommand(CLI::App& app) {
     auto options = std::make_shared<RenderOptions>();
     CLI::App* command = app.add_subcommand(
         "render", "Run a .vox file (or read a .ply mesh), mesh it and draw a shaded picture offscreen with Vulkan");
-    command->add_option("file", options->file, "The .vox file, or a .ply mesh written by `voxc run`");
+    command->add_option("file", options->file, "The .vox file, or a .ply mesh written by `voxc run` (.glb and .obj are refused with a note)");
     command->add_option("-o,--output", options->output, "The picture to write (.png)");
     command->add_option("--camera", options->camera,
                         "iso (default), top, side, or X,Y,Z:TX,TY,TZ (eye and target in world voxels)");
