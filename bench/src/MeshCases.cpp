@@ -16,6 +16,7 @@
 #include <openvdb/tools/VolumeToMesh.h>
 
 #include <chrono>
+#include <glm/common.hpp>
 #include <iostream>
 #include <memory>
 #include <thread>
@@ -25,6 +26,32 @@ namespace voxc::bench {
 namespace {
 
 constexpr int32_t kChunk = 32;
+// lavapipe binds at most 128 MiB as one storage buffer, a 256^3 grid of floats; larger grids are
+// made at 256^3 and resampled (see MeshInput::make).
+constexpr int kLargestDeviceGrid = 256;
+
+// `source` at `factor` times its resolution: densities trilinear between the source's voxels
+// (output voxel p samples the source at p / factor, the last voxels clamped), materials from the
+// nearest voxel. The same shapes with `factor` times more voxels per unit: factor^2 the surface
+// and factor^3 the volume.
+ChunkedGrid resample(const ChunkedGrid& source, int factor) {
+    const DenseGrid dense = source.toDense();
+    const glm::ivec3 size = dense.size() * factor;
+    ChunkedGrid grid(ChunkLayout::make(glm::ivec3(0), size, kChunk));
+    for (int z = 0; z < size.z; ++z)
+        for (int y = 0; y < size.y; ++y)
+            for (int x = 0; x < size.x; ++x) {
+                const glm::ivec3 p(x, y, z), lo = p / factor, hi = glm::min(lo + 1, dense.size() - 1);
+                const glm::vec3 t = glm::vec3(p - lo * factor) / float(factor);
+                auto at = [&](int cx, int cy, int cz) { return dense.at({cx ? hi.x : lo.x, cy ? hi.y : lo.y, cz ? hi.z : lo.z}); };
+                auto lerp = [](float a, float b, float w) { return a + (b - a) * w; };
+                const float d = lerp(lerp(lerp(at(0, 0, 0), at(1, 0, 0), t.x), lerp(at(0, 1, 0), at(1, 1, 0), t.x), t.y),
+                                     lerp(lerp(at(0, 0, 1), at(1, 0, 1), t.x), lerp(at(0, 1, 1), at(1, 1, 1), t.x), t.y), t.z);
+                grid.at(p) = d;
+                grid.materialAt(p) = dense.materialAt(glm::min((p + factor / 2) / factor, dense.size() - 1));
+            }
+    return grid;
+}
 
 // Every case meshes once untimed first (warm-up), then in the timed loop.
 // One example's grid, made on first use and kept on the device (for the device mesher) and on
@@ -37,15 +64,19 @@ struct MeshInput {
     std::unique_ptr<GpuMarchingCubes> gpu;
     openvdb::FloatGrid::Ptr vdb;
 
+    // Above kLargestDeviceGrid the example runs at that size and its grid is resampled to n^3
+    // (n a multiple of it); the device mesher then has no n^3 grid on the device (not registered).
     void make(VulkanContext& context) {
         if (executor) return;
         CheckResult checked = checkFile(fmt::format("{}/examples/{}.vox", VOXC_SOURCE_DIR, example));
         if (!checked.program) throw UserError(checked.rendered());
         Program program = std::move(*checked.program);
-        program.world.size = glm::ivec3(n);
+        const int made = std::min(n, kLargestDeviceGrid);
+        if (n % made != 0) throw UserError(fmt::format("mesh cases: n = {} is above {} and not a multiple of it", n, made));
+        program.world.size = glm::ivec3(made);
         program.world.chunkSize = kChunk;
         executor = std::make_unique<VulkanExecutor>(context, compileProgram(program, {}));
-        grid = std::make_unique<ChunkedGrid>(executor->run().grid);
+        grid = std::make_unique<ChunkedGrid>(made == n ? executor->run().grid : resample(executor->run().grid, n / made));
     }
 
     // Densities negated, so that OpenVDB's inside (below the isovalue) is voxc's solid (above
@@ -180,7 +211,7 @@ void registerMeshCases(JsonReporter& reporter, VulkanContext& context, const std
                     setCounters(state, input->n, triangles);
                 });
             }
-            if (vulkan)
+            if (vulkan && n <= kLargestDeviceGrid)
                 add(mc, "vulkan", context.device().name, [input, &context](benchmark::State& state) {
                     input->make(context);
                     if (!input->gpu) input->gpu = std::make_unique<GpuMarchingCubes>(*input->executor);
