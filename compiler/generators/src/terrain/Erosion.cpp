@@ -245,9 +245,8 @@ inline void waterCell(WaterConstants c, float inRight, float inLeft, float inTop
     v = mean > 1e-6f ? movingV : 0.0f;
 }
 
-// Water and velocity; with `bed`, also surface = base + S_h for the erosion (S_h does not change
-// before it, and nothing reads the surface in between).
-VOXC_ROW_KERNEL void waterRows(ErosionGrid& g, const ErosionParams& p, float keep, bool bed, int32_t y0, int32_t y1) {
+// Water and velocity.
+VOXC_ROW_KERNEL void waterRows(ErosionGrid& g, const ErosionParams& p, float keep, int32_t y0, int32_t y1) {
     const WaterConstants c{p.dt, p.cellSize * p.cellSize, p.cellSize, (0.5f * p.cellSize) / p.dt, keep};
     const int32_t w = g.width(), h = g.height();
     for (int32_t y = y0; y < y1; ++y) {
@@ -275,7 +274,6 @@ VOXC_ROW_KERNEL void waterRows(ErosionGrid& g, const ErosionParams& p, float kee
                       v[x]);
         });
     }
-    if (bed) bedRows(g, y0, y1);
 }
 
 struct ErodeConstants {
@@ -302,15 +300,19 @@ inline void erodeCell(ErodeConstants c, float b, float left, float right, float 
     s1 = capacity > s ? carried : dropped;
 }
 
-// Reads the bed from `surface`; writes S_h into differenceNext (the caller swaps the halves).
+// Reads the bed b + S_h from base and difference (the bed's additions, done where they are read,
+// so the pass needs no other row's output of this step); writes S_h into differenceNext (the
+// caller swaps the halves).
 VOXC_ROW_KERNEL void erodeRows(ErosionGrid& g, const ErosionParams& p, int32_t y0, int32_t y1) {
     const ErodeConstants c{p.depthLimit, p.minTilt, p.capacity, p.dt * p.suspension, p.dt * p.deposition, std::isfinite(p.depthLimit)};
     const int32_t w = g.width(), h = g.height();
     for (int32_t y = y0; y < y1; ++y) {
         const Rows rows = rowsAt(y, w, h);
-        const float* __restrict bed = g.surface.values.data() + rows.at;
-        const float* __restrict down = g.surface.values.data() + rows.down;
-        const float* __restrict up = g.surface.values.data() + rows.up;
+        const float* __restrict b = g.base.values.data() + rows.at;
+        const float* __restrict bDown = g.base.values.data() + rows.down;
+        const float* __restrict bUp = g.base.values.data() + rows.up;
+        const float* __restrict shDown = g.difference.values.data() + rows.down;
+        const float* __restrict shUp = g.difference.values.data() + rows.up;
         const float* __restrict u = g.velocityU.values.data() + rows.at;
         const float* __restrict v = g.velocityV.values.data() + rows.at;
         const float* __restrict capacity = g.capacity.values.data() + rows.at;
@@ -320,10 +322,12 @@ VOXC_ROW_KERNEL void erodeRows(ErosionGrid& g, const ErosionParams& p, int32_t y
         float* __restrict s1 = g.suspended.values.data() + rows.at;
 #pragma omp simd
         for (int32_t x = 1; x < w - 1; ++x)
-            erodeCell(c, bed[x], bed[x - 1], bed[x + 1], down[x], up[x], u[x], v[x], capacity[x], sh[x], s[x], shNext[x], s1[x]);
+            erodeCell(c, b[x] + sh[x], b[x - 1] + sh[x - 1], b[x + 1] + sh[x + 1], bDown[x] + shDown[x], bUp[x] + shUp[x], u[x],
+                      v[x], capacity[x], sh[x], s[x], shNext[x], s1[x]);
         edgeColumns(w, [&](int32_t x) {
-            erodeCell(c, bed[x], bed[std::max(x - 1, 0)], bed[std::min(x + 1, w - 1)], down[x], up[x], u[x], v[x], capacity[x],
-                      sh[x], s[x], shNext[x], s1[x]);
+            const int32_t left = std::max(x - 1, 0), right = std::min(x + 1, w - 1);
+            erodeCell(c, b[x] + sh[x], b[left] + sh[left], b[right] + sh[right], bDown[x] + shDown[x], bUp[x] + shUp[x], u[x],
+                      v[x], capacity[x], sh[x], s[x], shNext[x], s1[x]);
         });
     }
 }
@@ -463,7 +467,7 @@ void updateFlux(ErosionGrid& g, const ErosionParams& p) {
     fluxRows(g, p, 0, g.height());
 }
 
-void updateWaterAndVelocity(ErosionGrid& g, const ErosionParams& p) { waterRows(g, p, 1.0f, false, 0, g.height()); }
+void updateWaterAndVelocity(ErosionGrid& g, const ErosionParams& p) { waterRows(g, p, 1.0f, 0, g.height()); }
 
 void erodeAndDeposit(ErosionGrid& g, const ErosionParams& p) {
     bedRows(g, 0, g.height());
@@ -480,12 +484,16 @@ void evaporate(ErosionGrid& g, float keep) {
     for (float& d : g.water.values) d = d * keep;
 }
 
-// A step as four passes over a band, each after the previous one has finished on every band:
-// rain with the surface b + d; the flux; water, velocity and evaporation with the bed b; erosion
-// (then S_h's halves swap); transport. The last pass of a step and the first of the next touch
-// different channels, so they need no wait between them.
+// A step as three passes over a band, each after the previous one has finished on every band:
+// rain with the surface b + d; the flux; water, velocity and evaporation, then the erosion of
+// the same rows (it reads this band's velocities and every row's b + S_h, which no pass of the
+// step has changed yet), a few rows at a time so that the velocities are still in cache; then
+// S_h's halves swap, and the transport. The last pass of a step and the first of the next touch
+// different channels, so they need no wait between them. The last step leaves the bed b + S_h
+// in `surface`, as the passes one after the other do.
 void erosionSteps(ErosionGrid& g, const ErosionParams& p, int32_t level, uint32_t firstStep, uint32_t steps, bool drain) {
     const float keep = drain ? 1.0f - 0.9f : 1.0f - p.evaporation * p.dt;
+    constexpr int32_t kRowsPerChunk = 8;
     const auto band = [&](auto&& wait, int32_t y0, int32_t y1) {
         std::vector<float> scratch; // the conservative transport's source rows
         for (uint32_t step = firstStep; step < firstStep + steps; ++step) {
@@ -495,18 +503,21 @@ void erosionSteps(ErosionGrid& g, const ErosionParams& p, int32_t level, uint32_
             wait();
             fluxRows(g, p, y0, y1);
             wait();
-            waterRows(g, p, keep, true, y0, y1);
-            wait();
-            erodeRows(g, p, y0, y1);
+            for (int32_t y = y0; y < y1; y += kRowsPerChunk) {
+                const int32_t end = std::min(y + kRowsPerChunk, y1);
+                waterRows(g, p, keep, y, end);
+                erodeRows(g, p, y, end);
+            }
+            if (step + 1 == firstStep + steps) bedRows(g, y0, y1);
             wait(); // S_h's halves swap here
             transportRows(g, p, y0, y1, scratch);
         }
     };
     // Between passes, once every band has arrived (a barrier's completion with two threads);
-    // every fourth pass is the erosion's.
+    // every third pass is the erosion's.
     uint32_t phase = 0;
     const auto completion = [&]() noexcept {
-        if (phase % 4 == 3) std::swap(g.difference, g.differenceNext);
+        if (phase % 3 == 2) std::swap(g.difference, g.differenceNext);
         ++phase;
     };
     const int32_t h = g.height();
