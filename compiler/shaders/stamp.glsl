@@ -26,6 +26,22 @@ ivec3 floorDivide(ivec3 a, ivec3 b) {
                  a.z >= 0 ? a.z / b.z : -((-a.z + b.z - 1) / b.z));
 }
 
+// The written window's cell of a voxel fromAnchor cells from a variant's anchor, as
+// voxc::stampLocal: the variant's axis `axis` reads written axis from[axis], mirrored in the
+// written window (size) where negate[axis].
+ivec3 stampWrittenCell(ivec3 fromAnchor, ivec3 from, bvec3 negate, ivec3 size) {
+    ivec3 written;
+    written[from.x] = negate.x ? size[from.x] - 1 - fromAnchor.x : fromAnchor.x;
+    written[from.y] = negate.y ? size[from.y] - 1 - fromAnchor.y : fromAnchor.y;
+    written[from.z] = negate.z ? size[from.z] - 1 - fromAnchor.z : fromAnchor.z;
+    return written;
+}
+
+// A stamp's reach along the variant's axes from the written rule's (Stamp::reach).
+ivec3 stampVariantReach(ivec3 writtenReach, ivec3 from) {
+    return ivec3(writtenReach[from.x], writtenReach[from.y], writtenReach[from.z]);
+}
+
 void main() {
     ivec3 id = ivec3(gl_GlobalInvocationID);
     if (any(greaterThanEqual(id, push.anchorCount.xyz))) return;

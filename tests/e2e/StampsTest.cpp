@@ -12,6 +12,7 @@
 #include "voxc/stages/Pipeline.h"
 #include "voxc/stages/Region.h"
 
+#include <chrono>
 #include <fmt/format.h>
 #include <glm/common.hpp>
 #include <glm/vector_relational.hpp>
@@ -219,6 +220,41 @@ TEST(e2e_Stamps, LsystemCaveStampsAgreeOnVulkanAtEveryChunkSize) {
     // the interpreter is the reference there too.
     const Program moved = checked(lsystemStamp({13, -9, -21}, 8));
     test::expectLavapipeMatchesAtEveryChunkSize(moved, interpret(moved));
+}
+
+// Symmetry variants share their stamps' code (codegen/StampKernel.cpp: the variant's axes come
+// from a table indexed by the fired rule), so the stamp kernel under `symmetry = all` (48
+// elements; here 32 live variants) is no bigger than under none but for one table entry per
+// rule, and the driver compiles it within a generous multiple of none's time (it took minutes when
+// every variant had its own copy of the carve); the result still matches the interpreter.
+TEST(e2e_Stamps, StampKernelsDoNotGrowWithSymmetryVariants) {
+    const auto withSymmetry = [](const std::string& symmetry) {
+        std::string text = lsystemStamp({0, 0, 0}, 16);
+        const size_t at = text.find("symmetry = rot_y;");
+        text.replace(at, std::string("symmetry = rot_y;").size(), symmetry);
+        return checked(text);
+    };
+    const Program none = withSymmetry(""), all = withSymmetry("symmetry = all;");
+    const auto stampKernel = [](const KernelPackage& package) {
+        const Kernel* found = nullptr;
+        for (const Kernel& kernel : package.kernels)
+            if (kernel.glsl.find("stampWrittenCell(fromAnchor") != std::string::npos) found = &kernel;
+        EXPECT_NE(found, nullptr);
+        return found ? found->glsl.size() : 0;
+    };
+    const KernelPackage nonePackage = compileProgram(none, {}), allPackage = compileProgram(all, {});
+    const size_t noneSize = stampKernel(nonePackage), allSize = stampKernel(allPackage);
+    EXPECT_LT(double(allSize), 1.25 * double(noneSize)) << noneSize << " vs " << allSize;
+    // Pipelines are created (the driver compiles) when the executor is made; the stated bound is
+    // 6x none's time, plus a second for a loaded machine.
+    const auto compileSeconds = [](const KernelPackage& package) {
+        const auto begin = std::chrono::steady_clock::now();
+        VulkanExecutor executor(test::lavapipe(), package, {});
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    };
+    const double noneSeconds = compileSeconds(nonePackage), allSeconds = compileSeconds(allPackage);
+    EXPECT_LT(allSeconds, 6.0 * noneSeconds + 1.0) << noneSeconds << " s vs " << allSeconds << " s";
+    test::expectLavapipeMatchesAtEveryChunkSize(all, interpret(all));
 }
 
 // The stamped network is the lsystem's, moved to start at the anchor + offset: one firing (the
