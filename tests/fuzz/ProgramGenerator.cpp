@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <fmt/format.h>
+#include <limits>
 #include <map>
 #include <string_view>
 #include <vector>
@@ -92,6 +93,7 @@ private:
 
     std::vector<std::string> materials_, fields_, grammars_, lets_;
     std::vector<std::string> lsystemCaves_; // the lsystem_cave features among fields_
+    std::vector<std::string> denseCaves_;   // dense lsystem_cave pipeline carves among fields_ (never stamped)
     // User functions so far (each takes two floats); inside a body, its parameters replace the
     // inputs, which function bodies may not read.
     std::vector<std::string> functions_;
@@ -242,6 +244,17 @@ void Generator::features() {
                                "min_scale = 2;",
                                i, number(random_.real(0.0, 0.45)));
             lsystemCaves_.push_back(name);
+        } else if (random_.chance(0.12)) {
+            // A dense network carved as a pipeline stage: short steps and centres a quarter to half
+            // a voxel apart put hundreds to thousands of centres in one 8^3 cell's list (lavapipe
+            // once left the list loops early past about 1,500; docs/fuzzing.md).
+            out_ += fmt::format("lsystem net{} {{ axiom = \"Z\"; expansions = {}; step = {}; angle = {}; start = {}; "
+                                "production Z {{ \"FZ[RFZ]FZ[LFZ[RF]]\"; }} }}\n",
+                                i, random_.range(2, 4), number(random_.real(0.5, 1.5)), random_.range(20, 90), point());
+            keys = fmt::format("lsystem_cave {{ lsystem = net{}; radius = {}; spacing = {}; clearance = {};", i,
+                               number(random_.real(1.0, 8.0)), number(random_.real(0.25, 0.5)),
+                               number(random_.real(0.5, 1.0)));
+            denseCaves_.push_back(name);
         } else
         switch (random_.below(3)) {
         case 0:
@@ -259,7 +272,8 @@ void Generator::features() {
                                size_[0], size_[1], size_[2], number(random_.real(0.0, 1.0)), number(random_.real(0.0, 1.0)));
             break;
         }
-        const bool lsystemCave = !lsystemCaves_.empty() && lsystemCaves_.back() == name; // takes no `rotate`
+        const bool lsystemCave = (!lsystemCaves_.empty() && lsystemCaves_.back() == name) ||
+                                 (!denseCaves_.empty() && denseCaves_.back() == name); // takes no `rotate`
         if (!lsystemCave && random_.chance(0.3)) keys += fmt::format(" rotate = [0, {}, 0];", random_.range(-90, 90));
         if (!materials_.empty() && random_.chance(0.5)) keys += fmt::format(" material = {};", materialName());
         fields_.push_back(name);
@@ -345,10 +359,24 @@ void Generator::grammars() {
                 static constexpr const char* kAggregates[] = {"mean", "min", "max", "solid_fraction"};
                 const double low = random_.real(-0.2, 0.8);
                 const bool fraction = random_.chance(0.25);
+                const bool bottomRow = random_.chance(0.5);
+                const char* kind = fraction ? "solid_fraction" : kAggregates[random_.range(0, 2)];
+                std::string lowText = number(fraction ? std::max(0.0, low) : low),
+                            highText = number(fraction ? 1.0 : low + random_.real(0.0, 1.2));
+                if (!fraction && random_.chance(0.3)) {
+                    // Bounds at the ends of the float range: a mean's bounds times the box's cells
+                    // bound its sum and must be floats, so they reach the largest float over the
+                    // cells (docs/language.md); min and max reach the largest float itself.
+                    const int cells = window[0] * window[2] * (bottomRow ? 1 : window[1]);
+                    const double largest = double(std::numeric_limits<float>::max()) / (kind == std::string_view("mean") ? cells : 1);
+                    static constexpr double kShares[] = {1.0 - 1e-6, 0.5, 1e-8};
+                    const auto extreme = [&] { return fmt::format("{:.6e}", largest * kShares[random_.below(3)]); };
+                    if (random_.chance(0.5)) lowText = "-" + extreme();
+                    if (random_.chance(0.7)) highText = extreme();
+                }
                 out_ += fmt::format("    where {{ {}{} = [{}, {}]; }}\n",
-                                    random_.chance(0.5) ? fmt::format("box = [[0, 0, 0], [{}, 1, {}]]; ", window[0], window[2]) : "",
-                                    fraction ? "solid_fraction" : kAggregates[random_.range(0, 2)],
-                                    number(fraction ? std::max(0.0, low) : low), number(fraction ? 1.0 : low + random_.real(0.0, 1.2)));
+                                    bottomRow ? fmt::format("box = [[0, 0, 0], [{}, 1, {}]]; ", window[0], window[2]) : "",
+                                    kind, lowText, highText);
             }
             if (!fields_.empty() && random_.chance(0.3)) out_ += stampBlock();
             out_ += "  }\n";
@@ -361,7 +389,11 @@ void Generator::grammars() {
 // grown windows of one phase cover a voxel at most 7^3 times, under Limits::maxStampOverlap.
 std::string Generator::stampBlock() {
     static constexpr std::array<std::string_view, 4> kModes = {"union", "subtract", "set", "intersect"};
-    const std::string& field = fields_[random_.below(uint32_t(fields_.size()))];
+    std::vector<std::string> stampable; // a dense network does not fit a stamp's reach of 3
+    for (const std::string& f : fields_)
+        if (std::find(denseCaves_.begin(), denseCaves_.end(), f) == denseCaves_.end()) stampable.push_back(f);
+    if (stampable.empty()) return "";
+    const std::string& field = stampable[random_.below(uint32_t(stampable.size()))];
     const bool lsystemCave = std::find(lsystemCaves_.begin(), lsystemCaves_.end(), field) != lsystemCaves_.end();
     std::string keys;
     if (random_.chance(0.8)) keys += fmt::format(" mode = {};", kModes[random_.below(kModes.size())]);

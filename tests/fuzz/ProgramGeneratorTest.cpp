@@ -16,7 +16,7 @@ TEST(ProgramGenerator, SameSeedSameProgram) {
 
 TEST(ProgramGenerator, EveryProgramChecks) {
     int withGrammar = 0, withField = 0, withMaterial = 0, withVariants = 0, withAggregates = 0, withStamps = 0,
-        withLsystemStamps = 0;
+        withLsystemStamps = 0, withDenseCaves = 0, withExtremeBounds = 0;
     for (uint64_t seed = 1; seed <= 300; ++seed) {
         const std::string text = generateProgram(seed);
         const CheckResult result = checkSource(SourceFile(fmt::format("seed{}.vox", seed), text));
@@ -38,6 +38,9 @@ TEST(ProgramGenerator, EveryProgramChecks) {
         withAggregates += aggregate;
         withStamps += stamp;
         withLsystemStamps += lsystemStamp;
+        // A dense lsystem_cave carve (its spacing key) and a `where` bound near the float range's end.
+        withDenseCaves += text.find("spacing = ") != std::string::npos;
+        withExtremeBounds += text.find("e+3") != std::string::npos;
     }
     // Each part of the language shows up in a fair share of the programs.
     EXPECT_GT(withGrammar, 100);
@@ -47,6 +50,8 @@ TEST(ProgramGenerator, EveryProgramChecks) {
     EXPECT_GT(withAggregates, 30);
     EXPECT_GT(withStamps, 30);
     EXPECT_GT(withLsystemStamps, 5);
+    EXPECT_GT(withDenseCaves, 5);
+    EXPECT_GT(withExtremeBounds, 5);
 }
 
 } // namespace
