@@ -10,6 +10,7 @@ packages=(
   libgtest-dev libbenchmark-dev libnoise-dev zlib1g-dev libpng-dev
   libopenvdb-dev libboost-dev # voxc-bench's meshing peer, OpenVDB's volumeToMesh
   libopenvdb-tools python3-openvdb # OpenVDB's own vdb_print and Python module open a voxc world tile (tests/world)
+  assimp-utils # assimp's command line opens a voxc .glb with its post-processing (tests/mesh/assimp_materials_test.sh)
   libopenmpi-dev openmpi-bin # voxc world under mpirun (tests/world)
   libglfw3-dev libimgui-dev libstb-dev # voxc view: the window and its panel (runtime/viewer)
   xvfb xauth # xvfb-run: the viewer's test under a virtual display (tests/viewer)

@@ -51,7 +51,6 @@ Triangle canonical(uint32_t a, uint32_t b, uint32_t c) {
 // one must match exactly one mesh vertex) and each primitive's triangles compared as a set.
 struct ReadBack {
     std::vector<uint32_t> meshVertex;       // file vertex -> mesh vertex
-    std::vector<std::array<uint8_t, 4>> colors; // per file vertex
     std::map<uint8_t, std::vector<Triangle>> triangles; // by voxc material id, in mesh vertices, sorted
 };
 
@@ -60,7 +59,6 @@ ReadBack readBack(const GlbFile& f, const Mesh& mesh) {
     const auto& primitives = f.json["meshes"][0]["primitives"];
     const auto& attributes = primitives[0]["attributes"];
     const std::vector<float> p = test::accessorValues<float>(f, attributes["POSITION"]), n = test::accessorValues<float>(f, attributes["NORMAL"]);
-    const std::vector<uint8_t> c = test::accessorValues<uint8_t>(f, attributes["COLOR_0"]);
     std::map<std::array<uint32_t, 6>, uint32_t> byBits;
     for (uint32_t v = 0; v < mesh.positions.size(); ++v) {
         std::array<uint32_t, 6> bits;
@@ -78,7 +76,6 @@ ReadBack readBack(const GlbFile& f, const Mesh& mesh) {
         if (it == byBits.end()) continue;
         r.meshVertex.push_back(it->second);
         matched.insert(it->second);
-        r.colors.push_back({c[4 * v], c[4 * v + 1], c[4 * v + 2], c[4 * v + 3]});
     }
     EXPECT_EQ(matched.size(), mesh.positions.size());
     EXPECT_EQ(r.meshVertex.size(), mesh.positions.size());
@@ -164,25 +161,26 @@ TEST(mesh_Glb, trianglesAreOrderedForTheVertexCache) {
     EXPECT_LT(after, 0.8 * before) << "ACMR " << before << " -> " << after;
 }
 
-// G6: COLOR_0 is the vertex's material colour, linear as declared, as normalised RGBA bytes.
-TEST(mesh_Glb, vertexColoursAreNormalisedMaterialColourBytes) {
+// G6: each primitive's material carries its colour as the base colour, linear as declared (grey
+// 0.6 for an undeclared id), so materials differ in more than their names (assimp's post-processing
+// merges materials that differ only there); the vertices carry no colour stream.
+TEST(mesh_Glb, materialsCarryTheirColourAsBaseColour) {
     const Mesh mesh = materialMesh();
     const GlbFile f = parseGlb(encodeGlb(mesh, kMaterials));
-    const size_t color = f.json["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"];
-    const auto& accessor = f.json["accessors"][color];
-    EXPECT_EQ(accessor["componentType"], 5121);
-    EXPECT_EQ(accessor["type"], "VEC4");
-    EXPECT_EQ(accessor["normalized"], true);
-    const ReadBack r = readBack(f, mesh);
-    const std::map<uint8_t, std::array<uint8_t, 4>> expected = {
-        {1, {128, 64, 255, 255}}, {2, {219, 199, 140, 255}}, {7, {51, 153, 26, 255}}, {9, {153, 153, 153, 255}}};
-    std::set<uint8_t> seen;
-    for (size_t v = 0; v < r.colors.size(); ++v) {
-        const uint8_t id = mesh.vertexMaterials[r.meshVertex[v]];
-        EXPECT_EQ(r.colors[v], expected.at(id)) << v;
-        seen.insert(id);
+    const std::map<int, glm::vec3> expected = {{1, kMaterials[0].color}, {2, kMaterials[1].color}, {7, kMaterials[2].color}, {9, glm::vec3(0.6f)}};
+    std::set<std::vector<double>> distinct;
+    for (const auto& primitive : f.json["meshes"][0]["primitives"]) {
+        EXPECT_FALSE(primitive["attributes"].contains("COLOR_0"));
+        const auto& material = f.json["materials"][size_t(primitive["material"])];
+        const int id = material["extras"]["voxc_material_id"];
+        ASSERT_TRUE(expected.count(id)) << id;
+        const std::vector<double> base = material["pbrMetallicRoughness"]["baseColorFactor"];
+        ASSERT_EQ(base.size(), 4u);
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(float(base[size_t(c)]), expected.at(id)[c]) << id;
+        EXPECT_EQ(base[3], 1.0);
+        distinct.insert(base);
     }
-    EXPECT_EQ(seen.size(), 4u);
+    EXPECT_EQ(distinct.size(), 4u);
 }
 
 // G8: front faces counter-clockwise seen from outside, and the normals agree with them (on a

@@ -59,13 +59,15 @@ for (const file of files) {
       if (!p) return;
       const g = mesh.geometry;
       const count = json.accessors[p.attributes.POSITION].count;
-      for (const [name, attribute] of [['position', 'POSITION'], ['normal', 'NORMAL'], ['color', 'COLOR_0']]) {
+      for (const [name, attribute] of [['position', 'POSITION'], ['normal', 'NORMAL']]) {
         if (!g.attributes[name] || g.attributes[name].count !== count) problems.push(`three.js: primitive ${i} ${attribute} count`);
       }
-      if (g.attributes.color && !g.attributes.color.normalized) problems.push(`three.js: primitive ${i} colours not normalised`);
       if (!g.index || g.index.count !== json.accessors[p.indices].count) problems.push(`three.js: primitive ${i} index count`);
       if (mesh.material.name !== json.materials[p.material].name) problems.push(`three.js: primitive ${i} material name ${mesh.material.name}`);
-      if (!mesh.material.vertexColors) problems.push(`three.js: primitive ${i} vertex colours off`);
+      const base = json.materials[p.material].pbrMetallicRoughness.baseColorFactor;
+      const c = mesh.material.color; // three.js keeps glTF's linear base colour as it is
+      if (Math.abs(c.r - base[0]) > 1e-6 || Math.abs(c.g - base[1]) > 1e-6 || Math.abs(c.b - base[2]) > 1e-6)
+        problems.push(`three.js: primitive ${i} colour ${c.r},${c.g},${c.b} for base colour ${base}`);
     });
   }
   const summary = `${issues.numErrors} errors, ${issues.numWarnings} warnings, ${issues.numInfos} infos, ${issues.numHints} hints`;

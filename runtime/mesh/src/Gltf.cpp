@@ -21,7 +21,7 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 constexpr uint32_t kGlbMagic = 0x46546C67, kGlbVersion = 2, kJsonChunk = 0x4E4F534A, kBinChunk = 0x004E4942;
-constexpr int kFloat = 5126, kUnsignedByte = 5121, kUnsignedShort = 5123, kUnsignedInt = 5125;
+constexpr int kFloat = 5126, kUnsignedShort = 5123, kUnsignedInt = 5125;
 constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
 
 class BinaryBuffer {
@@ -60,7 +60,6 @@ std::map<uint8_t, std::vector<uint32_t>> trianglesByMaterial(const Mesh& mesh) {
 // The vertex streams a .glb carries, in the order written.
 struct VertexStreams {
     std::vector<glm::vec3> positions, normals;
-    std::vector<uint8_t> materials;
 };
 
 // Reorders for a GPU (meshoptimizer): each primitive's triangles for the post-transform vertex
@@ -76,12 +75,11 @@ VertexStreams optimizeForRendering(const Mesh& mesh, std::map<uint8_t, std::vect
     }
     std::vector<uint32_t> remap(vertexCount);
     const size_t used = meshopt_optimizeVertexFetchRemap(remap.data(), all.data(), all.size(), vertexCount);
-    VertexStreams streams{std::vector<glm::vec3>(used), std::vector<glm::vec3>(used), std::vector<uint8_t>(used)};
+    VertexStreams streams{std::vector<glm::vec3>(used), std::vector<glm::vec3>(used)};
     for (size_t v = 0; v < vertexCount; ++v) {
         if (remap[v] == ~0u) continue; // used by no triangle: left out
         streams.positions[remap[v]] = mesh.positions[v];
         streams.normals[remap[v]] = mesh.normals[v];
-        streams.materials[remap[v]] = mesh_export::vertexMaterial(mesh, v);
     }
     for (auto& [id, indices] : groups)
         for (uint32_t& i : indices) i = remap[i];
@@ -113,19 +111,6 @@ Json gltfDocument(const Mesh& mesh, std::span<const Material> materials, BinaryB
                          {"componentType", kFloat}, {"count", vertexCount}, {"type", "VEC3"}, {"min", bound(lo)}, {"max", bound(hi)}});
     accessors.push_back({{"bufferView", bin.addView(streams.normals.data(), vertexCount * 12, kArrayBuffer, views)},
                          {"componentType", kFloat}, {"count", vertexCount}, {"type", "VEC3"}});
-    // Vertex colours: the vertex's material colour (voxc colours are linear, as glTF's are), as
-    // normalised RGBA bytes: 4 bytes keep every element 4-byte aligned.
-    std::vector<uint8_t> colors(vertexCount * 4);
-    for (size_t v = 0; v < vertexCount; ++v) {
-        const glm::vec3 c = mesh_export::lookOf(streams.materials[v], materials).color;
-        colors[4 * v] = mesh_export::colorByte(c.r);
-        colors[4 * v + 1] = mesh_export::colorByte(c.g);
-        colors[4 * v + 2] = mesh_export::colorByte(c.b);
-        colors[4 * v + 3] = 255;
-    }
-    accessors.push_back({{"bufferView", bin.addView(colors.data(), colors.size(), kArrayBuffer, views)},
-                         {"componentType", kUnsignedByte}, {"normalized", true}, {"count", vertexCount}, {"type", "VEC4"}});
-
     // 16-bit indices while every index fits below the primitive-restart value 65535.
     const bool shortIndices = vertexCount <= 65535;
     Json primitives = Json::array(), gltfMaterials = Json::array();
@@ -140,12 +125,13 @@ Json gltfDocument(const Mesh& mesh, std::span<const Material> materials, BinaryB
         accessors.push_back({{"bufferView", view}, {"componentType", shortIndices ? kUnsignedShort : kUnsignedInt},
                              {"count", indices.size()}, {"type", "SCALAR"}});
         const mesh_export::MaterialLook look = mesh_export::lookOf(id, materials);
-        // COLOR_0 multiplies the base colour, so the base stays white; the declared colour and id
-        // travel in extras for tools that want them.
+        // The colour is the material's base colour (linear, as voxc's colours are): a primitive
+        // per material carries it, and readers that merge materials equal in everything but the
+        // name (assimp's post-processing) keep them apart. The id travels in extras.
         gltfMaterials.push_back({{"name", look.name},
-                                 {"pbrMetallicRoughness", {{"baseColorFactor", {1.0, 1.0, 1.0, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 1.0}}},
+                                 {"pbrMetallicRoughness", {{"baseColorFactor", {look.color.r, look.color.g, look.color.b, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 1.0}}},
                                  {"extras", {{"voxc_material_id", id}, {"voxc_color", {look.color.r, look.color.g, look.color.b}}}}});
-        primitives.push_back({{"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"COLOR_0", 2}}},
+        primitives.push_back({{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}},
                               {"indices", accessors.size() - 1}, {"material", gltfMaterials.size() - 1}, {"mode", 4}});
     }
     doc["scenes"] = Json::array({{{"nodes", {0}}}});

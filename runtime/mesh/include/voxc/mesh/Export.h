@@ -29,9 +29,9 @@ void writeObj(const std::string& path, const Mesh& mesh, std::span<const Materia
 void writeObj(OutputFiles& outputs, const std::string& path, const Mesh& mesh, std::span<const Material> materials = {});
 // glTF 2.0 binary: one node and mesh, one primitive per material id that has triangles (ascending
 // id), all sharing POSITION (with exact float bounds),
-// NORMAL and COLOR_0 (the vertex's material colour as normalised RGBA bytes, linear like voxc's
-// colours); indices 16-bit up to 65,535 vertices, else 32-bit. Each glTF material has the voxc
-// name, a white base colour (COLOR_0 multiplies it) and extras voxc_material_id / voxc_color.
+// NORMAL; indices 16-bit up to 65,535 vertices, else 32-bit. Each glTF material has the voxc
+// name, the material's colour as its base colour (linear, like voxc's colours), so no two
+// materials are equal but for their names, and extras voxc_material_id / voxc_color.
 // Y up and counter-clockwise front faces, as voxc meshes already are. Ordered for rendering with
 // meshoptimizer: each primitive's triangles for the vertex cache (windings kept), then the vertices
 // in first-use order (unused ones left out); the same mesh, deterministically renumbered. An empty
