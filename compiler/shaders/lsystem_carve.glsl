@@ -23,30 +23,34 @@ layout(std430, set = 0, binding = 10) readonly buffer PointSets {
 
 float pointSetFloat(int at) { return intBitsToFloat(pointSets.words[at]); }
 
-// The list loops visit POINT_SET_BLOCK items per iteration, one step call each, because lavapipe
-// (llvmpipe) caps the loop iterations of one invocation group at 65535 for all its loops together
-// and silently leaves every loop after that: a cell may list kMaxPointSetPerCell (8,192) centres
-// and as many segments, so a voxel takes at most 2 * 8192 / POINT_SET_BLOCK = 1,024 iterations
-// here, and field kernels that read a point set walk at most kPointSetAnchorsAlongY voxels per
-// invocation (codegen/FieldKernel.cpp). A step returns false where the loop stops: the list's end,
-// or a lower bound not below the nearest so far (every later one is not either).
-const int POINT_SET_BLOCK = 16;
+// The list loops visit POINT_SET_BLOCK items per iteration, as straight-line steps, because
+// lavapipe (llvmpipe) caps the loop iterations of one invocation group at 65535 for all its loops
+// together and silently leaves every loop after that: a cell may list kMaxPointSetPerCell (8,192)
+// centres and as many segments, so a voxel takes at most 2 * 8192 / POINT_SET_BLOCK = 2,048
+// iterations here, and field kernels that read a point set walk at most kPointSetAnchorsAlongY
+// voxels per invocation (codegen/FieldKernel.cpp). A step reads item min(i, count - 1), always in
+// the list, and keeps its distance only while `live`: before the list's end and before the first
+// lower bound not below the nearest so far (every later one is not either), so the nearest is the
+// one a loop over the items one by one finds. No branch: the driver compiles it quickly and the
+// lanes of a group do not diverge.
+const int POINT_SET_BLOCK = 8;
 
-bool pointSetCentreStep(vec3 p, int centres, int item, int i, int count, inout float nearest) {
-    if (i >= count || pointSetFloat(item + 2 * i + 1) >= nearest) return false;
-    int at = centres + 4 * pointSets.words[item + 2 * i];
+void pointSetCentreStep(vec3 p, int centres, int item, int i, int count, inout bool live, inout float nearest) {
+    int j = min(i, count - 1);
+    live = live && i < count && pointSetFloat(item + 2 * j + 1) < nearest;
+    int at = centres + 4 * pointSets.words[item + 2 * j];
     precise float dx = p.x - pointSetFloat(at);
     precise float dy = p.y - pointSetFloat(at + 1);
     precise float dz = p.z - pointSetFloat(at + 2);
     precise float scale = pointSetFloat(at + 3);
     precise float d2 = (dx * dx + dy * dy + dz * dz) * (scale * scale);
-    nearest = d2 < nearest ? d2 : nearest;
-    return true;
+    nearest = live && d2 < nearest ? d2 : nearest;
 }
 
-bool pointSetSegmentStep(vec3 p, int segments, int item, int i, int count, inout float nearest) {
-    if (i >= count || pointSetFloat(item + 2 * i + 1) >= nearest) return false;
-    int at = segments + 7 * pointSets.words[item + 2 * i];
+void pointSetSegmentStep(vec3 p, int segments, int item, int i, int count, inout bool live, inout float nearest) {
+    int j = min(i, count - 1);
+    live = live && i < count && pointSetFloat(item + 2 * j + 1) < nearest;
+    int at = segments + 7 * pointSets.words[item + 2 * j];
     precise float px = p.x - pointSetFloat(at);
     precise float py = p.y - pointSetFloat(at + 1);
     precise float pz = p.z - pointSetFloat(at + 2);
@@ -59,8 +63,7 @@ bool pointSetSegmentStep(vec3 p, int segments, int item, int i, int count, inout
     precise float dy = py - t * ey;
     precise float dz = pz - t * ez;
     precise float d2 = dx * dx + dy * dy + dz * dz;
-    nearest = d2 < nearest ? d2 : nearest;
-    return true;
+    nearest = live && d2 < nearest ? d2 : nearest;
 }
 
 vec2 pointSetDistances(int set, vec3 p) {
@@ -78,49 +81,33 @@ vec2 pointSetDistances(int set, vec3 p) {
     int centreItem = pointSets.words[list];
     int centreCount = pointSets.words[list + 1];
     float nearestCentre = 3.4028234663852886e38;
-    for (int i = 0; i < centreCount; i += POINT_SET_BLOCK) {
-        // Sixteen steps written out (a constant loop here could stay a loop).
-        if (!(pointSetCentreStep(p, centres, centreItem, i, centreCount, nearestCentre) &&
-              pointSetCentreStep(p, centres, centreItem, i + 1, centreCount, nearestCentre) &&
-              pointSetCentreStep(p, centres, centreItem, i + 2, centreCount, nearestCentre) &&
-              pointSetCentreStep(p, centres, centreItem, i + 3, centreCount, nearestCentre) &&
-              pointSetCentreStep(p, centres, centreItem, i + 4, centreCount, nearestCentre) &&
-              pointSetCentreStep(p, centres, centreItem, i + 5, centreCount, nearestCentre) &&
-              pointSetCentreStep(p, centres, centreItem, i + 6, centreCount, nearestCentre) &&
-              pointSetCentreStep(p, centres, centreItem, i + 7, centreCount, nearestCentre) &&
-              pointSetCentreStep(p, centres, centreItem, i + 8, centreCount, nearestCentre) &&
-              pointSetCentreStep(p, centres, centreItem, i + 9, centreCount, nearestCentre) &&
-              pointSetCentreStep(p, centres, centreItem, i + 10, centreCount, nearestCentre) &&
-              pointSetCentreStep(p, centres, centreItem, i + 11, centreCount, nearestCentre) &&
-              pointSetCentreStep(p, centres, centreItem, i + 12, centreCount, nearestCentre) &&
-              pointSetCentreStep(p, centres, centreItem, i + 13, centreCount, nearestCentre) &&
-              pointSetCentreStep(p, centres, centreItem, i + 14, centreCount, nearestCentre) &&
-              pointSetCentreStep(p, centres, centreItem, i + 15, centreCount, nearestCentre)))
-            break;
+    bool live = true;
+    for (int i = 0; live && i < centreCount; i += POINT_SET_BLOCK) {
+        // Eight steps written out (a constant loop here could stay a loop).
+        pointSetCentreStep(p, centres, centreItem, i, centreCount, live, nearestCentre);
+        pointSetCentreStep(p, centres, centreItem, i + 1, centreCount, live, nearestCentre);
+        pointSetCentreStep(p, centres, centreItem, i + 2, centreCount, live, nearestCentre);
+        pointSetCentreStep(p, centres, centreItem, i + 3, centreCount, live, nearestCentre);
+        pointSetCentreStep(p, centres, centreItem, i + 4, centreCount, live, nearestCentre);
+        pointSetCentreStep(p, centres, centreItem, i + 5, centreCount, live, nearestCentre);
+        pointSetCentreStep(p, centres, centreItem, i + 6, centreCount, live, nearestCentre);
+        pointSetCentreStep(p, centres, centreItem, i + 7, centreCount, live, nearestCentre);
     }
 
     int segments = pointSets.words[header + 1];
     int segmentItem = pointSets.words[list + 2];
     int segmentCount = pointSets.words[list + 3];
     float nearestSegment = 3.4028234663852886e38;
-    for (int i = 0; i < segmentCount; i += POINT_SET_BLOCK) {
-        if (!(pointSetSegmentStep(p, segments, segmentItem, i, segmentCount, nearestSegment) &&
-              pointSetSegmentStep(p, segments, segmentItem, i + 1, segmentCount, nearestSegment) &&
-              pointSetSegmentStep(p, segments, segmentItem, i + 2, segmentCount, nearestSegment) &&
-              pointSetSegmentStep(p, segments, segmentItem, i + 3, segmentCount, nearestSegment) &&
-              pointSetSegmentStep(p, segments, segmentItem, i + 4, segmentCount, nearestSegment) &&
-              pointSetSegmentStep(p, segments, segmentItem, i + 5, segmentCount, nearestSegment) &&
-              pointSetSegmentStep(p, segments, segmentItem, i + 6, segmentCount, nearestSegment) &&
-              pointSetSegmentStep(p, segments, segmentItem, i + 7, segmentCount, nearestSegment) &&
-              pointSetSegmentStep(p, segments, segmentItem, i + 8, segmentCount, nearestSegment) &&
-              pointSetSegmentStep(p, segments, segmentItem, i + 9, segmentCount, nearestSegment) &&
-              pointSetSegmentStep(p, segments, segmentItem, i + 10, segmentCount, nearestSegment) &&
-              pointSetSegmentStep(p, segments, segmentItem, i + 11, segmentCount, nearestSegment) &&
-              pointSetSegmentStep(p, segments, segmentItem, i + 12, segmentCount, nearestSegment) &&
-              pointSetSegmentStep(p, segments, segmentItem, i + 13, segmentCount, nearestSegment) &&
-              pointSetSegmentStep(p, segments, segmentItem, i + 14, segmentCount, nearestSegment) &&
-              pointSetSegmentStep(p, segments, segmentItem, i + 15, segmentCount, nearestSegment)))
-            break;
+    live = true;
+    for (int i = 0; live && i < segmentCount; i += POINT_SET_BLOCK) {
+        pointSetSegmentStep(p, segments, segmentItem, i, segmentCount, live, nearestSegment);
+        pointSetSegmentStep(p, segments, segmentItem, i + 1, segmentCount, live, nearestSegment);
+        pointSetSegmentStep(p, segments, segmentItem, i + 2, segmentCount, live, nearestSegment);
+        pointSetSegmentStep(p, segments, segmentItem, i + 3, segmentCount, live, nearestSegment);
+        pointSetSegmentStep(p, segments, segmentItem, i + 4, segmentCount, live, nearestSegment);
+        pointSetSegmentStep(p, segments, segmentItem, i + 5, segmentCount, live, nearestSegment);
+        pointSetSegmentStep(p, segments, segmentItem, i + 6, segmentCount, live, nearestSegment);
+        pointSetSegmentStep(p, segments, segmentItem, i + 7, segmentCount, live, nearestSegment);
     }
     precise float centre = sqrt(nearestCentre);
     precise float segment = sqrt(nearestSegment);

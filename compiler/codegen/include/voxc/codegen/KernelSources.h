@@ -63,7 +63,7 @@ struct FieldStageBoxes {
 FieldStageBoxes fieldBoxes(const ir::IrModule& module, const ir::IrField& field, FieldMode mode,
                            std::optional<uint8_t> material, std::optional<DensityBounds> before);
 // Voxels one invocation of a field kernel walks along its column: the whole column, or at most
-// kPointSetAnchorsAlongY where the field reads a point set (lsystem_carve.glsl: up to 1,024 list
+// kPointSetAnchorsAlongY where the field reads a point set (lsystem_carve.glsl: up to 2,048 list
 // loop iterations per voxel, under lavapipe's 65,535 per invocation group for every loop together).
 constexpr uint32_t kPointSetAnchorsAlongY = 8;
 DispatchShape fieldDispatchShape(const ir::IrModule& module, const ir::IrField& field);
