@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Regenerates tests/diagnostics/cases/*.expected from the checker's current output.
+# Regenerates tests/diagnostics/cases/*.expected (and the *.json.expected that exist) from the
+# checker's current output.
 # The golden test itself does the writing when VOXC_UPDATE_GOLDENS=1 is set.
 # Review the result with `git diff tests/diagnostics` before committing it.
 #

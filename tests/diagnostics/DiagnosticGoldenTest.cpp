@@ -1,9 +1,12 @@
 // Runs the checker over every case in tests/diagnostics/cases and compares the rendered
 // diagnostics with the case's .expected file. With VOXC_UPDATE_GOLDENS=1 in the environment
 // it rewrites the .expected files instead (scripts/update-diagnostic-goldens.sh). A case with a
+// NAME.json.expected file is also compared in JSON, as `--diagnostics-format json` prints it (the
+// update rewrites those that exist; `touch` one to start it). A case with a
 // NAME.region file ("MINX,MINY,MINZ:MAXX,MAXY,MAXZ") is checked for a run of that region.
 #include "voxc/check/Check.h"
 #include "voxc/core/AtomicWrite.h"
+#include "voxc/syntax/DiagnosticJson.h"
 
 #include <gtest/gtest.h>
 
@@ -25,6 +28,8 @@ std::vector<std::string> caseNames() {
     std::set<std::string> names;
     for (const fs::directory_entry& entry : fs::directory_iterator(kCasesDir)) {
         const fs::path& path = entry.path();
+        const std::string file = path.filename().string();
+        if (file.ends_with(".json.expected")) continue; // the JSON form of a case
         if (path.extension() == ".vox" || path.extension() == ".expected") names.insert(path.stem().string());
     }
     return {names.begin(), names.end()};
@@ -53,12 +58,18 @@ TEST_P(diagnostics_golden, MatchesExpected) {
         ASSERT_EQ(std::sscanf(region.c_str(), "%d,%d,%d:%d,%d,%d", &lo.x, &lo.y, &lo.z, &hi.x, &hi.y, &hi.z), 6);
         options.region = std::pair(lo, hi);
     }
-    const std::string rendered = voxc::checkFile(name + ".vox", options).rendered();
+    const voxc::CheckResult result = voxc::checkFile(name + ".vox", options);
+    const std::string rendered = result.rendered();
+    std::string json;
+    for (const voxc::Diagnostic& diagnostic : result.diagnostics) json += voxc::renderJson(diagnostic, result.source) + "\n";
     const fs::path expectedPath = kCasesDir / (name + ".expected");
+    const fs::path jsonPath = kCasesDir / (name + ".json.expected");
     if (updating()) {
         voxc::writeFileAtomically(expectedPath.string(), rendered);
+        if (fs::exists(jsonPath)) voxc::writeFileAtomically(jsonPath.string(), json);
         GTEST_SKIP() << "updated " << expectedPath;
     }
+    if (fs::exists(jsonPath)) EXPECT_EQ(json, readFile(jsonPath));
     ASSERT_TRUE(fs::exists(expectedPath)) << "no golden file; run scripts/update-diagnostic-goldens.sh";
     EXPECT_FALSE(rendered.empty()) << "every golden case should produce at least one diagnostic";
     EXPECT_EQ(rendered, readFile(expectedPath));

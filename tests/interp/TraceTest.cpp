@@ -1,5 +1,6 @@
 // Trace events, their filter and text form, and the firing counts.
 #include "ProgramText.h"
+#include "voxc/core/Errors.h"
 #include "voxc/interp/Interpreter.h"
 #include "voxc/stages/Pipeline.h"
 
@@ -119,6 +120,53 @@ TEST(interp_Trace, StatsSkipGrammarsThatDidNotRun) {
     options.stats = &stats;
     interpret(program, options);
     EXPECT_EQ(formatFireStats(program, stats), "grammar tiny: 26 anchors tested, 12 firings\n  dot 4\n  block 8\n");
+}
+
+// `symmetry` names variants WRITTEN@ELEMENT: a written name picks them all, NAME@ELEMENT one.
+TEST(interp_Trace, RuleFilterCoversSymmetryVariants) {
+    EXPECT_TRUE(ruleFilterMatches("chip", "chip"));
+    EXPECT_TRUE(ruleFilterMatches("chip", "chip@rot90y"));
+    EXPECT_TRUE(ruleFilterMatches("chip@rot90y", "chip@rot90y"));
+    EXPECT_FALSE(ruleFilterMatches("chip@rot90y", "chip"));
+    EXPECT_FALSE(ruleFilterMatches("chip@rot90y", "chip@rot180y"));
+    EXPECT_FALSE(ruleFilterMatches("chi", "chip@rot90y"));
+    EXPECT_FALSE(ruleFilterMatches("chip", "chip_edge@rot90y"));
+
+    Program program = tinyProgram();
+    program.grammars[0].rules[0].name = "dot@mirx"; // as the checker names a variant
+    const std::vector<std::string> all = traceOf(program, {.rule = std::string("dot")});
+    const std::vector<std::string> variant = traceOf(program, {.rule = std::string("dot@mirx")});
+    EXPECT_EQ(all.size(), 4u);
+    EXPECT_EQ(all, variant);
+}
+
+std::string filterError(const Program& program, const TraceFilter& filter) {
+    try {
+        checkTraceFilter(program, filter);
+    } catch (const UserError& error) {
+        return error.what();
+    }
+    return "";
+}
+
+TEST(interp_Trace, UnknownNamesInAFilterAreErrorsListingTheNames) {
+    Program program = tinyProgram();
+    program.grammars[0].rules.push_back(program.grammars[0].rules[0]);
+    program.grammars[0].rules[0].name = "dot@rot90y";
+    program.grammars[0].rules.back().name = "dot";
+    EXPECT_EQ(filterError(program, {.rule = std::string("dot")}), "");
+    EXPECT_EQ(filterError(program, {.rule = std::string("dot@rot90y")}), "");
+    EXPECT_EQ(filterError(program, {.rule = std::string("blokc")}),
+              "--trace-rule 'blokc': no rule of that name in any grammar (the rules are: dot, block); did you mean "
+              "'block'?");
+    EXPECT_EQ(filterError(program, {.rule = std::string("dot@rot9y")}),
+              "--trace-rule 'dot@rot9y': rule 'dot' has no such variant (its variants are: dot@rot90y); did you "
+              "mean 'dot@rot90y'?");
+    EXPECT_EQ(filterError(program, {.rule = std::string("block@mirx")}),
+              "--trace-rule 'block@mirx': rule 'block' has no such variant (it has no symmetry variants)");
+    EXPECT_EQ(filterError(program, {.grammar = std::string("tniy")}),
+              "--trace-grammar 'tniy': no grammar of that name (the grammars are: tiny); did you mean 'tiny'?");
+    EXPECT_EQ(filterError(program, {.rule = std::string("dot"), .grammar = std::string("tiny")}), "");
 }
 
 } // namespace

@@ -24,7 +24,7 @@ def check_json(path):
     severities = {"error": 1, "warning": 2, "note": 3}
     for line in run.stderr.splitlines():
         d = json.loads(line)
-        if not d["code"]:
+        if "summary" in d:
             continue  # the closing summary
         r = d["range"]
         lsp_range = {"start": {"line": r["start"]["line"] - 1, "character": r["start"]["column"] - 1},

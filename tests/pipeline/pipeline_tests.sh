@@ -46,13 +46,13 @@ for verb in check compile run; do
     [ "$verb" = compile ] && extra=(-o "$work/badpkg")
     [ "$verb" = run ] && extra=(-o "$work/bad.ply")
     "$voxc" "$verb" "$work/bad.vox" "${extra[@]}" --diagnostics-format json > /dev/null 2> "$work/$verb.json"
-    expect "json_matches_text_$verb" 0 "" -- python3 - "$work/text.err" "$work/$verb.json" <<'PY'
+    expect "json_matches_text_$verb" 0 "" -- python3 - "$work/text.err" "$work/$verb.json" "$work/bad.vox" <<'PY'
 import json, re, sys
 text = open(sys.argv[1]).read()
 located = re.findall(r"^(\S+?):(\d+):(\d+): (error|warning) (E\d{4}|W\d{4}): (.*)$", text, re.M)
 assert len(located) >= 3, text
 objects = [json.loads(line) for line in open(sys.argv[2])]
-diagnostics = [o for o in objects if o["code"]]
+diagnostics = [o for o in objects if "summary" not in o]
 got = [(o["file"], str(o["range"]["start"]["line"]), str(o["range"]["start"]["column"]), o["severity"], o["code"], o["message"])
        for o in diagnostics]
 assert got == [tuple(d) for d in located], (got, located)
@@ -60,8 +60,11 @@ for o in diagnostics:
     assert o["range"]["end"]["line"] == o["range"]["start"]["line"] and o["range"]["end"]["column"] > o["range"]["start"]["column"]
     assert isinstance(o["notes"], list)
 assert any(o["file"].endswith("bad.rules") for o in diagnostics)
-# the closing summary is one more object, without a code or a location
-assert objects[-1]["code"] == "" and objects[-1]["range"] is None and "error" in objects[-1]["message"]
+# the closing summary is a record of its own, not one more error
+errors = sum(o["severity"] == "error" for o in diagnostics)
+warnings = sum(o["severity"] == "warning" for o in diagnostics)
+assert objects[-1] == {"summary": {"file": sys.argv[3], "errors": errors, "warnings": warnings}}, objects[-1]
+assert all("fixits" in o for o in diagnostics)
 PY
 done
 expect json_missing_file 1 '^\{"code":"E0100","severity":"error","file":"[^"]*nope.vox","range":null' -- "$voxc" check "$work/nope.vox" --diagnostics-format json

@@ -102,6 +102,65 @@ TEST_F(SessionTest, SlidersRerunAsIfTheFileSaidSo) {
     EXPECT_TRUE(session.world().mesh().positions == written.world().mesh().positions);
 }
 
+constexpr const char* kGrammarProgram = R"(const CHIP = 0.35;
+world { size = [16, 16, 16]; chunk = 16; seed = 1; }
+start { box { min = [0, 0, 0]; max = [16, 8, 16]; } }
+grammar weather {
+  iterations = 2;
+  rule chip { size = [1, 2, 1]; probability = CHIP; priority = 1; symbol { [LT 0.5] [GEQ 0.5] } transform { [NOP] [SET 0] } }
+}
+pipeline { start; weather; }
+)";
+
+TEST_F(SessionTest, GrammarKeysAreParametersWithTheLanguagesRanges) {
+    write(kGrammarProgram);
+    Session session(context(), {path()});
+    ASSERT_TRUE(session.hasWorld()) << session.lastError();
+    // A constant that is a rule's probability ranges over the probability's [0, 1], not to twice its value.
+    const Parameter& chip = parameter(session, "CHIP");
+    EXPECT_EQ(chip.min, 0);
+    EXPECT_EQ(chip.max, 1);
+    EXPECT_FALSE(chip.integer);
+    const Parameter& iterations = parameter(session, "weather.iterations");
+    EXPECT_EQ(iterations.value, 2);
+    EXPECT_EQ(iterations.min, 1);
+    EXPECT_EQ(iterations.max, Limits{}.maxIterations);
+    EXPECT_TRUE(iterations.integer);
+    EXPECT_LE(iterations.sliderMax - iterations.sliderMin, 1000); // a usable part of it on the slider
+    EXPECT_EQ(parameter(session, "weather.chip.priority").value, 1);
+    const Parameter& weight = parameter(session, "weather.chip.weight"); // not written: the default
+    EXPECT_EQ(weight.value, 1);
+    EXPECT_EQ(weight.max, 1000);
+    // A probability written as a constant follows the constant: no slider of its own.
+    for (const Parameter& p : session.parameters()) EXPECT_NE(p.name, "weather.chip.probability");
+
+    ASSERT_TRUE(session.setParameter("CHIP", 0.9)) << session.lastError();
+    ASSERT_TRUE(session.setParameter("weather.iterations", 4)) << session.lastError();
+    EXPECT_TRUE(parameter(session, "weather.iterations").overridden);
+    EXPECT_THROW(session.setParameter("CHIP", 1.5), UserError);
+    EXPECT_THROW(session.setParameter("weather.iterations", 0), UserError);
+    // The same world as a file that writes both values.
+    std::string text = kGrammarProgram;
+    text.replace(text.find("CHIP = 0.35"), 11, "CHIP = 0.9");
+    text.replace(text.find("iterations = 2"), 14, "iterations = 4");
+    write(text);
+    Session written(context(), {path()});
+    ASSERT_TRUE(written.hasWorld()) << written.lastError();
+    EXPECT_TRUE(written.world().mesh().positions == session.world().mesh().positions);
+
+    try {
+        session.setParameter("weather.iteratons", 3);
+        ADD_FAILURE() << "an unknown name was accepted";
+    } catch (const UserError& error) {
+        const std::string message = error.what();
+        EXPECT_NE(message.find("no parameter named 'weather.iteratons' (the parameters are: seed, CHIP, "
+                               "weather.iterations, weather.chip.priority, weather.chip.weight)"),
+                  std::string::npos)
+            << message;
+        EXPECT_NE(message.find("did you mean 'weather.iterations'?"), std::string::npos) << message;
+    }
+}
+
 TEST_F(SessionTest, ABrokenFileKeepsTheLastWorldAndSaysWhy) {
     Session session(context(), {path()});
     ASSERT_TRUE(session.hasWorld());

@@ -199,6 +199,7 @@ CheckResult checkSource(const SourceFile& source, const CheckOptions& options) {
         }
     }
     result.diagnostics = diagnostics.take();
+    addSuggestionFixIts(result.diagnostics, source);
     return result;
 }
 

@@ -37,7 +37,7 @@ std::optional<std::array<double, 2>> readBounds(Context& context, const ast::Ass
             context.diagnostics.error("E0010", value.loc, fmt::format("'{}' expects numbers here", a.key));
             return std::nullopt;
         }
-        auto number = context.constants.evaluate(*value.scalar);
+        auto number = context.constants.evaluate(*value.scalar, fmt::format("'{}'", a.key));
         if (!number) return std::nullopt;
         if (!(*number >= min && *number <= max)) {
             context.diagnostics.error("E0007", value.loc,

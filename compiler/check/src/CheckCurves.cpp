@@ -54,7 +54,7 @@ std::optional<glm::dvec3> readPoint(Context& context, const ast::Assignment& a, 
     }
     glm::dvec3 p;
     for (int i = 0; i < 3; ++i) {
-        const std::optional<double> v = context.constants.evaluate(*value.elements[i].scalar);
+        const std::optional<double> v = context.constants.evaluate(*value.elements[i].scalar, fmt::format("'{}'", a.key));
         if (!v) return std::nullopt;
         if (!(std::fabs(*v) <= limit)) {
             context.diagnostics.error("E0007", value.elements[i].loc,

@@ -4,6 +4,7 @@
 #include "Layout.h"
 #include "Sections.h"
 #include "Suggest.h"
+#include "voxc/check/KeyRanges.h"
 #include "Symmetry.h"
 #include "Values.h"
 
@@ -115,11 +116,15 @@ std::optional<DeclaredRule> checkRule(Context& context, const ast::Block& block)
             }
         }
     }
-    if (const ast::Assignment* a = keys.find("priority"))
-        if (auto priority = readInteger(context, *a, kInt32Min, kInt32Max)) out.rule.priority = int32_t(*priority);
+    if (const ast::Assignment* a = keys.find("priority")) {
+        const KeyRange range = *grammarKeyRange("rule", "priority");
+        if (auto priority = readInteger(context, *a, int64_t(range.min), int64_t(range.max)))
+            out.rule.priority = int32_t(*priority);
+    }
     if (const ast::Assignment* a = keys.find("weight")) readWeight(context, *a, out.rule);
     if (const ast::Assignment* a = keys.find("probability")) {
-        if (auto probability = readNumber(context, *a, 0.0, 1.0)) {
+        const KeyRange range = *grammarKeyRange("rule", "probability");
+        if (auto probability = readNumber(context, *a, range.min, range.max)) {
             out.rule.probability = float(*probability);
             out.rule.probabilityUnits = uint32_t(std::round(*probability * double(kProbabilityOne)));
         }

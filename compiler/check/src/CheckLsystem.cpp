@@ -294,7 +294,7 @@ private:
                                                            *entry.type, didYouMean(*entry.type, kTypes)));
             }
             if (entry.weight)
-                if (auto weight = context_.constants.evaluate(*entry.weight)) alternative.weight = *weight;
+                if (auto weight = context_.constants.evaluate(*entry.weight, "the weight of an alternative")) alternative.weight = *weight;
             const std::string key = fmt::format("{} #{}", where, alternatives.size() + 1);
             origins_.strings[key] = {alternative.loc, nullptr};
             origins_.places[key] = {entry.weight ? entry.weight->loc : entry.loc, nullptr};

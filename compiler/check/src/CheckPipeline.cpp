@@ -4,6 +4,7 @@
 #include "Values.h"
 
 #include <algorithm>
+#include <functional>
 #include <fmt/format.h>
 #include <unordered_map>
 
@@ -84,6 +85,45 @@ void checkCurvesEntry(Context& context, const ast::NameStatement& entry, uint32_
     stages.push_back({Stage::Kind::Curves, index, *mode, entry.loc, std::nullopt});
 }
 
+// A `;` missing between two entries on separate lines makes them parse as one (`weather` then
+// `subtract tunnel;` reads as stage `weather` with the clause `subtract tunnel`). Such an entry
+// splits, at a line break, into words that are a whole entry on their own and words that begin
+// one (a mode or a stage's name): E0001 at the end of the first part, with ';' as the fix-it.
+bool reportMissingSemicolon(Context& context, const ast::NameStatement& entry,
+                            const std::function<bool(std::string_view)>& isStage,
+                            const std::function<bool(std::string_view)>& takesMode) {
+    struct Word {
+        std::string_view text;
+        SourceLoc loc;
+    };
+    std::vector<Word> words;
+    if (entry.mode) words.push_back({*entry.mode, entry.modeLoc});
+    words.push_back({entry.name, entry.loc});
+    if (entry.clause) {
+        words.push_back({entry.clause->word, entry.clause->wordLoc});
+        words.push_back({entry.clause->operand, entry.clause->operandLoc});
+    }
+    const auto isMode = [](std::string_view word) {
+        return std::find(std::begin(kModeNames), std::end(kModeNames), word) != std::end(kModeNames);
+    };
+    for (size_t split = 1; split < words.size(); ++split) {
+        const Word& last = words[split - 1];
+        const Word& next = words[split];
+        if (next.loc.line <= last.loc.line) continue;
+        const bool wholeEntry = split == 1 ? isStage(words[0].text) && !takesMode(words[0].text)
+                                           : split == 2 && isMode(words[0].text) && takesMode(words[1].text);
+        if (!wholeEntry || !(isMode(next.text) || isStage(next.text))) continue;
+        SourceLoc at = last.loc;
+        at.column += at.length;
+        at.length = 1;
+        SourceLoc insert = at;
+        insert.length = 0;
+        context.diagnostics.error("E0001", at, fmt::format("expected ';' after '{}'", last.text), {}, {{insert, ";"}});
+        return true;
+    }
+    return false;
+}
+
 } // namespace
 
 std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
@@ -100,7 +140,8 @@ std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
         context.diagnostics.error("E0008", a.loc,
                                   fmt::format("unexpected key '{}' in {}; it lists stages as 'start; NAME;'", a.key,
                                               where));
-    if (block.names.empty() || block.names.front().name != "start" || block.names.front().mode)
+    // `start` then a stage without the ';' between them still begins with start (reported below).
+    if (block.names.empty() || block.names.front().mode.value_or(block.names.front().name) != "start")
         context.diagnostics.error("E0009", block.loc, "the pipeline must begin with 'start'");
 
     std::vector<std::string_view> known{"start"};
@@ -112,9 +153,19 @@ std::vector<Stage> checkPipeline(Context& context, const ast::Block& block,
     std::unordered_map<std::string_view, uint32_t> grammarIndex, fieldIndex;
     for (size_t i = 0; i < grammarNames.size(); ++i) grammarIndex.emplace(grammarNames[i], uint32_t(i));
     for (size_t i = 0; i < fieldNames.size(); ++i) fieldIndex.emplace(fieldNames[i], uint32_t(i));
+    const auto isStage = [&](std::string_view name) {
+        return name == "start" || grammarIndex.count(name) != 0 || fieldIndex.count(name) != 0 ||
+               std::find(context.curvesNames.begin(), context.curvesNames.end(), name) != context.curvesNames.end() ||
+               std::find(speleothemNames.begin(), speleothemNames.end(), name) != speleothemNames.end();
+    };
+    const auto takesMode = [&](std::string_view name) {
+        return fieldIndex.count(name) != 0 ||
+               std::find(context.curvesNames.begin(), context.curvesNames.end(), name) != context.curvesNames.end();
+    };
     std::vector<Stage> stages;
     for (size_t i = 0; i < block.names.size(); ++i) {
         const ast::NameStatement& entry = block.names[i];
+        if (reportMissingSemicolon(context, entry, isStage, takesMode)) continue;
         // Three words parse as a stage and a clause; `subtract cave material;` is a clause
         // missing its name.
         if (entry.clause && !entry.mode && entry.clause->operand == kClauses[0]) {

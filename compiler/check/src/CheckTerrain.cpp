@@ -72,7 +72,7 @@ std::optional<glm::dvec2> readPair(Context& context, const ast::Assignment& a, d
     glm::dvec2 out;
     for (int i = 0; i < 2; ++i) {
         const ast::Value& element = value.elements[size_t(i)];
-        const std::optional<double> v = context.constants.evaluate(*element.scalar);
+        const std::optional<double> v = context.constants.evaluate(*element.scalar, fmt::format("'{}'", a.key));
         if (!v) return std::nullopt;
         if (!(*v >= lo && *v <= hi)) {
             context.diagnostics.error("E0007", element.loc, fmt::format("'{}' values must lie in [{}, {}]", a.key, lo, hi));

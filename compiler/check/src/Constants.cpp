@@ -39,14 +39,14 @@ void Constants::reportUnknownOverrides() const {
     }
 }
 
-std::optional<double> Constants::evaluate(const ast::Expr& expr) const {
+std::optional<double> Constants::evaluate(const ast::Expr& expr, std::string_view subject) const {
     bool failed = false;
-    std::optional<double> value = fold(expr, failed);
+    std::optional<double> value = fold(expr, subject, failed);
     if (failed || !value) return std::nullopt;
     return value;
 }
 
-std::optional<double> Constants::fold(const ast::Expr& expr, bool& failed) const {
+std::optional<double> Constants::fold(const ast::Expr& expr, std::string_view subject, bool& failed) const {
     using Kind = ast::Expr::Kind;
     auto checked = [&](double v) -> std::optional<double> {
         if (std::isfinite(v)) return v;
@@ -71,17 +71,20 @@ std::optional<double> Constants::fold(const ast::Expr& expr, bool& failed) const
         return std::nullopt;
     }
     case Kind::String:
-        diagnostics_.error("E0010", expr.loc, "expected a number, found a string");
+        diagnostics_.error("E0010", expr.loc,
+                           subject.empty()
+                               ? fmt::format("expected a number, found the string \"{}\"", expr.name)
+                               : fmt::format("{} expects a number, found the string \"{}\"", subject, expr.name));
         failed = true;
         return std::nullopt;
     case Kind::Negate: {
-        auto operand = fold(*expr.lhs, failed);
+        auto operand = fold(*expr.lhs, subject, failed);
         return operand ? std::optional<double>(-*operand) : std::nullopt;
     }
     default: break;
     }
-    auto lhs = fold(*expr.lhs, failed);
-    auto rhs = fold(*expr.rhs, failed);
+    auto lhs = fold(*expr.lhs, subject, failed);
+    auto rhs = fold(*expr.rhs, subject, failed);
     if (!lhs || !rhs) return std::nullopt;
     switch (expr.kind) {
     case Kind::Add: return checked(*lhs + *rhs);

@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace voxc::check {
 
@@ -24,9 +25,10 @@ public:
     // E0002 for every override whose name no declaration used; call after every declare().
     void reportUnknownOverrides() const;
 
-    // Folds `expr`, reporting unknown names (E0002), division by zero and non-finite
-    // results (E0007). Returns nothing after an error.
-    std::optional<double> evaluate(const ast::Expr& expr) const;
+    // Folds `expr`, reporting unknown names (E0002), strings (E0010), division by zero and
+    // non-finite results (E0007). `subject` names what the value is for in those messages, e.g.
+    // "'probability'" or "the weight of a production" (empty: nothing). Nothing after an error.
+    std::optional<double> evaluate(const ast::Expr& expr, std::string_view subject = {}) const;
 
     bool isDeclared(const std::string& name) const { return entries_.count(name) != 0; }
 
@@ -35,7 +37,7 @@ private:
         SourceLoc loc;
         std::optional<double> value;
     };
-    std::optional<double> fold(const ast::Expr& expr, bool& failed) const;
+    std::optional<double> fold(const ast::Expr& expr, std::string_view subject, bool& failed) const;
 
     Diagnostics& diagnostics_;
     const Overrides& overrides_;

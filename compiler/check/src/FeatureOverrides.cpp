@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <utility>
 #include <vector>
 
 namespace voxc {
@@ -29,6 +30,31 @@ const ast::Assignment* findAssignment(const ast::Block& block, std::string_view 
     return nullptr;
 }
 
+namespace {
+
+const ast::Block* findBlock(const std::vector<ast::Block>& blocks, std::string_view kind, std::string_view label) {
+    for (const ast::Block& block : blocks)
+        if (block.kind == kind && block.label == label) return &block;
+    return nullptr;
+}
+
+// The block an override's name points into and the key: "feature.key", "grammar.key",
+// "grammar.rule.key"; nullptr when the file has no such block.
+std::pair<const ast::Block*, std::string> keyBlock(const ast::File& file, const std::string& name) {
+    const size_t dot = name.find('.');
+    const size_t last = name.rfind('.');
+    const std::string owner = name.substr(0, dot), key = name.substr(last + 1);
+    if (dot == last) {
+        for (const ast::FeatureDecl& decl : file.features)
+            if (decl.name == owner) return {&decl.body, key};
+        return {findBlock(file.blocks, "grammar", owner), key};
+    }
+    const ast::Block* grammar = findBlock(file.blocks, "grammar", owner);
+    return {grammar ? findBlock(grammar->blocks, "rule", name.substr(dot + 1, last - dot - 1)) : nullptr, key};
+}
+
+} // namespace
+
 std::string overrideFeatureKeys(const std::string& text, const ast::File& file, const std::map<std::string, double>& overrides) {
     if (overrides.empty()) return text;
     const std::vector<size_t> lineStarts = lineStartsOf(text);
@@ -38,17 +64,14 @@ std::string overrideFeatureKeys(const std::string& text, const ast::File& file, 
     };
     std::vector<Splice> splices;
     for (const auto& [name, value] : overrides) {
-        const size_t dot = name.find('.');
-        if (dot == std::string::npos) continue;
-        const std::string feature = name.substr(0, dot), key = name.substr(dot + 1);
-        for (const ast::FeatureDecl& decl : file.features) {
-            if (decl.name != feature) continue;
-            if (const ast::Assignment* a = findAssignment(decl.body, key)) {
-                if (a->value.scalar && a->value.loc.line > 0)
-                    splices.push_back({offsetOf(lineStarts, a->value.loc), a->value.loc.length, formatNumber(value)});
-            } else if (decl.body.end.line > 0) {
-                splices.push_back({offsetOf(lineStarts, decl.body.end), 0, fmt::format("{} = {}; ", key, formatNumber(value))});
-            }
+        if (name.find('.') == std::string::npos) continue;
+        const auto [block, key] = keyBlock(file, name);
+        if (block == nullptr) continue;
+        if (const ast::Assignment* a = findAssignment(*block, key)) {
+            if (a->value.scalar && a->value.loc.line > 0)
+                splices.push_back({offsetOf(lineStarts, a->value.loc), a->value.loc.length, formatNumber(value)});
+        } else if (block->end.line > 0) {
+            splices.push_back({offsetOf(lineStarts, block->end), 0, fmt::format("{} = {}; ", key, formatNumber(value))});
         }
     }
     // From the end backwards, so each splice's offset still holds.

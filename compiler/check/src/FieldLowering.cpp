@@ -1,6 +1,7 @@
 #include "FieldLowering.h"
 
 #include "Suggest.h"
+#include "Values.h"
 
 #include "voxc/builtins/Functions.h"
 
@@ -69,10 +70,62 @@ std::string_view operatorText(Kind kind) {
 
 bool fitsInt(double v) { return v == std::floor(v) && v >= -2147483648.0 && v <= 2147483647.0; }
 
-std::string typeList(const std::vector<Type>& types) {
+// The arguments' types as written: a number literal shows as int when it is a whole number.
+std::string typeList(const std::vector<Lowered>& args) {
     std::string text;
-    for (size_t i = 0; i < types.size(); ++i) text += (i ? ", " : "") + std::string(typeName(types[i]));
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string_view type = args[i].number ? (fitsInt(*args[i].number) ? "int" : "float") : typeName(args[i].type);
+        text += fmt::format("{}{}", i ? ", " : "", type);
+    }
     return text;
+}
+
+constexpr Type kAllTypes[] = {Type::Float, Type::Int, Type::Bool, Type::Vec2, Type::Vec3};
+
+// The result type when every argument keeps its type but `fixed` (an index) takes `fixedType`;
+// number literals may be float or int (int only when whole), the first assignment that fits wins
+// (its argument types into `chosen` when given).
+std::optional<Type> typeWith(const FunctionInfo& info, const std::vector<Lowered>& args, size_t fixed,
+                             std::optional<Type> fixedType, std::vector<Type>* chosen = nullptr) {
+    std::vector<size_t> numbers;
+    for (size_t i = 0; i < args.size(); ++i)
+        if (args[i].number && !(i == fixed && fixedType)) numbers.push_back(i);
+    if (numbers.size() >= 8) return std::nullopt; // 256 assignments at most; never so many literals in one call
+    std::vector<Type> types(args.size());
+    for (uint32_t mask = 0; mask < (1u << numbers.size()); ++mask) {
+        bool possible = true;
+        for (size_t i = 0; i < args.size(); ++i) types[i] = i == fixed && fixedType ? *fixedType : args[i].type;
+        for (size_t n = 0; n < numbers.size(); ++n) {
+            const bool asInt = (mask >> n) & 1u;
+            types[numbers[n]] = asInt ? Type::Int : Type::Float;
+            if (asInt && !fitsInt(*args[numbers[n]].number)) possible = false;
+        }
+        if (!possible) continue;
+        if (std::optional<Type> result = info.typeRule(types)) {
+            if (chosen) *chosen = types;
+            return result;
+        }
+    }
+    return std::nullopt;
+}
+
+// The parameter names of the signature's first form: "fbm(p: vec3, octaves: int) -> float" gives
+// p, octaves; none for a signature of another shape.
+std::vector<std::string_view> parameterNames(std::string_view signature) {
+    const size_t open = signature.find('(');
+    const size_t close = signature.find(')');
+    std::vector<std::string_view> names;
+    if (open == std::string_view::npos || close == std::string_view::npos || close < open) return names;
+    std::string_view list = signature.substr(open + 1, close - open - 1);
+    while (!list.empty()) {
+        const size_t comma = list.find(',');
+        std::string_view parameter = list.substr(0, comma);
+        while (!parameter.empty() && parameter.front() == ' ') parameter.remove_prefix(1);
+        names.push_back(parameter.substr(0, parameter.find(':')));
+        if (comma == std::string_view::npos) break;
+        list.remove_prefix(comma + 1);
+    }
+    return names;
 }
 
 } // namespace
@@ -172,13 +225,17 @@ Lowered FieldLowering::lowerNested(const ast::Expr& expr, Scope& scope) {
     case Kind::Name: return lowerName(expr, scope);
     case Kind::Add: case Kind::Subtract: case Kind::Multiply: case Kind::Divide: case Kind::Negate:
         return lowerArithmetic(expr, scope);
-    case Kind::Not: return callBuiltin("not", {lower(*expr.lhs, scope)}, expr.loc, "!");
+    case Kind::Not: return callBuiltin("not", {lower(*expr.lhs, scope)}, expr.loc, "!", {expr.lhs->loc});
     case Kind::Member: return lowerMember(expr, scope);
     case Kind::Call: return lowerCall(expr, scope);
     case Kind::Conditional: {
         std::vector<Lowered> parts;
-        for (const auto& operand : expr.operands) parts.push_back(lower(*operand, scope));
-        return callBuiltin("select", std::move(parts), expr.loc, "?:");
+        std::vector<SourceLoc> locs;
+        for (const auto& operand : expr.operands) {
+            parts.push_back(lower(*operand, scope));
+            locs.push_back(operand->loc);
+        }
+        return callBuiltin("select", std::move(parts), expr.loc, "?:", std::move(locs));
     }
     case Kind::Let: {
         Lowered value = lower(*expr.lhs, scope);
@@ -189,7 +246,7 @@ Lowered FieldLowering::lowerNested(const ast::Expr& expr, Scope& scope) {
     }
     default: // comparisons and logic
         return callBuiltin(operatorFunction(expr.kind), {lower(*expr.lhs, scope), lower(*expr.rhs, scope)}, expr.loc,
-                           operatorText(expr.kind));
+                           operatorText(expr.kind), {expr.lhs->loc, expr.rhs->loc});
     }
 }
 
@@ -250,8 +307,12 @@ Lowered FieldLowering::lowerArithmetic(const ast::Expr& expr, Scope& scope) {
         return Lowered::ofNumber(r);
     }
     std::vector<Lowered> args{lhs};
-    if (!unary) args.push_back(rhs);
-    return callBuiltin(operatorFunction(expr.kind), std::move(args), expr.loc, operatorText(expr.kind));
+    std::vector<SourceLoc> locs{expr.lhs->loc};
+    if (!unary) {
+        args.push_back(rhs);
+        locs.push_back(expr.rhs->loc);
+    }
+    return callBuiltin(operatorFunction(expr.kind), std::move(args), expr.loc, operatorText(expr.kind), std::move(locs));
 }
 
 // `.x` is a Component node; `.xz`, `.zyx`, ... build a vec2/vec3 of components.
@@ -292,7 +353,11 @@ Lowered FieldLowering::lowerCall(const ast::Expr& expr, Scope& scope) {
     for (const auto& operand : expr.operands) args.push_back(lower(*operand, scope));
     if (auto it = functions_.find(expr.name); it != functions_.end()) return callUser(*it->second, expr, std::move(args));
     if (auto it = context_.maps.find(expr.name); it != context_.maps.end()) return sampleMap(it->second, expr, std::move(args));
-    if (findFunction(expr.name)) return callBuiltin(expr.name, std::move(args), expr.loc, expr.name);
+    if (findFunction(expr.name)) {
+        std::vector<SourceLoc> locs;
+        for (const auto& operand : expr.operands) locs.push_back(operand->loc);
+        return callBuiltin(expr.name, std::move(args), expr.loc, expr.name, std::move(locs));
+    }
     std::vector<std::string_view> known;
     if (errorsStillShown(context_.diagnostics)) {
         for (const FunctionInfo& f : functions()) known.push_back(f.name);
@@ -385,36 +450,55 @@ Lowered FieldLowering::sampleMap(const std::shared_ptr<const SampledMap>& map, c
     return Lowered::ofNode(dag_.add(node), Type::Float);
 }
 
+void FieldLowering::reportArgumentTypes(const FunctionInfo& info, const std::vector<Lowered>& args, SourceLoc loc,
+                                        std::string_view surface, const std::vector<SourceLoc>& argLocs) {
+    const bool isOperator = surface != info.name;
+    const std::string callee = isOperator ? fmt::format("operator '{}'", surface) : fmt::format("'{}'", info.name);
+    // The one argument that alone makes the call fit once it has another type is to blame, and
+    // those types are what it expects; when several could (vec3 + vec2), the call is.
+    if (argLocs.size() == args.size()) {
+        const std::vector<std::string_view> names = parameterNames(info.signature);
+        std::vector<std::vector<std::string_view>> fixing(args.size());
+        size_t culprits = 0;
+        for (size_t i = 0; i < args.size(); ++i) {
+            for (Type type : kAllTypes) {
+                const bool alreadyIs = args[i].number ? type == Type::Float || (type == Type::Int && fitsInt(*args[i].number))
+                                                      : type == args[i].type;
+                if (!alreadyIs && typeWith(info, args, i, type)) fixing[i].push_back(typeName(type));
+            }
+            culprits += !fixing[i].empty();
+        }
+        for (size_t i = 0; i < args.size() && culprits == 1; ++i) {
+            const std::vector<std::string_view>& expected = fixing[i];
+            if (expected.empty()) continue;
+            const std::string which =
+                isOperator ? (args.size() == 2 ? (i == 0 ? "the left operand" : "the right operand") : "the operand")
+                           : fmt::format("argument {}", i + 1);
+            const std::string parameter =
+                !isOperator && names.size() == args.size() ? fmt::format(" ('{}')", names[i]) : std::string();
+            const std::string found =
+                args[i].number ? fmt::format("{} literal {}", fitsInt(*args[i].number) ? "an int" : "a float",
+                                             formatNumber(*args[i].number))
+                               : fmt::format("{}", typeName(args[i].type));
+            context_.diagnostics.error("E0010", argLocs[i],
+                                       fmt::format("{}{} of {} must be {}, found {}", which, parameter, callee,
+                                                   fmt::join(expected, " or "), found),
+                                       {{{}, std::string(info.signature)}});
+            return;
+        }
+    }
+    context_.diagnostics.error("E0010", loc, fmt::format("{} cannot take ({}); {}", callee, typeList(args), info.signature));
+}
+
 Lowered FieldLowering::callBuiltin(std::string_view name, std::vector<Lowered> args, SourceLoc loc,
-                                   std::string_view surface) {
+                                   std::string_view surface, std::vector<SourceLoc> argLocs) {
     for (const Lowered& a : args)
         if (!a.ok) return Lowered::failed();
     const FunctionInfo* info = findFunction(name);
-    std::vector<size_t> numbers;
-    for (size_t i = 0; i < args.size(); ++i)
-        if (args[i].number) numbers.push_back(i);
-    // Numbers are floats unless the rule needs an int there; the first assignment that fits wins.
-    std::vector<Type> types(args.size());
-    std::optional<Type> result;
-    const uint32_t assignments = numbers.size() < 8 ? 1u << numbers.size() : 1u;
-    for (uint32_t mask = 0; mask < assignments && !result; ++mask) {
-        bool possible = true;
-        for (size_t i = 0; i < args.size(); ++i) types[i] = args[i].type;
-        for (size_t n = 0; n < numbers.size(); ++n) {
-            const bool asInt = (mask >> n) & 1u;
-            types[numbers[n]] = asInt ? Type::Int : Type::Float;
-            if (asInt && !fitsInt(*args[numbers[n]].number)) possible = false;
-        }
-        if (possible) result = info->typeRule(types);
-    }
+    std::vector<Type> types;
+    const std::optional<Type> result = typeWith(*info, args, args.size(), std::nullopt, &types);
     if (!result) {
-        for (size_t n : numbers) types[n] = Type::Float;
-        const bool isOperator = surface != name;
-        context_.diagnostics.error(
-            "E0010", loc,
-            fmt::format("{} cannot take ({}); {}", isOperator ? fmt::format("operator '{}'", surface)
-                                                               : fmt::format("'{}'", name),
-                        typeList(types), info->signature));
+        reportArgumentTypes(*info, args, loc, surface, argLocs);
         return Lowered::failed();
     }
     FieldNode node;

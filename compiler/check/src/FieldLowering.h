@@ -21,6 +21,10 @@
 #include <string>
 #include <vector>
 
+namespace voxc {
+struct FunctionInfo;
+}
+
 namespace voxc::check {
 
 // A lowered expression: a node, or a number not yet given a type. `ok` is false after an
@@ -73,7 +77,14 @@ private:
     // NAME(wx, wz) of a terrain block's map (null: the block had errors).
     Lowered sampleMap(const std::shared_ptr<const SampledMap>& map, const ast::Expr& at, std::vector<Lowered> args);
     // A call of builtin `name` on `args`; `surface` is how the user wrote it, for messages.
-    Lowered callBuiltin(std::string_view name, std::vector<Lowered> args, SourceLoc loc, std::string_view surface);
+    // `argLocs`: where each argument is written (empty for calls the checker builds itself, such
+    // as a swizzle's vec3), so a wrong argument is reported where it is.
+    Lowered callBuiltin(std::string_view name, std::vector<Lowered> args, SourceLoc loc, std::string_view surface,
+                        std::vector<SourceLoc> argLocs = {});
+    // E0010 for a builtin call no typing of its literals fits: at the argument to blame, naming it
+    // and the types it needs, when one argument alone is wrong; else at the call, listing them all.
+    void reportArgumentTypes(const FunctionInfo& info, const std::vector<Lowered>& args, SourceLoc loc,
+                             std::string_view surface, const std::vector<SourceLoc>& argLocs);
     Lowered input(FieldInput which, SourceLoc loc);
 
     Context& context_;

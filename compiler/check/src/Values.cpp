@@ -112,7 +112,7 @@ std::optional<double> scalar(Context& context, const ast::Assignment& a, const a
         context.diagnostics.error("E0010", value.loc, fmt::format("'{}' expects {}, found a list", a.key, wanted));
         return std::nullopt;
     }
-    return context.constants.evaluate(*value.scalar);
+    return context.constants.evaluate(*value.scalar, fmt::format("'{}'", a.key));
 }
 
 bool isInteger(Context& context, const ast::Assignment& a, SourceLoc loc, double v) {

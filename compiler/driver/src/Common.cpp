@@ -61,10 +61,8 @@ Program loadProgram(const std::string& path, const WorldOverrides& overrides, bo
     for (const CheckedLsystem& lsystem : result.lsystems)
         if (!lsystem.rulesPath.empty())
             detail() << fmt::format("lsystem {} imports the rule file {}\n", lsystem.name, lsystem.rulesPath);
-    if (result.hasErrors() || !result.program)
-        throw UserError(fmt::format("{}: {} error{}", path, errors, errors == 1 ? "" : "s"));
-    if (warningsAsErrors && warnings > 0)
-        throw UserError(fmt::format("{}: {} warning{} (--werror)", path, warnings, warnings == 1 ? "" : "s"));
+    failOnErrors(path, result.diagnostics, warningsAsErrors);
+    VOXC_ASSERT(result.program); // a check without errors has a program
     Program program = std::move(*result.program);
     if (sourceText) *sourceText = result.source.text();
     if (lsystems) *lsystems = std::move(result.lsystems);

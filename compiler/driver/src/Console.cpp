@@ -1,6 +1,9 @@
 #include "Console.h"
-#include "DiagnosticJson.h"
+#include "voxc/syntax/DiagnosticJson.h"
 
+#include <nlohmann/json.hpp>
+
+#include <fmt/format.h>
 #include <iostream>
 
 namespace voxc::driver {
@@ -62,10 +65,43 @@ std::ostream& detail() {
 void printDiagnostics(const std::vector<Diagnostic>& diagnostics, const SourceFile& source) {
     for (const Diagnostic& diagnostic : diagnostics) {
         if (consoleOptions().format == DiagnosticsFormat::Json)
-            printJsonLine(diagnosticJson(diagnostic, source));
+            std::cerr << renderJson(diagnostic, source) << "\n";
         else
             std::cerr << render(diagnostic, source);
     }
+}
+
+namespace {
+
+std::string describeFailure(const std::string& path, size_t errors, size_t warnings, bool warningsAsErrors) {
+    if (errors == 0 && warningsAsErrors)
+        return fmt::format("{}: {} warning{} (--werror)", path, warnings, warnings == 1 ? "" : "s");
+    return fmt::format("{}: {} error{}", path, errors, errors == 1 ? "" : "s");
+}
+
+} // namespace
+
+DiagnosticsFailed::DiagnosticsFailed(std::string path, size_t errors, size_t warnings, bool warningsAsErrors)
+    : UserError(describeFailure(path, errors, warnings, warningsAsErrors)), path(std::move(path)), errors(errors),
+      warnings(warnings) {}
+
+void failOnErrors(const std::string& path, const std::vector<Diagnostic>& diagnostics, bool warningsAsErrors) {
+    size_t errors = 0;
+    size_t warnings = 0;
+    for (const Diagnostic& diagnostic : diagnostics) {
+        if (diagnostic.severity == Severity::Error) ++errors;
+        if (diagnostic.severity == Severity::Warning) ++warnings;
+    }
+    if (errors > 0 || (warningsAsErrors && warnings > 0))
+        throw DiagnosticsFailed(path, errors, warnings, warningsAsErrors);
+}
+
+void printDiagnosticsSummary(const DiagnosticsFailed& failure) {
+    if (consoleOptions().format == DiagnosticsFormat::Json) {
+        printJsonLine({{"summary", {{"file", failure.path}, {"errors", failure.errors}, {"warnings", failure.warnings}}}});
+        return;
+    }
+    std::cerr << "voxc: error: " << failure.what() << "\n";
 }
 
 void printFatalError(std::string_view message, bool internal) {

@@ -2,6 +2,7 @@
 // How a verb talks to the terminal or to a tool: diagnostics as text or as JSON lines
 // (--diagnostics-format), status lines silenced by -q/--quiet, details added by -v/--verbose.
 // One verb runs per process, so its flags set one process-wide Console before its action runs.
+#include "voxc/core/Errors.h"
 #include "voxc/syntax/Diagnostics.h"
 
 #include <CLI/CLI.hpp>
@@ -31,8 +32,24 @@ std::ostream& status();
 std::ostream& detail();
 
 // The checker's diagnostics, in order, to stderr: rendered with source lines and carets, or one
-// JSON object per line (DiagnosticJson.h). Warnings and errors print under -q too.
+// JSON object per line (voxc/syntax/DiagnosticJson.h). Warnings and errors print under -q too.
 void printDiagnostics(const std::vector<Diagnostic>& diagnostics, const SourceFile& source);
+
+// The error that ends a command after its diagnostics were printed: "a.vox: 2 errors" in text;
+// under --diagnostics-format json main prints a summary record instead of one more error,
+// {"summary": {"file": "a.vox", "errors": 2, "warnings": 0}}.
+struct DiagnosticsFailed : UserError {
+    DiagnosticsFailed(std::string path, size_t errors, size_t warnings, bool warningsAsErrors = false);
+    std::string path;
+    size_t errors = 0;
+    size_t warnings = 0;
+};
+
+// Counts the errors and warnings of `diagnostics` and throws DiagnosticsFailed when there is an
+// error, or a warning under `warningsAsErrors` (--werror).
+void failOnErrors(const std::string& path, const std::vector<Diagnostic>& diagnostics, bool warningsAsErrors = false);
+
+void printDiagnosticsSummary(const DiagnosticsFailed& failure);
 
 // The line main prints for an error that ends the command ("voxc: error: ...", or a JSON line
 // without code or location); `internal` marks a bug in voxc.

@@ -1,4 +1,5 @@
 #include "EditsFile.h"
+#include "Console.h"
 
 #include "voxc/core/Errors.h"
 
@@ -197,9 +198,8 @@ std::vector<Brush> loadEdits(const std::string& path, const std::vector<Material
     if (source && !reportIfNotText(*source, diagnostics)) edits = parseEdits(*source, diagnostics, materials);
     const SourceFile& shown = source ? *source : SourceFile(path, "");
     const std::vector<Diagnostic> all = diagnostics.take();
-    for (const Diagnostic& diagnostic : all) std::cerr << render(diagnostic, shown);
-    if (!all.empty())
-        throw UserError(fmt::format("{}: {} error{}", path, all.size(), all.size() == 1 ? "" : "s"));
+    printDiagnostics(all, shown);
+    failOnErrors(path, all);
     return edits;
 }
 

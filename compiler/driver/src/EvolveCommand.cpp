@@ -3,6 +3,7 @@
 // with the block rewritten), a preview picture of each skeleton, a contact sheet and a JSON
 // summary. A person picks variants and runs evolve on them again.
 #include "Commands.h"
+#include "Console.h"
 #include "Common.h"
 #include "LsystemInputs.h"
 #include "OutputPaths.h"
@@ -160,7 +161,7 @@ void runEvolve(const EvolveOptions& options) {
                        {"generation", options.generation}, {"variants", variants}};
     files.add((dir / "generation.json").string(), summary.dump(2) + "\n");
     files.commit();
-    std::cerr << fmt::format("wrote {} variants of lsystem '{}' (generation {}, seed {}) to {}: see "
+    status() << fmt::format("wrote {} variants of lsystem '{}' (generation {}, seed {}) to {}: see "
                              "contact_sheet.png, then evolve the ones you like: voxc evolve {}/variant_N.vox {} "
                              "[--with {}/variant_M.vox:{}] --generation {} -o NEXT_DIR\n",
                              children.size(), first.name, options.generation, seed, options.outputDir,
@@ -180,6 +181,7 @@ void addEvolveCommand(CLI::App& app) {
     command->add_option("--seed", options->seed, "Seed of the crossover and mutation draws (default: the block's seed)");
     command->add_option("--generation", options->generation, "Generation number, part of every draw (default 1)");
     command->add_option("-o,--output", options->outputDir, "Directory for the variants and pictures")->required();
+    addConsoleFlags(*command);
     command->callback([options] { runEvolve(*options); });
 }
 

@@ -1,4 +1,5 @@
 #include "Commands.h"
+#include "Console.h"
 #include "Common.h"
 #include "OutputPaths.h"
 
@@ -84,7 +85,7 @@ void exploreFile(const ExploreOptions& options) {
     if (!options.size.empty()) settings.size = parseSize(options.size);
     settings.onRun = [&](double value, uint32_t run, uint32_t seed) {
         if (run == 0)
-            std::cerr << fmt::format("{} = {}: {} run{} from seed {}\n", options.parameter, value, options.runs,
+            status() << fmt::format("{} = {}: {} run{} from seed {}\n", options.parameter, value, options.runs,
                                      options.runs == 1 ? "" : "s", seed);
     };
     const SourceFile source = loadSource(options.file);
@@ -122,6 +123,7 @@ void addExploreCommand(CLI::App& app) {
     command->add_option("--csv", options->runsCsv, "Write one row per (value, run) to this .csv");
     command->add_option("--summary", options->summaryCsv, "Write one row per value (means, stddevs, IoU) to this .csv");
     command->add_option("--png", options->png, "Write the plot of descriptors against the parameter to this .png");
+    addConsoleFlags(*command);
     command->callback([options] { exploreFile(*options); });
 }
 

@@ -6,6 +6,8 @@
 #include "OutputPaths.h"
 #include "RegionOption.h"
 #include "SolveReport.h"
+#include "StageDebug.h"
+#include "Console.h"
 
 #include "voxc/core/Errors.h"
 #include "voxc/grid/Grid.h"
@@ -28,51 +30,33 @@ struct InterpOptions {
     TraceFilter filter;
     std::optional<uint64_t> traceLimit;
     std::optional<std::string> traceLsystem;
-    std::string slice;
+    StageDebugOptions stages; // --after, --diff, --slice, --channel
     std::string region;
     std::string editsPath;
     std::vector<std::string> dumps; // --dump [BLOCK.]CHANNEL=FILE.npy
     WorldOverrides overrides;
 };
 
-struct SliceSpec {
-    int axis = 1;
-    int index = 0;
-};
-
-SliceSpec parseSlice(const std::string& text, glm::ivec3 size) {
-    const size_t equals = text.find('=');
-    const std::string axisName = text.substr(0, equals);
-    SliceSpec spec;
-    if (equals == std::string::npos || axisName.size() != 1 || std::string("xyz").find(axisName[0]) == std::string::npos)
-        throw UserError(fmt::format("--slice '{}': expected AXIS=INDEX, e.g. y=12", text));
-    spec.axis = int(std::string("xyz").find(axisName[0]));
-    try {
-        size_t used = 0;
-        spec.index = std::stoi(text.substr(equals + 1), &used);
-        if (used != text.size() - equals - 1) throw std::invalid_argument("trailing");
-    } catch (const std::exception&) {
-        throw UserError(fmt::format("--slice '{}': the index must be an integer", text));
-    }
-    if (spec.index < 0 || spec.index >= size[spec.axis])
-        throw UserError(fmt::format("--slice '{}': index out of range 0..{}", text, size[spec.axis] - 1));
-    return spec;
-}
-
 void interpretFile(const InterpOptions& options, std::span<const SolveDump> dumps) {
     std::vector<CheckedLsystem> lsystems;
     Program checked =
         loadProgram(options.file, withRegion(options.overrides, options.region), false, nullptr, &lsystems);
     stages::solveBlocks(checked, {.keepChannels = !dumps.empty()}); // on the host, for the report and --dump
+    checkTraceFilter(checked, options.filter); // against the whole pipeline, whatever --after cuts
+    const std::optional<StageCut> cut = selectStage(checked, options.stages);
+    // --diff compares with the pipeline cut before the stage (all air and `none` before the first).
+    std::optional<Program> before;
+    if (cut && cut->diff && cut->stage > 0) before = throughStage(checked, cut->stage - 1);
+    if (cut) checked = throughStage(std::move(checked), cut->stage);
     const RegionRun run = planRegionRun(std::move(checked), options.region);
     const Program& program = run.program;
     const std::vector<Brush> edits =
         options.editsPath.empty() ? std::vector<Brush>{} : loadEdits(options.editsPath, program.materials);
-    std::cerr << formatSolveReport(program, options.trace);
-    std::cerr << run.describe();
-    std::optional<SliceSpec> slice;
-    if (!options.slice.empty())
-        slice = parseSlice(options.slice, run.region ? run.region->size() : program.world.size);
+    status() << formatSolveReport(program, options.trace);
+    status() << run.describe();
+    if (!options.stages.slice.empty()) // refused before the run rather than after it
+        parseSlice(options.stages.slice, run.region ? run.region->size() : program.world.size);
+    if (cut) std::cout << describeCut(program, *cut);
 
     voxc::InterpOptions interpOptions;
     uint64_t printed = 0;
@@ -99,16 +83,25 @@ void interpretFile(const InterpOptions& options, std::span<const SolveDump> dump
     interpOptions.nonFinite = &nonFinite;
     DenseGrid computed = interpret(program, interpOptions);
     // Before the crop: a brush is voxel by voxel, so edits then crop is crop then edits (`voxc run`).
-    if (!edits.empty()) std::cerr << describeEdits(edits.size(), applyEdits(computed, program.world.origin, edits));
+    if (!edits.empty()) status() << describeEdits(edits.size(), applyEdits(computed, program.world.origin, edits));
     const DenseGrid grid = run.crop(computed);
     std::vector<SourceLoc> stageLocs;
     for (const Stage& stage : program.pipeline) stageLocs.push_back(stage.loc);
     std::cerr << formatNonFiniteWarnings(program, options.file, stageLocs, nonFinite);
     if (traceFirings)
         std::cout << fmt::format("{} firings matched the trace filter ({} trace lines printed)\n", fired, printed);
-    if (slice) std::cout << renderSlice(grid, slice->axis, slice->index);
+    if (cut && cut->diff) {
+        DenseGrid previous(grid.size());
+        if (before) {
+            const RegionRun beforeRun = planRegionRun(std::move(*before), options.region);
+            previous = beforeRun.crop(interpret(beforeRun.program));
+        }
+        std::cout << reportStageDiff(program, options.stages, previous, grid, 0.5f);
+    } else {
+        std::cout << renderChosenSlice(program, options.stages, grid, 0.5f);
+    }
     // Solid as the mesh of `voxc run` sees it at its default --iso.
-    if (program.usesMaterials()) std::cerr << formatMaterialCounts(program, grid, 0.5f);
+    if (program.usesMaterials()) status() << formatMaterialCounts(program, grid, 0.5f);
     OutputFiles files;
     writeSolveDumps(files, program, dumps);
     writeGridFiles(files, options.voxelsPath, options.materialsPath, grid);
@@ -128,21 +121,24 @@ void addInterpCommand(CLI::App& app) {
     command->add_option("--materials", options->materialsPath, "Write the material ids as a NumPy .npy file (uint8)");
     addDumpFlag(*command, options->dumps);
     command->add_flag("--trace", options->trace, "Print every rule firing (iteration, sweep, phase, anchor, rule)");
-    command->add_option("--trace-rule", options->filter.rule, "Trace only this rule");
+    command->add_option("--trace-rule", options->filter.rule, "Trace only this rule, with every symmetry variant of it (NAME@VARIANT: that variant alone)");
     command->add_option("--trace-grammar", options->filter.grammar, "Trace only this grammar");
     command->add_option("--trace-iteration", options->filter.iteration, "Trace only this iteration (0-based)");
     command->add_option("--trace-limit", options->traceLimit, "Print at most this many trace lines");
     command->add_option("--trace-lsystem", options->traceLsystem,
                         "Trace only this lsystem's expansion: each choice of a production or macro substitute, and "
                         "the lengths (plain --trace traces every lsystem's)");
-    command->add_option("--slice", options->slice, "Print one layer as text, e.g. y=12");
+    addStageDebugFlags(*command, options->stages);
     addRegionFlag(*command, options->region);
     addEditsFlag(*command, options->editsPath);
     addWorldOverrideFlags(*command, options->overrides);
+    addConsoleFlags(*command);
     command->callback([options] {
         if (!options->region.empty() && (options->trace || options->filter.rule || options->filter.grammar ||
                                          options->filter.iteration || options->traceLimit))
             throw UserError("interp: --region runs a grid of its own around the box; trace the whole world instead");
+        if (!options->editsPath.empty() && (!options->stages.after.empty() || !options->stages.diff.empty()))
+            throw UserError("interp: --edits are replayed on the finished grid; leave them out with --after or --diff");
         if (!options->voxelsPath.empty()) requireExtension(options->voxelsPath, {".npy"}, "voxel file");
         if (!options->materialsPath.empty()) requireExtension(options->materialsPath, {".npy"}, "material file");
         const RolePath inputs[] = {{"the input", options->file}, {"--edits", options->editsPath}};

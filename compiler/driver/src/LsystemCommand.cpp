@@ -2,6 +2,7 @@
 // skeleton (docs/cli.md); `voxc lsystem cross A.vox:NAME B.vox:NAME --brackets I,J` prints the
 // crossover of two production rules as lsystem blocks.
 #include "Commands.h"
+#include "Console.h"
 #include "Common.h"
 #include "LsystemInputs.h"
 #include "OutputPaths.h"
@@ -186,8 +187,10 @@ void addLsystemCommand(CLI::App& app) {
                              "(numbered from 1 by their '[', any depth)")
         ->delimiter(',')
         ->required();
+    addConsoleFlags(*crossCommand);
     crossCommand->callback([cross] { runCross(*cross); });
 
+    addConsoleFlags(*command);
     command->callback([options, crossCommand] {
         if (crossCommand->parsed()) return;
         if (options->file.empty() || options->name.empty())

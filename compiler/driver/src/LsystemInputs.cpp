@@ -1,6 +1,8 @@
 #include "LsystemInputs.h"
+#include "Console.h"
 
 #include "voxc/core/Errors.h"
+#include "voxc/core/Suggest.h"
 #include "voxc/generators/lsystem/Expand.h"
 #include "voxc/syntax/Diagnostics.h"
 
@@ -11,25 +13,23 @@ namespace voxc::driver {
 
 CheckResult loadChecked(const std::string& path) {
     CheckResult result = checkFile(path);
-    size_t errors = 0;
-    for (const Diagnostic& diagnostic : result.diagnostics) {
-        std::cerr << render(diagnostic, result.source);
-        errors += diagnostic.severity == Severity::Error;
-    }
-    if (result.hasErrors() || !result.program)
-        throw UserError(fmt::format("{}: {} error{}", path, errors, errors == 1 ? "" : "s"));
+    printDiagnostics(result.diagnostics, result.source);
+    failOnErrors(path, result.diagnostics);
+    VOXC_ASSERT(result.program); // a check without errors has a program
     return result;
 }
 
 const CheckedLsystem& findLsystem(const std::vector<CheckedLsystem>& lsystems, const std::string& path,
                                   const std::string& name) {
     std::string names;
+    std::vector<std::string_view> candidates;
     for (const CheckedLsystem& lsystem : lsystems) {
         if (lsystem.name == name) return lsystem;
         if (!names.empty()) names += ", ";
         names += lsystem.name;
+        candidates.push_back(lsystem.name);
     }
-    throw UserError(fmt::format("{}: no lsystem named '{}' ({})", path, name,
+    throw UserError(fmt::format("{}: no lsystem named '{}'{} ({})", path, name, didYouMean(name, candidates),
                                 names.empty() ? "the file declares none" : "it declares: " + names));
 }
 

@@ -7,6 +7,7 @@
 #include "PhaseTimes.h"
 #include "RegionOption.h"
 #include "SolveReport.h"
+#include "StageDebug.h"
 
 #include "voxc/stages/Pipeline.h"
 #include "voxc/stages/Solve.h"
@@ -53,8 +54,18 @@ struct RunOptions {
     std::vector<int> lod;         // levels: one mesh each beside -o
     std::vector<float> lodLayout; // with --lod: -o is the mixed-level mesh around this point
     std::vector<std::string> dumps; // --dump [BLOCK.]CHANNEL=FILE.npy
+    StageDebugOptions stages; // --after, --diff, --slice, --channel
     WorldOverrides overrides;
 };
+
+// The grid `program` (cut for --diff) computes on the device, read back and cropped to the region.
+DenseGrid generateOnDevice(VulkanContext& context, Program program, const std::string& region) {
+    const RegionRun run = planRegionRun(std::move(program), region);
+    const KernelPackage package = compileProgram(run.program, {});
+    VulkanExecutor executor(context, package, {.readBack = true});
+    const RunResult result = executor.run();
+    return run.crop(result.grid.toDense());
+}
 
 void run(const RunOptions& options) {
     if (options.listDevices) {
@@ -65,9 +76,13 @@ void run(const RunOptions& options) {
     const std::vector<SolveDump> dumps = parseSolveDumps(options.dumps);
     if (!dumps.empty() && !options.region.empty())
         throw UserError("run: --dump writes a curves block's whole box, which a --region run does not keep; leave out --region");
-    if (options.meshPath.empty() && options.voxelsPath.empty() && options.materialsPath.empty() && dumps.empty())
-        throw UserError("run: nothing to write; give -o MESH.ply|.obj|.glb, --voxels FILE.npy, --materials FILE.npy "
-                        "and/or --dump CHANNEL=FILE.npy");
+    const bool printsGrid = !options.stages.diff.empty() || !options.stages.slice.empty();
+    if (options.meshPath.empty() && options.voxelsPath.empty() && options.materialsPath.empty() && dumps.empty() &&
+        !printsGrid)
+        throw UserError("run: nothing to write; give -o MESH.ply|.obj|.glb, --voxels FILE.npy, --materials FILE.npy, "
+                        "--dump CHANNEL=FILE.npy, --slice AXIS=INDEX and/or --diff STAGE");
+    if (!options.editsPath.empty() && (!options.stages.after.empty() || !options.stages.diff.empty()))
+        throw UserError("run: --edits are replayed on the finished grid; leave them out with --after or --diff");
     if (!options.meshPath.empty()) requireExtension(options.meshPath, {".ply", ".obj", ".glb"}, "mesh file");
     if (!std::isfinite(options.iso)) throw UserError(fmt::format("--iso {}: the surface level must be a finite number", options.iso));
     if (options.meshOn == "device" && !options.region.empty())
@@ -140,6 +155,11 @@ void run(const RunOptions& options) {
     const auto solveStart = std::chrono::steady_clock::now();
     stages::solveBlocks(checked, {overrides.curvesSolver, overrides.keepSolveChannels});
     times.add("solve", since(solveStart) - (deviceMs - checkDeviceMs), "curves blocks");
+    const std::optional<StageCut> cut = selectStage(checked, options.stages);
+    // --diff compares with the pipeline cut before the stage (all air and `none` before the first).
+    std::optional<Program> before;
+    if (cut && cut->diff && cut->stage > 0) before = throughStage(checked, cut->stage - 1);
+    if (cut) checked = throughStage(std::move(checked), cut->stage);
     const RegionRun run = planRegionRun(std::move(checked), options.region);
     const Program& program = run.program;
     const std::vector<Brush> edits =
@@ -169,7 +189,7 @@ void run(const RunOptions& options) {
     // The grid comes back to the host only for what reads it there: a region's crop, edits, the
     // .npy files, material counts, the LOD meshes and the host meshers.
     const bool hostNeedsGrid = !meshOnDevice || !options.voxelsPath.empty() || !options.materialsPath.empty() ||
-                               program.usesMaterials();
+                               program.usesMaterials() || printsGrid;
     VulkanExecutor executor(context, package, {.readBack = hostNeedsGrid});
     times.add("pipelines", executor.setupMs(), "shader modules, pipelines, buffers");
     const RunResult result = times.time("generate", [&] { return executor.run(); });
@@ -197,8 +217,17 @@ void run(const RunOptions& options) {
     // Every file is written in full before any of them replaces what the user had.
     OutputFiles files;
     writeSolveDumps(files, program, dumps);
-    if (!options.voxelsPath.empty() || !options.materialsPath.empty() || program.usesMaterials()) {
+    if (cut) std::cout << describeCut(program, *cut);
+    if (!options.voxelsPath.empty() || !options.materialsPath.empty() || program.usesMaterials() || printsGrid) {
         const DenseGrid dense = voxels.toDense();
+        if (cut && cut->diff) {
+            const DenseGrid previous =
+                before ? times.time("diff", [&] { return generateOnDevice(context, std::move(*before), options.region); })
+                       : DenseGrid(dense.size());
+            std::cout << reportStageDiff(program, options.stages, previous, dense, options.iso);
+        } else {
+            std::cout << renderChosenSlice(program, options.stages, dense, options.iso);
+        }
         if (program.usesMaterials()) status() << formatMaterialCounts(program, dense, options.iso);
         times.time("write", [&] { writeGridFiles(files, options.voxelsPath, options.materialsPath, dense); });
     }
@@ -291,6 +320,7 @@ void addRunCommand(CLI::App& app) {
                       "$VOXC_CACHE_DIR, else $XDG_CACHE_HOME/voxc, else ~/.cache/voxc");
     command->add_flag("--timings", options->timings,
                       "Print wall time per phase: check, solve, lower+glsl, spirv, device, pipelines, generate, mesh, write");
+    addStageDebugFlags(*command, options->stages);
     addRegionFlag(*command, options->region);
     addEditsFlag(*command, options->editsPath);
     addWorldOverrideFlags(*command, options->overrides);

@@ -3,6 +3,7 @@
 // a terrain block's maps as a terrain artist takes them away (docs/terrain.md, "Outputs"), written
 // as one set, with the generator's summary.
 #include "Commands.h"
+#include "Console.h"
 #include "Common.h"
 #include "OutputPaths.h"
 
@@ -86,6 +87,7 @@ void addTerrainCommand(CLI::App& app) {
     command->add_option("--sediment", options->sedimentPath, "The suspended sediment as .npy");
     command->add_option("--difference", options->differencePath,
                         "The eroded height minus the uneroded one (S_h) as .npy: < 0 where water cut, > 0 where it deposited");
+    addConsoleFlags(*command);
     command->callback([options] { runTerrain(*options); });
 }
 

@@ -36,8 +36,7 @@ std::vector<viewer::Action> loadScript(const std::string& path) {
     std::vector<viewer::Action> actions;
     if (source && !reportIfNotText(*source, diagnostics)) actions = viewer::parseScript(*source, diagnostics);
     printDiagnostics(diagnostics.all(), source ? *source : SourceFile(path, ""));
-    if (diagnostics.hasErrors())
-        throw UserError(fmt::format("{}: {} error{}", path, diagnostics.errorCount(), diagnostics.errorCount() == 1 ? "" : "s"));
+    failOnErrors(path, diagnostics.all());
     if (actions.empty()) throw UserError(fmt::format("{}: the script has no actions", path));
     return actions;
 }

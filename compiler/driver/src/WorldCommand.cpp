@@ -1,4 +1,5 @@
 #include "Commands.h"
+#include "Console.h"
 #include "Common.h"
 #include "RegionOption.h"
 
@@ -107,22 +108,22 @@ void writeWorldTiles(const WorldCommandOptions& options) {
         VulkanExecutor executor(*context, compileProgram(region, {}));
         return executor.run().grid.toDense();
     };
-    if (isatty(STDERR_FILENO)) worldOptions.progress = drawProgress;
+    if (isatty(STDERR_FILENO) && consoleOptions().verbosity != Verbosity::Quiet) worldOptions.progress = drawProgress;
     // Under mpirun, rank 0 hands the tiles to the other ranks (MpiTiles.h); they report nothing.
     const bool onRanks = world::startedByMpiWithRanks();
     const world::WorldSummary summary =
         onRanks ? world::writeWorldOnRanks(program, worldOptions) : world::writeWorld(program, worldOptions);
     if (onRanks && summary.tiles == 0) return;
-    std::cerr << fmt::format("wrote {} of {} tiles of {}^3 voxels to {} ({} up to date)", summary.tiles - summary.kept,
+    status() << fmt::format("wrote {} of {} tiles of {}^3 voxels to {} ({} up to date)", summary.tiles - summary.kept,
                              summary.tiles, options.tile, options.directory, summary.kept);
     if (summary.voxelsComputed > 0)
-        std::cerr << fmt::format("; computed {:.2f}x their voxels with the halos",
+        status() << fmt::format("; computed {:.2f}x their voxels with the halos",
                                  double(summary.voxelsComputed) / double(summary.voxelsWritten - summary.voxelsKept));
-    std::cerr << "\n";
+    status() << "\n";
     if (context && !onRanks) { // under mpirun rank 0 compiles nothing: the kernels ran on the others
         const codegen::CompileCacheCounts kernels = codegen::compileCacheCounts();
         const KernelPipelineCounts pipelines = context->kernelPipelineCounts();
-        std::cerr << fmt::format("kernels: {} from the cache, {} compiled{}; pipelines: {} created, {} shared by tiles\n",
+        status() << fmt::format("kernels: {} from the cache, {} compiled{}; pipelines: {} created, {} shared by tiles\n",
                                  kernels.hits, kernels.compiled, cache ? "" : " (--no-cache)", pipelines.created,
                                  pipelines.shared);
     }
@@ -150,6 +151,7 @@ void addWorldCommand(CLI::App& app) {
     command->add_flag("--no-cache", options->noCache,
                       "Neither read nor write the compile cache (as voxc run --no-cache)");
     addWorldOverrideFlags(*command, options->overrides);
+    addConsoleFlags(*command);
     command->callback([options] { writeWorldTiles(*options); });
 }
 

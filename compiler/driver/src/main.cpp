@@ -38,6 +38,9 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& error) {
         app.exit(error);
         return 1;
+    } catch (const voxc::driver::DiagnosticsFailed& failure) {
+        voxc::driver::printDiagnosticsSummary(failure);
+        return 1;
     } catch (const voxc::UserError& error) {
         voxc::driver::printFatalError(error.what(), false);
         return 1;

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace voxc {
@@ -201,10 +202,78 @@ void forwardInSourceOrder(std::vector<Diagnostic> found, Diagnostics& diagnostic
 
 } // namespace
 
+namespace {
+
+// Where a ';' would end the line before `loc`: just past its last character that is neither blank
+// nor in a `//` comment. Nothing when that line ends an item already (`;`, `{`, `}`) or is in
+// the middle of one (`,`, `[`, `(`, `=` and the operators), or when there is no such line.
+std::optional<SourceLoc> endOfPreviousLine(const SourceFile& source, SourceLoc loc) {
+    for (uint32_t line = loc.line; line-- > 1;) {
+        std::string_view text = source.line(line);
+        bool quoted = false;
+        for (size_t i = 0; i + 1 < text.size(); ++i) {
+            if (text[i] == '"') quoted = !quoted;
+            if (!quoted && text[i] == '/' && text[i + 1] == '/') {
+                text = text.substr(0, i);
+                break;
+            }
+        }
+        const size_t last = text.find_last_not_of(" \t\r");
+        if (last == std::string_view::npos) continue; // blank: look further up
+        if (std::string_view(";{}[(,=+-*/&|<>!?:.").find(text[last]) != std::string_view::npos) return std::nullopt;
+        // Columns count characters; a line with other than ASCII before the end is left alone.
+        for (size_t i = 0; i <= last; ++i)
+            if (static_cast<unsigned char>(text[i]) >= 0x80) return std::nullopt;
+        return SourceLoc{line, uint32_t(last + 2), 1};
+    }
+    return std::nullopt;
+}
+
+size_t offsetOf(const SourceFile& source, SourceLoc loc) {
+    const std::string_view line = source.line(loc.line);
+    return size_t(line.data() - source.text().data()) + loc.column - 1;
+}
+
+bool before(SourceLoc a, SourceLoc b) { return a.line < b.line || (a.line == b.line && a.column < b.column); }
+
+} // namespace
+
 ast::File parse(const SourceFile& source, Diagnostics& diagnostics, uint32_t maxNesting) {
     Diagnostics syntaxErrors;
     ast::File file = parseReporting(source, syntaxErrors, maxNesting);
-    forwardInSourceOrder(syntaxErrors.take(), diagnostics);
+    std::vector<Diagnostic> found = syntaxErrors.take();
+    // A syntax error at the start of a line after a line that does not end its item is most often
+    // a ';' missing there. When the file with that ';' parses past the error, that is the one
+    // error to report, as "expected ';'" where it belongs, with the ';' as its fix-it.
+    const auto first = std::find_if(found.begin(), found.end(), [](const Diagnostic& d) {
+        return d.code == "E0001" && d.loc.line > 0 && !d.file;
+    });
+    if (first != found.end()) {
+        if (const std::optional<SourceLoc> at = endOfPreviousLine(source, first->loc)) {
+            std::string fixed = source.text();
+            fixed.insert(offsetOf(source, *at), ";");
+            Diagnostics retry;
+            parseReporting(SourceFile(source.path(), fixed), retry, maxNesting);
+            const std::vector<Diagnostic>& rest = retry.all();
+            const bool fixes = std::none_of(rest.begin(), rest.end(), [&](const Diagnostic& d) {
+                return d.code == "E0001" && !before(first->loc, d.loc);
+            });
+            if (fixes) {
+                const uint32_t line = at->line;
+                const std::string_view text = source.line(line);
+                const size_t wordStart = text.find_last_of(" \t", at->column - 2);
+                const std::string_view word = text.substr(wordStart == std::string_view::npos ? 0 : wordStart + 1,
+                                                          at->column - 1 - (wordStart == std::string_view::npos ? 0 : wordStart + 1));
+                Diagnostic missing{Severity::Error, "E0001", *at, fmt::format("expected ';' after '{}'", word), {}, nullptr,
+                                   {{{line, at->column, 0}, ";"}}};
+                // The rest is what the file with the ';' reports, all of it after the ';'.
+                std::vector<Diagnostic> kept = retry.take();
+                kept.insert(kept.begin(), std::move(missing));
+                found = std::move(kept);
+            }
+        }
+    }
+    forwardInSourceOrder(std::move(found), diagnostics);
     return file;
 }
 

@@ -28,7 +28,7 @@ constexpr size_t kShownBeforeCaret = 60;
 
 // The source line and a caret line under columns [column, column + length) (in characters),
 // clipped to the line. Tabs before the caret are kept so the caret lines up in a terminal.
-std::string snippet(const SourceFile& source, SourceLoc loc) {
+std::string snippet(const SourceFile& source, SourceLoc loc, const std::vector<FixIt>& fixits) {
     std::string_view text = source.line(loc.line);
     std::vector<size_t> starts; // byte offset of each character
     for (size_t i = 0; i < text.size(); ++i)
@@ -43,24 +43,36 @@ std::string snippet(const SourceFile& source, SourceLoc loc) {
     auto byteAt = [&](size_t character) { return character < starts.size() ? starts[character] : text.size(); };
     const std::string before = first > 0 ? "..." : "";
     const std::string after = last < starts.size() ? "..." : "";
-    std::string margin(before.size(), ' ');
-    for (size_t c = first; c < caret; ++c) margin += text[starts[c]] == '\t' ? '\t' : ' ';
+    // Blanks up to character `column` (clipped to the shown window), tabs kept.
+    auto marginTo = [&](size_t column) {
+        std::string margin(before.size(), ' ');
+        for (size_t c = first; c < std::min(column, starts.size()); ++c) margin += text[starts[c]] == '\t' ? '\t' : ' ';
+        return margin;
+    };
     const size_t remaining = last > caret ? last - caret : 0;
     const size_t width = std::max<size_t>(1, std::min<size_t>(loc.length, remaining));
     std::string gutter = fmt::format("{:>5} | ", loc.line);
     const std::string_view shown = text.substr(byteAt(first), byteAt(last) - byteAt(first));
-    return fmt::format("{}{}{}{}\n      | {}^{}\n", gutter, before, shown, after, margin, std::string(width - 1, '~'));
+    std::string out = fmt::format("{}{}{}{}\n      | {}^{}\n", gutter, before, shown, after, marginTo(caret),
+                                  std::string(width - 1, '~'));
+    // clang's fix-it line: the replacement under the text it replaces, when that text is shown.
+    for (const FixIt& fixit : fixits) {
+        const size_t column = fixit.loc.column == 0 ? 0 : fixit.loc.column - 1;
+        if (fixit.loc.line != loc.line || column < first || column > last) continue;
+        out += fmt::format("      | {}{}\n", marginTo(column), fixit.replacement);
+    }
+    return out;
 }
 
 void renderOne(std::string& out, Severity severity, std::string_view code, SourceLoc loc, std::string_view message,
-               const SourceFile& source) {
+               const SourceFile& source, const std::vector<FixIt>& fixits = {}) {
     std::string label = code.empty() ? severityName(severity) : fmt::format("{} {}", severityName(severity), code);
     if (loc.line == 0) {
         out += fmt::format("{}: {}: {}\n", source.path(), label, message);
         return;
     }
     out += fmt::format("{}:{}:{}: {}: {}\n", source.path(), loc.line, loc.column, label, message);
-    if (loc.line <= source.lineCount() && !source.text().empty()) out += snippet(source, loc);
+    if (loc.line <= source.lineCount() && !source.text().empty()) out += snippet(source, loc, fixits);
 }
 
 } // namespace
@@ -68,7 +80,7 @@ void renderOne(std::string& out, Severity severity, std::string_view code, Sourc
 std::string render(const Diagnostic& diagnostic, const SourceFile& checked) {
     const SourceFile& source = diagnostic.file ? *diagnostic.file : checked;
     std::string out;
-    renderOne(out, diagnostic.severity, diagnostic.code, diagnostic.loc, diagnostic.message, source);
+    renderOne(out, diagnostic.severity, diagnostic.code, diagnostic.loc, diagnostic.message, source, diagnostic.fixits);
     for (const DiagnosticNote& note : diagnostic.notes)
         renderOne(out, Severity::Note, "", note.loc, note.message, source);
     return out;

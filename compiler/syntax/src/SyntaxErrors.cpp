@@ -118,7 +118,10 @@ void SyntaxErrorStrategy::reportMissingToken(antlr4::Parser* parser) {
     SourceLoc loc = tokenLoc(*previous);
     loc.column += loc.length;
     loc.length = 1;
-    diagnostics_.error("E0001", loc, message);
+    // A missing ';' is certain: offer it, as clang's fix-it.
+    std::vector<FixIt> fixits;
+    if (list == "';'") fixits.push_back({{loc.line, loc.column, 0}, ";"});
+    diagnostics_.error("E0001", loc, message, {}, std::move(fixits));
 }
 
 void reportUnexpectedCharacter(antlr4::Lexer& lexer, Diagnostics& diagnostics) {

@@ -2,8 +2,10 @@
 
 #include "voxc/check/Check.h"
 #include "voxc/check/FeatureOverrides.h"
+#include "voxc/check/KeyRanges.h"
 #include "voxc/core/AtomicWrite.h"
 #include "voxc/core/Errors.h"
+#include "voxc/core/Suggest.h"
 #include "voxc/generators/dey/Generators.h"
 #include "voxc/stages/Pipeline.h"
 #include "voxc/syntax/Parser.h"
@@ -13,6 +15,8 @@
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
+#include <functional>
+#include <map>
 
 namespace voxc::viewer {
 
@@ -32,14 +36,58 @@ std::optional<double> literalNumber(const ast::Expr* expr) {
     return std::nullopt;
 }
 
-// A constant has no declared range: its slider spans from 0 to twice the file's value (or -1..1
-// for 0), integers when the file wrote an integer.
-Parameter constantParameter(const std::string& name, double written) {
+// The slider: the whole range when it is short, else a part of it around the value (priority
+// spans all of int32).
+void setSliderSpan(Parameter& p) {
+    p.sliderMin = p.min;
+    p.sliderMax = p.max;
+    constexpr double kLongest = 1000.0;
+    if (p.max - p.min <= kLongest) return;
+    const double reach = std::max(10.0, 2.0 * std::abs(p.value));
+    p.sliderMin = std::max(p.min, std::min(0.0, p.value - reach));
+    p.sliderMax = std::min(p.max, std::max(p.value + reach, p.sliderMin + 10.0));
+}
+
+// The range a key gives a constant written as its value, for every key with a declared range.
+struct ConstantUse {
+    double min, max;
+    bool integer;
+};
+
+void collectConstantUses(const ast::Block& block, std::string_view blockKind,
+                         const std::function<std::optional<KeyRange>(std::string_view, std::string_view)>& rangeOf,
+                         std::map<std::string, ConstantUse>& uses) {
+    for (const ast::Assignment& a : block.assignments) {
+        const ast::Expr* value = a.value.scalar.get();
+        if (value == nullptr || value->kind != ast::Expr::Kind::Name) continue;
+        const std::optional<KeyRange> range = rangeOf(blockKind, a.key);
+        if (!range) continue;
+        auto [it, fresh] = uses.try_emplace(value->name, ConstantUse{range->min, range->max, range->integer});
+        if (!fresh) {
+            it->second.min = std::max(it->second.min, range->min);
+            it->second.max = std::min(it->second.max, range->max);
+            it->second.integer = it->second.integer || range->integer;
+        }
+    }
+    for (const ast::Block& inner : block.blocks) collectConstantUses(inner, inner.kind, rangeOf, uses);
+}
+
+// A constant's range: those of the keys it is the value of; without one, 0 to twice the file's
+// value (-1..1 for 0), integers when the file wrote an integer.
+Parameter constantParameter(const std::string& name, double written, const std::optional<ConstantUse>& use) {
     Parameter p{Parameter::Kind::Constant, name, written, std::min(0.0, 2 * written), std::max(0.0, 2 * written)};
     if (written == 0.0) p.min = -1.0, p.max = 1.0;
     p.integer = written == std::floor(written) && std::abs(written) >= 1.0;
+    if (use && use->min <= use->max) {
+        p.min = use->min;
+        p.max = use->max;
+        p.integer = use->integer;
+    }
+    setSliderSpan(p);
     return p;
 }
+
+std::string formatNumber(double value) { return fmt::format("{}", value); }
 
 } // namespace
 
@@ -69,7 +117,7 @@ bool Session::fileChanged() const {
 }
 
 std::string Session::textWithOverrides(const std::string& text, const ast::File& file) const {
-    return overrideFeatureKeys(text, file, featureOverrides_);
+    return overrideFeatureKeys(text, file, keyOverrides_);
 }
 
 void Session::listParameters(const ast::File& file) {
@@ -77,11 +125,26 @@ void Session::listParameters(const ast::File& file) {
     Parameter seed{Parameter::Kind::Seed, "seed", double(loaded_->program.world.seed), 0.0, 1000.0, true,
                    seedOverride_.has_value()};
     seed.max = std::max(seed.max, seed.value);
+    setSliderSpan(seed);
     parameters.push_back(seed);
+    // The declared range of a key a constant is the value of: a grammar's, a rule's or a feature's.
+    const auto rangeOf = [&](std::string_view blockKind, std::string_view key) -> std::optional<KeyRange> {
+        if (std::optional<KeyRange> range = grammarKeyRange(blockKind, key)) return range;
+        if (const dey::GeneratorInfo* info = dey::findGenerator(blockKind))
+            for (const dey::GeneratorKey& k : info->keys)
+                if (k.name == key && k.type != dey::GeneratorKeyType::Vec3)
+                    return KeyRange{k.min, k.max, k.type == dey::GeneratorKeyType::Integer};
+        return std::nullopt;
+    };
+    std::map<std::string, ConstantUse> uses;
+    for (const ast::Block& block : file.blocks) collectConstantUses(block, block.kind, rangeOf, uses);
+    for (const ast::FeatureDecl& decl : file.features) collectConstantUses(decl.body, decl.body.kind, rangeOf, uses);
     for (const ast::ConstDecl& decl : file.constants) {
         const std::optional<double> written = literalNumber(decl.value.get());
         if (!written) continue;
-        Parameter p = constantParameter(decl.name, *written);
+        const auto use = uses.find(decl.name);
+        Parameter p = constantParameter(decl.name, *written,
+                                        use == uses.end() ? std::nullopt : std::optional(use->second));
         if (auto it = constOverrides_.find(decl.name); it != constOverrides_.end()) p.value = it->second, p.overridden = true;
         parameters.push_back(p);
     }
@@ -95,8 +158,32 @@ void Session::listParameters(const ast::File& file) {
             if (!written) continue;
             Parameter p{Parameter::Kind::FeatureKey, fmt::format("{}.{}", decl.name, key.name), *written, key.min, key.max,
                         key.type == dey::GeneratorKeyType::Integer};
-            if (auto it = featureOverrides_.find(p.name); it != featureOverrides_.end()) p.value = it->second, p.overridden = true;
+            if (auto it = keyOverrides_.find(p.name); it != keyOverrides_.end()) p.value = it->second, p.overridden = true;
+            setSliderSpan(p);
             parameters.push_back(p);
+        }
+    }
+    // Grammar and rule keys: written as a plain number, or absent (the language's default).
+    const auto addKey = [&](const ast::Block& block, std::string_view blockKind, std::string_view key, double fallback,
+                            const std::string& name) {
+        const std::optional<KeyRange> range = grammarKeyRange(blockKind, key);
+        const ast::Assignment* a = findAssignment(block, key);
+        const std::optional<double> written = a ? literalNumber(a->value.scalar.get()) : std::optional(fallback);
+        if (!range || !written) return;
+        Parameter p{Parameter::Kind::GrammarKey, name, *written, range->min, range->max, range->integer};
+        if (auto it = keyOverrides_.find(p.name); it != keyOverrides_.end()) p.value = it->second, p.overridden = true;
+        setSliderSpan(p);
+        parameters.push_back(p);
+    };
+    for (const ast::Block& grammar : file.blocks) {
+        if (grammar.kind != "grammar" || !grammar.label) continue;
+        addKey(grammar, "grammar", "iterations", 1.0, fmt::format("{}.iterations", *grammar.label));
+        for (const ast::Block& rule : grammar.blocks) {
+            if (rule.kind != "rule" || !rule.label) continue;
+            const std::string prefix = fmt::format("{}.{}.", *grammar.label, *rule.label);
+            addKey(rule, "rule", "probability", 1.0, prefix + "probability");
+            addKey(rule, "rule", "priority", 0.0, prefix + "priority");
+            addKey(rule, "rule", "weight", 1.0, prefix + "weight");
         }
     }
     parameters_ = std::move(parameters);
@@ -182,7 +269,16 @@ void Session::rebuildWorld() {
 
 bool Session::setParameter(const std::string& name, double value) {
     const auto it = std::find_if(parameters_.begin(), parameters_.end(), [&](const Parameter& p) { return p.name == name; });
-    if (it == parameters_.end()) throw UserError(fmt::format("no parameter named '{}'", name));
+    if (it == parameters_.end()) {
+        std::vector<std::string_view> names;
+        std::string list;
+        for (const Parameter& p : parameters_) {
+            names.push_back(p.name);
+            list += fmt::format("{}{}", list.empty() ? "" : ", ", p.name);
+        }
+        throw UserError(fmt::format("no parameter named '{}' (the parameters are: {}){}", name, list,
+                                    didYouMean(name, names)));
+    }
     if (!(value >= it->min && value <= it->max) && it->kind != Parameter::Kind::Seed)
         throw UserError(fmt::format("{} = {}: outside its range [{}, {}]", name, value, it->min, it->max));
     if (it->integer) value = std::round(value);
@@ -192,14 +288,15 @@ bool Session::setParameter(const std::string& name, double value) {
         seedOverride_ = uint32_t(value);
         break;
     case Parameter::Kind::Constant: constOverrides_[name] = value; break;
-    case Parameter::Kind::FeatureKey: featureOverrides_[name] = value; break;
+    case Parameter::Kind::FeatureKey:
+    case Parameter::Kind::GrammarKey: keyOverrides_[name] = value; break;
     }
     return reload();
 }
 
 bool Session::resetParameters() {
     constOverrides_.clear();
-    featureOverrides_.clear();
+    keyOverrides_.clear();
     seedOverride_ = options_.seed;
     return reload();
 }

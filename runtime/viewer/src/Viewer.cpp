@@ -417,13 +417,13 @@ void App::panel() {
         ImGui::TextUnformatted(session_.warnings().c_str());
     }
     if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
-        // Constants and the seed first, then one folded node per feature with its keys.
+        // Constants and the seed first, then one folded node per feature and per grammar with its keys.
         std::optional<std::pair<std::string, double>> released;
         std::string feature;
         bool featureOpen = false;
         for (const Parameter& p : session_.parameters()) {
             std::string label = p.name;
-            if (p.kind == Parameter::Kind::FeatureKey) {
+            if (p.kind == Parameter::Kind::FeatureKey || p.kind == Parameter::Kind::GrammarKey) {
                 const size_t dot = p.name.find('.');
                 if (p.name.compare(0, dot, feature) != 0 || feature.size() != dot) {
                     if (featureOpen) ImGui::TreePop();
@@ -442,11 +442,11 @@ void App::panel() {
                     released = {p.name, double(std::max(seed, 0))};
             } else if (p.integer) {
                 int v = int(p.value);
-                ImGui::SliderInt(label.c_str(), &v, int(p.min), int(p.max));
+                ImGui::SliderInt(label.c_str(), &v, int(p.sliderMin), int(p.sliderMax));
                 value = v;
             } else {
                 float v = float(p.value);
-                ImGui::SliderFloat(label.c_str(), &v, float(p.min), float(p.max));
+                ImGui::SliderFloat(label.c_str(), &v, float(p.sliderMin), float(p.sliderMax));
                 value = v;
             }
             // Re-run when the slider is let go, not at every step of the drag.

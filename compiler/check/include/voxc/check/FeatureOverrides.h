@@ -16,8 +16,9 @@ namespace voxc {
 const ast::Assignment* findAssignment(const ast::Block& block, std::string_view key);
 
 // `text` (which parsed to `file`) with each "feature.key" of `overrides` written as its value in
-// every feature block of that name. Names of features the file does not declare change nothing;
-// featureOverrideErrors finds them.
+// the feature block of that name; likewise "grammar.key" and "grammar.rule.key" in grammar and
+// rule blocks (the viewer's grammar sliders). Names of blocks the file does not have change
+// nothing; featureOverrideErrors finds those of features.
 std::string overrideFeatureKeys(const std::string& text, const ast::File& file, const std::map<std::string, double>& overrides);
 
 // One message per name of `overrides` that is not "feature.key" of a feature `file` declares.

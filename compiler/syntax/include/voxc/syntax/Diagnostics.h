@@ -24,6 +24,14 @@ struct DiagnosticNote {
     std::string message;
 };
 
+// An edit the diagnostic is sure fixes it: replace the `loc.length` characters at `loc` with
+// `replacement` (length 0: insert before loc.column). Offered only where there is one fix: a
+// misspelt name with a single close candidate, a missing ';'.
+struct FixIt {
+    SourceLoc loc;
+    std::string replacement;
+};
+
 // code is a stable identifier such as "E0004" or "W0201" (empty only for the final
 // "too many errors" line). loc.line == 0 means the diagnostic is about the whole file.
 // `file` is set when loc lies in another file than the one being checked (an L-system rule
@@ -35,7 +43,13 @@ struct Diagnostic {
     std::string message;
     std::vector<DiagnosticNote> notes;
     std::shared_ptr<const SourceFile> file;
+    std::vector<FixIt> fixits{}; // in `file` when set, like loc
 };
+
+// Adds the fix-it "replace the name with the suggestion" to each diagnostic whose message ends in
+// "; did you mean 'NAME'?" and whose location covers exactly a name the message quotes (the
+// misspelt one). Run once the diagnostics are complete; `source` is the checked file.
+void addSuggestionFixIts(std::vector<Diagnostic>& diagnostics, const SourceFile& source);
 
 // Collects diagnostics, drops exact duplicates, and stops recording errors after kMaxErrors,
 // appending one final "too many errors" diagnostic instead. take() hands them over in source
@@ -47,7 +61,8 @@ public:
     static constexpr int kMaxErrors = 20;
 
     void report(Diagnostic diagnostic);
-    void error(std::string_view code, SourceLoc loc, std::string message, std::vector<DiagnosticNote> notes = {});
+    void error(std::string_view code, SourceLoc loc, std::string message, std::vector<DiagnosticNote> notes = {},
+               std::vector<FixIt> fixits = {});
     void warning(std::string_view code, SourceLoc loc, std::string message, std::vector<DiagnosticNote> notes = {});
 
     bool hasErrors() const { return errorCount_ > 0; }
@@ -66,6 +81,7 @@ private:
 //   path:line:col: error E0004: message
 //      12 |     symbol {
 //         |     ^~~~~~
+//         |     symbols          (a fix-it on the line, under the text it replaces)
 // followed by its notes in the same form. Without a location: `path: error E0100: message`.
 // Ends with a newline.
 std::string render(const Diagnostic& diagnostic, const SourceFile& source);

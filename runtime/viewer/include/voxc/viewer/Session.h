@@ -4,9 +4,11 @@
 // `voxc run --edits` replays), the file's parameters as slider values, and hot reload that keeps
 // the last good world when the file (or a slider) no longer checks. docs/viewer.md.
 //
-// Parameters: every `const` written as a plain number, the world's seed, and every number or
-// integer key of a feature (Dey's generators) within the generator's declared range. A constant
-// is overridden through CheckOptions::constOverrides; a feature key by rewriting the key's value in
+// Parameters: every `const` written as a plain number, the world's seed, every number or integer
+// key of a feature (Dey's generators), and each grammar's `iterations` and each rule's
+// `probability`, `priority` and `weight`, each within the range the language declares for its key
+// (a constant: the ranges of the keys it is the value of, or without one, 0 to twice its value).
+// A constant is overridden through CheckOptions::constOverrides; a key by rewriting its value in
 // the text given to the checker (the file on disk is never written), so both are checked exactly
 // as if the file said so.
 #include "voxc/edit/EditableWorld.h"
@@ -29,13 +31,16 @@ struct File;
 namespace voxc::viewer {
 
 struct Parameter {
-    enum class Kind : uint8_t { Constant, FeatureKey, Seed };
+    enum class Kind : uint8_t { Constant, FeatureKey, GrammarKey, Seed };
     Kind kind = Kind::Constant;
-    std::string name = {}; // the constant's name, "feature.key", or "seed"
+    // The constant's name, "feature.key", "grammar.key" (iterations), "grammar.rule.key"
+    // (probability, priority, weight) or "seed".
+    std::string name = {};
     double value = 0.0;
-    double min = 0.0, max = 1.0;
+    double min = 0.0, max = 1.0; // what `set` accepts: the key's declared range
     bool integer = false;
     bool overridden = false; // a slider replaced the file's value
+    double sliderMin = 0.0, sliderMax = 1.0; // the slider's span: the range, or a part of it around the value
 };
 
 struct SessionOptions {
@@ -114,7 +119,7 @@ private:
     VulkanContext& context_;
     SessionOptions options_;
     std::map<std::string, double> constOverrides_;
-    std::map<std::string, double> featureOverrides_; // "feature.key" -> value
+    std::map<std::string, double> keyOverrides_; // "feature.key", "grammar.key", "grammar.rule.key" -> value
     std::optional<uint32_t> seedOverride_;
     std::vector<Parameter> parameters_;
     std::vector<Brush> edits_, redo_;

@@ -1,4 +1,4 @@
-#include "Suggest.h"
+#include "voxc/core/Suggest.h"
 
 #include <algorithm>
 #include <cctype>
@@ -6,7 +6,7 @@
 #include <fmt/ranges.h>
 #include <vector>
 
-namespace voxc::check {
+namespace voxc {
 
 namespace {
 
@@ -34,7 +34,7 @@ size_t editDistance(std::string_view a, std::string_view b) {
 // their lengths, and a file may hold names of megabytes.
 constexpr size_t kMaxSuggestedLength = 64;
 
-std::string didYouMean(std::string_view name, std::span<const std::string_view> candidates) {
+std::string_view closestName(std::string_view name, std::span<const std::string_view> candidates) {
     if (name.size() > kMaxSuggestedLength) return {};
     size_t limit = std::max<size_t>(1, name.size() / 3);
     std::string_view best;
@@ -49,7 +49,13 @@ std::string didYouMean(std::string_view name, std::span<const std::string_view> 
             bestDistance = distance;
         }
     }
-    if (best.empty() || best == name) return {};
+    if (best == name) return {};
+    return best;
+}
+
+std::string didYouMean(std::string_view name, std::span<const std::string_view> candidates) {
+    const std::string_view best = closestName(name, candidates);
+    if (best.empty()) return {};
     return fmt::format("; did you mean '{}'?", best);
 }
 
@@ -59,4 +65,4 @@ std::string suggestOrList(std::string_view name, std::span<const std::string_vie
     return fmt::format(" (expected one of: {})", fmt::join(candidates, ", "));
 }
 
-} // namespace voxc::check
+} // namespace voxc
