@@ -4,6 +4,7 @@
 #include "voxc/core/Errors.h"
 #include "voxc/mesh/Export.h"
 
+#include <array>
 #include <bit>
 #include <cstring>
 #include <fmt/format.h>
@@ -27,15 +28,17 @@ constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
 class BinaryBuffer {
 public:
     // Appends `bytes` as a buffer view of its own, starting 4-byte aligned; returns its index.
+    // Room for `size` more bytes and their padding, so that appending copies each byte once.
+    void reserve(size_t size) { data_.reserve(size); }
     size_t addView(const void* bytes, size_t size, int target, Json& views) {
         data_.resize((data_.size() + 3) & ~size_t(3), 0);
         const size_t offset = data_.size();
-        data_.resize(offset + size);
-        std::memcpy(data_.data() + offset, bytes, size);
+        data_.append(static_cast<const char*>(bytes), size);
         views.push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", size}, {"target", target}});
         return views.size() - 1;
     }
     const std::string& data() const { return data_; }
+    std::string take() && { return std::move(data_); }
 
 private:
     std::string data_;
@@ -49,11 +52,18 @@ void appendUint32(std::string& out, uint32_t value) {
 
 // Triangles of each material id with any, ascending id; each list in the mesh's own order.
 std::map<uint8_t, std::vector<uint32_t>> trianglesByMaterial(const Mesh& mesh) {
-    std::map<uint8_t, std::vector<uint32_t>> groups;
-    for (size_t t = 0; t < mesh.triangles.size() / 3; ++t) {
-        std::vector<uint32_t>& indices = groups[mesh_export::triangleMaterial(mesh, t)];
+    const size_t triangleCount = mesh.triangles.size() / 3;
+    std::array<size_t, 256> counts{};
+    for (size_t t = 0; t < triangleCount; ++t) ++counts[mesh_export::triangleMaterial(mesh, t)];
+    std::array<std::vector<uint32_t>, 256> lists;
+    for (size_t id = 0; id < 256; ++id) lists[id].reserve(counts[id] * 3);
+    for (size_t t = 0; t < triangleCount; ++t) {
+        std::vector<uint32_t>& indices = lists[mesh_export::triangleMaterial(mesh, t)];
         indices.insert(indices.end(), mesh.triangles.begin() + std::ptrdiff_t(3 * t), mesh.triangles.begin() + std::ptrdiff_t(3 * t + 3));
     }
+    std::map<uint8_t, std::vector<uint32_t>> groups;
+    for (size_t id = 0; id < 256; ++id)
+        if (counts[id] != 0) groups.emplace(uint8_t(id), std::move(lists[id]));
     return groups;
 }
 
@@ -67,6 +77,7 @@ struct VertexStreams {
 VertexStreams optimizeForRendering(const Mesh& mesh, std::map<uint8_t, std::vector<uint32_t>>& groups) {
     const size_t vertexCount = mesh.positions.size();
     std::vector<uint32_t> all;
+    all.reserve(mesh.triangles.size());
     for (auto& [id, indices] : groups) {
         std::vector<uint32_t> ordered(indices.size());
         meshopt_optimizeVertexCache(ordered.data(), indices.data(), indices.size(), vertexCount);
@@ -99,6 +110,7 @@ Json gltfDocument(const Mesh& mesh, std::span<const Material> materials, BinaryB
     const VertexStreams streams = optimizeForRendering(mesh, groups);
     const size_t vertexCount = streams.positions.size();
     Json views = Json::array(), accessors = Json::array();
+    bin.reserve(vertexCount * 24 + mesh.triangles.size() * 4 + 4 * (groups.size() + 2));
 
     glm::vec3 lo = streams.positions[0], hi = streams.positions[0];
     for (const glm::vec3& p : streams.positions) {
@@ -150,7 +162,7 @@ std::string encodeGlb(const Mesh& mesh, std::span<const Material> materials) {
     BinaryBuffer bin;
     std::string json = gltfDocument(mesh, materials, bin).dump();
     json.resize((json.size() + 3) & ~size_t(3), ' ');
-    std::string binary = bin.data();
+    std::string binary = std::move(bin).take();
     binary.resize((binary.size() + 3) & ~size_t(3), '\0');
 
     const size_t total = 12 + 8 + json.size() + (binary.empty() ? 0 : 8 + binary.size());
