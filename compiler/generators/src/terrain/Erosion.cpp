@@ -141,28 +141,38 @@ template <class Cell> void edgeColumns(int32_t w, Cell cell) {
     if (w > 1) cell(w - 1);
 }
 
-// Rain (not in the drain), then surface = (base + S_h) + d for the flux.
-VOXC_ROW_KERNEL void rainAndSurfaceRows(ErosionGrid& g, const ErosionParams& p, const Drop& drop, bool rain, int32_t y0, int32_t y1) {
+// Rain on rows [y0, y1) (B3.4 step 1; not in the drain): a drop inside its disc, or uniform rain.
+VOXC_ROW_KERNEL void rainRows(ErosionGrid& g, const ErosionParams& p, const Drop& drop, int32_t y0, int32_t y1) {
     const int32_t w = g.width();
     const float radiusSquared = drop.radius * drop.radius, amount = p.dt * p.uniformRain;
     for (int32_t y = y0; y < y1; ++y) {
         const size_t row = size_t(y) * size_t(w);
         float* __restrict water = g.water.values.data() + row;
         const float* __restrict rainAt = g.rain.values.data() + row;
-        const float* __restrict base = g.base.values.data() + row;
-        const float* __restrict difference = g.difference.values.data() + row;
-        float* __restrict surface = g.surface.values.data() + row;
-        if (rain && p.rain == RainMode::Uniform) {
+        if (p.rain == RainMode::Uniform) {
             for (int32_t x = 0; x < w; ++x) water[x] = water[x] + amount * rainAt[x];
-        } else if (rain && p.rain == RainMode::Drops) {
+        } else if (p.rain == RainMode::Drops) {
             const float dy = float(y) - drop.centreY;
             for (int32_t x = 0; x < w; ++x) {
                 const float dx = float(x) - drop.centreX;
                 water[x] = dx * dx + dy * dy <= radiusSquared ? water[x] + drop.intensity * rainAt[x] : water[x];
             }
         }
-        for (int32_t x = 0; x < w; ++x) surface[x] = (base[x] + difference[x]) + water[x];
     }
+}
+
+// The water surface (base + S_h) + d the flux reads.
+inline float surfaceLevel(float base, float difference, float water) { return (base + difference) + water; }
+
+// surface = (base + S_h) + d: the channel the device's surface pass writes (the flux rows add it
+// where they read it).
+VOXC_ROW_KERNEL void surfaceRows(ErosionGrid& g, int32_t y0, int32_t y1) {
+    const size_t first = size_t(y0) * size_t(g.width()), last = size_t(y1) * size_t(g.width());
+    const float* __restrict base = g.base.values.data();
+    const float* __restrict difference = g.difference.values.data();
+    const float* __restrict water = g.water.values.data();
+    float* __restrict surface = g.surface.values.data();
+    for (size_t i = first; i < last; ++i) surface[i] = surfaceLevel(base[i], difference[i], water[i]);
 }
 
 // surface = base + S_h, the bed the erosion's tilt reads.
@@ -204,10 +214,15 @@ VOXC_ROW_KERNEL void fluxRows(ErosionGrid& g, const ErosionParams& p, int32_t y0
     const int32_t w = g.width(), h = g.height();
     for (int32_t y = y0; y < y1; ++y) {
         const Rows rows = rowsAt(y, w, h);
-        const float* __restrict s = g.surface.values.data() + rows.at;
-        const float* __restrict down = g.surface.values.data() + rows.down;
-        const float* __restrict up = g.surface.values.data() + rows.up;
+        const float* __restrict b = g.base.values.data() + rows.at;
+        const float* __restrict bDown = g.base.values.data() + rows.down;
+        const float* __restrict bUp = g.base.values.data() + rows.up;
+        const float* __restrict sh = g.difference.values.data() + rows.at;
+        const float* __restrict shDown = g.difference.values.data() + rows.down;
+        const float* __restrict shUp = g.difference.values.data() + rows.up;
         const float* __restrict d = g.water.values.data() + rows.at;
+        const float* __restrict dDown = g.water.values.data() + rows.down;
+        const float* __restrict dUp = g.water.values.data() + rows.up;
         float* __restrict fl = g.fluxL.values.data() + rows.at;
         float* __restrict fr = g.fluxR.values.data() + rows.at;
         float* __restrict ft = g.fluxT.values.data() + rows.at;
@@ -215,10 +230,14 @@ VOXC_ROW_KERNEL void fluxRows(ErosionGrid& g, const ErosionParams& p, int32_t y0
         const bool hasDown = rows.hasDown, hasUp = rows.hasUp;
 #pragma omp simd
         for (int32_t x = 1; x < w - 1; ++x)
-            fluxCell(c, s[x], s[x - 1], s[x + 1], down[x], up[x], true, true, hasDown, hasUp, d[x], fl[x], fr[x], ft[x], fb[x]);
+            fluxCell(c, surfaceLevel(b[x], sh[x], d[x]), surfaceLevel(b[x - 1], sh[x - 1], d[x - 1]),
+                     surfaceLevel(b[x + 1], sh[x + 1], d[x + 1]), surfaceLevel(bDown[x], shDown[x], dDown[x]),
+                     surfaceLevel(bUp[x], shUp[x], dUp[x]), true, true, hasDown, hasUp, d[x], fl[x], fr[x], ft[x], fb[x]);
         edgeColumns(w, [&](int32_t x) { // a missing neighbour gets no flux
-            fluxCell(c, s[x], s[std::max(x - 1, 0)], s[std::min(x + 1, w - 1)], down[x], up[x], x > 0, x < w - 1, hasDown,
-                     hasUp, d[x], fl[x], fr[x], ft[x], fb[x]);
+            const int32_t left = std::max(x - 1, 0), right = std::min(x + 1, w - 1);
+            fluxCell(c, surfaceLevel(b[x], sh[x], d[x]), surfaceLevel(b[left], sh[left], d[left]),
+                     surfaceLevel(b[right], sh[right], d[right]), surfaceLevel(bDown[x], shDown[x], dDown[x]),
+                     surfaceLevel(bUp[x], shUp[x], dUp[x]), x > 0, x < w - 1, hasDown, hasUp, d[x], fl[x], fr[x], ft[x], fb[x]);
         });
     }
 }
@@ -459,11 +478,11 @@ constexpr int32_t kMinRowsForTwoThreads = 256;
 void addRain(ErosionGrid& g, const ErosionParams& p, int32_t level, uint32_t step) {
     if (p.rain == RainMode::None) return;
     const Drop drop = p.rain == RainMode::Drops ? dropAt(p, g.width(), g.height(), level, step) : Drop{};
-    rainAndSurfaceRows(g, p, drop, true, 0, g.height()); // the surface is recomputed before it is read
+    rainRows(g, p, drop, 0, g.height());
 }
 
 void updateFlux(ErosionGrid& g, const ErosionParams& p) {
-    rainAndSurfaceRows(g, p, Drop{}, false, 0, g.height());
+    surfaceRows(g, 0, g.height());
     fluxRows(g, p, 0, g.height());
 }
 
@@ -484,40 +503,48 @@ void evaporate(ErosionGrid& g, float keep) {
     for (float& d : g.water.values) d = d * keep;
 }
 
-// A step as three passes over a band, each after the previous one has finished on every band:
-// rain with the surface b + d; the flux; water, velocity and evaporation, then the erosion of
-// the same rows (it reads this band's velocities and every row's b + S_h, which no pass of the
-// step has changed yet), a few rows at a time so that the velocities are still in cache; then
-// S_h's halves swap, and the transport. The last pass of a step and the first of the next touch
-// different channels, so they need no wait between them. The last step leaves the bed b + S_h
-// in `surface`, as the passes one after the other do.
+// A step as two passes over a band, each after the previous one has finished on every band:
+// the flux, adding the surface (b + S_h) + d where it reads it; then, eight rows at a time,
+// water, velocity and evaporation, the next step's rain (it follows the evaporation, as the
+// passes one after the other do) and the erosion of the same rows (it reads this band's
+// velocities and every row's b + S_h, which no pass of the step has changed yet); then S_h's
+// halves swap, and the transport, followed without a wait by the next step's flux: the transport
+// writes only the sediment, which the flux does not read, and reads no channel the flux writes.
+// The first step's rain runs before the first wait. The last step leaves the bed b + S_h in
+// `surface`, as the passes one after the other do.
 void erosionSteps(ErosionGrid& g, const ErosionParams& p, int32_t level, uint32_t firstStep, uint32_t steps, bool drain) {
     const float keep = drain ? 1.0f - 0.9f : 1.0f - p.evaporation * p.dt;
+    const bool rain = !drain && p.rain != RainMode::None;
     constexpr int32_t kRowsPerChunk = 8;
+    const uint32_t end = firstStep + steps;
+    const auto dropOf = [&](uint32_t step) {
+        return p.rain == RainMode::Drops ? dropAt(p, g.width(), g.height(), level, step) : Drop{};
+    };
     const auto band = [&](auto&& wait, int32_t y0, int32_t y1) {
         std::vector<float> scratch; // the conservative transport's source rows
-        for (uint32_t step = firstStep; step < firstStep + steps; ++step) {
-            const bool rain = !drain && p.rain != RainMode::None;
-            const Drop drop = rain && p.rain == RainMode::Drops ? dropAt(p, g.width(), g.height(), level, step) : Drop{};
-            rainAndSurfaceRows(g, p, drop, rain, y0, y1);
-            wait();
+        if (rain && steps > 0) rainRows(g, p, dropOf(firstStep), y0, y1);
+        wait();
+        for (uint32_t step = firstStep; step < end; ++step) {
             fluxRows(g, p, y0, y1);
             wait();
+            const bool rainNext = rain && step + 1 < end;
+            const Drop next = rainNext ? dropOf(step + 1) : Drop{};
             for (int32_t y = y0; y < y1; y += kRowsPerChunk) {
-                const int32_t end = std::min(y + kRowsPerChunk, y1);
-                waterRows(g, p, keep, y, end);
-                erodeRows(g, p, y, end);
+                const int32_t last = std::min(y + kRowsPerChunk, y1);
+                waterRows(g, p, keep, y, last);
+                if (rainNext) rainRows(g, p, next, y, last);
+                erodeRows(g, p, y, last);
             }
-            if (step + 1 == firstStep + steps) bedRows(g, y0, y1);
+            if (step + 1 == end) bedRows(g, y0, y1);
             wait(); // S_h's halves swap here
             transportRows(g, p, y0, y1, scratch);
         }
     };
-    // Between passes, once every band has arrived (a barrier's completion with two threads);
-    // every third pass is the erosion's.
+    // Between passes, once every band has arrived (a barrier's completion with two threads): the
+    // first wait follows the first rain, then every second is after the erosion.
     uint32_t phase = 0;
     const auto completion = [&]() noexcept {
-        if (phase % 3 == 2) std::swap(g.difference, g.differenceNext);
+        if (phase > 0 && phase % 2 == 0) std::swap(g.difference, g.differenceNext);
         ++phase;
     };
     const int32_t h = g.height();
