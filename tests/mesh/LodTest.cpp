@@ -254,6 +254,39 @@ TEST(mesh_Lod, mixedLayoutsAreCrackFree) {
     }
 }
 
+// A world that is solid up to its border: level 0's walls lie half a voxel outside the last voxels;
+// at levels 1 and 2 (alone and mixed with 0) no wall leaves that box (clamped, instead of moving out
+// by up to 2^level - 1/2 voxels), and the mesh stays crack free.
+TEST(mesh_Lod, borderWallsStayOnTheWorldsBox) {
+    const glm::ivec3 origin(-5, 3, 17), size(40, 24, 33);
+    const ChunkedGrid grid = test::makeGrid(origin, size, 8, [](glm::vec3) { return 1.0f; });
+    const LodPyramid pyramid(grid, 2);
+    const glm::vec3 low = glm::vec3(origin) - 0.5f, high = glm::vec3(origin + size) - 0.5f;
+    for (int level : {0, 1, 2}) {
+        const std::pair<std::string, LodLayout> layouts[] = {
+            {"uniform", LodLayout::uniform(grid.layout(), level)},
+            {"ring", LodLayout::aroundPoint(grid.layout(), glm::vec3(origin), level)},
+        };
+        for (const auto& [name, layout] : layouts) {
+            const std::string what = name + " level " + std::to_string(level);
+            const Mesh mesh = meshLod(pyramid, layout, MeshOptions{});
+            ASSERT_GT(mesh.triangles.size(), 0u) << what;
+            glm::vec3 lo(INFINITY), hi(-INFINITY);
+            for (const glm::vec3& p : mesh.positions) {
+                lo = glm::min(lo, p);
+                hi = glm::max(hi, p);
+            }
+            // Never outside the box; inside it by less than a level-`level` cell (where the coarse
+            // lattice's last point inside falls short of the border); exactly on it at level 0.
+            const float cell = float(1 << level);
+            EXPECT_TRUE(glm::all(glm::greaterThanEqual(lo, low)) && glm::all(glm::lessThan(lo, low + cell))) << what;
+            EXPECT_TRUE(glm::all(glm::lessThanEqual(hi, high)) && glm::all(glm::greaterThan(hi, high - cell))) << what;
+            if (level == 0) EXPECT_TRUE(lo == low && hi == high) << what;
+            expectCrackFree(mesh, what);
+        }
+    }
+}
+
 // L3 on random balanced layouts of levels 0-2 over noise (every neighbourhood of levels).
 TEST(mesh_Lod, randomBalancedLayoutsAreCrackFree) {
     const ChunkedGrid grid = noiseGrid({-3, 5, 2}, {40, 36, 44}, 8, 11);

@@ -257,13 +257,23 @@ private:
 
 // The vertex on the level-`level` lattice edge from `lower` along `axis`: MarchingCubes.cpp's
 // edgeVertex with the edge 2^level long.
-EdgeVertex edgeVertex(const LodSamples& samples, const KeySpace& keys, glm::ivec3 lower, int axis, int level, float iso, float margin) {
+//
+// At a coarser level an edge that leaves the grid spans up to 2^level - 1 voxels of the air outside,
+// so its crossing would put the world's wall up to that far beyond level 0's (which lies within half
+// a voxel of the last voxel for densities in [0, 1]): the vertex is clamped, along its edge, to the
+// world's box [origin - 0.5, origin + size - 0.5]. The edge's inside sample lies within that box and
+// its outside one beyond it, so the vertex stays inside its edge.
+EdgeVertex edgeVertex(const LodSamples& samples, const KeySpace& keys, const ChunkLayout& grid, glm::ivec3 lower, int axis,
+                      int level, float iso, float margin) {
     const int length = 1 << level;
     const glm::ivec3 upper = lower + axisStep(axis, length);
     const float d0 = samples.at(lower), d1 = samples.at(upper);
     const float t = marching_cubes::crossing(d0, d1, iso, margin);
     glm::vec3 position(lower);
     position[axis] += t * float(length);
+    if (level > 0)
+        position[axis] = std::clamp(position[axis], float(grid.gridOrigin[axis]) - 0.5f,
+                                    float(grid.gridOrigin[axis] + grid.gridSize[axis]) - 0.5f);
     const glm::vec3 gradient = (1.0f - t) * samples.gradient(lower, length) + t * samples.gradient(upper, length);
     const float norm = glm::length(gradient);
     glm::vec3 normal;
@@ -378,7 +388,7 @@ public:
                     const uint64_t cellKey = keys_.point(cell);
                     const uint8_t material = majorityMaterial(samples, points, solid, pointWorld);
                     auto vertexOf = [&](glm::ivec3 lower, int axis, int level) {
-                        const EdgeVertex v = edgeVertex(samples, keys_, lower, axis, level, iso_, margin_);
+                        const EdgeVertex v = edgeVertex(samples, keys_, pyramid_.lod0().layout(), lower, axis, level, iso_, margin_);
                         out.vertices.push_back(v);
                         return v;
                     };

@@ -17,6 +17,9 @@
 //   every thread order, and a layout of only level 0 gives meshMarchingCubes' mesh byte for byte.
 //   Positions and normals follow MarchingCubes.h with the edge's length 2^k in place of 1 (the
 //   crossing margin is the same fraction of the edge; the normal's central differences span 2^k).
+//   At levels >= 1 a vertex on an edge leaving the grid is clamped along its edge to the world's box
+//   [origin - 1/2, origin + size - 1/2], where level 0's border walls lie, so coarse walls never stand
+//   outside it (unclamped they would by up to 2^k - 1/2 voxels).
 // - Ramp width: linear interpolation on a level-k edge is exact for a plane only when both samples
 //   lie on the density ramp, i.e. a ramp of width w >= 2^(k+1) (density(sdf, w)); with w = 1 the
 //   coarse samples are almost all clamped to 0 or 1 and coarse vertices fall near edge midpoints.
