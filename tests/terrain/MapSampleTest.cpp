@@ -1,10 +1,12 @@
 // Sampling a terrain's map from fields (voxc/program/SampledMap.h): the bilinear rule on maps
 // whose values are known, the range rule against brute force, and the checker's reading of
-// NAME(wx, wz) (located errors, the node it builds, column hoisting).
+// NAME(wx, wz) (located errors, the node it builds, column hoisting; the heights come with the
+// run's solve, never the check).
 #include "voxc/check/Check.h"
 #include "voxc/ir/Lower.h"
 #include "voxc/program/SampledMap.h"
 #include "voxc/stages/Pipeline.h"
+#include "voxc/stages/Solve.h"
 
 #include <gtest/gtest.h>
 
@@ -89,13 +91,23 @@ pipeline { start; set ground; }
 )");
     ASSERT_TRUE(result.program) << result.rendered();
     EXPECT_TRUE(result.diagnostics.empty()) << result.rendered(); // sampled: the terrain counts as used
-    const Program& program = *result.program;
-    const Field& field = program.fields.at(0);
-    const auto map = std::find_if(field.nodes.begin(), field.nodes.end(),
-                                  [](const FieldNode& n) { return n.kind == FieldNode::Kind::Map; });
-    ASSERT_NE(map, field.nodes.end());
-    EXPECT_EQ(map->map->name, "hills");
+    const auto mapNode = [](const Program& p) {
+        const Field& field = p.fields.at(0);
+        return std::find_if(field.nodes.begin(), field.nodes.end(),
+                            [](const FieldNode& n) { return n.kind == FieldNode::Kind::Map; });
+    };
+    const auto declared = mapNode(*result.program);
+    ASSERT_NE(declared, result.program->fields.at(0).nodes.end());
+    EXPECT_EQ(declared->map->name, "hills");
+    EXPECT_EQ(declared->map->side, 16);
+    EXPECT_TRUE(declared->map->height.empty()); // the check generates nothing
+    // Unsolved, the map bounds nothing: a chunk's range is unknown rather than made up.
+    EXPECT_EQ(mapRange(*declared->map, 0, 1, 0, 1).hi, std::numeric_limits<double>::infinity());
+    Program program = *result.program;
+    stages::solveBlocks(program);
+    const auto map = mapNode(program);
     EXPECT_EQ(map->map->side, 16);
+    EXPECT_EQ(map->map->height.size(), 16u * 16u);
     const ir::IrModule module = ir::lowerProgram(program, {});
     const ir::IrField& lowered = module.fields.at(0);
     for (size_t i = 0; i < lowered.nodes.size(); ++i)

@@ -187,7 +187,6 @@ CheckResult checkSource(const SourceFile& source, const CheckOptions& options) {
         if (!diagnostics.hasErrors()) {
             check::Context context{diagnostics, options.limits, check::Constants(diagnostics, options.constOverrides), {}};
             context.seed = options.seed;
-            context.erosionRunner = options.erosionRunner;
             context.region = options.region;
             context.readRuleFile = options.readRuleFile;
             std::vector<CheckedLsystem> lsystems;

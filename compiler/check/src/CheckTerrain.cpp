@@ -1,13 +1,14 @@
-// The `terrain` block: keys and ranges with located errors here, then the terrain generator
-// (terrain::generateTerrain), whose own checks (unstable erosion, bounds on work) are located at
-// the block; its height map is voxelised into a SolveTable that the curves stage kind combines.
+// The `terrain` block: keys and ranges with located errors here, then the generator's own checks
+// (terrain::validateTerrain: unstable erosion, bounds on work), located at the block. The block is
+// kept as a terrain::TerrainBlock; a run generates and voxelises it (stages::solveBlocks) into a
+// SolveTable that the curves stage kind combines, so checking a file never generates a map.
 #include "CheckTerrain.h"
 
 #include "Materials.h"
 #include "Suggest.h"
 #include "Values.h"
 
-#include "voxc/generators/terrain/Terrain.h"
+#include "voxc/generators/terrain/Block.h"
 
 #include <fmt/format.h>
 
@@ -34,14 +35,7 @@ constexpr std::string_view kSplineKeys[] = {"points",          "levels",    "rad
 constexpr std::string_view kMetaKeys[] = {"at",        "radius",   "left",     "right", "hardness", "noise_amplitude",
                                           "roughness", "warp_low", "warp_high", "rain", "capacity"};
 
-// What a block asks for besides the generator's map.
-struct TerrainBlock {
-    terrain::TerrainMap map;
-    std::optional<terrain::ErosionSettings> erosion;
-    double base = 0.0, ramp = 2.0;
-    std::optional<uint8_t> material, depositMaterial;
-    double depositThreshold = 0.5;
-};
+using terrain::TerrainBlock;
 
 void number(Context& context, const BlockKeys& keys, std::string_view key, double lo, double hi, double& out, bool& ok) {
     if (const ast::Assignment* a = keys.find(key)) {
@@ -305,77 +299,10 @@ std::optional<TerrainBlock> readTerrain(Context& context, const ast::Block& bloc
         } else if (ok && expr->name != "none") {
             out.erosion = shiftedPreset(expr->name, domain.minLevel, domain.maxLevel, stepsScale);
             out.erosion->params.seed = world.seed;
-            out.erosion->runner = context.erosionRunner;
         }
     }
     if (!ok) return std::nullopt;
     return out;
-}
-
-// A map of the finest level at world (wx, wz): bilinear between its cell centres, clamped at the edges.
-double sample(const terrain::Field2& map, const terrain::Domain& domain, double wx, double wz) {
-    const double cell = domain.cellSize(domain.maxLevel);
-    const double u = (wx - domain.origin.x) / cell - 0.5, v = (wz - domain.origin.y) / cell - 0.5;
-    const double fu = std::floor(std::clamp(u, -1.0, double(map.width))), fv = std::floor(std::clamp(v, -1.0, double(map.height)));
-    const int32_t i = int32_t(fu), j = int32_t(fv);
-    const double tu = std::clamp(u - fu, 0.0, 1.0), tv = std::clamp(v - fv, 0.0, 1.0);
-    const double top = map.clamped(i, j) * (1 - tu) + map.clamped(i + 1, j) * tu;
-    const double bottom = map.clamped(i, j + 1) * (1 - tu) + map.clamped(i + 1, j + 1) * tu;
-    return top * (1 - tv) + bottom * tv;
-}
-
-// The height map as densities over the whole grid: (H - y) / ramp + 0.5 clamped to [0, 1], so
-// the 0.5 surface lies at the height; materials where solid (the deposit material where erosion
-// raised the ground by more than the threshold).
-SolveTable voxelise(const TerrainBlock& block, const terrain::TerrainResult& result, const World& world) {
-    SolveTable table;
-    table.min = glm::ivec3(0);
-    table.size = world.size;
-    table.density.resize(size_t(table.cellCount()));
-    const bool materials = block.material || block.depositMaterial;
-    if (materials) table.material.resize(table.density.size(), kMaterialNone);
-    const terrain::Domain& domain = block.map.domain;
-    size_t at = 0;
-    for (int32_t z = 0; z < world.size.z; ++z)
-        for (int32_t y = 0; y < world.size.y; ++y)
-            for (int32_t x = 0; x < world.size.x; ++x, ++at) {
-                const double wx = world.origin.x + x, wy = world.origin.y + y, wz = world.origin.z + z;
-                const double height = block.base + sample(result.height, domain, wx, wz) * domain.maxHeight;
-                const float density = float(std::clamp((height - wy) / block.ramp + 0.5, 0.0, 1.0));
-                table.density[at] = density;
-                if (!materials || density < 0.5f) continue;
-                const double raised = sample(result.difference, domain, wx, wz) * domain.maxHeight;
-                if (block.depositMaterial && raised > block.depositThreshold)
-                    table.material[at] = *block.depositMaterial;
-                else if (block.material)
-                    table.material[at] = *block.material;
-            }
-    table.source = "terrain";
-    table.terrainMaps = std::make_shared<const TerrainMaps>(
-        TerrainMaps{result.height.width, result.height.values, result.water.values, result.sediment.values, result.difference.values});
-    table.notes = fmt::format("levels {}..{} ({}^2 cells), {} erosion steps ({} cell-steps), water {:.4g}, sediment "
-                              "{:.4g}, ground moved {:.4g} (sums over the finest level, in units of max_height)",
-                              domain.minLevel, domain.maxLevel, result.height.width, result.erosionSteps,
-                              result.erosionCellSteps, result.totalWater, result.totalSediment,
-                              result.totalDifference);
-    return table;
-}
-
-// The finest level's height in world voxels, as fields sample it (NAME(wx, wz)).
-std::shared_ptr<const SampledMap> sampledMap(const std::string& name, const TerrainBlock& block,
-                                             const terrain::TerrainResult& result) {
-    const terrain::Domain& domain = block.map.domain;
-    auto map = std::make_shared<SampledMap>();
-    map->name = name;
-    map->side = result.height.width;
-    map->originX = float(domain.origin.x);
-    map->originZ = float(domain.origin.y);
-    map->cellsPerVoxel = float(1.0 / domain.cellSize(domain.maxLevel));
-    map->height.reserve(result.height.values.size());
-    for (float h : result.height.values) map->height.push_back(float(block.base + double(h) * domain.maxHeight));
-    const auto [lowest, highest] = std::minmax_element(map->height.begin(), map->height.end());
-    map->lowest = *lowest, map->highest = *highest;
-    return map;
 }
 
 } // namespace
@@ -417,10 +344,19 @@ std::vector<CurvesBlock> checkTerrains(Context& context, const ast::File& file, 
         }
         if (std::optional<TerrainBlock> terrainBlock = readTerrain(context, block, world)) {
             try {
-                const terrain::TerrainResult result = terrain::generateTerrain(terrainBlock->map, terrainBlock->erosion, limits);
-                out = solvedBlock(*block.label, block.loc,
-                                  std::make_shared<const SolveTable>(voxelise(*terrainBlock, result, world)));
-                context.maps[*block.label] = sampledMap(*block.label, *terrainBlock, result);
+                terrain::validateTerrain(terrainBlock->map, terrainBlock->erosion, limits);
+                terrainBlock->name = *block.label;
+                terrainBlock->worldOrigin = world.origin;
+                terrainBlock->worldSize = world.size;
+                terrainBlock->limits = limits;
+                out.size = world.size;
+                for (const std::optional<uint8_t>& material : {terrainBlock->material, terrainBlock->depositMaterial})
+                    if (material) out.materials.push_back(*material);
+                out.writesMaterials = !out.materials.empty();
+                std::sort(out.materials.begin(), out.materials.end());
+                out.materials.erase(std::unique(out.materials.begin(), out.materials.end()), out.materials.end());
+                context.maps[*block.label] = terrain::declaredMap(*terrainBlock);
+                out.terrain = std::make_shared<const TerrainBlock>(std::move(*terrainBlock));
                 cellBudget -= cells;
             } catch (const terrain::LimitError& e) {
                 context.diagnostics.error("E0012", block.labelLoc, fmt::format("terrain '{}': {}", *block.label, e.what()));

@@ -2,7 +2,6 @@
 // State shared by the checker's passes over one file.
 #include "Constants.h"
 #include "Materials.h"
-#include "voxc/generators/terrain/Terrain.h"
 
 #include "voxc/program/Program.h"
 #include "voxc/syntax/Diagnostics.h"
@@ -22,10 +21,10 @@ struct Context {
     MaterialNames materials; // filled by checkMaterials before any other block is checked
     std::vector<std::string> curvesNames{}; // the solve blocks (curves, then terrain), declaration order, for the pipeline
     std::vector<std::string> curvesKinds{}; // per solve block: "curves" or "terrain", for messages
-    // Each terrain block's height map, which fields sample as NAME(wx, wz); null for a block with
-    // errors (reported), so its uses report nothing more.
+    // Each terrain block's height map, which fields sample as NAME(wx, wz), as declared (its heights
+    // come with the run's solve, stages::solveBlocks); null for a block with errors (reported), so
+    // its uses report nothing more.
     std::map<std::string, std::shared_ptr<const SampledMap>, std::less<>> maps{};
-    terrain::ErosionRunner erosionRunner{}; // CheckOptions::erosionRunner
     // List entries of the lsystem_cave point sets checked so far: the runtime bounds their sum.
     uint64_t pointSetListEntries = 0;
     std::optional<uint32_t> seed{}; // CheckOptions::seed

@@ -1,5 +1,7 @@
 #include "voxc/codegen/SampledMaps.h"
 
+#include "voxc/core/Errors.h"
+
 #include <algorithm>
 
 namespace voxc::codegen {
@@ -14,6 +16,8 @@ std::vector<std::shared_ptr<const SampledMap>> mapsOf(const ir::IrModule& module
 }
 
 std::shared_ptr<const SolveTable> mapTable(const SampledMap& map) {
+    if (map.height.empty())
+        throw InternalError("the terrain '" + map.name + "' was not solved before its map was uploaded");
     auto table = std::make_shared<SolveTable>();
     table->size = {map.side, 1, map.side};
     table->density = map.height;

@@ -46,7 +46,6 @@ Program loadProgram(const std::string& path, const WorldOverrides& overrides, bo
         options.limits.maxWork = *overrides.maxWork >= 9.2e18 ? INT64_MAX : int64_t(*overrides.maxWork);
     options.seed = overrides.seed;
     options.region = overrides.region;
-    options.erosionRunner = overrides.erosionRunner;
     const auto start = std::chrono::steady_clock::now();
     CheckResult result = checkFile(path, options);
     const std::chrono::duration<double, std::milli> checkTime = std::chrono::steady_clock::now() - start;

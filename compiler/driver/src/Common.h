@@ -3,6 +3,7 @@
 // flags that override the file's world settings.
 #include "voxc/check/Check.h"
 #include "voxc/generators/curves/Solvers.h"
+#include "voxc/generators/terrain/Terrain.h"
 #include "voxc/grid/Grid.h"
 #include "voxc/program/Program.h"
 
@@ -19,7 +20,7 @@ struct WorldOverrides {
     std::optional<double> maxWork; // replaces Limits::maxWork (--max-work; `1e12` is accepted)
     std::optional<std::pair<glm::ivec3, glm::ivec3>> region; // CheckOptions::region (--region, world voxels)
     curves::Solvers curvesSolver; // stages::SolveOptions::solvers of the run (run --solve-on); empty members: the host
-    terrain::ErosionRunner erosionRunner; // CheckOptions::erosionRunner (run --solve-on); empty: the host
+    terrain::ErosionRunner erosionRunner; // stages::SolveOptions::erosionRunner (run --solve-on); empty: the host
     bool keepSolveChannels = false;    // stages::SolveOptions::keepChannels of the run (--dump)
 };
 

@@ -12,6 +12,7 @@
 #include "voxc/stages/Pipeline.h"
 #include "voxc/stages/Solve.h"
 #include "voxc/codegen/CompileCache.h"
+#include "voxc/stages/SolveCache.h"
 #include "voxc/core/Errors.h"
 #include "voxc/grid/Grid.h"
 #include "voxc/mesh/Export.h"
@@ -113,9 +114,9 @@ void run(const RunOptions& options) {
     const auto since = [](std::chrono::steady_clock::time_point start) {
         return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     };
-    double deviceMs = 0.0; // the device may be opened inside the check (terrain erosion), the solve or after them
+    double deviceMs = 0.0; // the device may be opened inside the solve (multigrid, erosion) or after it
 
-    // Curves blocks are solved before the plan (terrain blocks by the check): their multigrid runs on
+    // Curves and terrain blocks are solved before the plan: their multigrid and erosion steps run on
     // the device, made then, unless it is a CPU device, where the host's loops are faster
     // (docs/curves.md, "What runs where").
     std::optional<VulkanContext> device;
@@ -150,11 +151,14 @@ void run(const RunOptions& options) {
         };
     const auto checkStart = std::chrono::steady_clock::now();
     Program checked = loadProgram(options.file, withRegion(overrides, options.region));
-    times.add("check", since(checkStart) - deviceMs, "parse, check, terrain blocks");
-    const double checkDeviceMs = deviceMs;
+    times.add("check", since(checkStart), "parse, check");
     const auto solveStart = std::chrono::steady_clock::now();
-    stages::solveBlocks(checked, {overrides.curvesSolver, overrides.keepSolveChannels});
-    times.add("solve", since(solveStart) - (deviceMs - checkDeviceMs), "curves blocks");
+    const stages::SolveCacheCounts solvesBefore = stages::solveCacheCounts();
+    stages::solveBlocks(checked, {overrides.curvesSolver, overrides.keepSolveChannels, overrides.erosionRunner});
+    const stages::SolveCacheCounts solvesAfter = stages::solveCacheCounts();
+    times.add("solve", since(solveStart) - deviceMs,
+              fmt::format("curves and terrain blocks: {} solved, {} from the cache{}", solvesAfter.solved - solvesBefore.solved,
+                          solvesAfter.hits - solvesBefore.hits, cache ? "" : " (--no-cache)"));
     const std::optional<StageCut> cut = selectStage(checked, options.stages);
     // --diff compares with the pipeline cut before the stage (all air and `none` before the first).
     std::optional<Program> before;

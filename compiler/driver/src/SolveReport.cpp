@@ -15,8 +15,8 @@ std::string formatSolveReport(const Program& program, bool perCycle, const std::
         if (stage.kind != Stage::Kind::Curves) continue;
         const CurvesBlock& block = program.curves.at(stage.index);
         const SolveTable& table = block.solved();
-        const std::string where = table.source != "curves"    ? std::string("solved on the host when checked")
-                                  : passDevice.empty() ? std::string("solved on the host")
+        // A terrain's cascade runs on the host; where its erosion steps ran is a line of its own.
+        const std::string where = table.source != "curves" || passDevice.empty() ? std::string("solved on the host")
                                                             : fmt::format("solved, its global passes on '{}'", passDevice);
         out += fmt::format("{} '{}' ({}x{}x{} cells, {}):", table.source, block.name, table.size.x, table.size.y,
                            table.size.z, where);

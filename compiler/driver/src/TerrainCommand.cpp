@@ -10,6 +10,7 @@
 #include "voxc/core/AtomicWrite.h"
 #include "voxc/core/Errors.h"
 #include "voxc/generators/terrain/Output.h"
+#include "voxc/stages/Solve.h"
 
 #include <fmt/format.h>
 #include <iostream>
@@ -44,18 +45,22 @@ void runTerrain(const TerrainOptions& options) {
                                 {"--difference", options.differencePath}};
     refuseClashingPaths(inputs, outputs);
 
-    const Program program = loadProgram(options.file, WorldOverrides{});
+    Program program = loadProgram(options.file, WorldOverrides{});
     const CurvesBlock* block = nullptr;
     std::string names;
     for (const CurvesBlock& candidate : program.curves) {
-        if (!candidate.table || candidate.table->source != "terrain") continue;
+        if (!candidate.terrain) continue;
         if (candidate.name == options.name) block = &candidate;
         names += fmt::format("{}{}", names.empty() ? "" : ", ", candidate.name);
     }
     if (!block)
         throw UserError(fmt::format("{}: no terrain named '{}' ({})", options.file, options.name,
                                     names.empty() ? "the file declares none" : "it declares: " + names));
-    const SolveTable& table = *block->table;
+    // Only the named block is generated: the others are left unsolved.
+    Program named = program;
+    std::erase_if(named.curves, [&](const CurvesBlock& other) { return other.name != block->name; });
+    stages::solveBlocks(named);
+    const SolveTable& table = named.curves.at(0).solved();
     std::cout << fmt::format("terrain '{}': {}\n", block->name, table.notes);
     const TerrainMaps& maps = *table.terrainMaps;
     OutputFiles files;

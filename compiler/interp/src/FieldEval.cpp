@@ -20,6 +20,9 @@ FieldEvaluator::FieldEvaluator(const Field& field, glm::ivec3 origin, glm::ivec3
             VOXC_ASSERT(node.function < functions().size());
             functions_[i] = &functions()[node.function];
         }
+        // A map's heights come with the run's solve (stages::solveBlocks), never with the check.
+        if (node.kind == FieldNode::Kind::Map && node.map->height.empty())
+            throw InternalError("the terrain '" + node.map->name + "' was not solved before a field sampled it");
     }
     arguments_.reserve(maxOperands);
 }

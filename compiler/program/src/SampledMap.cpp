@@ -33,6 +33,7 @@ float sampleMap(const SampledMap& map, float wx, float wz) {
 }
 
 MapRange mapRange(const SampledMap& map, double wxLo, double wxHi, double wzLo, double wzHi) {
+    if (map.height.empty()) return {-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
     // The cells a coordinate range reads (the float rounding of u moves it by far less than a cell).
     const auto cells = [&](double lo, double hi, double origin) {
         const double last = double(map.side - 1);

@@ -2,7 +2,6 @@
 
 #include "voxc/core/Errors.h"
 
-#include <algorithm>
 #include <bit>
 
 namespace voxc {
@@ -11,15 +10,6 @@ const SolveTable& CurvesBlock::solved() const {
     if (!table) throw InternalError("the " + source + " block '" + name + "' was not solved before its table was read "
                                     "(stages::solveBlocks)");
     return *table;
-}
-
-CurvesBlock solvedBlock(std::string name, SourceLoc loc, std::shared_ptr<const SolveTable> table) {
-    CurvesBlock block{std::move(name), loc, table->source, table->min, table->size, !table->material.empty(), {}, nullptr,
-                      table};
-    block.materials.assign(table->material.begin(), table->material.end());
-    std::sort(block.materials.begin(), block.materials.end());
-    block.materials.erase(std::unique(block.materials.begin(), block.materials.end()), block.materials.end());
-    return block;
 }
 
 std::vector<int32_t> solveTableWords(const std::vector<std::shared_ptr<const SolveTable>>& tables) {

@@ -2,7 +2,10 @@
 
 #include "voxc/core/Errors.h"
 #include "voxc/generators/curves/Scene.h"
+#include "voxc/generators/terrain/Block.h"
+#include "voxc/codegen/CompileCache.h"
 #include "voxc/stages/Region.h"
+#include "voxc/stages/SolveCache.h"
 
 #include <algorithm>
 #include <fmt/format.h>
@@ -10,30 +13,74 @@
 
 namespace voxc::stages {
 
+namespace {
+
+UserError solveError(const Program& program, const CurvesBlock& block, const char* what, const std::string& why) {
+    return UserError(fmt::format("{}:{}:{}: {} '{}' did not solve: {}", program.sourcePath, block.loc.line,
+                                 block.loc.column, what, block.name, why));
+}
+
+// Every field node that samples the terrain `name` reads `map` from now on.
+void replaceMap(Program& program, const std::string& name, const std::shared_ptr<const SampledMap>& map) {
+    for (Field& field : program.fields)
+        for (FieldNode& node : field.nodes)
+            if (node.kind == FieldNode::Kind::Map && node.map->name == name) node.map = map;
+}
+
+// The block's table over its whole box: from the solve cache when it holds it, else solved (and
+// kept there). Channels are never kept, so a run that asks for them solves.
+SolveTable solveWhole(const Program& program, const CurvesBlock& block, const SolveOptions& options) {
+    const std::optional<std::filesystem::path> directory =
+        options.keepChannels ? std::nullopt : codegen::compileCacheDirectory();
+    const curves::Solvers& s = options.solvers;
+    const bool onDevice = s.linear || s.peronaMalik || s.smoothing || s.material || s.surface || s.displacement;
+    const std::string key = directory ? solveKey(block, onDevice) : std::string();
+    bool corrupted = false;
+    if (directory)
+        if (std::optional<SolveTable> kept = readSolve(*directory, key, corrupted)) {
+            countSolve(true, false);
+            return std::move(*kept);
+        }
+    SolveTable table;
+    if (block.scene) {
+        try {
+            table = curves::solveScene(*block.scene, curves::Limits{}, options.solvers, options.keepChannels);
+        } catch (const curves::ConvergenceError& e) {
+            throw solveError(program, block, "curves", e.what());
+        }
+    } else {
+        try {
+            table = terrain::solveTerrain(*block.terrain, options.erosionRunner).table;
+        } catch (const terrain::LimitError& e) {
+            throw solveError(program, block, "terrain", e.what());
+        }
+    }
+    countSolve(false, corrupted);
+    if (directory) writeSolve(*directory, key, table);
+    return table;
+}
+
+} // namespace
+
 void solveBlocks(Program& program, const SolveOptions& options) {
-    const curves::Limits limits;
     const GridBox grid{program.world.localBase, program.world.localBase + program.world.size};
     for (CurvesBlock& block : program.curves) {
-        if (block.table || !block.scene) continue;
-        try {
-            SolveTable table = curves::solveScene(*block.scene, limits, options.solvers, options.keepChannels);
-            const bool inside = glm::all(glm::lessThanEqual(grid.min, table.min)) &&
-                                glm::all(glm::lessThanEqual(table.min + table.size, grid.max));
-            if (inside) {
-                table.min -= grid.min;
-                block.table = std::make_shared<const SolveTable>(std::move(table));
-            } else {
-                block.table = regionTable(table, grid);
-            }
-        } catch (const curves::ConvergenceError& e) {
-            throw UserError(fmt::format("{}:{}:{}: curves '{}' did not solve: {}", program.sourcePath, block.loc.line,
-                                        block.loc.column, block.name, e.what()));
+        if (block.table || (!block.scene && !block.terrain)) continue;
+        SolveTable table = solveWhole(program, block, options);
+        if (block.terrain) replaceMap(program, block.name, terrain::solvedMap(*block.terrain, *table.terrainMaps));
+        const bool inside = glm::all(glm::lessThanEqual(grid.min, table.min)) &&
+                            glm::all(glm::lessThanEqual(table.min + table.size, grid.max));
+        if (inside) {
+            table.min -= grid.min;
+            block.table = std::make_shared<const SolveTable>(std::move(table));
+        } else {
+            block.table = regionTable(table, grid);
         }
     }
 }
 
 const Program& solvedProgram(const Program& program, std::optional<Program>& scratch) {
-    const auto unsolved = [](const CurvesBlock& block) { return !block.table && block.scene; };
+    const auto unsolved = [](const CurvesBlock& block) { return !block.table && (block.scene || block.terrain); };
     if (std::none_of(program.curves.begin(), program.curves.end(), unsolved)) return program;
     solveBlocks(scratch.emplace(program));
     return *scratch;

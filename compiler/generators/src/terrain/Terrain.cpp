@@ -119,9 +119,13 @@ private:
 
 } // namespace
 
-TerrainResult generateTerrain(const TerrainMap& map, const std::optional<ErosionSettings>& erosion, const Limits& limits) {
+void validateTerrain(const TerrainMap& map, const std::optional<ErosionSettings>& erosion, const Limits& limits) {
     validateMap(map, limits);
     if (erosion) checkErosion(map, *erosion, limits);
+}
+
+TerrainResult generateTerrain(const TerrainMap& map, const std::optional<ErosionSettings>& erosion, const Limits& limits) {
+    validateTerrain(map, erosion, limits);
     TerrainResult result;
     std::optional<ErosionRun> run;
     if (erosion) run.emplace(map, *erosion, result);

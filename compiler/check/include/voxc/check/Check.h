@@ -7,7 +7,6 @@
 // (W0201-W0209).
 #include "voxc/generators/lsystem/Connect.h"
 #include "voxc/generators/lsystem/Definition.h"
-#include "voxc/generators/terrain/Terrain.h"
 #include "voxc/program/Program.h"
 #include "voxc/syntax/Diagnostics.h"
 #include "voxc/syntax/SourceFile.h"
@@ -62,11 +61,8 @@ struct CheckOptions {
     // declaration. `voxc explore` sweeps a constant this way.
     std::map<std::string, double, std::less<>> constOverrides;
     // Replaces the world's seed before anything reads it (`--seed`), so the features, carves and
-    // solves made while checking draw from it too, as if the file said `seed = S;`.
+    // the solves of the run draw from it too, as if the file said `seed = S;`.
     std::optional<uint32_t> seed{};
-    // Where terrain blocks run their erosion steps: empty, the host's loop; `voxc run --solve-on`
-    // passes the same steps on its Vulkan device (voxc/vulkan/GpuErosion.h).
-    terrain::ErosionRunner erosionRunner{};
     // `--region`: the box of the world (world voxels, min and max with max excluded) a run will
     // compute. The world may then exceed Limits::maxVoxels: what must fit is the box grown by the
     // pipeline's halo (voxc/stages/Region.h), clipped to the world (E0014 otherwise), and the work

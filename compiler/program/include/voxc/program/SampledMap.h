@@ -18,7 +18,8 @@ struct SampledMap {
     float originX = 0.0f;      // world x, z of the corner of cell (0, 0)
     float originZ = 0.0f;
     float cellsPerVoxel = 1.0f; // 1 / cell size
-    // World y of the ground at each cell centre, x fastest, then z (side * side values).
+    // World y of the ground at each cell centre, x fastest, then z (side * side values); empty in
+    // the map the check makes, which a run's solve replaces (stages::solveBlocks).
     std::vector<float> height;
     float lowest = 0.0f, highest = 0.0f; // min and max of `height`
 
@@ -33,7 +34,8 @@ float sampleMap(const SampledMap& map, float wx, float wz);
 
 // Bounds of sampleMap over wx in [wxLo, wxHi], wz in [wzLo, wzHi] (lo <= hi, maybe infinite):
 // the lowest and highest height of the cells those coordinates read (of the whole map when that
-// box is large), widened by the relative rounding of the weighted sum.
+// box is large), widened by the relative rounding of the weighted sum; unbounded for a map not
+// solved yet (no heights).
 struct MapRange {
     double lo, hi;
 };

@@ -1,7 +1,7 @@
 #pragma once
 // The result of a global solve (a `curves` or `terrain` block, docs/curves.md): a density, and
-// optionally a material id, per voxel of a box of the grid, computed once per run (a terrain
-// block's when the file is checked). The interpreter combines it with the grid directly; generated
+// optionally a material id, per voxel of a box of the grid, computed once per run
+// (stages::solveBlocks), never by the check. The interpreter combines it with the grid directly; generated
 // kernels read the same values through kBindingSolveTables (solveTableWords), so both backends
 // combine the same floats.
 #include "voxc/core/SourceLoc.h"
@@ -17,6 +17,9 @@ namespace voxc {
 
 namespace curves {
 struct Scene; // voxc/generators/curves/Scene.h
+}
+namespace terrain {
+struct TerrainBlock; // voxc/generators/terrain/Block.h
 }
 
 // A multigrid level's cells per axis and its max residual (in finest-cell units, docs/curves.md)
@@ -70,8 +73,8 @@ struct SolveTable {
 };
 
 // A declared `curves` or `terrain` block. The check knows its box and whether it writes materials;
-// a terrain block's table is made by the check, a curves block's only by a run
-// (stages::solveBlocks, from `scene`), so checking a file never runs a curves solve.
+// its table is made only by a run (stages::solveBlocks, from `scene` or `terrain`), so checking a
+// file never runs a solve.
 struct CurvesBlock {
     std::string name;
     SourceLoc loc;
@@ -80,15 +83,13 @@ struct CurvesBlock {
     bool writesMaterials = false;  // the table has a material channel
     std::vector<uint8_t> materials; // the ids it may write, ascending (W0208: which materials are used)
     std::shared_ptr<const curves::Scene> scene; // curves blocks: the checked, voxelised scene
-    std::shared_ptr<const SolveTable> table;    // null until solved (curves: stages::solveBlocks)
+    std::shared_ptr<const SolveTable> table;    // null until solved (stages::solveBlocks)
+    std::shared_ptr<const terrain::TerrainBlock> terrain; // terrain blocks: the checked block
 
     // The table; InternalError when no run solved the block.
     const SolveTable& solved() const;
     uint64_t cellCount() const { return uint64_t(size.x) * uint64_t(size.y) * uint64_t(size.z); }
 };
-
-// A block whose table is already made (terrain: by the check), its facts read from the table.
-CurvesBlock solvedBlock(std::string name, SourceLoc loc, std::shared_ptr<const SolveTable> table);
 
 // The words of kBindingSolveTables: word 0 the table count n, words 1..n each table's first
 // word; a table is min (3 ints), size (3 ints), then its densities (float bits), then its

@@ -1,9 +1,12 @@
 #pragma once
-// The run-time half of the pipeline's global solves (docs/curves.md, "The stage"): the check keeps
-// each curves block's voxelised scene (CurvesBlock::scene); a run solves it here, once, before the
-// stage plan is built or interpreted, and every consumer of the table (the curves stage kind's plan
-// and interpretation, the solve report, --dump, regions) reads it from the block afterwards.
+// The run-time half of the pipeline's global solves (docs/curves.md, "The stage"; docs/terrain.md):
+// the check keeps each curves block's voxelised scene (CurvesBlock::scene) and each terrain
+// block's checked settings (CurvesBlock::terrain); a run solves them here, once, before the stage
+// plan is built or interpreted, and every consumer of the table (the curves stage kind's plan and
+// interpretation, the solve report, --dump, regions, `voxc terrain`) and of a terrain's height map
+// (fields that sample it) reads it from the program afterwards.
 #include "voxc/generators/curves/Solvers.h"
+#include "voxc/generators/terrain/Terrain.h"
 #include "voxc/program/Program.h"
 
 #include <optional>
@@ -11,14 +14,17 @@
 namespace voxc::stages {
 
 struct SolveOptions {
-    curves::Solvers solvers;   // where the global passes run: empty members, the host's loops
+    curves::Solvers solvers{}; // where the curves' global passes run: empty members, the host's loops
     bool keepChannels = false; // keep the solve's channels in the table (SolveTable::channels, --dump)
+    terrain::ErosionRunner erosionRunner{}; // where terrain erosion steps run: empty, the host's loop
 };
 
-// Solves every curves block of `program` that has no table yet, in declaration order, over its
-// whole declared box (curves::solveScene), and keeps the cells inside the program's grid (a region
-// program's: World::localBase), so a region computes what the whole world computes there. A solve
-// that fails (a multigrid past its cycle cap) is a UserError located at its block.
+// Solves every curves and terrain block of `program` that has no table yet, in declaration order,
+// over its whole declared box (curves::solveScene; a terrain over the checked world,
+// terrain::solveTerrain), and keeps the cells inside the program's grid (a region program's:
+// World::localBase), so a region computes what the whole world computes there. A terrain's solved
+// height map replaces its declared one in every field that samples it. A solve that fails (a
+// multigrid past its cycle cap, a terrain past its work limits) is a UserError located at its block.
 void solveBlocks(Program& program, const SolveOptions& options = {});
 
 // `program` when every block has its table; otherwise `scratch`, a copy whose blocks are solved

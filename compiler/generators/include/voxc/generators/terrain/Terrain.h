@@ -42,7 +42,11 @@ struct TerrainResult {
 // The Fig. 4.3 Gaussian, 5x5 / 273, clamp to edge, taps row-major.
 Field2 gaussian5(const Field2& field);
 
-// Validates everything before any work (ParameterError, LimitError).
+// What generateTerrain checks before any work (ParameterError, LimitError); the rasteriser's
+// bound on cell tests (Limits::maxRasterCells) is only known while generating.
+void validateTerrain(const TerrainMap& map, const std::optional<ErosionSettings>& erosion, const Limits& limits = {});
+
+// Validates everything before any work (validateTerrain), then generates.
 TerrainResult generateTerrain(const TerrainMap& map, const std::optional<ErosionSettings>& erosion, const Limits& limits = {});
 
 } // namespace voxc::terrain
