@@ -10,6 +10,7 @@
 // `--repetitions N` (default 3) repeats every case and records the median and the spread.
 #include "Cases.h"
 #include "CompileCases.h"
+#include "LspCases.h"
 #include "JsonReporter.h"
 #include "CarveCases.h"
 #include "SpeleothemCases.h"
@@ -207,6 +208,7 @@ int main(int argc, char** argv) {
         bench::registerTerrainSchedule(reporter, options.terrainSides, uses("host"),
                                        context && context->device().type != DeviceType::Cpu ? context.get() : nullptr);
         if (uses("host")) bench::registerCompileCases(reporter);
+        if (uses("host")) bench::registerLspLatency(reporter);
         // The meshing cases' grids come from the Vulkan pipeline, so they need the device.
         if (context) bench::registerMeshCases(reporter, *context, options.meshSizes, uses("host"), uses("vulkan"), uses("openvdb"));
         if (context) bench::registerViewFrame(reporter, *context);

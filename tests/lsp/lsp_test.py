@@ -3,14 +3,16 @@
 
 Usage: lsp_test.py VOXC SOURCE_DIR. Checks initialize, that didOpen publishes exactly the
 diagnostics `voxc check --diagnostics-format json` reports (codes, ranges, severities, the rule
-file's on the rule file's URI), didChange, hover and completion from the registries, robustness
-against malformed messages, and shutdown/exit. Prints "N passed, N failed" last.
+file's on the rule file's URI), didChange, hover, completion and definition, that a hover during a
+running check answers at once (checks run on a thread of their own), robustness against malformed
+messages, and shutdown/exit. Prints "N passed, N failed" last.
 """
 import json
 import os
 import subprocess
 import sys
 import tempfile
+import time
 
 from lsp_client import Client, check, finish, uri
 
@@ -54,6 +56,7 @@ check("request_before_initialize", client.request("textDocument/hover", {}).get(
 init = client.request("initialize", {"processId": None, "rootUri": None, "capabilities": {}})
 caps = init.get("result", {}).get("capabilities", {})
 check("initialize", caps.get("hoverProvider") is True and "completionProvider" in caps
+      and caps.get("definitionProvider") is True
       and caps.get("textDocumentSync", {}).get("change") == 1, init)
 client.notify("initialized", {})
 
@@ -105,23 +108,70 @@ client.notify("textDocument/didChange", {"textDocument": {"uri": uri(overhang), 
 check("did_change_clears", client.diagnostics_for(uri(overhang)) == [])
 
 
-# Edits typed while a slow check runs (valley.vox solves a terrain while checking) are not
-# checked one by one: only the newest waiting edit is, and what is published is its diagnostics.
+def slow_text(tag):
+    """A valid document whose check takes a while (500 noise fields, each lowered and range-checked, one
+    kernel each: the pipeline's limit is 512)."""
+    fields = "".join("field f%d = fbm(wp * %d.5, 5, 2.0, 0.5, %d) + perlin3(wp * 0.%d, 1) * %d.0 - wy;\n"
+                     % (i, i % 7 + 1, i, i + 1, i % 5 + 1) for i in range(FIELDS))
+    return "// %s\nworld { size = [32, 32, 32]; }\n%spipeline { start; %s }\n" % (
+        tag, fields, " ".join("union f%d;" % i for i in range(FIELDS)))
+
+
+FIELDS = 500
+slow = os.path.join(work, "slow.vox")
+slow_base = slow_text("base")
+
+# A hover never waits for a check: while the slow document's check runs on the checker's thread,
+# a hover in another document answers at once, before that check's diagnostics.
+client.notify("textDocument/didOpen", {"textDocument": {"uri": uri(slow), "languageId": "vox", "version": 1,
+                                                        "text": slow_base}})
+overhang_path = os.path.join(src, "examples", "overhang.vox")
+started = time.monotonic()
+hover_during = client.request("textDocument/hover", {"textDocument": {"uri": uri(overhang_path)},
+                                                     "position": {"line": 0, "character": 0}})
+hover_ms = (time.monotonic() - started) * 1000
+slow_published_before = [n for n in client.notifications if n["params"]["uri"] == uri(slow)]
+slow_first = client.diagnostics_for(uri(slow))
+check_ms = (time.monotonic() - started) * 1000
+check("hover_during_check_answers_within_500ms", "result" in hover_during and hover_ms < 500, hover_ms)
+check("hover_answered_before_the_check_finished", not slow_published_before and check_ms > hover_ms,
+      (hover_ms, check_ms, len(slow_published_before)))
+check("slow_document_is_valid", slow_first == [], slow_first[:3])
+
+# Edits typed while a slow check runs are not checked one by one: only the newest waiting text
+# is, and what is published last is its diagnostics.
+for version in range(2, 8):
+    text = slow_base + "// edit %d\n" % version + ("pipeline { nope; }\n" if version == 7 else "")
+    client.notify("textDocument/didChange", {"textDocument": {"uri": uri(slow), "version": version},
+                                             "contentChanges": [{"text": text}]})
+slow_published = []
+while not slow_published or [d.get("code") for d in slow_published[-1]] != ["E0003"]:
+    slow_published.append(client.diagnostics_for(uri(slow)))
+    if len(slow_published) > 6:
+        break
+check("waiting_edits_coalesced", 1 <= len(slow_published) <= 3, len(slow_published))
+check("newest_edit_published", [d.get("code") for d in slow_published[-1]] == ["E0003"]
+      and slow_published[-1][0]["range"]["start"]["line"] == slow_base.count("\n") + 1, slow_published[-1:])
+
+# valley.vox's check no longer generates its terrain: after an edit, completion answers at once
+# and the diagnostics follow.
 valley = os.path.join(src, "examples", "valley.vox")
 valley_text = open(valley).read()
 client.notify("textDocument/didOpen", {"textDocument": {"uri": uri(valley), "languageId": "vox", "version": 1,
                                                         "text": valley_text}})
-for version in range(2, 8):
-    text = valley_text + "// edit %d\n" % version + ("pipeline { nope; }\n" if version == 7 else "")
-    client.notify("textDocument/didChange", {"textDocument": {"uri": uri(valley), "version": version},
-                                             "contentChanges": [{"text": text}]})
-client.request("textDocument/hover", {"textDocument": {"uri": uri(valley)}, "position": {"line": 0, "character": 0}})
-valley_published = [n["params"]["diagnostics"] for n in client.notifications
-                    if n["method"] == "textDocument/publishDiagnostics" and n["params"]["uri"] == uri(valley)]
-client.notifications = [n for n in client.notifications if n.get("params", {}).get("uri") != uri(valley)]
-check("waiting_edits_coalesced", 2 <= len(valley_published) <= 3, len(valley_published))
-check("newest_edit_published", valley_published and [d.get("code") for d in valley_published[-1]] == ["E0003"]
-      and valley_published[-1][0]["range"]["start"]["line"] == valley_text.count("\n") + 1, valley_published[-1:])
+check("valley_opens_clean", client.diagnostics_for(uri(valley)) == [])
+edited = valley_text + "// edit\n"
+client.notify("textDocument/didChange", {"textDocument": {"uri": uri(valley), "version": 2},
+                                         "contentChanges": [{"text": edited}]})
+started = time.monotonic()
+response = client.request("textDocument/completion", {"textDocument": {"uri": uri(valley)},
+                                                      "position": {"line": edited.count("\n"), "character": 0}})
+completion_ms = (time.monotonic() - started) * 1000
+check("valley_completion_after_edit_within_500ms", response.get("result", {}).get("items") and completion_ms < 500,
+      completion_ms)
+check("valley_edit_published", client.diagnostics_for(uri(valley)) == [])
+print("measured: hover during a check %.1f ms (the check took %.0f ms), valley completion after an edit %.1f ms"
+      % (hover_ms, check_ms, completion_ms))
 
 
 def position_of(text, needle, offset=0):
@@ -151,6 +201,13 @@ h = hover(fields, fields_text, "solid(segment", 1)
 check("hover_user_function", h and "fn solid(distance: float, r: float) -> float" in h, h)
 h = hover(overhang, overhang_text, "iterations", 1)
 check("hover_block_key", h and "a key of the `grammar` block" in h, h)
+
+definition = client.request("textDocument/definition", {"textDocument": {"uri": uri(fields)},
+                                                        "position": position_of(fields_text, "solid(segment", 1)})
+declared = position_of(fields_text, "fn solid")
+target = definition.get("result") or {}
+check("definition_of_user_function", target.get("uri") == uri(fields)
+      and target.get("range", {}).get("start", {}).get("line") == declared["line"], (definition, declared))
 
 
 def completion(path, text, needle, offset):

@@ -9,10 +9,13 @@
 #include "voxc/syntax/Ast.h"
 #include "voxc/syntax/Parser.h"
 
+#include <condition_variable>
 #include <fmt/format.h>
 #include <map>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <thread>
 
 namespace voxc::lsp {
 
@@ -120,12 +123,28 @@ bool startsWithIgnoringCase(std::string_view text, std::string_view prefix) {
     return true;
 }
 
+// Requests are answered on the reading thread from the document's current text (its parse, the
+// registries), never from a check: checks run on a thread of their own (the checker), newest text
+// first, so a hover or a completion never waits for one (docs/editors.md). One mutex guards the
+// documents, the checker's queue and the output, so whole messages go out one at a time.
 class Server {
 public:
-    Server(const Inbox& inbox, std::ostream& out, std::ostream& log) : inbox_(inbox), out_(out), log_(log) {}
+    Server(const Inbox& inbox, std::ostream& out, std::ostream& log)
+        : inbox_(inbox), out_(out), log_(log), checker_([this] { checkLoop(); }) {}
+
+    // Stops the checker after the check it is in (its result is not published).
+    ~Server() {
+        {
+            const std::lock_guard lock(mutex_);
+            stopping_ = true;
+        }
+        work_.notify_one();
+        checker_.join();
+    }
 
     // Handles one message; false once `exit` has arrived.
     bool handle(const json& message) {
+        const std::lock_guard lock(mutex_);
         if (!message.is_object() || !message.contains("method") || !message["method"].is_string()) {
             // A response to a request of ours (we send none) is ignored; anything else is invalid.
             if (!(message.is_object() && message.contains("id") && (message.contains("result") || message.contains("error"))))
@@ -158,11 +177,18 @@ public:
     int exitCode() const { return shutdown_ ? 0 : 1; }
 
     void malformed(const std::string& why) {
+        const std::lock_guard lock(mutex_);
         log_ << "voxc lsp: " << why << "\n";
         sendError(nullptr, kParseError, why);
     }
 
 private:
+    struct Document {
+        std::string text;
+        uint64_t generation = 0;         // its text's number (Server::generations_): checks publish the newest only
+        std::set<std::string> otherUris; // rule files this document last published diagnostics to
+    };
+
     void send(const json& message) { writeMessage(out_, dump(message)); }
 
     void sendResult(const json& id, json result) {
@@ -185,6 +211,7 @@ private:
                                     {{"positionEncoding", "utf-16"},
                                      {"textDocumentSync", {{"openClose", true}, {"change", 1}, {"save", true}}},
                                      {"hoverProvider", true},
+                                     {"definitionProvider", true},
                                      {"completionProvider", {{"resolveProvider", false}}}}},
                                    {"serverInfo", {{"name", "voxc"}, {"version", "0.1.0"}}}});
         }
@@ -195,6 +222,7 @@ private:
         }
         if (method == "textDocument/hover") return sendResult(id, hover(params));
         if (method == "textDocument/completion") return sendResult(id, completion(params));
+        if (method == "textDocument/definition") return sendResult(id, definition(params));
         sendError(id, kMethodNotFound, "voxc lsp does not handle " + method);
     }
 
@@ -203,13 +231,16 @@ private:
         if (method == "textDocument/didOpen") {
             const json& document = params.at("textDocument");
             const std::string uri = document.at("uri");
-            documents_[uri].text = document.at("text");
+            Document& opened = documents_[uri];
+            opened.text = document.at("text");
+            opened.generation = ++generations_;
             publish(uri);
         } else if (method == "textDocument/didChange") {
             const std::string uri = params.at("textDocument").at("uri");
             const auto found = documents_.find(uri);
             if (found == documents_.end()) return;
             for (const json& change : params.at("contentChanges")) applyChange(found->second.text, change);
+            found->second.generation = ++generations_;
             // A newer edit already waiting will be checked instead: typing stays ahead of slow checks.
             if (!inbox_.changeWaiting(uri)) publish(uri);
         } else if (method == "textDocument/didSave") {
@@ -222,6 +253,7 @@ private:
             std::set<std::string> uris = found->second.otherUris;
             uris.insert(uri);
             documents_.erase(found);
+            pending_.erase(uri);
             for (const std::string& cleared : uris)
                 notify("textDocument/publishDiagnostics", {{"uri", cleared}, {"diagnostics", json::array()}});
         }
@@ -240,21 +272,58 @@ private:
         text.replace(start, end - start, replacement);
     }
 
-    // Checks the document as `voxc check` would check the file and publishes what it says, per
-    // file: those located in a rule file it imports go to that file's URI.
+    // Queues the document for the checker, replacing an older text of it still waiting.
     void publish(const std::string& uri) {
-        Document& document = documents_.at(uri);
-        const SourceFile source(uriToPath(uri), document.text);
-        std::vector<Diagnostic> diagnostics;
-        const Limits limits;
-        if (document.text.size() > size_t(limits.maxSourceBytes)) {
-            diagnostics.push_back({Severity::Error, "E0012", {},
-                                   fmt::format("the document is larger than the limit of {} bytes ({} MiB)",
-                                               limits.maxSourceBytes, limits.maxSourceBytes >> 20),
-                                   {}, nullptr});
-        } else {
-            diagnostics = checkSource(source, CheckOptions{}).diagnostics;
+        const Document& document = documents_.at(uri);
+        pending_[uri] = {document.text, document.generation};
+        work_.notify_one();
+    }
+
+    struct Job {
+        std::string text;
+        uint64_t generation = 0;
+    };
+
+    // The checker's thread: checks each queued text as `voxc check` would check the file and
+    // publishes what it says, per file (those located in a rule file it imports go to that file's
+    // URI), unless the document changed or closed meanwhile: then a newer check is queued, or
+    // nothing is wanted.
+    void checkLoop() {
+        std::unique_lock lock(mutex_);
+        for (;;) {
+            work_.wait(lock, [&] { return stopping_ || !pending_.empty(); });
+            if (stopping_) return;
+            const auto next = pending_.begin();
+            const std::string uri = next->first;
+            const Job job = std::move(next->second);
+            pending_.erase(next);
+            lock.unlock();
+            const SourceFile source(uriToPath(uri), job.text);
+            std::vector<Diagnostic> diagnostics;
+            try {
+                diagnostics = check(source);
+            } catch (const std::exception& error) {
+                diagnostics = {{Severity::Error, "", {}, fmt::format("voxc could not check this file: {}", error.what()), {}, nullptr}};
+            }
+            lock.lock();
+            const auto document = documents_.find(uri);
+            if (stopping_ || document == documents_.end() || document->second.generation != job.generation) continue;
+            sendDiagnostics(uri, document->second, source, diagnostics);
         }
+    }
+
+    static std::vector<Diagnostic> check(const SourceFile& source) {
+        const Limits limits;
+        if (source.text().size() > size_t(limits.maxSourceBytes))
+            return {{Severity::Error, "E0012", {},
+                     fmt::format("the document is larger than the limit of {} bytes ({} MiB)", limits.maxSourceBytes,
+                                 limits.maxSourceBytes >> 20),
+                     {}, nullptr}};
+        return checkSource(source, CheckOptions{}).diagnostics;
+    }
+
+    void sendDiagnostics(const std::string& uri, Document& document, const SourceFile& source,
+                         const std::vector<Diagnostic>& diagnostics) {
         std::map<std::string, json> byUri{{uri, json::array()}};
         for (const Diagnostic& diagnostic : diagnostics) {
             const SourceFile& file = diagnostic.file ? *diagnostic.file : source;
@@ -334,6 +403,18 @@ private:
         return {{"contents", {{"kind", "markdown"}, {"value", markdown}}}};
     }
 
+    // Where the file declares the name at the position (a constant, function, field, feature or
+    // labelled block), from the document's current text.
+    json definition(const json& params) {
+        const std::optional<Context> context = contextAt(params);
+        if (!context || context->word.empty()) return nullptr;
+        const std::string uri = params.at("textDocument").at("uri");
+        const SourceFile source(uriToPath(uri), context->text);
+        for (const Declared& name : declaredNames(context->file))
+            if (name.name == context->word) return {{"uri", uri}, {"range", rangeJson(name.loc, source)}};
+        return nullptr;
+    }
+
     json completion(const json& params) {
         json items = json::array();
         const std::optional<Context> context = contextAt(params);
@@ -355,17 +436,18 @@ private:
         return {{"isIncomplete", false}, {"items", std::move(items)}};
     }
 
-    struct Document {
-        std::string text;
-        std::set<std::string> otherUris; // rule files this document last published diagnostics to
-    };
-
     const Inbox& inbox_;
     std::ostream& out_;
     std::ostream& log_;
+    std::mutex mutex_;
+    std::condition_variable work_;           // the checker waits on it for pending_ or stopping_
     std::map<std::string, Document> documents_;
+    std::map<std::string, Job> pending_;     // texts waiting for the checker, by URI
+    uint64_t generations_ = 0;               // texts seen, over all documents (closed and reopened ones too)
+    bool stopping_ = false;
     bool initialized_ = false;
     bool shutdown_ = false;
+    std::thread checker_;                    // last: started once everything it reads exists
 };
 
 } // namespace
