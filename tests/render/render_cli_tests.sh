@@ -75,4 +75,14 @@ expect cut_validated 0 "cut away [0-9]+ voxels \(z>40\)" -- \
     "$voxc" render "$scene" -o "$work/cut.png" --size 64x48 --cut 'z>40' --device lavapipe --validate -v
 expect cut_differs 1 "" -- cmp -s "$work/cut.png" "$work/program.png"
 
+# One box of the world, as `run --region` computes it.
+expect region 0 "region 10,0,10:60,64,60 of the world" -- \
+    "$voxc" render "$scene" -o "$work/region.png" --size 64x48 --region 10,0,10:60,64,60 --device lavapipe
+expect region_differs 1 "" -- cmp -s "$work/region.png" "$work/program.png"
+expect region_outside 1 "the box must lie inside the world" -- \
+    "$voxc" render "$scene" -o "$work/far.png" --region 0,0,0:500,10,10 --device lavapipe
+expect_no_file region_outside_nothing_written "$work/far.png"
+expect mesh_file_no_region 1 "--region needs a .vox file" -- \
+    "$voxc" render "$work/scene.ply" -o "$work/r.png" --region 0,0,0:8,8,8
+
 finish

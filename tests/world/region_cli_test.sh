@@ -60,6 +60,15 @@ sed 's/size = \[96, 64, 96\];/size = [4096, 256, 4096];/' "$scene" >"$work/large
 [[ $? -eq 1 ]] && grep -q "error E0014: the region 0,0,0:1024,256,1024 alone is a 1024x256x1024 grid" "$work/large.log" \
     && pass "a box too large for one grid is E0014" || { fail "no E0014"; cat "$work/large.log"; }
 
+# A box that misses a curves block's solve box (the tutorial's cliff fills z < 64): the block's
+# table is empty there, and the box still runs, the same on both backends.
+cliff=$src/examples/tutorial/05_cliff.vox
+expect "box beside a curves box (run)" 0 "" -- "$voxc" run "$cliff" --device lavapipe --region 0,0,96:40,64,128 \
+    --voxels "$work/beside_run.npy"
+expect "box beside a curves box (interp)" 0 "" -- "$voxc" interp "$cliff" --region 0,0,96:40,64,128 \
+    --voxels "$work/beside_interp.npy"
+expect_same "box beside a curves box: run == interp" "$work/beside_run.npy" "$work/beside_interp.npy"
+
 # Bad requests: exit 1, a message naming --region, nothing written.
 expect_error() {
     local message=$1; shift

@@ -312,7 +312,7 @@ std::vector<CurvesBlock> checkTerrains(Context& context, const ast::File& file, 
     std::vector<CurvesBlock> blocks;
     std::map<std::string, SourceLoc> names;
     // All terrain blocks together: their tables are uploaded whole (two words per cell).
-    uint64_t cellBudget = uint64_t(context.limits.maxSolveCells);
+    uint64_t cellBudget = uint64_t(context.limits.maxTerrainCells);
     terrain::Limits limits;
     limits.maxDiffusionCellUpdates = uint64_t(context.limits.maxTerrainWork);
     limits.maxErosionCellSteps = uint64_t(context.limits.maxTerrainWork);
@@ -338,7 +338,7 @@ std::vector<CurvesBlock> checkTerrains(Context& context, const ast::File& file, 
             context.diagnostics.error("E0012", block.labelLoc,
                                       fmt::format("terrain '{}' would voxelise {} cells, past what is left of the "
                                                   "{} all terrain blocks may use",
-                                                  *block.label, cells, context.limits.maxSolveCells));
+                                                  *block.label, cells, context.limits.maxTerrainCells));
             blocks.push_back(std::move(out));
             continue;
         }

@@ -5,6 +5,7 @@
 #include "Console.h"
 #include "EditsFile.h"
 #include "OutputPaths.h"
+#include "RegionOption.h"
 
 #include "voxc/core/AtomicWrite.h"
 #include "voxc/core/Errors.h"
@@ -41,6 +42,7 @@ struct RenderOptions {
     std::string size = "1280x720";
     std::string device = "auto";
     std::string cut;
+    std::string region;
     float iso = 0.5f;
     bool noOcclusion = false;
     bool noShadows = false;
@@ -61,26 +63,30 @@ struct Scene {
 };
 
 Scene runProgram(VulkanContext& context, const RenderOptions& options) {
-    const Program program = loadProgram(options.file, options.overrides);
+    const RegionRun run =
+        planRegionRun(loadProgram(options.file, withRegion(options.overrides, options.region)), options.region);
+    const Program& program = run.program;
     VulkanExecutor executor(context, compileProgram(program, {}));
     RunResult result = executor.run();
     status() << fmt::format("device: {} ({}); grid {}x{}x{}, {:.1f} ms on device\n", context.device().name,
                              deviceTypeName(context.device().type), program.world.size.x, program.world.size.y,
                              program.world.size.z, result.timings.executeMs);
+    status() << run.describe();
+    ChunkedGrid grid = run.region ? run.crop(result.grid) : std::move(result.grid);
     const std::vector<Brush> edits =
         options.editsPath.empty() ? std::vector<Brush>{} : loadEdits(options.editsPath, program.materials);
-    if (!edits.empty()) status() << describeEdits(edits.size(), applyEdits(result.grid, edits));
+    if (!edits.empty()) status() << describeEdits(edits.size(), applyEdits(grid, edits));
     if (!options.cut.empty())
         status() << fmt::format("cut away {} voxels ({})\n",
-                                 rendering::applyCutAway(result.grid, rendering::parseCutAway(options.cut)), options.cut);
-    // The device's marching cubes and the host's give the same mesh bit for bit (`voxc run`); an
-    // edited or cut grid is meshed on the host, as `voxc run --edits` does.
+                                 rendering::applyCutAway(grid, rendering::parseCutAway(options.cut)), options.cut);
+    // The device's marching cubes and the host's give the same mesh bit for bit (`voxc run`); a
+    // region, an edited or a cut grid is meshed on the host, as `voxc run` does.
     const MeshOptions meshOptions{.iso = options.iso};
-    const bool meshOnDevice = context.hasShaderFloat64() && edits.empty() && options.cut.empty();
-    Scene scene{meshOnDevice ? GpuMarchingCubes(executor).mesh(meshOptions) : meshMarchingCubes(result.grid, meshOptions),
-                program.materials, result.grid.layout(), {}, {}};
-    if (!options.noOcclusion || !options.noShadows) scene.voxels = result.grid.toDense();
-    const ChunkLayout& layout = result.grid.layout();
+    const bool meshOnDevice = context.hasShaderFloat64() && !run.region && edits.empty() && options.cut.empty();
+    Scene scene{meshOnDevice ? GpuMarchingCubes(executor).mesh(meshOptions) : meshMarchingCubes(grid, meshOptions),
+                program.materials, grid.layout(), {}, {}};
+    if (!options.noOcclusion || !options.noShadows) scene.voxels = grid.toDense();
+    const ChunkLayout& layout = grid.layout();
     scene.worldBox = {glm::vec3(layout.gridOrigin), glm::vec3(layout.gridOrigin + layout.gridSize - 1)};
     return scene;
 }
@@ -105,6 +111,7 @@ void renderFile(const RenderOptions& options) {
     rendering::parseCamera(options.camera, {}, aspect); // the spelling, before the run
     if (meshFile && !options.editsPath.empty()) throw UserError("render: --edits needs a .vox file; a mesh file has no grid");
     if (meshFile && !options.cut.empty()) throw UserError("render: --cut needs a .vox file; a mesh file has no grid");
+    if (meshFile && !options.region.empty()) throw UserError("render: --region needs a .vox file; a mesh file has no world");
     if (!options.cut.empty()) rendering::parseCutAway(options.cut); // the spelling, before the run
     const RolePath inputs[] = {{"the input", options.file}, {"--edits", options.editsPath}};
     const RolePath outputs[] = {{"-o", options.output}};
@@ -171,6 +178,7 @@ void addRenderCommand(CLI::App& app) {
                         "iso (default), top, side, or X,Y,Z:TX,TY,TZ (eye and target in world voxels)");
     command->add_option("--size", options->size, "WIDTHxHEIGHT in pixels (default 1280x720)");
     addEditsFlag(*command, options->editsPath);
+    addRegionFlag(*command, options->region);
     command->add_flag("--wireframe", options->wireframe, "Draw the mesh's edges over its faces");
     command->add_flag("--chunk-borders", options->chunkBorders, "Draw the boxes of the grid's chunks");
     command->add_option("--cut", options->cut,

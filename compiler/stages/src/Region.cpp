@@ -35,7 +35,9 @@ Grammar regionGrammar(Grammar grammar, const GridBox& box) {
 
 std::shared_ptr<const SolveTable> regionTable(const SolveTable& table, const GridBox& box) {
     auto out = std::make_shared<SolveTable>();
-    const glm::ivec3 lo = glm::max(table.min, box.min);
+    // A table the box does not meet becomes an empty one inside the box (its plan then skips the
+    // whole grid), not one placed past the grid's end.
+    const glm::ivec3 lo = glm::clamp(table.min, box.min, box.max);
     const glm::ivec3 hi = glm::max(glm::min(table.min + table.size, box.max), lo);
     out->min = lo - box.min;
     out->size = hi - lo;

@@ -248,10 +248,12 @@ struct Limits {
     int64_t maxKernels = 512;
     // Estimated work of the whole pipeline (see docs/language.md, "Work estimate"); `--max-work`.
     int64_t maxWork = int64_t(100) * 1000 * 1000 * 1000;
-    // Host solves run while the file is checked: the cells of all curves boxes (each about 3 us
-    // to solve), the voxelised cells of all terrain blocks, and one terrain block's cell updates
-    // (diffusion sweeps plus erosion steps, about 20-100 million a second).
+    // Host solves: the cells of all curves boxes (each about 3 us to solve), the voxelised cells
+    // of all terrain blocks (a height lookup each, 8 bytes of table: 512 MiB at the limit), and
+    // one terrain block's cell updates (diffusion sweeps plus erosion steps, about 20-100 million
+    // a second).
     int64_t maxSolveCells = 8'388'608; // 256 x 128 x 256
+    int64_t maxTerrainCells = 67'108'864; // 512 x 256 x 512
     int64_t maxTerrainWork = int64_t(2) * 1000 * 1000 * 1000;
 };
 
