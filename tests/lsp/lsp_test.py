@@ -12,6 +12,7 @@ import os
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 
 from lsp_client import Client, check, finish, uri
@@ -258,5 +259,37 @@ client = Client(voxc)
 client.request("initialize", {"capabilities": {}})
 client.process.stdin.close()
 check("end_without_exit_is_1", client.process.wait(timeout=30) == 1)
+
+# A document naming the server's own input (/dev/stdin, a pipe under an editor) or a FIFO as its
+# rule file still gets its diagnostics, and shutdown and exit still work: the check refuses
+# what is not a regular file without reading it. A watchdog kills a server that stopped
+# answering, so a hang fails here instead of stalling the test.
+fifo = os.path.join(work, "rules.fifo")
+os.mkfifo(fifo)
+streams = os.path.join(work, "streams.vox")
+streams_text = ("world { size = [16, 16, 16]; }\nlsystem from_stdin {\n  rules = \"/dev/stdin\";\n}\n"
+                "lsystem from_fifo {\n  rules = \"rules.fifo\";\n}\n")
+client = Client(voxc)
+watchdog = threading.Timer(60, client.process.kill)
+watchdog.start()
+try:
+    client.request("initialize", {"capabilities": {}})
+    client.notify("textDocument/didOpen", {"textDocument": {"uri": uri(streams), "languageId": "vox", "version": 1,
+                                                            "text": streams_text}})
+    got = client.diagnostics_for(uri(streams))
+    check("stream_rule_files_diagnosed",
+          [(d.get("code"), d["range"]["start"]["line"]) for d in got] == [("E0100", 2), ("E0100", 5)]
+          and "/dev/stdin': it is a FIFO" in got[0]["message"] and "rules.fifo': it is a FIFO" in got[1]["message"], got)
+    check("stream_rule_files_still_serving", "result" in client.request("textDocument/hover", {
+        "textDocument": {"uri": uri(streams)}, "position": {"line": 2, "character": 3}}))
+    shutdown = client.request("shutdown")
+    check("stream_rule_files_shutdown", "result" in shutdown and "error" not in shutdown, shutdown)
+    client.notify("exit", {})
+    check("stream_rule_files_exit_0", client.process.wait(timeout=30) == 0)
+except (EOFError, OSError, subprocess.TimeoutExpired) as e:
+    check("stream_rule_files_answered", False, "the server stopped answering: %r" % e)
+finally:
+    watchdog.cancel()
+    client.process.kill()
 
 finish()

@@ -50,6 +50,14 @@ if [ "$with_libvoxc" = 1 ]; then
     # only the C API is exported; the C++ inside stays private
     expect libvoxc_exports_only_c_api 0 "" -- bash -c "nm -D --defined-only '$lib' | awk '{print \$3}' | grep -v '^voxc_' | grep -v '^_init\$\|^_fini\$' | (! grep .)"
     pcdir=$(dirname "$(ls "$prefix"/lib*/pkgconfig/voxc.pc "$prefix"/lib/*/pkgconfig/voxc.pc 2>/dev/null | head -1)")
+    # Every library libvoxc.so needs at run time is in the .pc file (Requires.private or
+    # Libs.private), so pkg-config --static lists it; libc, the loader and libgcc_s come with the compiler.
+    needed=$(readelf -d "$lib" | sed -nE 's/.*NEEDED.*\[lib([^.]+)\.so.*/\1/p' | grep -vx 'c\|gcc_s\|ld-linux-x86-64')
+    static_libs=$(PKG_CONFIG_PATH="$pcdir" pkg-config --static --libs voxc)
+    for name in $needed; do
+        expect "pc_lists_needed_$name" 0 "" -- bash -c "grep -qw -- '-l$name' <<<'$static_libs'"
+    done
+    expect pc_lists_fmt_and_antlr 0 "" -- bash -c "grep -qw -- '-lfmt' <<<'$static_libs' && grep -qw -- '-lantlr4-runtime' <<<'$static_libs'"
     cp -r "$src/examples/embed" "$work/embed"
     expect embed_make 0 "" -- env PKG_CONFIG_PATH="$pcdir" make -C "$work/embed"
     expect embed_links_installed 0 "$prefix" -- ldd "$work/embed/embed"

@@ -211,9 +211,9 @@ TEST_F(SessionTest, StartingEditsAreReadOnceTheFileFirstChecksWithItsMaterials) 
     int reads = 0;
     const Brush carve{Brush::Op::Carve, {20.0f, 12.0f, 20.0f}, 4.0f, 2.0f};
     SessionOptions options{path()};
-    options.readEdits = [&](const std::vector<Material>& materials) {
+    options.readEdits = [&](const Program& program) {
         ++reads;
-        EXPECT_EQ(materials.size(), 1u);
+        EXPECT_EQ(program.materials.size(), 1u);
         return std::vector<Brush>{carve};
     };
     Session session(context(), options);
@@ -231,7 +231,7 @@ TEST_F(SessionTest, StartingEditsAreReadOnceTheFileFirstChecksWithItsMaterials) 
 
 TEST_F(SessionTest, AnUnreadableEditsFileEndsTheSession) {
     SessionOptions options{path()};
-    options.readEdits = [](const std::vector<Material>&) -> std::vector<Brush> { throw UserError("edits.json:1:1: bad"); };
+    options.readEdits = [](const Program&) -> std::vector<Brush> { throw UserError("edits.json:1:1: bad"); };
     EXPECT_THROW(Session(context(), options), UserError);
 }
 

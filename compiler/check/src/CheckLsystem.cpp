@@ -7,6 +7,7 @@
 #include "Suggest.h"
 #include "Values.h"
 
+#include "voxc/core/InputFile.h"
 #include "voxc/generators/lsystem/Evolve.h"
 #include "voxc/generators/lsystem/Expand.h"
 #include "voxc/generators/lsystem/RuleFile.h"
@@ -395,15 +396,22 @@ private:
     // The rule file from the disk, or from CheckOptions::readRuleFile when it is set.
     std::optional<SourceFile> openRuleFile(const std::string& path, Diagnostics& diagnostics) const {
         const size_t maxBytes = size_t(context_.limits.maxSourceBytes);
-        if (!context_.readRuleFile) return loadSourceFile(path, diagnostics, maxBytes);
+        if (!context_.readRuleFile) {
+            // Only a regular file: the name is the document's, and a FIFO or /dev/stdin would
+            // block the check (and, under `voxc lsp`, read the protocol stream).
+            InputFileRead read = readInputFile(path, maxBytes);
+            if (read.bytes) return SourceFile(path, std::move(*read.bytes));
+            diagnostics.error(std::string(read.code()), {}, read.message);
+            return std::nullopt;
+        }
         std::optional<std::string> text = context_.readRuleFile(path);
         if (!text) {
             diagnostics.error("E0100", {}, fmt::format("cannot read file '{}': no such file", path));
             return std::nullopt;
         }
         if (text->size() > maxBytes) {
-            diagnostics.error("E0012", {}, fmt::format("cannot read file '{}': it is larger than the limit of {} bytes",
-                                                       path, maxBytes));
+            diagnostics.error("E0012", {}, fmt::format("cannot read file '{}': it is larger than the limit of {} bytes ({} MiB)",
+                                                       path, maxBytes, maxBytes >> 20));
             return std::nullopt;
         }
         return SourceFile(path, std::move(*text));

@@ -116,17 +116,24 @@ void readMetaKeys(Context& context, const BlockKeys& keys, terrain::MetaPoint& m
     number(context, keys, "radius", 0, 1e6, meta.radius, ok);
     for (auto [key, side] : {std::pair{"left", &meta.left}, std::pair{"right", &meta.right}})
         if (const ast::Assignment* a = keys.find(key)) {
-            const std::optional<glm::dvec2> v = readPair(context, *a, -1e6, 1e6);
+            std::optional<glm::dvec2> v = readPair(context, *a, -1e6, 1e6);
+            if (v && v->x < 0) { // the band's width; its rise may be negative
+                context.diagnostics.error("E0007", a->value.elements[0].loc,
+                                          fmt::format("'{}' is [width, rise]: the width must be >= 0", key));
+                v.reset();
+            }
             ok = ok && v.has_value();
             if (v) *side = *v;
         }
     number(context, keys, "hardness", 0, 1, meta.hardness, ok);
-    number(context, keys, "noise_amplitude", 0, 1e6, meta.noiseAmplitude, ok);
+    // The generator's own bound (one source), so the error is here at the key, not at the block.
+    constexpr double factor = terrain::kMaxMetaFactor;
+    number(context, keys, "noise_amplitude", 0, factor, meta.noiseAmplitude, ok);
     number(context, keys, "roughness", 0, 1, meta.noiseRoughness, ok);
-    number(context, keys, "warp_low", 0, 1e6, meta.warpLow, ok);
-    number(context, keys, "warp_high", 0, 1e6, meta.warpHigh, ok);
-    number(context, keys, "rain", 0, 1e6, meta.rain, ok);
-    number(context, keys, "capacity", 0, 1e6, meta.capacity, ok);
+    number(context, keys, "warp_low", 0, factor, meta.warpLow, ok);
+    number(context, keys, "warp_high", 0, factor, meta.warpHigh, ok);
+    number(context, keys, "rain", 0, factor, meta.rain, ok);
+    number(context, keys, "capacity", 0, factor, meta.capacity, ok);
 }
 
 // The spline's own keys are one meta point, constant along it; `meta` blocks instead place meta
@@ -359,9 +366,14 @@ std::vector<CurvesBlock> checkTerrains(Context& context, const ast::File& file, 
                 out.terrain = std::make_shared<const TerrainBlock>(std::move(*terrainBlock));
                 cellBudget -= cells;
             } catch (const terrain::LimitError& e) {
-                context.diagnostics.error("E0012", block.labelLoc, fmt::format("terrain '{}': {}", *block.label, e.what()));
+                // e.what() starts "terrain: ", which the block's name replaces.
+                context.diagnostics.error("E0012", block.labelLoc,
+                                          fmt::format("terrain '{}': {} is {}, over the limit of {}", *block.label,
+                                                      e.quantity, e.value, e.limit));
             } catch (const terrain::ParameterError& e) {
-                context.diagnostics.error("E0007", block.labelLoc, fmt::format("terrain '{}': {}", *block.label, e.what()));
+                context.diagnostics.error("E0007", block.labelLoc,
+                                          fmt::format("terrain '{}': {} = {} is invalid: {}", *block.label, e.parameter,
+                                                      e.value, e.requirement));
             }
         }
         blocks.push_back(std::move(out));

@@ -86,7 +86,8 @@ void warnUnused(Context& context, const ast::File& file, const Program& program,
                          [&](const Stage& stage) { return stage.kind == Stage::Kind::Curves && stage.index == i; }) &&
             !sampled(program.curves[i].name))
             context.diagnostics.warning("W0206", program.curves[i].loc,
-                                        fmt::format("curves '{}' is never used: {}", program.curves[i].name, why));
+                                        fmt::format("{} '{}' is never used: {}", program.curves[i].source,
+                                                    program.curves[i].name, why));
     const std::vector<bool> used = usedMaterials(program);
     for (const Material& material : program.materials)
         if (!used[material.id])

@@ -4,6 +4,7 @@
 #include "voxc/core/Errors.h"
 
 #include <cerrno>
+#include <algorithm>
 #include <cstring>
 #include <dirent.h>
 #include <fcntl.h>
@@ -37,6 +38,10 @@ struct Refused {
     fail(dir, fmt::format("cannot read {}: {}", what, std::strerror(errno)));
 }
 
+[[noreturn]] void foreign(const std::string& relative) {
+    throw Refused{fmt::format("the directory is not a voxc package: voxc did not write '{}'", relative), true};
+}
+
 class Fd {
 public:
     explicit Fd(int fd) : fd_(fd) {}
@@ -51,17 +56,38 @@ private:
     int fd_;
 };
 
-std::string readAt(const fs::path& dir, int dirFd, const std::string& name, const std::string& shown) {
-    const Fd fd(::openat(dirFd, name.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC));
+// What one file of a package, and all of them together, may hold: far above what voxc writes (a
+// kernel's SPIR-V is kilobytes, an lsystem_cave's point sets at most 2^24 list entries of 4 bytes,
+// a source 4 MiB), and checked from the file's size before a byte is read, so a tampered or
+// foreign file of gigabytes is refused at once instead of read whole.
+constexpr uint64_t kMaxPackageFileBytes = uint64_t(256) << 20;
+constexpr uint64_t kMaxPackageBytes = uint64_t(1) << 30;
+
+std::string readAt(const fs::path& dir, int dirFd, const std::string& name, const std::string& shown,
+                   uint64_t& packageBytes) {
+    const Fd fd(::openat(dirFd, name.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC));
     if (fd.get() < 0) failErrno(dir, shown);
+    struct stat st {};
+    if (::fstat(fd.get(), &st) != 0) failErrno(dir, shown);
+    if (!S_ISREG(st.st_mode)) foreign(shown);
+    const uint64_t size = uint64_t(st.st_size);
+    if (size > kMaxPackageFileBytes)
+        fail(dir, fmt::format("{} is {} bytes, more than a package file may hold ({} bytes); the package is corrupt",
+                              shown, size, kMaxPackageFileBytes));
+    packageBytes += size;
+    if (packageBytes > kMaxPackageBytes)
+        fail(dir, fmt::format("its files pass {} bytes at {}; the package is corrupt", kMaxPackageBytes, shown));
     std::string bytes;
     char buffer[65536];
     for (;;) {
-        const ssize_t n = ::read(fd.get(), buffer, sizeof buffer);
+        // One byte past the size fstat gave tells a file that grew while read.
+        const size_t want = size_t(std::min<uint64_t>(sizeof buffer, size + 1 - bytes.size()));
+        const ssize_t n = ::read(fd.get(), buffer, want);
         if (n < 0 && errno == EINTR) continue;
         if (n < 0) failErrno(dir, shown);
         if (n == 0) return bytes;
         bytes.append(buffer, size_t(n));
+        if (bytes.size() > size) fail(dir, fmt::format("{} grew while voxc read it", shown));
     }
 }
 
@@ -96,10 +122,6 @@ bool isVoxcManifest(const std::string& text) {
     return manifest.value("format", "") == kPackageFormat || manifest.contains("voxc_version");
 }
 
-[[noreturn]] void foreign(const std::string& relative) {
-    throw Refused{fmt::format("the directory is not a voxc package: voxc did not write '{}'", relative), true};
-}
-
 std::optional<std::map<std::string, std::string>> readPackage(const fs::path& dir) {
     struct stat st {};
     if (::lstat(dir.c_str(), &st) != 0) {
@@ -112,9 +134,10 @@ std::optional<std::map<std::string, std::string>> readPackage(const fs::path& di
     if (dirFd.get() < 0) failErrno(dir, "the directory");
 
     std::map<std::string, std::string> files;
+    uint64_t packageBytes = 0;
     for (const Entry& entry : listAt(dir, dirFd.get(), "")) {
         if (entry.name == "manifest.json" && entry.type == S_IFREG) {
-            files[entry.name] = readAt(dir, dirFd.get(), entry.name, entry.name);
+            files[entry.name] = readAt(dir, dirFd.get(), entry.name, entry.name, packageBytes);
         } else if ((entry.name == "kernels" || entry.name == "data" || entry.name == "sources") &&
                    entry.type == S_IFDIR) {
             // kernels/*.comp and *.spv; data/*.bin; sources/*.vox and *.rules
@@ -128,7 +151,7 @@ std::optional<std::map<std::string, std::string>> readPackage(const fs::path& di
                                   : entry.name == "sources" ? extension == ".vox" || extension == ".rules"
                                                             : extension == ".bin";
                 if (file.type != S_IFREG || !ours) foreign(relative);
-                files[relative] = readAt(dir, subFd.get(), file.name, relative);
+                files[relative] = readAt(dir, subFd.get(), file.name, relative, packageBytes);
             }
         } else {
             foreign(entry.name);

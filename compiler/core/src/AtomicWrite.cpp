@@ -133,6 +133,8 @@ void OutputFiles::discard() noexcept {
 
 void OutputFiles::add(const std::string& path, const std::function<void(std::ostream&)>& write) {
     VOXC_ASSERT(!committed_);
+    if (staged_.size() == kMaxFiles)
+        throw cannotWrite(path, fmt::format("more than {} files in one set of outputs", kMaxFiles));
     auto staged = std::make_unique<Staged>();
     staged->shownPath = path;
     staged->target = resolveTarget(path);
@@ -231,6 +233,47 @@ void OutputFiles::renameAll() {
         staged->createdEntry = CleanupEntry();
         if (!staged->backup.empty()) staged->backupEntry.removeOnSignal();
     }
+}
+
+OutputDirectory::OutputDirectory(const std::string& path) {
+    const auto refuse = [&](const std::string& why) {
+        return UserError(fmt::format("cannot write into '{}': {}", path, why));
+    };
+    std::error_code ec;
+    const fs::file_status link = fs::symlink_status(path, ec);
+    const fs::file_status status = fs::status(path, ec);
+    if (fs::is_symlink(link) && !fs::exists(status))
+        throw refuse(fmt::format("it is a link to '{}', which does not exist", fs::read_symlink(path, ec).string()));
+    if (fs::exists(status) && !fs::is_directory(status)) throw refuse("it exists and is not a directory");
+    if (!fs::exists(status)) {
+        // The missing directories, innermost first, up to the first that exists.
+        std::vector<fs::path> missing;
+        for (fs::path at = fs::absolute(path, ec).lexically_normal(); !at.empty(); at = at.parent_path()) {
+            if (fs::exists(fs::symlink_status(at, ec)) || at == at.parent_path()) break;
+            missing.push_back(at);
+        }
+        for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
+            if (::mkdir(it->c_str(), 0777) != 0 && errno != EEXIST) {
+                const std::string why = std::strerror(errno);
+                for (auto made = created_.rbegin(); made != created_.rend(); ++made) ::rmdir(made->c_str());
+                created_.clear();
+                throw refuse(fmt::format("cannot create '{}': {}", it->string(), why));
+            }
+            created_.push_back(*it);
+        }
+    }
+    if (::access(path.c_str(), R_OK | W_OK | X_OK) != 0) {
+        const std::string why = std::strerror(errno);
+        for (auto made = created_.rbegin(); made != created_.rend(); ++made) ::rmdir(made->c_str());
+        created_.clear();
+        throw refuse(why);
+    }
+}
+
+OutputDirectory::~OutputDirectory() {
+    // rmdir removes only an empty directory: whatever was written into one keeps it.
+    for (auto made = created_.rbegin(); made != created_.rend(); ++made)
+        if (::rmdir(made->c_str()) != 0) break;
 }
 
 void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write) {

@@ -29,8 +29,7 @@ struct Slot {
 
 static_assert(std::atomic<int>::is_always_lock_free, "the signal handler reads slot states without locks");
 
-// More than voxc ever has in flight: a commit of N files holds at most 2N entries.
-constexpr int kSlots = 64;
+constexpr int kSlots = kCleanupSlots;
 // Subdirectory levels below a kRemoveTree directory that the handler removes (a package has one).
 constexpr int kMaxTreeDepth = 4;
 std::array<Slot, kSlots> slots;

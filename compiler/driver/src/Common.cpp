@@ -24,26 +24,32 @@ void addDeviceFlag(CLI::App& command, std::string& device) {
     command.add_option("--device", device, "auto (default: a GPU if present), lavapipe, gpu, or an index");
 }
 
+namespace {
+constexpr double kMaxWorkBudget = 1e18;
+} // namespace
+
 void addMaxWorkFlag(CLI::App& command, WorldOverrides& overrides) {
-    // Limits::maxWork is an int64; larger budgets mean "no budget" and are clamped to its range.
-    auto atLeastOne = [](const std::string& text) -> std::string {
+    // A budget is a number of work units (Limits::maxWork, an int64): 1e400 or "inf" is not one,
+    // and no budget is not an option (an unbounded run is what the budget is there to refuse).
+    auto inRange = [](const std::string& text) -> std::string {
         char* end = nullptr;
         const double value = std::strtod(text.c_str(), &end);
-        return end != text.c_str() && *end == '\0' && value >= 1.0 ? std::string()
-                                                                   : "expects a number of at least 1, such as 1e12";
+        return end != text.c_str() && *end == '\0' && value >= 1.0 && value <= kMaxWorkBudget
+                   ? std::string()
+                   : fmt::format("expects a number from 1 to {:g}, such as 1e12", kMaxWorkBudget);
     };
     command
         .add_option("--max-work", overrides.maxWork,
                     fmt::format("Budget for the pipeline's estimated work (default {:.3g}; docs/language.md, Limits)",
                                 double(Limits{}.maxWork)))
-        ->check(CLI::Validator(atLeastOne, "WORK"));
+        ->check(CLI::Validator(inRange, "WORK"));
 }
 
 Program loadProgram(const std::string& path, const WorldOverrides& overrides, bool warningsAsErrors,
                     std::string* sourceText, std::vector<CheckedLsystem>* lsystems) {
     CheckOptions options;
     if (overrides.maxWork)
-        options.limits.maxWork = *overrides.maxWork >= 9.2e18 ? INT64_MAX : int64_t(*overrides.maxWork);
+        options.limits.maxWork = int64_t(*overrides.maxWork);
     options.seed = overrides.seed;
     options.region = overrides.region;
     const auto start = std::chrono::steady_clock::now();

@@ -17,18 +17,33 @@ namespace voxc::driver {
 
 namespace {
 
-SourceLoc locate(const std::string& text, size_t offset, uint32_t length = 1) {
-    offset = std::min(offset, text.size());
-    uint32_t line = 1, column = 1;
-    for (size_t i = 0; i < offset; ++i) {
-        if (text[i] == '\n') {
-            ++line;
-            column = 1;
-        } else {
-            ++column;
-        }
+// Line and column (1-based, counting bytes) of byte offsets, from the line starts found once:
+// an edits file of kMaxEdits edits locates each in a binary search, not a scan from its start.
+class OffsetLocator {
+public:
+    explicit OffsetLocator(const std::string& text) : size_(text.size()) {
+        lineStarts_.push_back(0);
+        for (size_t i = 0; i < text.size(); ++i)
+            if (text[i] == '\n') lineStarts_.push_back(i + 1);
     }
-    return {line, column, length};
+    SourceLoc operator()(size_t offset, uint32_t length = 1) const {
+        offset = std::min(offset, size_);
+        const size_t line = size_t(std::upper_bound(lineStarts_.begin(), lineStarts_.end(), offset) - lineStarts_.begin());
+        return {uint32_t(line), uint32_t(offset - lineStarts_[line - 1] + 1), length};
+    }
+
+private:
+    size_t size_;
+    std::vector<size_t> lineStarts_;
+};
+
+// The voxels a brush's support box covers inside the grid (what applyBrush visits).
+uint64_t clippedSupportVoxels(const Brush& brush, glm::ivec3 origin, glm::ivec3 size) {
+    const glm::dvec3 reach(double(brush.radius) + 0.5 * double(brush.softness));
+    const glm::dvec3 low = glm::max(glm::floor(glm::dvec3(brush.center) - reach), glm::dvec3(origin));
+    const glm::dvec3 high = glm::min(glm::ceil(glm::dvec3(brush.center) + reach), glm::dvec3(origin + size - 1));
+    const glm::dvec3 extent = glm::max(high - low + 1.0, glm::dvec3(0.0));
+    return uint64_t(extent.x) * uint64_t(extent.y) * uint64_t(extent.z);
 }
 
 // Where each element of the top-level array starts, and where each of its keys does (the JSON is
@@ -77,8 +92,10 @@ bool isFiniteNumber(const nlohmann::json& value) { return value.is_number() && s
 
 } // namespace
 
-std::vector<Brush> parseEdits(const SourceFile& source, Diagnostics& diagnostics, const std::vector<Material>& materials) {
+std::vector<Brush> parseEdits(const SourceFile& source, Diagnostics& diagnostics, const Program& program) {
+    const std::vector<Material>& materials = program.materials;
     const std::string& text = source.text();
+    const OffsetLocator locate(text);
     nlohmann::json document;
     try {
         document = nlohmann::json::parse(text);
@@ -86,30 +103,40 @@ std::vector<Brush> parseEdits(const SourceFile& source, Diagnostics& diagnostics
         // error.byte counts from 1 and names the character that could not be read.
         std::string message = error.what();
         if (const size_t colon = message.rfind(": "); colon != std::string::npos) message = message.substr(colon + 2);
-        diagnostics.error("E0001", locate(text, error.byte == 0 ? 0 : error.byte - 1),
+        diagnostics.error("E0001", locate(error.byte == 0 ? 0 : error.byte - 1),
                           "the edits file is not valid JSON: " + message);
+        return {};
+    } catch (const nlohmann::json::out_of_range& error) {
+        // A number past a double's range ("1e400"): the parser names its text, not its place.
+        std::string number;
+        if (const size_t open = std::string_view(error.what()).find('\''); open != std::string::npos)
+            number = std::string(error.what()).substr(open + 1, std::string_view(error.what()).rfind('\'') - open - 1);
+        const size_t at = number.empty() ? std::string::npos : text.find(number);
+        diagnostics.error("E0007", locate(at == std::string::npos ? 0 : at, uint32_t(std::max<size_t>(number.size(), 1))),
+                          fmt::format("the number {} is beyond the range of a double", number.empty() ? "in the file" : number));
         return {};
     }
     if (!document.is_array()) {
-        diagnostics.error("E0010", locate(text, text.find_first_not_of(" \t\r\n")),
+        diagnostics.error("E0010", locate(text.find_first_not_of(" \t\r\n")),
                           "an edits file is a JSON array of edits, e.g. [{\"op\": \"carve\", \"center\": [1, 2, 3], \"radius\": 4}]");
         return {};
     }
     std::vector<ElementPlaces> places = scanPlaces(text);
     places.resize(std::max(places.size(), document.size())); // the scan sees every element; never index past it
     if (document.size() > kMaxEdits) {
-        diagnostics.error("E0012", locate(text, places[kMaxEdits].start),
+        diagnostics.error("E0012", locate(places[kMaxEdits].start),
                           fmt::format("{} edits: at most {} per file", document.size(), kMaxEdits));
         return {};
     }
     std::vector<Brush> edits;
+    uint64_t work = 0; // voxels the brushes' support boxes cover in the world's grid, so far
     for (size_t i = 0; i < document.size(); ++i) {
         const nlohmann::json& edit = document[i];
         const ElementPlaces& place = places[i];
-        const SourceLoc at = locate(text, place.start);
+        const SourceLoc at = locate(place.start);
         const auto keyAt = [&](const std::string& key) {
             const auto found = place.keys.find(key);
-            return found == place.keys.end() ? at : locate(text, found->second, uint32_t(key.size() + 2));
+            return found == place.keys.end() ? at : locate(found->second, uint32_t(key.size() + 2));
         };
         const std::string name = fmt::format("edit {}", i + 1);
         if (!edit.is_object()) {
@@ -186,16 +213,25 @@ std::vector<Brush> parseEdits(const SourceFile& source, Diagnostics& diagnostics
                 brush.material = declared->id;
             }
         }
-        if (ok) edits.push_back(brush);
+        if (!ok) continue;
+        work += clippedSupportVoxels(brush, program.world.origin, program.world.size);
+        if (work > kMaxEditVoxels) {
+            diagnostics.error("E0012", at,
+                              fmt::format("{}: the edits so far visit {} voxels of the grid, more than the limit of {} "
+                                          "(the sum over edits of their support boxes clipped to the grid)",
+                                          name, work, kMaxEditVoxels));
+            return {};
+        }
+        edits.push_back(brush);
     }
     return edits;
 }
 
-std::vector<Brush> loadEdits(const std::string& path, const std::vector<Material>& materials) {
+std::vector<Brush> loadEdits(const std::string& path, const Program& program) {
     Diagnostics diagnostics;
-    std::optional<SourceFile> source = loadSourceFile(path, diagnostics);
+    std::optional<SourceFile> source = loadSourceFile(path, diagnostics, kMaxEditsFileBytes);
     std::vector<Brush> edits;
-    if (source && !reportIfNotText(*source, diagnostics)) edits = parseEdits(*source, diagnostics, materials);
+    if (source && !reportIfNotText(*source, diagnostics)) edits = parseEdits(*source, diagnostics, program);
     const SourceFile& shown = source ? *source : SourceFile(path, "");
     const std::vector<Diagnostic> all = diagnostics.take();
     printDiagnostics(all, shown);

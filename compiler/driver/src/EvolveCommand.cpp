@@ -29,6 +29,8 @@ using namespace lsystem;
 using Json = nlohmann::ordered_json;
 
 constexpr uint32_t kMaxPopulation = 64;
+// A generation is written as one set: a .vox and a .png per variant, the contact sheet and the summary.
+static_assert(2 * kMaxPopulation + 2 <= OutputFiles::kMaxFiles, "a full generation must fit one set of outputs");
 constexpr int kSheetColumns = 4;
 
 struct EvolveOptions {
@@ -115,8 +117,9 @@ void runEvolve(const EvolveOptions& options) {
     const RolePath outputs[] = {{"-o", options.outputDir, true}};
     refuseInputsInside({"-o", options.outputDir}, inputs);
     refuseClashingPaths(inputs, outputs);
-    if (std::filesystem::exists(options.outputDir) && !std::filesystem::is_directory(options.outputDir))
-        throw UserError(fmt::format("-o '{}' exists and is not a directory", options.outputDir));
+    // Created now (removed again if evolve fails, when it was evolve's): a file, a dangling link
+    // or an unwritable place is refused before any work.
+    OutputDirectory directory(options.outputDir);
 
     std::vector<CheckResult> results;
     for (const std::string& path : inputPaths) results.push_back(loadChecked(path));
@@ -130,7 +133,6 @@ void runEvolve(const EvolveOptions& options) {
     const uint32_t seed = options.seed.value_or(first.definition.seed);
     const std::vector<Definition> children = nextGeneration(picks, options.population, seed, options.generation);
 
-    std::filesystem::create_directories(options.outputDir);
     const std::filesystem::path dir(options.outputDir);
     OutputFiles files;
     std::vector<explore::Image> previews;
@@ -161,6 +163,7 @@ void runEvolve(const EvolveOptions& options) {
                        {"generation", options.generation}, {"variants", variants}};
     files.add((dir / "generation.json").string(), summary.dump(2) + "\n");
     files.commit();
+    directory.keep();
     status() << fmt::format("wrote {} variants of lsystem '{}' (generation {}, seed {}) to {}: see "
                              "contact_sheet.png, then evolve the ones you like: voxc evolve {}/variant_N.vox {} "
                              "[--with {}/variant_M.vox:{}] --generation {} -o NEXT_DIR\n",

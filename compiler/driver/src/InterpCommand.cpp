@@ -51,7 +51,7 @@ void interpretFile(const InterpOptions& options, std::span<const SolveDump> dump
     const RegionRun run = planRegionRun(std::move(checked), options.region);
     const Program& program = run.program;
     const std::vector<Brush> edits =
-        options.editsPath.empty() ? std::vector<Brush>{} : loadEdits(options.editsPath, program.materials);
+        options.editsPath.empty() ? std::vector<Brush>{} : loadEdits(options.editsPath, program);
     status() << formatSolveReport(program, options.trace);
     status() << run.describe();
     if (!options.stages.slice.empty()) // refused before the run rather than after it

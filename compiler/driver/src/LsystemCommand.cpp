@@ -119,14 +119,17 @@ void runLsystem(const LsystemOptions& options) {
     } catch (const LimitError& error) {
         reportLimit(result, lsystem, error);
     }
-    std::string text = options.format == "json"  ? skeletonJson(skeleton)
-                       : options.format == "obj" ? skeletonObj(skeleton)
-                                                 : textReport(lsystem, definition, expansion, skeleton);
+    // The skeleton formats are streamed: a skeleton within the limits is gigabytes as one string.
+    const auto write = [&](std::ostream& out) {
+        if (options.format == "json") writeSkeletonJson(out, skeleton);
+        else if (options.format == "obj") writeSkeletonObj(out, skeleton);
+        else out << textReport(lsystem, definition, expansion, skeleton);
+    };
     if (options.output.empty()) {
-        std::cout << text;
+        write(std::cout);
         return;
     }
-    writeFileAtomically(options.output, text);
+    writeFileAtomically(options.output, write);
     reportWritten({options.output});
 }
 
@@ -186,6 +189,15 @@ void addLsystemCommand(CLI::App& app) {
                              "I,J: exchange the contents of bracket I of the first and bracket J of the second "
                              "(numbered from 1 by their '[', any depth)")
         ->delimiter(',')
+        ->check(CLI::Validator(
+            [](const std::string& text) -> std::string {
+                // Digits only: CLI11 would read "-1" into a size_t as 2^64 - 1.
+                const bool digits = !text.empty() && text.size() <= 9 &&
+                                    text.find_first_not_of("0123456789") == std::string::npos;
+                return digits && std::stoul(text) >= 1 ? std::string()
+                                                       : "a bracket number is a whole number from 1 (counted by '[')";
+            },
+            "BRACKET"))
         ->required();
     addConsoleFlags(*crossCommand);
     crossCommand->callback([cross] { runCross(*cross); });

@@ -74,7 +74,7 @@ Scene runProgram(VulkanContext& context, const RenderOptions& options) {
     status() << run.describe();
     ChunkedGrid grid = run.region ? run.crop(result.grid) : std::move(result.grid);
     const std::vector<Brush> edits =
-        options.editsPath.empty() ? std::vector<Brush>{} : loadEdits(options.editsPath, program.materials);
+        options.editsPath.empty() ? std::vector<Brush>{} : loadEdits(options.editsPath, program);
     if (!edits.empty()) status() << describeEdits(edits.size(), applyEdits(grid, edits));
     if (!options.cut.empty())
         status() << fmt::format("cut away {} voxels ({})\n",

@@ -167,7 +167,7 @@ void run(const RunOptions& options) {
     const RegionRun run = planRegionRun(std::move(checked), options.region);
     const Program& program = run.program;
     const std::vector<Brush> edits =
-        options.editsPath.empty() ? std::vector<Brush>{} : loadEdits(options.editsPath, program.materials);
+        options.editsPath.empty() ? std::vector<Brush>{} : loadEdits(options.editsPath, program);
     const codegen::CompileCacheCounts spirvBefore = codegen::compileCacheCounts();
     const KernelPackage package = times.time("lower+glsl", [&] { return compileProgram(program, {}); });
     const codegen::CompileCacheCounts spirvAfter = codegen::compileCacheCounts();

@@ -61,8 +61,8 @@ void view(const ViewCommandOptions& options) {
     }
     // An edits file that does not exist yet is where "save edits" will write.
     if (!options.editsPath.empty() && std::filesystem::exists(options.editsPath))
-        viewerOptions.session.readEdits = [path = options.editsPath](const std::vector<Material>& materials) {
-            return loadEdits(path, materials);
+        viewerOptions.session.readEdits = [path = options.editsPath](const Program& program) {
+            return loadEdits(path, program);
         };
     viewer::runViewer(viewerOptions);
 }

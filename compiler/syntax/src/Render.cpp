@@ -72,7 +72,9 @@ void renderOne(std::string& out, Severity severity, std::string_view code, Sourc
         return;
     }
     out += fmt::format("{}:{}:{}: {}: {}\n", source.path(), loc.line, loc.column, label, message);
-    if (loc.line <= source.lineCount() && !source.text().empty()) out += snippet(source, loc, fixits);
+    // A line that is not text (E0101's) is not printed: its bytes would garble the terminal.
+    if (loc.line <= source.lineCount() && !source.text().empty() && isText(source.line(loc.line)))
+        out += snippet(source, loc, fixits);
 }
 
 } // namespace

@@ -1,10 +1,9 @@
 #include "voxc/syntax/SourceFile.h"
 
+#include "voxc/core/InputFile.h"
+
 #include <fmt/format.h>
 
-#include <filesystem>
-#include <fstream>
-#include <algorithm>
 
 namespace voxc {
 
@@ -23,43 +22,10 @@ std::string_view SourceFile::line(uint32_t line) const {
     return std::string_view(text_).substr(begin, end - begin);
 }
 
-namespace {
-
-// Reads at most `maxBytes + 1` bytes in blocks, so a device (/dev/zero), a pipe or a huge file
-// costs bounded memory and time. Returns nothing when the file cannot be opened.
-std::optional<std::string> readCapped(const std::string& path, size_t maxBytes) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return std::nullopt;
-    std::string text;
-    char block[1 << 16];
-    while (text.size() <= maxBytes && in) {
-        in.read(block, std::streamsize(std::min(sizeof block, maxBytes + 1 - text.size())));
-        text.append(block, size_t(in.gcount()));
-    }
-    return text;
-}
-
-} // namespace
-
 std::optional<SourceFile> loadSourceFile(const std::string& path, Diagnostics& diagnostics, size_t maxBytes) {
-    std::error_code ec;
-    auto status = std::filesystem::status(path, ec);
-    std::string problem;
-    if (!std::filesystem::exists(status))
-        problem = "no such file";
-    else if (std::filesystem::is_directory(status))
-        problem = "it is a directory";
-    if (problem.empty()) {
-        if (std::optional<std::string> text = readCapped(path, maxBytes)) {
-            if (text->size() <= maxBytes) return SourceFile(path, std::move(*text));
-            diagnostics.error("E0012", {},
-                              fmt::format("cannot read file '{}': it is larger than the limit of {} bytes ({} MiB)",
-                                          path, maxBytes, maxBytes >> 20));
-            return std::nullopt;
-        }
-        problem = "it cannot be opened for reading";
-    }
-    diagnostics.error("E0100", {}, fmt::format("cannot read file '{}': {}", path, problem));
+    InputFileRead read = readCommandLineFile(path, maxBytes);
+    if (read.bytes) return SourceFile(path, std::move(*read.bytes));
+    diagnostics.error(std::string(read.code()), {}, read.message);
     return std::nullopt;
 }
 
@@ -85,6 +51,15 @@ size_t utf8SequenceLength(std::string_view text, size_t i) {
 
 } // namespace
 
+bool isText(std::string_view text) {
+    for (size_t i = 0; i < text.size();) {
+        const size_t length = utf8SequenceLength(text, i);
+        if (text[i] == '\0' || length == 0) return false;
+        i += length;
+    }
+    return true;
+}
+
 bool reportIfNotText(const SourceFile& source, Diagnostics& diagnostics) {
     std::string_view text = source.text();
     uint32_t line = 1;
@@ -93,8 +68,7 @@ bool reportIfNotText(const SourceFile& source, Diagnostics& diagnostics) {
         size_t length = utf8SequenceLength(text, i);
         std::string_view what = text[i] == '\0' ? "a NUL byte" : length == 0 ? "invalid UTF-8" : "";
         if (!what.empty()) {
-            diagnostics.error("E0101", {},
-                              fmt::format("not a text file: {} at line {}, column {}", what, line, column));
+            diagnostics.error("E0101", {line, column, 1}, fmt::format("not a text file: {}", what));
             return true;
         }
         if (text[i] == '\n') {

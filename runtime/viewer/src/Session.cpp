@@ -240,7 +240,7 @@ bool Session::reload() {
         stats.chunkCount = layout.chunkCount;
         if (options_.readEdits) {
             readingEdits = true;
-            edits_ = options_.readEdits(program.materials);
+            edits_ = options_.readEdits(program);
             readingEdits = false;
             options_.readEdits = nullptr;
         }

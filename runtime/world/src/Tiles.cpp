@@ -2,6 +2,7 @@
 
 #include "voxc/core/AtomicWrite.h"
 #include "voxc/core/Errors.h"
+#include "voxc/core/InputFile.h"
 #include "voxc/core/Sha256.h"
 #include "voxc/mesh/Export.h"
 #include "voxc/mesh/MarchingCubes.h"
@@ -9,6 +10,7 @@
 #include "voxc/world/VdbTile.h"
 
 #include <chrono>
+#include <climits>
 #include <tuple>
 #include <filesystem>
 #include <fmt/format.h>
@@ -29,11 +31,44 @@ constexpr const char* kIndexFormat = "voxc-world";
 
 Json vec(glm::ivec3 v) { return Json::array({v.x, v.y, v.z}); }
 
+// Caps on what a resumed run reads back from the directory (which anyone may have changed): the
+// index, and a tile's .vdb or mesh before hashing it. A tile holds at most 512^3 voxels of two
+// grids, far below the tile cap.
+constexpr uint64_t kMaxIndexBytes = uint64_t(256) << 20;
+constexpr uint64_t kMaxTileBytes = uint64_t(4) << 30;
+
 std::string readBytes(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     std::ostringstream out;
     out << in.rdbuf();
     return std::move(out).str();
+}
+
+bool isSha256Hex(const Json& value) {
+    if (!value.is_string()) return false;
+    const std::string& text = value.get_ref<const std::string&>();
+    return text.size() == 64 && text.find_first_not_of("0123456789abcdef") == std::string::npos;
+}
+
+// A tile entry as writeWorld writes it: "tile" three integers, "file" its tile's file name,
+// "sha256" a digest, and an optional "mesh" with a "file" and a "sha256". Anything else (a
+// damaged or edited index) is not trusted: the tile is computed again.
+bool isTileEntry(const Json& entry) {
+    if (!entry.is_object()) return false;
+    const auto tile = entry.find("tile"), file = entry.find("file"), sha256 = entry.find("sha256");
+    if (tile == entry.end() || file == entry.end() || sha256 == entry.end()) return false;
+    if (!tile->is_array() || tile->size() != 3) return false;
+    for (const Json& axis : *tile)
+        if (!axis.is_number_integer() || axis.get<int64_t>() < 0 || axis.get<int64_t>() > INT32_MAX) return false;
+    const glm::ivec3 place((*tile)[0].get<int32_t>(), (*tile)[1].get<int32_t>(), (*tile)[2].get<int32_t>());
+    if (!file->is_string() || *file != tileFileName(place) || !isSha256Hex(*sha256)) return false;
+    if (const auto mesh = entry.find("mesh"); mesh != entry.end()) {
+        if (!mesh->is_object()) return false;
+        const auto meshFile = mesh->find("file"), meshSha = mesh->find("sha256");
+        if (meshFile == mesh->end() || meshSha == mesh->end() || !meshFile->is_string() || !isSha256Hex(*meshSha))
+            return false;
+    }
+    return true;
 }
 
 // What the tiles depend on besides their place: a directory's tiles are kept only for the same.
@@ -50,23 +85,40 @@ Json identity(const Program& program, const WorldOptions& options) {
 // for another's.
 std::map<std::string, Json> listedTiles(const fs::path& indexPath, const Json& expected) {
     std::map<std::string, Json> listed;
-    if (!fs::exists(indexPath)) return listed;
+    std::error_code ec;
+    if (!fs::exists(fs::symlink_status(indexPath, ec))) return listed;
+    const auto notAnIndex = [&](std::string_view why) {
+        return UserError(fmt::format("'{}' is not a voxc world index ({}); remove it or use another directory",
+                                     indexPath.string(), why));
+    };
+    // Only a regular file, read to a cap: a FIFO or a device left in its place must not block the run.
+    InputFileRead read = readInputFile(indexPath.string(), kMaxIndexBytes);
+    if (!read.bytes) throw UserError(read.message);
     Json index;
     try {
-        index = Json::parse(readBytes(indexPath));
+        index = Json::parse(*read.bytes);
     } catch (const Json::exception&) {
-        throw UserError(fmt::format("'{}' is not a voxc world index; remove it or use another directory", indexPath.string()));
+        throw notAnIndex("not JSON");
     }
-    if (index.value("format", "") != kIndexFormat || index.value("world", Json()) != expected)
+    if (!index.is_object()) throw notAnIndex("not a JSON object");
+    const auto format = index.find("format");
+    const auto world = index.find("world");
+    const auto tiles = index.find("tiles");
+    if (format == index.end() || *format != kIndexFormat) throw notAnIndex("no \"format\": \"voxc-world\"");
+    if (tiles == index.end() || !tiles->is_array()) throw notAnIndex("no \"tiles\" list");
+    if (world == index.end() || *world != expected)
         throw UserError(fmt::format("'{}' holds the tiles of another file, world or tile size; remove the directory "
                                     "or use another one",
                                     indexPath.parent_path().string()));
-    for (const Json& tile : index["tiles"]) listed[tile["file"].get<std::string>()] = tile;
+    for (const Json& tile : *tiles)
+        if (isTileEntry(tile)) listed[tile["file"].get<std::string>()] = tile;
     return listed;
 }
 
+// Whether the file is a regular file with the listed digest (anything else is written again).
 bool hashesAsListed(const fs::path& path, const std::string& sha256) {
-    return fs::exists(path) && sha256Hex(readBytes(path)) == sha256;
+    const InputFileRead read = readInputFile(path.string(), kMaxTileBytes);
+    return read.bytes && sha256Hex(*read.bytes) == sha256;
 }
 
 // Temp files of a run that was killed outright (OutputFiles names them "PATH.tmp-PID-N").
@@ -182,9 +234,7 @@ TileDigests writeTile(const Program& program, const WorldOptions& options, int64
 WorldSummary writeWorld(const Program& program, const WorldOptions& options, const TileScheduler& scheduler) {
     const auto start = std::chrono::steady_clock::now();
     const fs::path directory(options.directory);
-    if (fs::exists(directory) && !fs::is_directory(directory))
-        throw UserError(fmt::format("-o '{}' is not a directory", options.directory));
-    fs::create_directories(directory);
+    OutputDirectory made(options.directory); // removed again if nothing gets written into it
     removeStaleTempFiles(directory);
     const Json world = identity(program, options);
     const fs::path indexPath = directory / "index.json";
@@ -246,6 +296,7 @@ WorldSummary writeWorld(const Program& program, const WorldOptions& options, con
     } else {
         for (int64_t index : pending) finish(index, compute(index));
     }
+    made.keep();
     summary.tiles = progress.total;
     summary.kept = progress.kept;
     return summary;

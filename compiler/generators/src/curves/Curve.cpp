@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace voxc::curves {
@@ -27,11 +28,14 @@ std::vector<double> clampedKnots(size_t controlCount) {
 }
 
 // de Boor's evaluation of a B-spline of `degree` with `knots` (size ctrl.size() + degree + 1).
+// The span is found by binary search: the knots do not depend on t, so they are built once per
+// curve (ClampedSpline) and an evaluation costs O(log n + degree^2), not O(n).
 glm::dvec3 deBoor(const std::vector<glm::dvec3>& ctrl, const std::vector<double>& knots, int degree, double t) {
     const int last = int(ctrl.size()) - 1;
-    int span = degree;
-    while (span < last && knots[size_t(span) + 1] <= t) ++span;
-    std::vector<glm::dvec3> d(size_t(degree) + 1);
+    // The first span in [degree, last] whose next knot lies beyond t (the last span at t = 1).
+    const int beyond = int(std::upper_bound(knots.begin(), knots.end(), t) - knots.begin());
+    const int span = std::clamp(beyond - 1, degree, last);
+    std::array<glm::dvec3, kDegree + 1> d;
     for (int j = 0; j <= degree; ++j) d[size_t(j)] = ctrl[size_t(j + span - degree)];
     for (int r = 1; r <= degree; ++r)
         for (int j = degree; j >= r; --j) {
@@ -90,17 +94,23 @@ glm::dvec3 constraintBitangent(const std::optional<glm::dvec3>& given, const glm
 
 } // namespace
 
-glm::dvec3 splinePoint(const std::vector<glm::dvec3>& points, double t) {
-    return deBoor(points, clampedKnots(points.size()), kDegree, std::clamp(t, 0.0, 1.0));
+ClampedSpline::ClampedSpline(const std::vector<glm::dvec3>& points)
+    : points_(points), knots_(clampedKnots(points.size())), derivativePoints_(points.size() - 1),
+      derivativeKnots_(knots_.begin() + 1, knots_.end() - 1) {
+    for (size_t i = 0; i < derivativePoints_.size(); ++i)
+        derivativePoints_[i] = (double(kDegree) / (knots_[i + kDegree + 1] - knots_[i + 1])) * (points[i + 1] - points[i]);
 }
 
+glm::dvec3 ClampedSpline::point(double t) const { return deBoor(points_, knots_, kDegree, std::clamp(t, 0.0, 1.0)); }
+
+glm::dvec3 ClampedSpline::derivative(double t) const {
+    return deBoor(derivativePoints_, derivativeKnots_, kDegree - 1, std::clamp(t, 0.0, 1.0));
+}
+
+glm::dvec3 splinePoint(const std::vector<glm::dvec3>& points, double t) { return ClampedSpline(points).point(t); }
+
 glm::dvec3 splineDerivative(const std::vector<glm::dvec3>& points, double t) {
-    const std::vector<double> knots = clampedKnots(points.size());
-    std::vector<glm::dvec3> q(points.size() - 1);
-    for (size_t i = 0; i < q.size(); ++i)
-        q[i] = (double(kDegree) / (knots[i + kDegree + 1] - knots[i + 1])) * (points[i + 1] - points[i]);
-    const std::vector<double> inner(knots.begin() + 1, knots.end() - 1);
-    return deBoor(q, inner, kDegree - 1, std::clamp(t, 0.0, 1.0));
+    return ClampedSpline(points).derivative(t);
 }
 
 void validateCurve(const FeatureCurve& curve, const Limits& limits, const std::string& name) {
@@ -131,6 +141,7 @@ void validateCurve(const FeatureCurve& curve, const Limits& limits, const std::s
 
 std::vector<SpineSample> sampleCurve(const FeatureCurve& curve, const Limits& limits, const std::string& name) {
     validateCurve(curve, limits, name);
+    const ClampedSpline spline(curve.points);
     const auto& cps = curve.constraints;
     // Chord refinement: positions are recomputed per doubling; the limit bounds the last one.
     uint64_t segments = 8 * uint64_t(curve.points.size());
@@ -138,9 +149,9 @@ std::vector<SpineSample> sampleCurve(const FeatureCurve& curve, const Limits& li
         if (segments > limits.maxSegmentsPerCurve)
             throw LimitError(name + " segments (chords <= 0.5 voxel)", segments, limits.maxSegmentsPerCurve);
         double longest = 0.0;
-        glm::dvec3 previous = splinePoint(curve.points, 0.0);
+        glm::dvec3 previous = spline.point(0.0);
         for (uint64_t i = 1; i <= segments; ++i) {
-            const glm::dvec3 p = splinePoint(curve.points, double(i) / double(segments));
+            const glm::dvec3 p = spline.point(double(i) / double(segments));
             longest = std::max(longest, glm::length(p - previous));
             previous = p;
         }
@@ -157,8 +168,8 @@ std::vector<SpineSample> sampleCurve(const FeatureCurve& curve, const Limits& li
     for (size_t i = 0; i < ts.size(); ++i) {
         SpineSample& s = samples[i];
         s.t = ts[i];
-        s.position = splinePoint(curve.points, s.t);
-        const glm::dvec3 d = splineDerivative(curve.points, s.t);
+        s.position = spline.point(s.t);
+        const glm::dvec3 d = spline.derivative(s.t);
         const double speed = glm::length(d);
         if (speed < 1e-9) throw ParameterError(name + " tangent length at t", s.t, "coinciding control vertices leave no tangent");
         s.tangent = d / speed;

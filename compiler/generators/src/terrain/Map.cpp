@@ -15,7 +15,6 @@ namespace {
 constexpr double kMaxCoordinate = 1e9; // world voxels: positions, sizes, widths, heights
 constexpr double kMinSize = 1e-3;      // world voxels: the domain's edge
 constexpr double kMinHeight = 1.0;     // world voxels: max_height, so normalised heights stay <= 1e9
-constexpr double kMaxFactor = 1e3;     // per-point noise amplitude and warps, rain and capacity multipliers
 constexpr double kMaxScale = 1e6;      // noise scale and diffusion multiplier
 
 void requireRange(const std::string& name, double value, double minimum, double maximum) {
@@ -31,12 +30,12 @@ void validateMetaPoint(const MetaPoint& meta, uint32_t pieces) {
     requireRange("right.width", meta.right.x, 0.0, kMaxCoordinate);
     requireRange("right.height", meta.right.y, -kMaxCoordinate, kMaxCoordinate);
     requireRange("hardness", meta.hardness, 0.0, 1.0); // alpha + beta <= 1
-    requireRange("noise_amplitude", meta.noiseAmplitude, -kMaxFactor, kMaxFactor);
+    requireRange("noise_amplitude", meta.noiseAmplitude, -kMaxMetaFactor, kMaxMetaFactor);
     requireRange("noise_roughness", meta.noiseRoughness, 0.0, 1.0);
-    requireRange("warp_low", meta.warpLow, -kMaxFactor, kMaxFactor);
-    requireRange("warp_high", meta.warpHigh, -kMaxFactor, kMaxFactor);
-    requireRange("rain", meta.rain, 0.0, kMaxFactor);
-    requireRange("capacity", meta.capacity, 0.0, kMaxFactor);
+    requireRange("warp_low", meta.warpLow, -kMaxMetaFactor, kMaxMetaFactor);
+    requireRange("warp_high", meta.warpHigh, -kMaxMetaFactor, kMaxMetaFactor);
+    requireRange("rain", meta.rain, 0.0, kMaxMetaFactor);
+    requireRange("capacity", meta.capacity, 0.0, kMaxMetaFactor);
 }
 
 void validateSpline(const Spline& spline, const Limits& limits) {

@@ -9,6 +9,10 @@
 
 namespace voxc {
 
+// Registry slots: the most temp files, backups and new files voxc has in flight at once. A set of
+// N output files holds at most 2N (OutputFiles::kMaxFiles is half of this).
+constexpr int kCleanupSlots = 512;
+
 // Installs the handler for SIGINT, SIGTERM and SIGHUP, except for a signal that is ignored when
 // voxc starts (under `nohup`, or a background job of a non-interactive shell): ignored stays
 // ignored. Idempotent. The voxc executable calls it before doing anything.

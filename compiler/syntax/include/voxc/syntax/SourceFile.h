@@ -34,13 +34,18 @@ private:
 // roughly 600 MB.
 constexpr size_t kDefaultMaxSourceBytes = size_t(4) << 20;
 
-// Reads `path`, never more than `maxBytes + 1` bytes. On failure reports E0100 (E0012 when the
-// file, pipe or device holds more than `maxBytes`) and returns nothing. The text is not
-// validated; see reportIfNotText.
+// Reads `path`, a file given on the command line, with readCommandLineFile (voxc/core/InputFile.h):
+// never more than `maxBytes + 1` bytes, a pipe or device included. On failure reports E0100
+// (E0012 when the file, pipe or device holds more than `maxBytes`) and returns nothing. The text
+// is not validated; see reportIfNotText. A file a .vox names is read with readInputFile instead.
 std::optional<SourceFile> loadSourceFile(const std::string& path, Diagnostics& diagnostics,
                                          size_t maxBytes = kDefaultMaxSourceBytes);
 
-// Reports E0101 (and returns true) when the text holds a NUL byte or is not valid UTF-8.
+// Reports E0101 (and returns true) when the text holds a NUL byte or is not valid UTF-8, located
+// at the first such byte (line, and column in characters).
 bool reportIfNotText(const SourceFile& source, Diagnostics& diagnostics);
+
+// Whether `text` holds no NUL byte and is valid UTF-8 (a line the diagnostics may print).
+bool isText(std::string_view text);
 
 } // namespace voxc

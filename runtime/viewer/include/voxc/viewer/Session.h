@@ -49,8 +49,9 @@ struct SessionOptions {
     std::optional<int32_t> chunk = {}; // --chunk
     float iso = 0.5f;
     // Reads the edits replayed on the world (--edits) once the file first checks, since they name
-    // its materials; a UserError it throws leaves reload() (the edits file is not watched).
-    std::function<std::vector<Brush>(const std::vector<Material>&)> readEdits = {};
+    // its materials (and its grid bounds their work); a UserError it throws leaves reload() (the
+    // edits file is not watched).
+    std::function<std::vector<Brush>(const Program&)> readEdits = {};
 };
 
 // What the last successful run made, for the panel's statistics.

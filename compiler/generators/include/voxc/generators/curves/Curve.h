@@ -48,7 +48,23 @@ struct RibbonTriangle {
 };
 
 // Clamped uniform cubic B-spline (knots 0,0,0,0, 1/(n-2), ..., (n-3)/(n-2), 1,1,1,1 for n+1
-// control vertices) and its derivative with respect to t, t in [0, 1].
+// control vertices) and its derivative with respect to t, t in [0, 1]. The knots and the
+// derivative's control points are built once, so sampling a curve of n vertices at m values of
+// t costs O(n + m log n).
+class ClampedSpline {
+public:
+    explicit ClampedSpline(const std::vector<glm::dvec3>& points); // at least 4 points
+    glm::dvec3 point(double t) const;
+    glm::dvec3 derivative(double t) const;
+
+private:
+    std::vector<glm::dvec3> points_;
+    std::vector<double> knots_;
+    std::vector<glm::dvec3> derivativePoints_;
+    std::vector<double> derivativeKnots_;
+};
+
+// One evaluation of a spline built for it (tests; sampleCurve builds the spline once).
 glm::dvec3 splinePoint(const std::vector<glm::dvec3>& points, double t);
 glm::dvec3 splineDerivative(const std::vector<glm::dvec3>& points, double t);
 

@@ -24,7 +24,7 @@ struct Limits {
     uint64_t maxConstrainedCells = 4'000'000;   // cells hit by a triangle (each gathers sparsely)
     int32_t maxCycles = 30;                     // V-cycles per linear solve after FMG (spec A5)
     uint32_t maxSweeps = 100'000;               // Perona-Malik Jacobi sweeps
-    uint64_t maxSweepCellUpdates = 4'300'000'000; // sweeps * cells: the default sweeps on 256x128x256
+    uint64_t maxSweepCellUpdates = 1'000'000'000; // sweeps * cells, each six neighbours' g(): under a minute of one core
     int32_t maxSmoothPasses = 64;
 };
 

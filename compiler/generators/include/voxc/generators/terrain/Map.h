@@ -23,6 +23,11 @@ struct Domain {
     double cellSize(int32_t level) const; // size / 2^level
 };
 
+// The upper bound of a meta point's noise amplitude A, warps D and F, rain w and capacity s
+// (docs/terrain.md, "Value ranges"): the generator's check and the checker's keys read this one
+// number, so a value the checker accepts is one the generator accepts.
+inline constexpr double kMaxMetaFactor = 1e3;
+
 // Table 3.1's meta point, with the spec's defaults (B3.1). Every attribute but u interpolates
 // linearly between the two meta points around a spline position.
 struct MetaPoint {
