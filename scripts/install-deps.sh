@@ -8,7 +8,8 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
   libglm-dev libfmt-dev libcli11-dev nlohmann-json3-dev libmeshoptimizer-dev
   libgtest-dev libbenchmark-dev libnoise-dev zlib1g-dev libpng-dev
-  libopenvdb-dev libboost-dev # voxc-bench's meshing peer, OpenVDB's volumeToMesh
+  libopenvdb-dev libboost-dev # voxc-bench's meshing peer, OpenVDB's volumeToMesh; a mesh block's meshToVolume
+  libtinygltf-dev libtiff-dev # mesh blocks read glTF; heightmap blocks read float TIFF
   libopenvdb-tools python3-openvdb # OpenVDB's own vdb_print and Python module open a voxc world tile (tests/world)
   assimp-utils # assimp's command line opens a voxc .glb with its post-processing (tests/mesh/assimp_materials_test.sh)
   libopenmpi-dev openmpi-bin # voxc world under mpirun (tests/world)

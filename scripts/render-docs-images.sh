@@ -37,6 +37,12 @@ done
 # The range from the north-east, its peak in snow.
 "$voxc" render "$root/examples/mountains.vox" -o "$root/docs/images/mountains.png" --size 640x400 \
     --camera 150,90,-40:64,24,64 --device lavapipe
+# The imported ridge from the south-east: the arch over the river, the ledge on the far ridge.
+"$voxc" render "$root/examples/imported_ridge.vox" -o "$root/docs/images/imported_ridge.png" --size 640x400 \
+    --camera 170,80,170:64,14,64 --device lavapipe
+# The two boulders in their fillets of earth.
+"$voxc" render "$root/examples/boulders.vox" -o "$root/docs/images/boulders.png" --size 640x400 \
+    --camera -30,60,-30:40,14,44 --device lavapipe
 for example in scene valley; do
     "$voxc" render "$root/examples/$example.vox" -o "$root/docs/images/$example.png" --size 640x400 --device lavapipe
 done

@@ -20,12 +20,11 @@ namespace {
 SampledMap linearMap() {
     SampledMap map;
     map.name = "m";
-    map.side = 8;
-    map.originX = -8.0f;
-    map.originZ = 4.0f;
-    map.cellsPerVoxel = 0.5f;
-    for (int j = 0; j < map.side; ++j)
-        for (int i = 0; i < map.side; ++i) map.height.push_back(3.0f + 0.5f * float(i) - 0.25f * float(j));
+    map.size = {8, 1, 8};
+    map.origin = {-8.0f, 0.0f, 4.0f};
+    map.cellsPerVoxel = {0.5f, 1.0f, 0.5f};
+    for (int j = 0; j < map.size.z; ++j)
+        for (int i = 0; i < map.size.x; ++i) map.values.push_back(3.0f + 0.5f * float(i) - 0.25f * float(j));
     map.lowest = 3.0f - 0.25f * 7.0f;
     map.highest = 3.0f + 0.5f * 7.0f;
     return map;
@@ -54,8 +53,8 @@ TEST(terrain_MapSample, ClampsAtTheEdgesAndPassesNaN) {
 
 TEST(terrain_MapSample, RangeBoundsEverySampleInTheBox) {
     SampledMap map = linearMap();
-    for (size_t k = 0; k < map.height.size(); ++k) map.height[k] = std::sin(float(k) * 1.7f) * 40.0f + 7.0f;
-    const auto [lo, hi] = std::minmax_element(map.height.begin(), map.height.end());
+    for (size_t k = 0; k < map.values.size(); ++k) map.values[k] = std::sin(float(k) * 1.7f) * 40.0f + 7.0f;
+    const auto [lo, hi] = std::minmax_element(map.values.begin(), map.values.end());
     map.lowest = *lo, map.highest = *hi;
     for (const auto& [x0, x1, z0, z1] : {std::array{-3.0, 1.0, 6.0, 9.5}, std::array{-20.0, -10.0, 0.0, 30.0},
                                           std::array{2.0, 2.0, 12.0, 12.0}, std::array{-1e9, 1e9, -1e9, 1e9}}) {
@@ -99,15 +98,18 @@ pipeline { start; set ground; }
     const auto declared = mapNode(*result.program);
     ASSERT_NE(declared, result.program->fields.at(0).nodes.end());
     EXPECT_EQ(declared->map->name, "hills");
-    EXPECT_EQ(declared->map->side, 16);
-    EXPECT_TRUE(declared->map->height.empty()); // the check generates nothing
+    EXPECT_EQ(declared->map->size, glm::ivec3(16, 1, 16));
+    EXPECT_TRUE(declared->map->values.empty()); // the check generates nothing
     // Unsolved, the map bounds nothing: a chunk's range is unknown rather than made up.
     EXPECT_EQ(mapRange(*declared->map, 0, 1, 0, 1).hi, std::numeric_limits<double>::infinity());
+    const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+    EXPECT_EQ(volumeRange(*declared->map, lo, hi).lo, -std::numeric_limits<double>::infinity());
+    EXPECT_EQ(volumeRange(*declared->map, lo, hi).hi, std::numeric_limits<double>::infinity());
     Program program = *result.program;
     stages::solveBlocks(program);
     const auto map = mapNode(program);
-    EXPECT_EQ(map->map->side, 16);
-    EXPECT_EQ(map->map->height.size(), 16u * 16u);
+    EXPECT_EQ(map->map->size, glm::ivec3(16, 1, 16));
+    EXPECT_EQ(map->map->values.size(), 16u * 16u);
     const ir::IrModule module = ir::lowerProgram(program, {});
     const ir::IrField& lowered = module.fields.at(0);
     for (size_t i = 0; i < lowered.nodes.size(); ++i)

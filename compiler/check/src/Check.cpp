@@ -1,6 +1,7 @@
 #include "voxc/check/Check.h"
 
 #include "CheckCurves.h"
+#include "CheckInputs.h"
 #include "CheckTerrain.h"
 #include "Materials.h"
 #include "CheckStamps.h"
@@ -27,7 +28,7 @@ std::string CheckResult::rendered() const { return renderAll(diagnostics, source
 namespace check {
 namespace {
 
-constexpr std::string_view kTopLevelBlocks[] = {"world", "start", "grammar", "pipeline", "material", "lsystem", "curves", "terrain"};
+constexpr std::string_view kTopLevelBlocks[] = {"world", "start", "grammar", "pipeline", "material", "lsystem", "curves", "terrain", "heightmap", "mesh"};
 
 // The first block of a kind that may appear once; later ones are E0003.
 const ast::Block* uniqueBlock(Context& context, const ast::File& file, std::string_view kind) {
@@ -124,6 +125,8 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
     for (const CurvesBlock& block : program.curves) stageNames.push_back(block.name);
     for (CurvesBlock& block : checkTerrains(context, file, program.world, stageNames))
         program.curves.push_back(std::move(block));
+    // Heightmap and mesh files, read and made maps before the fields that sample them.
+    program.inputs = checkInputs(context, file, path);
     program.fields = checkFields(context, file, grammarNames);
     CheckedFeatures features = checkFeatures(context, file, grammarNames, program.world, lsystems);
     std::vector<std::optional<Field>> stampFields(program.fields.size()); // the plain fields have none
@@ -189,6 +192,7 @@ CheckResult checkSource(const SourceFile& source, const CheckOptions& options) {
             context.seed = options.seed;
             context.region = options.region;
             context.readRuleFile = options.readRuleFile;
+            context.readInputFile = options.readInputFile;
             std::vector<CheckedLsystem> lsystems;
             Program program = check::checkProgram(context, file, source.path(), lsystems);
             if (!diagnostics.hasErrors()) {

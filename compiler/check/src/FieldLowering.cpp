@@ -419,11 +419,13 @@ Lowered FieldLowering::callUser(const ast::FunctionDecl& function, const ast::Ex
 
 Lowered FieldLowering::sampleMap(const std::shared_ptr<const SampledMap>& map, const ast::Expr& at,
                                  std::vector<Lowered> args) {
+    if (!map) return Lowered::failed(); // a block with errors: reported there
+    if (map->dimensions == 3) return sampleVolume(map, at, std::move(args));
     if (args.size() != 2) {
         context_.diagnostics.error("E0006", at.nameLoc,
-                                   fmt::format("'{}' samples the terrain's height map at world (x, z): it takes 2 "
+                                   fmt::format("'{}' samples the {}'s height map at world (x, z): it takes 2 "
                                                "arguments but {} {} given",
-                                               at.name, args.size(), args.size() == 1 ? "was" : "were"));
+                                               at.name, map->source, args.size(), args.size() == 1 ? "was" : "were"));
         return Lowered::failed();
     }
     bool ok = true;
@@ -440,7 +442,7 @@ Lowered FieldLowering::sampleMap(const std::shared_ptr<const SampledMap>& map, c
             ok = false;
         }
     }
-    if (!ok || !map) return Lowered::failed(); // a map with errors: reported at its block
+    if (!ok) return Lowered::failed();
     FieldNode node;
     node.kind = FieldNode::Kind::Map;
     node.type = Type::Float;
@@ -488,6 +490,41 @@ void FieldLowering::reportArgumentTypes(const FunctionInfo& info, const std::vec
         }
     }
     context_.diagnostics.error("E0010", loc, fmt::format("{} cannot take ({}); {}", callee, typeList(args), info.signature));
+}
+
+// `NAME(p)` of a mesh block: p a vec3 world position, split into its components, which are the
+// node's three operands.
+Lowered FieldLowering::sampleVolume(const std::shared_ptr<const SampledMap>& map, const ast::Expr& at,
+                                    std::vector<Lowered> args) {
+    if (args.size() != 1) {
+        context_.diagnostics.error("E0006", at.nameLoc,
+                                   fmt::format("'{}' samples the {}'s signed distance at a world position (a vec3, "
+                                               "e.g. wp): it takes 1 argument but {} were given",
+                                               at.name, map->source, args.size()));
+        return Lowered::failed();
+    }
+    if (!args[0].ok) return Lowered::failed();
+    if (args[0].number || args[0].type != Type::Vec3) {
+        context_.diagnostics.error("E0010", at.operands[0]->loc,
+                                   fmt::format("the argument of '{}' is {} but a world position is vec3", at.name,
+                                               args[0].number ? std::string_view("a number") : typeName(args[0].type)));
+        return Lowered::failed();
+    }
+    FieldNode node;
+    node.kind = FieldNode::Kind::Map;
+    node.type = Type::Float;
+    node.loc = at.loc;
+    node.map = map;
+    for (uint32_t c = 0; c < 3; ++c) {
+        FieldNode component;
+        component.kind = FieldNode::Kind::Component;
+        component.type = Type::Float;
+        component.loc = at.operands[0]->loc;
+        component.component = c;
+        component.operands = {args[0].node};
+        node.operands.push_back(dag_.add(component));
+    }
+    return Lowered::ofNode(dag_.add(node), Type::Float);
 }
 
 Lowered FieldLowering::callBuiltin(std::string_view name, std::vector<Lowered> args, SourceLoc loc,

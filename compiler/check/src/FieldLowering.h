@@ -76,6 +76,7 @@ private:
     Lowered callUser(const ast::FunctionDecl& function, const ast::Expr& at, std::vector<Lowered> args);
     // NAME(wx, wz) of a terrain block's map (null: the block had errors).
     Lowered sampleMap(const std::shared_ptr<const SampledMap>& map, const ast::Expr& at, std::vector<Lowered> args);
+    Lowered sampleVolume(const std::shared_ptr<const SampledMap>& map, const ast::Expr& at, std::vector<Lowered> args);
     // A call of builtin `name` on `args`; `surface` is how the user wrote it, for messages.
     // `argLocs`: where each argument is written (empty for calls the checker builds itself, such
     // as a swizzle's vec3), so a wrong argument is reported where it is.

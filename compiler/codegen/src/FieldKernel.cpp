@@ -274,9 +274,17 @@ FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::s
             const auto it = std::find(maps.begin(), maps.end(), node.map);
             VOXC_ASSERT(it != maps.end());
             const SampledMap& map = *node.map;
-            value = fmt::format("mapSample({}, {}, {}, {}, {}, {})", it - maps.begin(), glslFloat(map.originX),
-                                glslFloat(map.originZ), glslFloat(map.cellsPerVoxel), code.names[node.operands[0]],
-                                code.names[node.operands[1]]);
+            if (map.dimensions == 2)
+                value = fmt::format("mapSample({}, {}, {}, {}, {}, {}, {})", it - maps.begin(), glslFloat(map.origin.x),
+                                    glslFloat(map.origin.z), glslFloat(map.cellsPerVoxel.x),
+                                    glslFloat(map.cellsPerVoxel.z), code.names[node.operands[0]],
+                                    code.names[node.operands[1]]);
+            else
+                value = fmt::format("volumeSample({}, vec3({}, {}, {}), vec3({}, {}, {}), {}, {}, {})", it - maps.begin(),
+                                    glslFloat(map.origin.x), glslFloat(map.origin.y), glslFloat(map.origin.z),
+                                    glslFloat(map.cellsPerVoxel.x), glslFloat(map.cellsPerVoxel.y),
+                                    glslFloat(map.cellsPerVoxel.z), code.names[node.operands[0]],
+                                    code.names[node.operands[1]], code.names[node.operands[2]]);
             what = "map " + map.name;
             for (std::string_view library : kMapLibraries)
                 if (seenLibraries.insert(library).second) code.libraries.push_back(library);

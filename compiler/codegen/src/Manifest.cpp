@@ -1,5 +1,6 @@
 // manifest.json: everything an engine needs to load and run a package without voxc's headers
 // (docs/cli.md, "The manifest", documents it field by field).
+#include <cctype>
 #include "voxc/core/Sha256.h"
 #include "voxc/codegen/PackageWriter.h"
 #include "voxc/core/Errors.h"
@@ -187,7 +188,7 @@ Json sourcesJson(const PackageSource& source) {
     sources.push_back(Json{{"path", source.fileName}, {"file", packageSourcePath(0)}, {"sha256", sha256Hex(source.text)}});
     for (size_t i = 0; i < source.imports.size(); ++i)
         sources.push_back(Json{{"path", source.imports[i].path},
-                               {"file", packageSourcePath(i + 1)},
+                               {"file", packageSourcePath(i + 1, source.imports[i].path)},
                                {"sha256", sha256Hex(source.imports[i].text)}});
     return sources;
 }
@@ -248,8 +249,15 @@ Json stageJson(const KernelPackage& package, const StagePlan& stage) {
 
 } // namespace
 
-std::string packageSourcePath(size_t index) {
-    return index == 0 ? "sources/0.vox" : fmt::format("sources/{}.rules", index);
+std::string packageSourcePath(size_t index, std::string_view importPath) {
+    if (index == 0) return "sources/0.vox";
+    // A heightmap's or mesh's copy keeps its kind of extension, from a fixed list.
+    const size_t dot = importPath.rfind('.');
+    std::string extension = dot == std::string_view::npos ? "" : std::string(importPath.substr(dot + 1));
+    for (char& c : extension) c = char(std::tolower(uint8_t(c)));
+    for (std::string_view known : {"png", "npy", "tif", "tiff", "glb", "gltf", "obj", "ply"})
+        if (extension == known) return fmt::format("sources/{}.{}", index, known);
+    return fmt::format("sources/{}.rules", index);
 }
 
 std::string packageGlslPath(const Kernel& k) { return "kernels/" + k.name + ".comp"; }

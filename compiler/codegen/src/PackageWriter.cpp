@@ -157,7 +157,7 @@ std::map<std::string, std::string> packageFiles(const KernelPackage& package, co
     for (const PackageData& data : packageData(package)) files[data.path] = littleEndianWords(data.words);
     if (!source.fileName.empty()) {
         files[packageSourcePath(0)] = source.text;
-        for (size_t i = 0; i < source.imports.size(); ++i) files[packageSourcePath(i + 1)] = source.imports[i].text;
+        for (size_t i = 0; i < source.imports.size(); ++i) files[packageSourcePath(i + 1, source.imports[i].path)] = source.imports[i].text;
     }
     files["manifest.json"] = packageManifest(package, source);
     return files;

@@ -16,11 +16,11 @@ std::vector<std::shared_ptr<const SampledMap>> mapsOf(const ir::IrModule& module
 }
 
 std::shared_ptr<const SolveTable> mapTable(const SampledMap& map) {
-    if (map.height.empty())
+    if (map.values.empty())
         throw InternalError("the terrain '" + map.name + "' was not solved before its map was uploaded");
     auto table = std::make_shared<SolveTable>();
-    table->size = {map.side, 1, map.side};
-    table->density = map.height;
+    table->size = map.size;
+    table->density = map.values;
     table->source = "map";
     return table;
 }

@@ -66,6 +66,11 @@ Program loadProgram(const std::string& path, const WorldOverrides& overrides, bo
     for (const CheckedLsystem& lsystem : result.lsystems)
         if (!lsystem.rulesPath.empty())
             detail() << fmt::format("lsystem {} imports the rule file {}\n", lsystem.name, lsystem.rulesPath);
+    if (result.program)
+        for (const InputFile& input : result.program->inputs)
+            detail() << fmt::format("{} {} reads {} ({} bytes){}\n", input.kind, input.block, input.path,
+                                    input.bytes->size(),
+                                    input.outside ? ", outside the .vox's folder" : "");
     failOnErrors(path, result.diagnostics, warningsAsErrors);
     VOXC_ASSERT(result.program); // a check without errors has a program
     Program program = std::move(*result.program);

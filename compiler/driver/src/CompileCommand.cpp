@@ -62,7 +62,7 @@ void compile(const CompileCommandOptions& options) {
     const KernelPackage package = compileProgram(program, compileOptions);
     const std::chrono::duration<double, std::milli> compileTime = std::chrono::steady_clock::now() - start;
     detail() << fmt::format("compiled {} kernels in {:.1f} ms\n", package.kernels.size(), compileTime.count());
-    const codegen::PackageSource source = packageSource(options.file, sourceText, lsystems);
+    const codegen::PackageSource source = packageSource(options.file, sourceText, lsystems, program.inputs);
     const codegen::PackageWrite written = codegen::writePackage(package, options.outputDir, source);
     if (written == codegen::PackageWrite::Unchanged)
         status() << options.outputDir << " is up to date (" << package.kernels.size() << " kernels)\n";
@@ -70,7 +70,7 @@ void compile(const CompileCommandOptions& options) {
         status() << "wrote " << package.kernels.size() << " kernels to " << options.outputDir << "\n";
     if (writeDepfile) {
         // Written after the package, so a build that reads it knows the package is whole.
-        const std::vector<std::string> depends = packageInputs(options.file, lsystems);
+        const std::vector<std::string> depends = packageInputs(options.file, lsystems, program.inputs);
         writeFileAtomically(depfile, formatDepfile(depfileTarget(options.depfile, options.outputDir), depends));
         status() << fmt::format("wrote {} ({} input{})\n", depfile, depends.size(), depends.size() == 1 ? "" : "s");
     }

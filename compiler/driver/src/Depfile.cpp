@@ -44,11 +44,15 @@ std::vector<std::string> spellDepfileFlagsLong(int argc, char** argv) {
     return arguments;
 }
 
-std::vector<std::string> packageInputs(const std::string& file, const std::vector<CheckedLsystem>& lsystems) {
+std::vector<std::string> packageInputs(const std::string& file, const std::vector<CheckedLsystem>& lsystems,
+                                       const std::vector<InputFile>& files) {
     std::vector<std::string> inputs{file};
+    const auto add = [&](const std::string& path) {
+        if (std::find(inputs.begin(), inputs.end(), path) == inputs.end()) inputs.push_back(path);
+    };
     for (const CheckedLsystem& lsystem : lsystems)
-        if (!lsystem.rulesPath.empty() && std::find(inputs.begin(), inputs.end(), lsystem.rulesPath) == inputs.end())
-            inputs.push_back(lsystem.rulesPath);
+        if (!lsystem.rulesPath.empty()) add(lsystem.rulesPath);
+    for (const InputFile& input : files) add(input.path);
     return inputs;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // `voxc compile -MD [-MF FILE] [-MT TARGET]`: a make/ninja depfile naming every file the package
-// was built from (the .vox and the rule files its lsystem blocks import), so a build system
+// was built from (the .vox, the rule files its lsystem blocks import and the files its heightmap
+// and mesh blocks read), so a build system
 // recompiles when any of them changes (docs/cli.md, "Build pipelines").
 #include "voxc/check/Check.h"
 
@@ -23,9 +24,10 @@ void addDepfileFlags(CLI::App& command, DepfileOptions& options);
 // them to their long forms (`--MD`) before parsing. Other arguments are kept as they are.
 std::vector<std::string> spellDepfileFlagsLong(int argc, char** argv);
 
-// The files the package of `file` was built from: the .vox, then each imported rule file once,
-// as the checker opened them.
-std::vector<std::string> packageInputs(const std::string& file, const std::vector<CheckedLsystem>& lsystems);
+// The files the package of `file` was built from: the .vox, then each imported rule file and
+// each file a heightmap or mesh block reads, once, as the checker opened them.
+std::vector<std::string> packageInputs(const std::string& file, const std::vector<CheckedLsystem>& lsystems,
+                                       const std::vector<InputFile>& files = {});
 
 // "TARGET: INPUT INPUT ...\n" in make syntax (spaces, '#' and '$' escaped); UserError for a
 // path with a newline, which no depfile can hold.

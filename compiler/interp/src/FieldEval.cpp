@@ -21,7 +21,7 @@ FieldEvaluator::FieldEvaluator(const Field& field, glm::ivec3 origin, glm::ivec3
             functions_[i] = &functions()[node.function];
         }
         // A map's heights come with the run's solve (stages::solveBlocks), never with the check.
-        if (node.kind == FieldNode::Kind::Map && node.map->height.empty())
+        if (node.kind == FieldNode::Kind::Map && node.map->values.empty())
             throw InternalError("the terrain '" + node.map->name + "' was not solved before a field sampled it");
     }
     arguments_.reserve(maxOperands);
@@ -55,7 +55,10 @@ const std::vector<Value>& FieldEvaluator::evaluateAt(glm::vec3 position, glm::iv
             out = Value::makeVec2(pointSetDistances(*node.pointSet, node.pointSet->bins, values_[node.operands[0]].v));
             break;
         case FieldNode::Kind::Map:
-            out = Value::makeFloat(sampleMap(*node.map, values_[node.operands[0]].v.x, values_[node.operands[1]].v.x));
+            out = Value::makeFloat(node.map->dimensions == 2
+                                       ? sampleMap(*node.map, values_[node.operands[0]].v.x, values_[node.operands[1]].v.x)
+                                       : sampleVolume(*node.map, values_[node.operands[0]].v.x,
+                                                      values_[node.operands[1]].v.x, values_[node.operands[2]].v.x));
             break;
         case FieldNode::Kind::Call:
             arguments_.clear();

@@ -115,8 +115,12 @@ void printField(std::string& out, const IrField& field) {
                                 node.pointSet->centres.size(), node.pointSet->segments.size());
             break;
         case FieldNode::Kind::Map:
-            value = fmt::format("map {}(%{}, %{}) {}^2 cells", node.map->name, node.operands[0], node.operands[1],
-                                node.map->side);
+            value = node.map->dimensions == 2
+                        ? fmt::format("map {}(%{}, %{}) {}x{} cells", node.map->name, node.operands[0],
+                                      node.operands[1], node.map->size.x, node.map->size.z)
+                        : fmt::format("volume {}(%{}, %{}, %{}) {}x{}x{} cells", node.map->name, node.operands[0],
+                                      node.operands[1], node.operands[2], node.map->size.x, node.map->size.y,
+                                      node.map->size.z);
             break;
         case FieldNode::Kind::Call: {
             std::vector<std::string> operands;

@@ -24,7 +24,8 @@ UserError solveError(const Program& program, const CurvesBlock& block, const cha
 void replaceMap(Program& program, const std::string& name, const std::shared_ptr<const SampledMap>& map) {
     for (Field& field : program.fields)
         for (FieldNode& node : field.nodes)
-            if (node.kind == FieldNode::Kind::Map && node.map->name == name) node.map = map;
+            if (node.kind == FieldNode::Kind::Map && node.map->name == name && node.map->source == "terrain")
+                node.map = map;
 }
 
 // The block's table over its whole box: from the solve cache when it holds it, else solved (and

@@ -66,20 +66,22 @@ std::shared_ptr<const SampledMap> declaredMap(const TerrainBlock& block) {
     const Domain& domain = block.map.domain;
     auto map = std::make_shared<SampledMap>();
     map->name = block.name;
-    map->side = int32_t(1) << domain.maxLevel;
-    map->originX = float(domain.origin.x);
-    map->originZ = float(domain.origin.y);
-    map->cellsPerVoxel = float(1.0 / domain.cellSize(domain.maxLevel));
+    map->source = "terrain";
+    const int32_t side = int32_t(1) << domain.maxLevel;
+    map->size = {side, 1, side};
+    map->origin = {float(domain.origin.x), 0.0f, float(domain.origin.y)};
+    const float cellsPerVoxel = float(1.0 / domain.cellSize(domain.maxLevel));
+    map->cellsPerVoxel = {cellsPerVoxel, 1.0f, cellsPerVoxel};
     return map;
 }
 
 std::shared_ptr<const SampledMap> solvedMap(const TerrainBlock& block, const TerrainMaps& maps) {
     const Domain& domain = block.map.domain;
     auto map = std::make_shared<SampledMap>(*declaredMap(block));
-    map->side = maps.side;
-    map->height.reserve(maps.height.size());
-    for (float h : maps.height) map->height.push_back(float(block.base + double(h) * domain.maxHeight));
-    const auto [lowest, highest] = std::minmax_element(map->height.begin(), map->height.end());
+    map->size = {maps.side, 1, maps.side};
+    map->values.reserve(maps.height.size());
+    for (float h : maps.height) map->values.push_back(float(block.base + double(h) * domain.maxHeight));
+    const auto [lowest, highest] = std::minmax_element(map->values.begin(), map->values.end());
     map->lowest = *lowest, map->highest = *highest;
     return map;
 }

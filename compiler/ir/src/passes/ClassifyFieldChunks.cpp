@@ -52,9 +52,16 @@ Interval rootInterval(const World& world, const IrField& field, glm::ivec3 local
             break;
         }
         case FieldNode::Kind::Map: {
-            const Interval& x = values[node.operands[0]];
-            const Interval& z = values[node.operands[1]];
-            const MapRange range = mapRange(*node.map, x.lo.x, x.hi.x, z.lo.x, z.hi.x);
+            MapRange range{};
+            if (node.map->dimensions == 2) {
+                const Interval& x = values[node.operands[0]];
+                const Interval& z = values[node.operands[1]];
+                range = mapRange(*node.map, x.lo.x, x.hi.x, z.lo.x, z.hi.x);
+            } else {
+                double lo[3], hi[3];
+                for (int a = 0; a < 3; ++a) lo[a] = values[node.operands[a]].lo.x, hi[a] = values[node.operands[a]].hi.x;
+                range = volumeRange(*node.map, lo, hi);
+            }
             values[i] = {Type::Float, {range.lo, 0, 0}, {range.hi, 0, 0}, false};
             break;
         }

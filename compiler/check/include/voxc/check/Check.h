@@ -72,6 +72,9 @@ struct CheckOptions {
     // joined to the .vox's directory as the checker would open it): the text, or nothing for a
     // file it does not have (E0100). Null: the disk. A loaded package serves its own copies.
     std::function<std::optional<std::string>(const std::string& path)> readRuleFile{};
+    // The same for the files heightmap and mesh blocks read (`file = "ridge.png"`): their bytes,
+    // or nothing (E0100). Null: the disk (at most Limits::maxInputBytes).
+    std::function<std::optional<std::string>(const std::string& path)> readInputFile{};
 };
 
 CheckResult checkSource(const SourceFile& source, const Limits& limits = {});

@@ -8,6 +8,7 @@
 
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace voxc::codegen {
@@ -15,8 +16,8 @@ namespace voxc::codegen {
 // manifest.json's "format": how voxc recognises a directory it may replace.
 inline constexpr const char* kPackageFormat = "voxc-package";
 
-// A rule file the .vox imports: its path as the checker joins it (the `rules = "..."` string,
-// relative to the .vox's directory) and its text.
+// A file the .vox imports: a rule file or a heightmap's or mesh's file, its path as written (the
+// `rules = "..."` or `file = "..."` string, relative to the .vox's directory) and its bytes.
 struct ImportedFile {
     std::string path;
     std::string text;
@@ -36,8 +37,9 @@ struct PackageSource {
 std::string packageManifest(const KernelPackage& package, const PackageSource& source = {});
 
 // The package files of the source copies: sources/0.vox for the .vox, sources/N.rules for
-// imports[N-1] (numbered, so no user's path decides a file name).
-std::string packageSourcePath(size_t index);
+// imports[N-1], or sources/N.png (.npy, .tif, .tiff, .glb, .gltf, .obj, .ply) when `importPath`
+// ends so (numbered, and the extension from that list, so no user's path decides a file name).
+std::string packageSourcePath(size_t index, std::string_view importPath = {});
 
 // A kernel's files, relative to the package directory.
 std::string packageGlslPath(const Kernel& kernel);

@@ -12,7 +12,8 @@ namespace voxc::codegen {
 
 std::vector<std::shared_ptr<const SampledMap>> mapsOf(const ir::IrModule& module);
 
-// A map as a solve table: min 0, size (side, 1, side), its heights as the table's values.
+// A map as a solve table: min 0, the map's size ((width, 1, depth) for a height map), its values
+// as the table's densities.
 std::shared_ptr<const SolveTable> mapTable(const SampledMap& map);
 
 } // namespace voxc::codegen

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -199,6 +200,19 @@ struct Material {
     glm::vec3 color{0.6f, 0.6f, 0.6f};      // linear RGB in [0, 1], for mesh export
 };
 
+// A file a `heightmap` or `mesh` block reads (docs/language.md, "Input files"): tracked by the
+// depfile, copied into a compiled package with its SHA-256, served back to the check when the
+// package is loaded.
+struct InputFile {
+    std::string block;  // the block's name
+    std::string kind;   // "heightmap" or "mesh"
+    std::string name;   // the `file` string as written (relative to the .vox's folder, or absolute)
+    std::string path;   // as the checker opened it (the name joined to the .vox's folder)
+    std::shared_ptr<const std::string> bytes; // what was read
+    SourceLoc loc;      // the `file` value
+    bool outside = false; // absolute, or leaving the .vox's folder through `..`
+};
+
 struct Program {
     std::string sourcePath;
     World world;
@@ -209,6 +223,7 @@ struct Program {
     std::vector<SpeleothemStage> speleothems; // declared speleothem features, declaration order
     std::vector<CurvesBlock> curves; // declared curves blocks with their solved tables, declaration order
     std::vector<Material> materials; // declared materials, declaration order (`none` is implicit)
+    std::vector<InputFile> inputs;   // heightmap and mesh files, declaration order
 
     // True when anything reads or writes a material: only then do backends store the channel
     // (a program without materials leaves every voxel `none`).
@@ -255,6 +270,15 @@ struct Limits {
     int64_t maxSolveCells = 8'388'608; // 256 x 128 x 256
     int64_t maxTerrainCells = 67'108'864; // 512 x 256 x 512
     int64_t maxTerrainWork = int64_t(2) * 1000 * 1000 * 1000;
+    // Files heightmap and mesh blocks read (docs/language.md, "Heightmaps", "Meshes"): the bytes
+    // of one file, a height image's pixels, a mesh's vertices and triangles, a mesh's
+    // signed-distance grid, and the cells of all their maps together (uploaded beside the grid).
+    int64_t maxInputBytes = int64_t(256) << 20;
+    int64_t maxImagePixels = int64_t(4096) * 4096;
+    int64_t maxMeshTriangles = 2'000'000;
+    int64_t maxMeshPoints = 2'000'000;
+    int64_t maxDistanceCells = int64_t(256) * 256 * 256;
+    int64_t maxMapCells = int64_t(32) << 20;
 };
 
 } // namespace voxc

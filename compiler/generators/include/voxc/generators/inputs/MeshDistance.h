@@ -1,0 +1,37 @@
+#pragma once
+// A triangle mesh as signed distances on the world's voxel lattice (OpenVDB's
+// tools::meshToVolume): negative inside, positive outside, in world voxels, exact within `band`
+// of the surface and ±band beyond it.
+#include "voxc/generators/inputs/MeshFile.h"
+
+#include <glm/vec3.hpp>
+#include <vector>
+
+namespace voxc::inputs {
+
+// World = translate + scale · R(rotate) · p, R = Rz·Ry·Rx of the angles in degrees (x applied
+// first).
+struct MeshTransform {
+    glm::dvec3 translate{0.0};
+    glm::dvec3 rotateDegrees{0.0};
+    double scale = 1.0;
+};
+
+struct DistanceGrid {
+    glm::ivec3 min{0};  // world voxel of cell (0, 0, 0); cell (i, j, k) is world voxel min + (i, j, k)
+    glm::ivec3 size{0}; // cells per axis
+    std::vector<float> values; // x fastest, then y, then z
+    float band = 0.0f;
+    // Edges of the mesh (after welding equal positions) that border one triangle, or more than
+    // two: 0 for a closed, manifold surface.
+    int64_t openEdges = 0;
+    int64_t nonManifoldEdges = 0;
+};
+
+// The grid covers the transformed mesh's box grown by band + 1 voxels. InputError E0012 when it
+// would have more than Limits::maxDistanceCells cells, E0102 when a transformed point is not
+// finite or beyond ±1e7.
+DistanceGrid meshDistances(const TriangleMesh& mesh, const MeshTransform& transform, float band,
+                           const Limits& limits = {});
+
+} // namespace voxc::inputs
