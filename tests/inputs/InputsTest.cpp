@@ -6,6 +6,8 @@
 #include "InputFiles.h"
 
 #include "voxc/check/Check.h"
+#include "voxc/check/LoadPackage.h"
+#include "voxc/codegen/PackageWriter.h"
 #include "voxc/stages/Pipeline.h"
 
 #include <fmt/format.h>
@@ -331,6 +333,42 @@ TEST(Inputs, SamplingWithTheWrongArgumentsIsLocated) {
     EXPECT_EQ(result.diagnostics[0].code, "E0006");
     EXPECT_EQ(result.diagnostics[1].code, "E0006");
     EXPECT_EQ(result.diagnostics[2].code, "E0010");
+}
+
+// A compiled package keeps copies of its input files (hashed in the manifest) and loads from
+// them with the originals gone, to the same voxels.
+TEST(Inputs, APackageKeepsItsInputFilesAndLoadsWithoutThem) {
+    const fs::path dir = scratch() / "package";
+    fs::create_directories(dir);
+    std::vector<uint16_t> pixels;
+    for (double v : groundPixels()) pixels.push_back(uint16_t(std::lround(v * 65535.0)));
+    test::writeBytes(dir / "ridge.png", test::greyPng(kWidth, kDepth, pixels, 16));
+    test::writeBytes(dir / "ball.obj", test::obj(test::icosphere(6.0f, 2)));
+    std::string text = heightmapProgram("ridge.png");
+    text.erase(text.find("pipeline")); // its own pipeline follows
+    text += "mesh ball { file = \"ball.obj\"; translate = [10, 18, 20]; }\n"
+                                                             "field rock = clamp(0.5 - ball(wp), 0, 1);\n"
+                                                             "pipeline { start; set ground; union rock; }\n";
+    test::writeBytes(dir / "scene.vox", text);
+    const CheckResult checked = checkFile((dir / "scene.vox").string());
+    ASSERT_TRUE(checked.program) << checked.rendered();
+    ASSERT_EQ(checked.program->inputs.size(), 2u);
+    const codegen::PackageSource source =
+        packageSource((dir / "scene.vox").string(), checked.source.text(), checked.lsystems, checked.program->inputs);
+    ASSERT_EQ(source.imports.size(), 2u);
+    EXPECT_EQ(source.imports[0].path, "ridge.png");
+    EXPECT_EQ(source.imports[1].path, "ball.obj");
+    const fs::path packageDir = dir / "pkg";
+    codegen::writePackage(compileProgram(*checked.program), packageDir.string(), source);
+    EXPECT_EQ(test::readBytes(packageDir / "sources/1.png"), test::readBytes(dir / "ridge.png"));
+    EXPECT_EQ(test::readBytes(packageDir / "sources/2.obj"), test::readBytes(dir / "ball.obj"));
+    const std::string manifest = test::readBytes(packageDir / "manifest.json");
+    EXPECT_NE(manifest.find("\"path\": \"ridge.png\""), std::string::npos) << manifest;
+    EXPECT_NE(manifest.find("\"file\": \"sources/2.obj\""), std::string::npos) << manifest;
+    fs::remove(dir / "ridge.png");
+    fs::remove(dir / "ball.obj");
+    const LoadedPackage loaded = loadPackage(packageDir.string());
+    EXPECT_EQ(interpret(loaded.program).data(), interpret(*checked.program).data());
 }
 
 } // namespace

@@ -3,6 +3,7 @@
 #include "voxc/codegen/PackageWriter.h"
 #include "voxc/core/Errors.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <algorithm>
 #include <cstring>
@@ -140,7 +141,7 @@ std::optional<std::map<std::string, std::string>> readPackage(const fs::path& di
             files[entry.name] = readAt(dir, dirFd.get(), entry.name, entry.name, packageBytes);
         } else if ((entry.name == "kernels" || entry.name == "data" || entry.name == "sources") &&
                    entry.type == S_IFDIR) {
-            // kernels/*.comp and *.spv; data/*.bin; sources/*.vox and *.rules
+            // kernels/*.comp and *.spv; data/*.bin; sources/*.vox, *.rules and input files' copies
             const std::string sub = entry.name + "/";
             const Fd subFd(::openat(dirFd.get(), entry.name.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC));
             if (subFd.get() < 0) failErrno(dir, sub);
@@ -148,7 +149,12 @@ std::optional<std::map<std::string, std::string>> readPackage(const fs::path& di
                 const std::string relative = sub + file.name;
                 const std::string extension = fs::path(file.name).extension().string();
                 const bool ours = entry.name == "kernels"   ? extension == ".comp" || extension == ".spv"
-                                  : entry.name == "sources" ? extension == ".vox" || extension == ".rules"
+                                  : entry.name == "sources" ? extension == ".vox" || extension == ".rules" ||
+                                                                  std::any_of(std::begin(kPackageInputExtensions),
+                                                                              std::end(kPackageInputExtensions),
+                                                                              [&](std::string_view known) {
+                                                                                  return extension.substr(1) == known;
+                                                                              })
                                                             : extension == ".bin";
                 if (file.type != S_IFREG || !ours) foreign(relative);
                 files[relative] = readAt(dir, subFd.get(), file.name, relative, packageBytes);

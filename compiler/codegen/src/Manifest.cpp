@@ -255,7 +255,7 @@ std::string packageSourcePath(size_t index, std::string_view importPath) {
     const size_t dot = importPath.rfind('.');
     std::string extension = dot == std::string_view::npos ? "" : std::string(importPath.substr(dot + 1));
     for (char& c : extension) c = char(std::tolower(uint8_t(c)));
-    for (std::string_view known : {"png", "npy", "tif", "tiff", "glb", "gltf", "obj", "ply"})
+    for (std::string_view known : kPackageInputExtensions)
         if (extension == known) return fmt::format("sources/{}.{}", index, known);
     return fmt::format("sources/{}.rules", index);
 }

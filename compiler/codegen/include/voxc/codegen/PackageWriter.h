@@ -40,6 +40,9 @@ std::string packageManifest(const KernelPackage& package, const PackageSource& s
 // imports[N-1], or sources/N.png (.npy, .tif, .tiff, .glb, .gltf, .obj, .ply) when `importPath`
 // ends so (numbered, and the extension from that list, so no user's path decides a file name).
 std::string packageSourcePath(size_t index, std::string_view importPath = {});
+// The extensions a copied heightmap or mesh file keeps (packageSourcePath; a package reader
+// accepts sources/ files with these, .vox and .rules).
+inline constexpr std::string_view kPackageInputExtensions[] = {"png", "npy", "tif", "tiff", "glb", "gltf", "obj", "ply"};
 
 // A kernel's files, relative to the package directory.
 std::string packageGlslPath(const Kernel& kernel);
