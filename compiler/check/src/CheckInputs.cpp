@@ -3,7 +3,7 @@
 #include "Values.h"
 
 #include "voxc/builtins/Functions.h"
-#include "voxc/syntax/SourceFile.h"
+#include "voxc/core/InputFile.h"
 #include "voxc/generators/inputs/HeightImage.h"
 #include "voxc/generators/inputs/MeshDistance.h"
 
@@ -80,13 +80,14 @@ public:
             }
             input.bytes = std::make_shared<const std::string>(std::move(*bytes));
         } else {
-            Diagnostics fileDiagnostics;
-            std::optional<SourceFile> file = loadSourceFile(input.path, fileDiagnostics, maxBytes);
-            if (!file) {
-                for (const Diagnostic& d : fileDiagnostics.take()) context_.diagnostics.error(d.code, a.value.loc, d.message);
+            // Only a regular file, at most the cap: the name is the document's, and a FIFO or
+            // /dev/stdin would block the check (and, under `voxc lsp`, read the protocol stream).
+            InputFileRead file = voxc::readInputFile(input.path, maxBytes);
+            if (!file.bytes) {
+                context_.diagnostics.error(std::string(file.code()), a.value.loc, file.message);
                 return std::nullopt;
             }
-            input.bytes = std::make_shared<const std::string>(file->text());
+            input.bytes = std::make_shared<const std::string>(std::move(*file.bytes));
         }
         if (input.bytes->size() > maxBytes) {
             context_.diagnostics.error("E0012", a.value.loc,
