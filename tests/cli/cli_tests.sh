@@ -50,11 +50,14 @@ expect unwritable 1 "cannot write" -- "$voxc" run "$src/examples/overhang.vox" -
 # every example checks, compiles, runs on lavapipe into a watertight mesh
 for example in "$src"/examples/*.vox; do
     name=$(basename "$example" .vox)
+    # The flagship's world is larger than lavapipe binds as one grid: a box of it runs instead.
+    region=()
+    [ "$name" = flagship ] && region=(--region 280,0,236:336,160,332)
     expect "check_$name" 0 "ok" -- "$voxc" check "$example"
     expect "compile_$name" 0 "kernels" -- "$voxc" compile "$example" -o "$work/pkg_$name"
-    expect "run_$name" 0 "watertight" -- "$voxc" run "$example" --device lavapipe \
+    expect "run_$name" 0 "watertight" -- "$voxc" run "$example" --device lavapipe "${region[@]}" \
         -o "$work/$name.ply" --voxels "$work/$name.npy"
-    expect "interp_$name" 0 "" -- "$voxc" interp "$example" --voxels "$work/${name}_interp.npy"
+    expect "interp_$name" 0 "" -- "$voxc" interp "$example" "${region[@]}" --voxels "$work/${name}_interp.npy"
     if cmp -s "$work/$name.npy" "$work/${name}_interp.npy"; then
         echo "ok   same_voxels_$name"; passed=$((passed + 1))
     else
