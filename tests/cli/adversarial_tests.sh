@@ -152,11 +152,16 @@ read -r code peak < <(peak_kib "$voxc" lsystem "$work/wide.vox" many --format js
 expect lsystem_json_complete 0 "^516033$" -- python3 -c "import json,sys; print(len(json.load(open(sys.argv[1]))['segments']))" "$work/wide.json"
 read -r code peak < <(peak_kib "$voxc" lsystem "$work/wide.vox" many --format obj)
 [[ $code == 0 && $peak -lt 300000 ]] && pass "lsystem_obj_streams (peak ${peak} KiB)" || fail "lsystem_obj_streams: exit $code, peak ${peak} KiB"
-# a package file of 4 GiB (sparse) is refused from its size, before it is read
+# a package file of 4 GiB (sparse) is never read: one the manifest lists with another size is
+# replaced by compile at once; one it does not list is refused from its size (the 256 MiB cap)
 expect package_compile 0 "" -- "$voxc" compile "$world" -o "$work/pkg"
 spv=$(ls "$work/pkg/kernels/"*.spv | head -1)
+size=$(stat -c %s "$spv")
 truncate -s 4G "$spv"
-expect package_huge_kernel_refused 1 "cannot write package '.*pkg': kernels/.*\.spv is 4294967296 bytes, more than a package file may hold \(268435456 bytes\)" \
+expect package_tampered_kernel_replaced 0 "" -- timeout 30 "$voxc" compile "$world" -o "$work/pkg"
+expect package_tampered_kernel_restored 0 "^$size\$" -- stat -c %s "$spv"
+truncate -s 4G "$work/pkg/kernels/unlisted.spv"
+expect package_huge_kernel_refused 1 "cannot write package '.*pkg': kernels/unlisted\.spv is 4294967296 bytes, more than a package file may hold \(268435456 bytes\)" \
     -- timeout 30 "$voxc" compile "$world" -o "$work/pkg"
 rm -rf "$work/pkg"
 expect cross_negative_bracket 1 "--brackets: a bracket number is a whole number from 1" \

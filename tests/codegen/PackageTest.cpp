@@ -11,7 +11,9 @@
 #include "voxc/check/LoadPackage.h"
 #endif
 
+#include <chrono>
 #include <cstdlib>
+#include <fmt/format.h>
 #include <filesystem>
 #include <functional>
 #include <fstream>
@@ -76,7 +78,7 @@ TEST_F(codegen_Package, ManifestDescribesKernelsAndDispatch) {
         keys.push_back(key);
     EXPECT_EQ(keys, (std::vector<std::string>{"format", "schema_version", "voxc_version", "source", "sources", "world",
                                               "uses_materials", "materials", "push_constants", "buffers", "kernels",
-                                              "dispatch"}));
+                                              "dispatch", "files"}));
     EXPECT_EQ(m["format"], "voxc-package");
     EXPECT_EQ(m["schema_version"], 1);
     EXPECT_EQ(m["uses_materials"], false);
@@ -298,9 +300,13 @@ TEST_F(codegen_Package, ReadingBackTakesTheSpirvAndRefusesAnAlteredPackage) {
     };
     EXPECT_NE(refusal("kernels/start.spv", [](std::string& b) { b[40] ^= 1; }).find("kernels/start.spv does not match its SHA-256"),
               std::string::npos);
-    EXPECT_NE(refusal("sources/1.rules", [](std::string& b) { b += "\n"; }).find("sources/1.rules does not match"),
+    EXPECT_NE(refusal("sources/1.rules", [](std::string& b) { b[0] = 'B'; }).find("sources/1.rules does not match"),
               std::string::npos);
-    EXPECT_NE(refusal("kernels/start.comp", [](std::string& b) { b += "\n"; }).find("kernel start whose GLSL differs"),
+    EXPECT_NE(refusal("kernels/start.comp", [](std::string& b) { b.back() = ' '; }).find("kernel start whose GLSL differs"),
+              std::string::npos);
+    // A file of another size than the manifest gives is refused from its size, unread.
+    EXPECT_NE(refusal("sources/1.rules", [](std::string& b) { b += "\n"; })
+                  .find("sources/1.rules is 8 bytes and manifest.json says 7; the package is corrupt"),
               std::string::npos);
     EXPECT_NE(refusal("manifest.json", [](std::string& b) { b.replace(b.find("\"seed\": 7"), 9, "\"seed\": 8"); })
                   .find("manifest.json differs from what its sources compile to"),
@@ -311,6 +317,46 @@ TEST_F(codegen_Package, ReadingBackTakesTheSpirvAndRefusesAnAlteredPackage) {
     EXPECT_NE(refusal("manifest.json", [](std::string& b) { b.resize(b.size() / 2); }).find("it has no voxc manifest.json"),
               std::string::npos);
     EXPECT_THROW(readPackage((root_ / "none").string()), UserError);
+}
+
+// manifest.json's "files" gives every other file's size; a loader checks it before reading the
+// file, so a tampered kernel of 4 GiB (sparse: no disk used) is refused at once, never read whole,
+// and writing the package again replaces it.
+TEST_F(codegen_Package, AFileOfAnotherSizeThanTheManifestSaysIsRefusedUnread) {
+    const KernelPackage package = compileProgram(test::sampleProgram());
+    const PackageSource source{"sample.vox", "grammar text", {}};
+    writePackage(package, root_.string(), source);
+    const std::map<std::string, std::string> files = packageFiles(package, source);
+    const nlohmann::json listed = nlohmann::json::parse(files.at("manifest.json"))["files"];
+    ASSERT_EQ(listed.size() + 1, files.size()); // every file but the manifest
+    for (const auto& [path, bytes] : files)
+        if (path != "manifest.json") {
+            EXPECT_EQ(listed.at(path).get<uint64_t>(), bytes.size()) << path;
+        }
+
+    const fs::path spv = root_ / "kernels" / "start.spv";
+    const uint64_t written = fs::file_size(spv);
+    fs::resize_file(spv, uint64_t(4) << 30);
+    const auto started = std::chrono::steady_clock::now();
+    try {
+        readPackage(root_.string());
+        ADD_FAILURE() << "loaded";
+    } catch (const UserError& e) {
+        EXPECT_NE(std::string(e.what()).find(fmt::format("kernels/start.spv is 4294967296 bytes and manifest.json says "
+                                                         "{}; the package is corrupt; compile it again",
+                                                         written)),
+                  std::string::npos)
+            << e.what();
+    }
+    // Reading 4 GiB of zeros takes seconds; a refusal from the size, milliseconds.
+    EXPECT_LT(std::chrono::steady_clock::now() - started, std::chrono::seconds(2));
+    // One byte short is refused as well.
+    fs::resize_file(spv, written - 1);
+    EXPECT_THROW(readPackage(root_.string()), UserError);
+    // `compile` into it again replaces the tampered package.
+    EXPECT_EQ(writePackage(package, root_.string(), source), PackageWrite::Replaced);
+    EXPECT_EQ(fs::file_size(spv), written);
+    EXPECT_NO_THROW(readPackage(root_.string()));
 }
 
 TEST_F(codegen_Package, SpirvValAcceptsEveryWrittenModule) {

@@ -10,6 +10,7 @@
 #include <dirent.h>
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -64,14 +65,23 @@ private:
 constexpr uint64_t kMaxPackageFileBytes = uint64_t(256) << 20;
 constexpr uint64_t kMaxPackageBytes = uint64_t(1) << 30;
 
-std::string readAt(const fs::path& dir, int dirFd, const std::string& name, const std::string& shown,
-                   uint64_t& packageBytes) {
-    const Fd fd(::openat(dirFd, name.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC));
-    if (fd.get() < 0) failErrno(dir, shown);
+// An open file of the package, its size from fstat, before a byte is read.
+struct OpenFile {
+    int fd;
+    uint64_t size;
+};
+
+OpenFile openAt(const fs::path& dir, int dirFd, const std::string& name, const std::string& shown, int& fd) {
+    fd = ::openat(dirFd, name.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) failErrno(dir, shown);
     struct stat st {};
-    if (::fstat(fd.get(), &st) != 0) failErrno(dir, shown);
+    if (::fstat(fd, &st) != 0) failErrno(dir, shown);
     if (!S_ISREG(st.st_mode)) foreign(shown);
-    const uint64_t size = uint64_t(st.st_size);
+    return {fd, uint64_t(st.st_size)};
+}
+
+std::string readOpen(const fs::path& dir, const OpenFile& file, const std::string& shown, uint64_t& packageBytes) {
+    const uint64_t size = file.size;
     if (size > kMaxPackageFileBytes)
         fail(dir, fmt::format("{} is {} bytes, more than a package file may hold ({} bytes); the package is corrupt",
                               shown, size, kMaxPackageFileBytes));
@@ -83,13 +93,33 @@ std::string readAt(const fs::path& dir, int dirFd, const std::string& name, cons
     for (;;) {
         // One byte past the size fstat gave tells a file that grew while read.
         const size_t want = size_t(std::min<uint64_t>(sizeof buffer, size + 1 - bytes.size()));
-        const ssize_t n = ::read(fd.get(), buffer, want);
+        const ssize_t n = ::read(file.fd, buffer, want);
         if (n < 0 && errno == EINTR) continue;
         if (n < 0) failErrno(dir, shown);
         if (n == 0) return bytes;
         bytes.append(buffer, size_t(n));
         if (bytes.size() > size) fail(dir, fmt::format("{} grew while voxc read it", shown));
     }
+}
+
+std::string readAt(const fs::path& dir, int dirFd, const std::string& name, const std::string& shown,
+                   uint64_t& packageBytes) {
+    int raw = -1;
+    const OpenFile file = openAt(dir, dirFd, name, shown, raw);
+    const Fd fd(raw);
+    return readOpen(dir, file, shown, packageBytes);
+}
+
+// The byte count manifest.json gives each file of the package ("files"; empty when it gives none).
+std::map<std::string, uint64_t> manifestFileSizes(const std::string& manifestText) {
+    std::map<std::string, uint64_t> sizes;
+    const nlohmann::json manifest = nlohmann::json::parse(manifestText, nullptr, /*allow_exceptions=*/false);
+    if (!manifest.is_object()) return sizes;
+    const auto files = manifest.find("files");
+    if (files == manifest.end() || !files->is_object()) return sizes;
+    for (const auto& [path, bytes] : files->items())
+        if (bytes.is_number_unsigned()) sizes[path] = bytes.get<uint64_t>();
+    return sizes;
 }
 
 struct Entry {
@@ -123,7 +153,7 @@ bool isVoxcManifest(const std::string& text) {
     return manifest.value("format", "") == kPackageFormat || manifest.contains("voxc_version");
 }
 
-std::optional<std::map<std::string, std::string>> readPackage(const fs::path& dir) {
+std::optional<std::map<std::string, std::string>> readPackage(const fs::path& dir, PackageVerb verb) {
     struct stat st {};
     if (::lstat(dir.c_str(), &st) != 0) {
         if (errno == ENOENT) return std::nullopt;
@@ -136,9 +166,17 @@ std::optional<std::map<std::string, std::string>> readPackage(const fs::path& di
 
     std::map<std::string, std::string> files;
     uint64_t packageBytes = 0;
-    for (const Entry& entry : listAt(dir, dirFd.get(), "")) {
+    const std::vector<Entry> entries = listAt(dir, dirFd.get(), "");
+    // manifest.json first: the size it gives each file is checked before that file is read.
+    std::map<std::string, uint64_t> expectedSizes;
+    for (const Entry& entry : entries)
         if (entry.name == "manifest.json" && entry.type == S_IFREG) {
             files[entry.name] = readAt(dir, dirFd.get(), entry.name, entry.name, packageBytes);
+            expectedSizes = manifestFileSizes(files[entry.name]);
+        }
+    for (const Entry& entry : entries) {
+        if (entry.name == "manifest.json" && entry.type == S_IFREG) {
+            continue;
         } else if ((entry.name == "kernels" || entry.name == "data" || entry.name == "sources") &&
                    entry.type == S_IFDIR) {
             // kernels/*.comp and *.spv; data/*.bin; sources/*.vox, *.rules and input files' copies
@@ -157,7 +195,20 @@ std::optional<std::map<std::string, std::string>> readPackage(const fs::path& di
                                                                               })
                                                             : extension == ".bin";
                 if (file.type != S_IFREG || !ours) foreign(relative);
-                files[relative] = readAt(dir, subFd.get(), file.name, relative, packageBytes);
+                int raw = -1;
+                const OpenFile open = openAt(dir, subFd.get(), file.name, relative, raw);
+                const Fd fd(raw);
+                const auto expected = expectedSizes.find(relative);
+                if (expected != expectedSizes.end() && expected->second != open.size) {
+                    // Not what voxc wrote: loading refuses it unread; writing replaces the package,
+                    // which the missing entry tells the writer.
+                    if (verb == PackageVerb::Load)
+                        fail(dir, fmt::format("{} is {} bytes and manifest.json says {}; the package is corrupt; compile it "
+                                              "again with `voxc compile`",
+                                              relative, open.size, expected->second));
+                    continue;
+                }
+                files[relative] = readOpen(dir, open, relative, packageBytes);
             }
         } else {
             foreign(entry.name);
@@ -178,7 +229,7 @@ std::optional<std::map<std::string, std::string>> existingPackage(const fs::path
         constexpr int kAttempts = 16;
         for (int attempt = 0; attempt < kAttempts; ++attempt) {
             try {
-                return readPackage(dir);
+                return readPackage(dir, verb);
             } catch (const Vanished&) {
             }
         }

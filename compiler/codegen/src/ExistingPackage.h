@@ -13,7 +13,9 @@ namespace voxc::codegen {
 // package being read is removed under it). UserError when `dir` is a symbolic link or not a
 // directory, or holds anything voxc does not write (a package holds manifest.json with a voxc
 // manifest, kernels/*.comp, *.spv, data/*.bin, sources/*.vox, *.rules, nothing else): replacing
-// it would delete a user's file. The messages say "cannot VERB package 'DIR': ...".
+// it would delete a user's file. The messages say "cannot VERB package 'DIR': ...". A file whose
+// size on disk differs from the one manifest.json's "files" gives is never read: loading refuses
+// the package, writing leaves the file out of the map (so the package is replaced).
 enum class PackageVerb { Write, Load };
 std::optional<std::map<std::string, std::string>> existingPackage(const std::filesystem::path& dir,
                                                                   PackageVerb verb = PackageVerb::Write);

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <bit>
 #include <fmt/format.h>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
@@ -193,6 +194,24 @@ Json sourcesJson(const PackageSource& source) {
     return sources;
 }
 
+// The byte count of every file of the package but manifest.json, by path: a loader checks each
+// file's size on disk against it before reading the file (a tampered file is refused unread).
+Json fileSizesJson(const KernelPackage& package, const PackageSource& source) {
+    std::map<std::string, uint64_t> sizes;
+    for (const Kernel& k : package.kernels) {
+        sizes[packageGlslPath(k)] = k.glsl.size();
+        sizes[packageSpirvPath(k)] = 4 * uint64_t(k.spirv.size());
+    }
+    for (const PackageData& data : packageData(package)) sizes[data.path] = 4 * uint64_t(data.words.size());
+    if (!source.fileName.empty()) {
+        sizes[packageSourcePath(0)] = source.text.size();
+        for (size_t i = 0; i < source.imports.size(); ++i) sizes[packageSourcePath(i + 1)] = source.imports[i].text.size();
+    }
+    Json files = Json::object();
+    for (const auto& [path, bytes] : sizes) files[path] = bytes;
+    return files;
+}
+
 // A kernel's name, or null for kNoKernel.
 Json kernelName(const KernelPackage& package, uint32_t kernel) {
     return kernel == kNoKernel ? Json(nullptr) : Json(package.kernels.at(kernel).name);
@@ -289,7 +308,8 @@ std::string packageManifest(const KernelPackage& package, const PackageSource& s
         {"push_constants", pushConstantsJson()},
         {"buffers", buffersJson(package)},
         {"kernels", kernels},
-        {"dispatch", Json{{"tile_ranges_kernel", kernelName(package, package.tileRangesKernel)}, {"stages", stages}}}};
+        {"dispatch", Json{{"tile_ranges_kernel", kernelName(package, package.tileRangesKernel)}, {"stages", stages}}},
+        {"files", fileSizesJson(package, source)}};
     return manifest.dump(2) + "\n";
 }
 

@@ -68,6 +68,9 @@ PackageContents readPackage(const std::string& dir) {
         const std::string version = manifest.at("voxc_version").get<std::string>();
         if (version != VOXC_VERSION)
             loading.recompile(fmt::format("it was written by voxc {} and this is voxc {}", version, VOXC_VERSION));
+        // The loader checked every file it lists against these sizes before reading it.
+        if (!manifest.contains("files") || !manifest.at("files").is_object())
+            loading.recompile("manifest.json does not give the size of each file (written by an older voxc)");
         const nlohmann::json& sources = manifest.value("sources", nlohmann::json::array());
         if (sources.empty()) loading.recompile("it holds no copy of its sources (written before packages did)");
         for (size_t i = 0; i < sources.size(); ++i) {
