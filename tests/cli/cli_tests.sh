@@ -41,6 +41,10 @@ expect dev_zero 1 "E0012.*larger than the limit" -- "$voxc" check /dev/zero
 expect over_budget 1 "busy\.vox:[0-9]+:3: error E0012.*--max-work" -- "$voxc" check "$work/busy.vox"
 expect max_work_raises 0 "ok" -- "$voxc" check --max-work 1e14 "$work/busy.vox"
 expect max_work_lowers 1 "E0012" -- "$voxc" interp --max-work 1000 "$src/examples/overhang.vox"
+# a grid larger than the device binds as one buffer is refused before any work, pointing to --region
+printf 'world { size = [512, 160, 512]; }\nfield ground = clamp(40 - y, 0, 1);\npipeline { start; set ground; }\n' > "$work/huge.vox"
+expect grid_over_device_buffer 1 "--region.*voxc world" -- "$voxc" run "$work/huge.vox" --device lavapipe -o "$work/huge.ply"
+expect_no_file no_partial_huge_mesh "$work/huge.ply"
 expect bad_chunk 1 "power of two" -- "$voxc" run "$src/examples/overhang.vox" --chunk 12 -o "$work/x.ply"
 expect bad_mesh_ext 1 "must end in" -- "$voxc" run "$src/examples/overhang.vox" -o "$work/x.stl"
 expect bad_slice 1 "slice" -- "$voxc" interp "$src/examples/overhang.vox" --slice q=3
@@ -264,12 +268,13 @@ expect curves_interp_trace_levels 0 "  normals full multigrid per level, coarses
 expect curves_interp_trace_cycles 0 "  parameters max residual: full multigrid [0-9.e+-]+, V-cycle 1 [0-9.e+-]+" -- \
     "$voxc" interp "$src/examples/curves_cliff.vox" --trace --trace-limit 0
 # the solve runs after the check, as a phase of its own
-expect curves_solve_phase 0 "solve +[0-9.]+  curves blocks" -- "$voxc" run "$src/examples/curves_cliff.vox" --device lavapipe \
+expect curves_solve_phase 0 "solve +[0-9.]+  curves and terrain blocks" -- "$voxc" run "$src/examples/curves_cliff.vox" --device lavapipe \
     --timings --voxels "$work/curves_cliff_timed.npy"
 # --solve-on device: every curves pass on lavapipe, the host's voxels but for the noise
-# displacement's last bits (warped_fbm's exp2, docs/curves.md "What runs where")
+# displacement's last bits (warped_fbm's exp2, docs/curves.md "What runs where"); --no-cache, or the
+# run reads the host's solve that an earlier run left in the solve cache
 expect curves_solve_on_device 0 "curves 'cliffs' \(64x32x64 cells, solved, its global passes on 'llvmpipe" -- \
-    "$voxc" run "$src/examples/curves_cliff.vox" --device lavapipe --solve-on device --voxels "$work/curves_cliff_device.npy"
+    "$voxc" run "$src/examples/curves_cliff.vox" --device lavapipe --solve-on device --no-cache --voxels "$work/curves_cliff_device.npy"
 expect curves_solve_on_device_close_voxels 0 "^ok$" -- /usr/bin/python3 -c "
 import numpy as np, sys
 a, b = np.load(sys.argv[1]), np.load(sys.argv[2])

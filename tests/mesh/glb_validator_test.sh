@@ -29,19 +29,24 @@ for example in "$src"/examples/*.vox; do
     # The L-system examples other than lsystem_cave only declare an lsystem, drawn with
     # `voxc lsystem`; nothing carves them, so `voxc run` gives them an empty mesh (and says so).
     case $name in lsystem_cave) ;; lsystem_*) continue ;; esac
+    # The flagship's world is larger than lavapipe binds as one grid: a box of it runs instead.
+    region=()
+    [ "$name" = flagship ] && region=(--region 280,0,236:336,160,332)
     for mesher in mc surface-nets; do
-        if ! "$voxc" run "$example" --device lavapipe --mesher "$mesher" -o "$work/${name}_$mesher.glb" 2>"$work/run.log"; then
+        if ! "$voxc" run "$example" --device lavapipe "${region[@]}" --mesher "$mesher" -o "$work/${name}_$mesher.glb" 2>"$work/run.log"; then
             echo "FAIL voxc run $name --mesher $mesher"; cat "$work/run.log"; failed=1
         fi
     done
     # The default mesher, as reported by the independent checker: closed, manifold, no zero-area triangle.
-    "$voxc" run "$example" --device lavapipe -o "$work/${name}_default.ply" 2>"$work/default.log"
+    "$voxc" run "$example" --device lavapipe "${region[@]}" -o "$work/${name}_default.ply" 2>"$work/default.log"
     if grep -Eq "\(marching cubes\): [1-9][0-9]* vertices, [1-9][0-9]* triangles, 0 boundary edges, 0 non-manifold edges, 0 zero-area triangles; watertight" "$work/default.log"; then
         echo "ok   $name: the default mesh is closed and manifold without zero-area triangles"
     else
         echo "FAIL $name: the default mesh report is not clean:"; cat "$work/default.log"; failed=1
     fi
-    # Marching cubes on the device writes the CPU mesher's (the default's) file, byte for byte.
+    # Marching cubes on the device writes the CPU mesher's (the default's) file, byte for byte
+    # (a --region is always meshed on the host, so the flagship has nothing to compare).
+    [ ${#region[@]} -eq 0 ] || continue
     "$voxc" run "$example" --device lavapipe --mesh-on device -o "$work/${name}_device.ply" 2>/dev/null
     if cmp -s "$work/${name}_default.ply" "$work/${name}_device.ply"; then
         echo "ok   $name: --mesh-on device and host write the same bytes"

@@ -153,8 +153,8 @@ void VulkanExecutor::Impl::checkLimits() const {
                                     double(maxRange) / (1 << 20)));
     if (bytes > maxRange)
         throw UserError(fmt::format("the grid needs a {:.1f} MiB voxel buffer ({} chunks of {}^3 voxels), more than "
-                                    "the Vulkan device '{}' can bind as one storage buffer ({:.1f} MiB); use a "
-                                    "smaller grid or chunk size",
+                                    "the Vulkan device '{}' can bind as one storage buffer ({:.1f} MiB); run a box of "
+                                    "the world with --region, or the whole world in tiles with `voxc world`",
                                     double(bytes) / (1 << 20), layout.chunkTotal(), layout.chunkSize, ctx.info.name,
                                     double(maxRange) / (1 << 20)));
 }
