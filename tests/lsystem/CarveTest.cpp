@@ -1,4 +1,4 @@
-// The cave carve's CPU side (docs/lsystem.md "Carving"): structural points, displacement,
+// The cave carve's CPU side (docs/architecture.md "Carving"): structural points, displacement,
 // binning, and the field through the interpreter's evaluator: spec §10 tests 14 (clearance) and
 // 15 (bounded carving) on random grammars and noise settings.
 #include "TestDefinitions.h"

@@ -1,4 +1,4 @@
-// The lsystem_cave carve on Vulkan (lavapipe) against the interpreter (docs/lsystem.md
+// The lsystem_cave carve on Vulkan (lavapipe) against the interpreter (docs/architecture.md
 // "Carving"): bit-identical voxels at chunk sizes 8/16/32/64 and an odd origin (spec §10
 // test 16), the clearance guarantee and bounded carving on the device (tests 14, 15), and chunks
 // far from the skeleton proven constant by interval analysis.

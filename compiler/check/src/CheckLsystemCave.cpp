@@ -1,5 +1,5 @@
 // `feature NAME = lsystem_cave { lsystem = NET; radius = 6; ... }` (docs/language.md, "Features";
-// docs/lsystem.md, "Carving"): the named lsystem is expanded, interpreted and connected here, at
+// docs/architecture.md, "Carving"): the named lsystem is expanded, interpreted and connected here, at
 // check time (as `voxc lsystem` does), and its skeleton becomes the carve's point set and field.
 #include "CheckLsystemCave.h"
 

@@ -1,5 +1,5 @@
 // `voxc evolve FILE NAME [--with FILE:NAME]... -o DIR`: the next generation of an lsystem block by
-// crossover and mutation (docs/lsystem.md, "Evolution"): one .vox file per variant (the input
+// crossover and mutation (docs/architecture.md, "Evolution"): one .vox file per variant (the input
 // with the block rewritten), a preview picture of each skeleton, a contact sheet and a JSON
 // summary. A person picks variants and runs evolve on them again.
 #include "Commands.h"

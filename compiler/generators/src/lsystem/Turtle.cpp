@@ -13,7 +13,7 @@ namespace {
 
 double radians(double degrees) { return degrees * (std::numbers::pi / 180.0); }
 
-// [H L U] <- [H L U] * R for ABOP's R_U, R_L, R_H (column vectors; docs/lsystem.md).
+// [H L U] <- [H L U] * R for ABOP's R_U, R_L, R_H (column vectors; docs/architecture.md "Alphabets").
 void rotateAboutUp(TurtleState& s, double a) {
     const double c = std::cos(a), n = std::sin(a);
     const glm::dvec3 h = s.heading * c - s.left * n, l = s.heading * n + s.left * c;

@@ -1,6 +1,6 @@
 // A speleothem stage (`feature NAME = speleothems { ... }` named in the pipeline): stalactites,
 // stalagmites, columns or hoodoos grown into the closed air runs of the grid earlier stages
-// wrote (voxc::caves, docs/lsystem.md "Speleothems"). On the GPU a prepass packs the air voxels
+// wrote (voxc::caves, docs/architecture.md "Speleothems"). On the GPU a prepass packs the air voxels
 // into the scratch buffer, then one invocation per column writes its own column.
 #include "Kinds.h"
 

@@ -8,7 +8,7 @@
 // kPointSetCellSize voxels over the grid, whatever the chunk size) and still computes the same
 // floats. Each list is sorted by a conservative lower bound of its points' distances to the cell,
 // so a loop stops at the first point that cannot be nearer than the nearest so far.
-// The L-system cave carve (docs/lsystem.md, "Carving") builds one from a skeleton.
+// The L-system cave carve (docs/architecture.md, "Carving") builds one from a skeleton.
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

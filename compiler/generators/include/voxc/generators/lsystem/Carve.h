@@ -1,5 +1,5 @@
 #pragma once
-// The cave carve (spec §5.2, docs/lsystem.md "Carving"): a skeleton's structural points,
+// The cave carve (spec §5.2, docs/architecture.md "Carving"): a skeleton's structural points,
 // displaced on the CPU by curl noise, become a point set (voxc/program/PointSet.h); the carve is
 // an ordinary field whose value at world voxel v is, in the spec's terms, f = (1 + F_tot) / 2
 // (1 = cave air, 0 = rock), written as

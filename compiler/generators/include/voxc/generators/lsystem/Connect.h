@@ -1,5 +1,5 @@
 #pragma once
-// Branch connection (§III-B.3, docs/lsystem.md "Connections"): endpoints are shuffled, each
+// Branch connection (§III-B.3, docs/architecture.md "Connections"): endpoints are shuffled, each
 // becomes a line start with probability `chance`, the next accepted endpoint within
 // `maxDistance` ends the line; lines are distorted by curl noise with a sin(pi t) taper so they
 // end exactly at both endpoints.

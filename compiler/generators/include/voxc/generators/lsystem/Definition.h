@@ -1,7 +1,8 @@
 #pragma once
-// The host-side model of an L-system cave network (Mark & Berechet 2014, docs/lsystem.md):
-// axiom, weighted productions, typed macros with weighted substitutes, the turtle's alphabet and
-// parameters, the selection rule, the generation modes and every bound the expansion obeys.
+// The host-side model of an L-system cave network (Mark & Berechet 2014; docs/architecture.md,
+// "The model"): axiom, weighted productions, typed macros with weighted substitutes, the turtle's
+// alphabet and parameters, the selection rule, the generation modes and every bound the expansion
+// obeys.
 // Angles are in degrees, lengths in voxels; y is up.
 #include "voxc/core/Errors.h"
 #include "voxc/core/SourceLoc.h"
@@ -55,7 +56,7 @@ struct TurtleParams {
     double pitch = 0.0; // elevation above the x-z plane
 };
 
-// Target mode: choices are biased toward `point` (docs/lsystem.md, "Modes").
+// Target mode: choices are biased toward `point` (docs/architecture.md, "Modes").
 struct TargetMode {
     glm::dvec3 point{0.0};
     double strength = 1.0;

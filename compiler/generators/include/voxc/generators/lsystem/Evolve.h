@@ -1,5 +1,5 @@
 #pragma once
-// Variation of rule sets (docs/lsystem.md, "Evolution"): random production rules (§III-B.1),
+// Variation of rule sets (docs/architecture.md, "Evolution"): random production rules (§III-B.1),
 // crossover by bracket index (§III-D, grammars (7) -> (8)) and mutation (a voxc extension).
 // Every operator is a pure function of its inputs and seeds.
 #include "voxc/generators/lsystem/Definition.h"

@@ -1,6 +1,6 @@
 #pragma once
 // Expansion: parallel rewriting of the axiom with macros substituted as they are written
-// (docs/lsystem.md, "Expansion"). Every choice is a hash of (seed, expansion, position,
+// (docs/architecture.md, "Expansion"). Every choice is a hash of (seed, expansion, position,
 // occurrence); the length is predicted and capped before any string is allocated.
 #include "voxc/generators/lsystem/Definition.h"
 

@@ -1,5 +1,5 @@
 #pragma once
-// Counter-based draws and the two selection rules (docs/lsystem.md, "Selection"). Every random
+// Counter-based draws and the two selection rules (docs/architecture.md, "Selection"). Every random
 // decision of the L-system is a pure hash of its key, never a stateful generator, so any part of
 // an expansion can be recomputed alone and the result never depends on evaluation order.
 #include "voxc/generators/lsystem/Definition.h"

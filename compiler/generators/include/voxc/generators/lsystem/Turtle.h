@@ -1,7 +1,7 @@
 #pragma once
-// The turtle that turns an expanded string into a skeleton (docs/lsystem.md, "Turtle"):
-// segments with their branch, type and radius, the leaf endpoints that branch connection joins,
-// and the branches with their "do not connect" flag.
+// The turtle that turns an expanded string into a skeleton (docs/architecture.md, "Turtle to
+// skeleton"): segments with their branch, type and radius, the leaf endpoints that branch
+// connection joins, and the branches with their "do not connect" flag.
 #include "voxc/generators/lsystem/Definition.h"
 
 #include <glm/vec3.hpp>
