@@ -25,6 +25,9 @@ struct Level {
     // Per row parity p: 1 where a half sweep of a row with (y + z + colour) & 1 == p leaves the
     // cell alone (fixed, or of the other colour), so the sweep's store is a branch-free select.
     std::vector<uint8_t> keep[2];
+    // Per component: the coarser level's correction interpolated along x (Prolongation::prepare),
+    // kept between V-cycles so its pages are touched once per solve.
+    std::vector<std::vector<float>> alongX;
 };
 
 // Visits the in-box face neighbours in the order -x, +x, -y, +y, -z, +z as (index, axis).
@@ -159,6 +162,7 @@ float residualAt(const Level& level, const std::vector<float>& u, float f, int32
 
 // out[x] = rhs[x] - sum_j w_j (u_j - u_i) for x in [1, n - 1) (rhs null: 0), the sum from 0 in
 // neighbour order; vectorisable like relaxRow.
+VOXC_ROW_KERNEL
 void laplaceResidualRow(const float* __restrict u, const float* __restrict ym, const float* __restrict yp,
                         const float* __restrict zm, const float* __restrict zp, const float* __restrict rhs, float wx,
                         float wy, float wz, int32_t n, float* __restrict out) {
@@ -175,6 +179,12 @@ void laplaceResidualRow(const float* __restrict u, const float* __restrict ym, c
     }
 }
 
+// out[x] = 0 where fixed[x]; a select, so it vectorises.
+VOXC_ROW_KERNEL
+void zeroFixed(const uint8_t* __restrict fixed, int32_t n, float* __restrict out) {
+    for (int32_t x = 0; x < n; ++x) out[x] = fixed[x] ? 0.0f : out[x];
+}
+
 // The residuals of row (y, z) into out[0..n): f - sum_j w_j (u_j - u_i) at free cells, 0 at fixed
 // ones; f is 0 where `rhs` is null. An absent neighbour row is the row itself (u_j - u_i = +0).
 void residualRow(const Level& level, const std::vector<float>& values, const float* rhs, int32_t y, int32_t z,
@@ -188,9 +198,7 @@ void residualRow(const Level& level, const std::vector<float>& values, const flo
                        level.weight.z, n, out);
     out[0] = residualAt(level, values, rhs ? rhs[i0] : 0.0f, 0, y, z);
     if (n > 1) out[n - 1] = residualAt(level, values, rhs ? rhs[i0 + size_t(n - 1)] : 0.0f, n - 1, y, z);
-    const uint8_t* fixed = level.fixed.data() + i0;
-    for (int32_t x = 0; x < n; ++x)
-        if (fixed[x]) out[x] = 0.0f;
+    zeroFixed(level.fixed.data() + i0, n, out);
 }
 
 // Which axes the next level halves (ceil): every axis of >= 2 cells while the longest has >= 8;
@@ -206,10 +214,62 @@ glm::ivec3 parentOf(const glm::ivec3& halved, int32_t x, int32_t y, int32_t z) {
     return {x >> halved.x, y >> halved.y, z >> halved.z};
 }
 
+// The coarse rows interpolated along x at every fine column: out[x] = near * row[x0[x]] + far *
+// row[x1[x]] (the trilinear prolongation's first step), gathers through the parent columns.
+VOXC_ROW_KERNEL
+void interpolateAlongX(const float* __restrict row, const int32_t* __restrict x0, const int32_t* __restrict x1,
+                       float near, float far, int32_t n, float* __restrict out) {
+    for (int32_t x = 0; x < n; ++x) out[x] = near * row[x0[x]] + far * row[x1[x]];
+}
+
+// The four rows of coarse values interpolated along x that a fine row combines, [k][j]: those of
+// coarse row (ys[j], zs[k]).
+struct AlongXRows {
+    const float *r00, *r01, *r10, *r11;
+};
+
+// A fine row of the prolongation from rows interpolated along x: per cell y, then z, in the
+// order of the per-cell expression, stored (or added) where the cell is free, a branch-free
+// select elsewhere; elementwise, so it vectorises.
+VOXC_ROW_KERNEL
+void prolongRow(AlongXRows c, float n1, float f1, float n2, float f2, const uint8_t* __restrict fixed, bool add,
+                int32_t n, float* __restrict out) {
+    const float* __restrict r00 = c.r00;
+    const float* __restrict r01 = c.r01;
+    const float* __restrict r10 = c.r10;
+    const float* __restrict r11 = c.r11;
+    if (add) {
+        for (int32_t x = 0; x < n; ++x) {
+            const float v = n2 * (n1 * r00[x] + f1 * r01[x]) + f2 * (n1 * r10[x] + f1 * r11[x]);
+            out[x] = fixed[x] ? out[x] : out[x] + v;
+        }
+    } else {
+        for (int32_t x = 0; x < n; ++x) {
+            const float v = n2 * (n1 * r00[x] + f1 * r01[x]) + f2 * (n1 * r10[x] + f1 * r11[x]);
+            out[x] = fixed[x] ? out[x] : v;
+        }
+    }
+}
+
+// max(worst, max_x |values[x]|): eight running maxima, merged at the end (a max does not depend
+// on the order, so the result is the plain loop's; the values are finite), so it vectorises.
+VOXC_ROW_KERNEL
+float maxAbs(const float* __restrict values, int32_t n, float worst) {
+    float lanes[8] = {worst, worst, worst, worst, worst, worst, worst, worst};
+    int32_t x = 0;
+    for (; x + 8 <= n; x += 8)
+        for (int32_t k = 0; k < 8; ++k) lanes[k] = std::max(lanes[k], std::abs(values[x + k]));
+    for (; x < n; ++x) lanes[0] = std::max(lanes[0], std::abs(values[x]));
+    for (int32_t k = 1; k < 8; ++k) lanes[0] = std::max(lanes[0], lanes[k]);
+    return lanes[0];
+}
+
 // Trilinear cell-centred interpolation of coarse values at every free fine cell, along x, then
 // y, then z: on a halved axis weights 3/4 (own parent) and 1/4 (the next parent towards the
-// child, clamped at the box), on a kept axis 1 and 0; added to or written into u. Pointwise, so
-// rows may be done in any order, on any thread.
+// child, clamped at the box), on a kept axis 1 and 0; added to or written into u. The x step of
+// every coarse row is done once (prepare: each is shared by up to 16 fine rows) into a buffer of
+// coarse rows at fine x resolution; a fine row (row) then combines four of them. Both are
+// pointwise, so rows may be done in any order, on any thread.
 class Prolongation {
 public:
     Prolongation(const Box& coarse, const Level& fine) : coarse_(coarse), fine_(fine), halved_(halvedAxes(fine.box)) {
@@ -220,33 +280,36 @@ public:
             xs0_[size_t(x)] = x >> halved_.x, xs1_[size_t(x)] = other(x, coarse.size.x, halved_.x);
     }
 
-    void row(const std::vector<float>& e, std::vector<float>& u, bool add, int32_t y, int32_t z) const {
+    // alongX = every coarse row of e interpolated along x at the fine columns (sized here).
+    void prepare(const std::vector<float>& e, std::vector<float>& alongX) const {
+        const int32_t n = fine_.box.size.x;
+        alongX.resize(size_t(n) * size_t(coarse_.size.y) * size_t(coarse_.size.z));
+        forTwoSlabs(coarse_.size.z, kMinSlicesForThreads, [&](int32_t z0, int32_t z1) {
+            for (int32_t z = z0; z < z1; ++z)
+                for (int32_t y = 0; y < coarse_.size.y; ++y)
+                    interpolateAlongX(e.data() + coarse_.index(0, y, z), xs0_.data(), xs1_.data(), near_[0], far_[0], n,
+                                      alongX.data() + alongXRow(y, z));
+        });
+    }
+
+    // Fine row (y, z) of u from prepare's buffer.
+    void row(const std::vector<float>& alongX, std::vector<float>& u, bool add, int32_t y, int32_t z) const {
         const Box& b = fine_.box;
         const int32_t ys[2] = {y >> halved_.y, other(y, coarse_.size.y, halved_.y)};
         const int32_t zs[2] = {z >> halved_.z, other(z, coarse_.size.z, halved_.z)};
-        const float* rows[2][2]; // [k][j]: coarse row (ys[j], zs[k])
-        for (int32_t k = 0; k < 2; ++k)
-            for (int32_t j = 0; j < 2; ++j) rows[k][j] = e.data() + coarse_.index(0, ys[j], zs[k]);
+        const float* a = alongX.data();
+        const AlongXRows rows{a + alongXRow(ys[0], zs[0]), a + alongXRow(ys[1], zs[0]), a + alongXRow(ys[0], zs[1]),
+                              a + alongXRow(ys[1], zs[1])};
         const size_t i0 = b.index(0, y, z);
-        const uint8_t* fixed = fine_.fixed.data() + i0;
-        float* out = u.data() + i0;
-        for (int32_t x = 0; x < b.size.x; ++x) {
-            if (fixed[x]) continue;
-            const int32_t x0 = xs0_[size_t(x)], x1 = xs1_[size_t(x)];
-            float alongY[2];
-            for (int32_t k = 0; k < 2; ++k) {
-                const float alongX0 = near_[0] * rows[k][0][x0] + far_[0] * rows[k][0][x1];
-                const float alongX1 = near_[0] * rows[k][1][x0] + far_[0] * rows[k][1][x1];
-                alongY[k] = near_[1] * alongX0 + far_[1] * alongX1;
-            }
-            const float v = near_[2] * alongY[0] + far_[2] * alongY[1];
-            out[x] = add ? out[x] + v : v;
-        }
+        prolongRow(rows, near_[1], far_[1], near_[2], far_[2], fine_.fixed.data() + i0, add, b.size.x, u.data() + i0);
     }
 
 private:
     static int32_t other(int32_t v, int32_t n, int32_t h) {
         return h ? std::clamp((v & 1) ? v / 2 + 1 : v / 2 - 1, 0, n - 1) : v;
+    }
+    size_t alongXRow(int32_t y, int32_t z) const {
+        return (size_t(z) * size_t(coarse_.size.y) + size_t(y)) * size_t(fine_.box.size.x);
     }
     const Box& coarse_;
     const Level& fine_;
@@ -255,11 +318,13 @@ private:
     std::vector<int32_t> xs0_, xs1_;
 };
 
-void prolong(const Box& coarse, const std::vector<float>& e, const Level& fine, std::vector<float>& u, bool add) {
+void prolong(const Box& coarse, const std::vector<float>& e, Level& fine, std::vector<float>& u, bool add) {
     const Prolongation p(coarse, fine);
+    std::vector<float>& alongX = fine.alongX.front();
+    p.prepare(e, alongX);
     forTwoSlabs(fine.box.size.z, kMinSlicesForThreads, [&](int32_t z0, int32_t z1) {
         for (int32_t z = z0; z < z1; ++z)
-            for (int32_t y = 0; y < fine.box.size.y; ++y) p.row(e, u, add, y, z);
+            for (int32_t y = 0; y < fine.box.size.y; ++y) p.row(alongX, u, add, y, z);
     });
 }
 
@@ -278,8 +343,7 @@ void prolong(const Box& coarse, const std::vector<float>& e, const Level& fine, 
 // (`maxResidual`: the slice two sweeps behind the last half sweep, once its neighbour slices are
 // final; as maxResidualOf, and a max does not depend on the order).
 struct Correction {
-    const Prolongation& prolongation;
-    const Level& coarse;
+    const Prolongation& prolongation; // its prepared rows: the level's alongX
 };
 
 void smooth(Level& level, int32_t sweeps, bool zeroRhs, const Correction* correction = nullptr,
@@ -299,7 +363,7 @@ void smooth(Level& level, int32_t sweeps, bool zeroRhs, const Correction* correc
             if (correction && t < b.size.z)
                 for (size_t c = 0; c < level.u.size(); ++c)
                     for (int32_t y = y0; y < y1; ++y)
-                        correction->prolongation.row(correction->coarse.u[c], level.u[c], true, y, t);
+                        correction->prolongation.row(level.alongX[c], level.u[c], true, y, t);
             for (int32_t h = 0; h < halfSweeps; ++h) {
                 const int32_t z = t - lag - h;
                 if (z < 0 || z >= b.size.z) continue;
@@ -313,7 +377,7 @@ void smooth(Level& level, int32_t sweeps, bool zeroRhs, const Correction* correc
                 for (const std::vector<float>& u : level.u)
                     for (int32_t y = y0; y < y1; ++y) {
                         residualRow(level, u, nullptr, y, measured, residual);
-                        for (int32_t x = 0; x < b.size.x; ++x) w = std::max(w, std::abs(residual[x]));
+                        w = maxAbs(residual, b.size.x, w);
                     }
             sync();
         }
@@ -363,6 +427,22 @@ Children childrenOf(int32_t p, int32_t n, int32_t halved) {
     return halved ? Children{2 * p, std::min(2, n - 2 * p)} : Children{p, 1};
 }
 
+// sum[px] += the fine values of px's children along x, in x order: fine[2 px], then fine[2 px + 1]
+// (where it exists) on a halved axis, fine[px] on a kept one. Vectorisable.
+VOXC_ROW_KERNEL
+void addChildren(const float* __restrict fine, int32_t n, int32_t halved, float* __restrict sum) {
+    if (!halved) {
+        for (int32_t x = 0; x < n; ++x) sum[x] += fine[x];
+        return;
+    }
+    const int32_t pairs = n / 2;
+    for (int32_t px = 0; px < pairs; ++px) {
+        sum[px] += fine[2 * px];
+        sum[px] += fine[2 * px + 1];
+    }
+    if (n & 1) sum[pairs] += fine[n - 1];
+}
+
 // The coarse right-hand side: per coarse cell the mean of its children's residuals (0 at fixed
 // children), summed in z, y, x order like restrictMean, with the coarse correction reset to 0.
 // Coarse slices are independent, so two threads give the same bits.
@@ -374,23 +454,20 @@ void restrictResidual(const Level& fine, size_t c, bool zeroRhs, Level& coarse) 
     std::vector<float>& out = coarse.f[c];
     forTwoSlabs(cb.size.z, kMinSlicesForThreads, [&](int32_t z0, int32_t z1) {
         std::vector<float> residual(size_t(b.size.x)), sum(size_t(cb.size.x));
-        std::vector<int32_t> count(size_t(cb.size.x));
         for (int32_t pz = z0; pz < z1; ++pz)
             for (int32_t py = 0; py < cb.size.y; ++py) {
                 std::fill(sum.begin(), sum.end(), 0.0f);
-                std::fill(count.begin(), count.end(), 0);
                 const Children cz = childrenOf(pz, b.size.z, halved.z), cy = childrenOf(py, b.size.y, halved.y);
                 for (int32_t z = cz.first; z < cz.first + cz.count; ++z)
                     for (int32_t y = cy.first; y < cy.first + cy.count; ++y) {
                         residualRow(fine, fine.u[c], rhs, y, z, residual.data());
-                        for (int32_t px = 0; px < cb.size.x; ++px) {
-                            const Children cx = childrenOf(px, b.size.x, halved.x);
-                            for (int32_t x = cx.first; x < cx.first + cx.count; ++x) sum[size_t(px)] += residual[size_t(x)];
-                            count[size_t(px)] += cx.count;
-                        }
+                        addChildren(residual.data(), b.size.x, halved.x, sum.data());
                     }
+                // Each coarse cell's child count: its z and y children times its x children.
+                const int32_t rows = cz.count * cy.count;
                 const size_t p0 = cb.index(0, py, pz);
-                for (int32_t px = 0; px < cb.size.x; ++px) out[p0 + size_t(px)] = sum[size_t(px)] / float(count[size_t(px)]);
+                for (int32_t px = 0; px < cb.size.x; ++px)
+                    out[p0 + size_t(px)] = sum[size_t(px)] / float(rows * childrenOf(px, b.size.x, halved.x).count);
             }
     });
 }
@@ -415,7 +492,8 @@ float vCycle(std::vector<Level>& levels, size_t l, bool measure = true) {
     }
     vCycle(levels, l + 1, false);
     const Prolongation prolongation(coarse.box, level);
-    const Correction correction{prolongation, coarse};
+    for (size_t c = 0; c < level.u.size(); ++c) prolongation.prepare(coarse.u[c], level.alongX[c]);
+    const Correction correction{prolongation};
     smooth(level, kPostSmooth, zeroRhs, &correction, measured);
     return residual;
 }
@@ -432,7 +510,7 @@ float maxResidualOf(const Level& level) {
             for (int32_t z = z0; z < z1; ++z)
                 for (int32_t y = 0; y < b.size.y; ++y) {
                     residualRow(level, u, nullptr, y, z, residual.data());
-                    for (float r : residual) w = std::max(w, std::abs(r));
+                    w = maxAbs(residual.data(), b.size.x, w);
                 }
     });
     return std::max(worst[0], worst[1]);
@@ -474,7 +552,7 @@ std::vector<std::vector<uint8_t>> multigridMasks(const std::vector<MultigridLeve
 
 float maxResidual(const std::vector<uint8_t>& fixed, const Field3& u) {
     if (u.values.size() != fixed.size()) throw InternalError("curves: a residual with a mask of another size");
-    Level level{u.box, glm::vec3(1.0f), fixed, {u.values}, {}, {}};
+    Level level{u.box, glm::vec3(1.0f), fixed, {u.values}, {}, {}, {}};
     return maxResidualOf(level);
 }
 
@@ -489,8 +567,11 @@ SolveReport solveLaplace(const std::string& name, const std::vector<uint8_t>& fi
     std::vector<std::vector<uint8_t>> masks = multigridMasks(shapes, fixed);
     std::vector<Level> levels;
     for (size_t l = 0; l < shapes.size(); ++l)
-        levels.push_back(Level{Box{glm::ivec3(0), shapes[l].size}, shapes[l].weight, std::move(masks[l]), {}, {}, {}});
-    for (Level& level : levels) computeKeepMasks(level);
+        levels.push_back(Level{Box{glm::ivec3(0), shapes[l].size}, shapes[l].weight, std::move(masks[l]), {}, {}, {}, {}});
+    for (Level& level : levels) {
+        computeKeepMasks(level);
+        level.alongX.resize(components.size());
+    }
 
     // Full multigrid start: Dirichlet values restricted to every level (mean of the fixed
     // children), free cells 0; solve the coarsest, then prolongate and V-cycle level by level.
