@@ -26,6 +26,12 @@ expect rules_stdin_device_refused 1 "stdin\.vox:3:11: error E0100: .*'/dev/stdin
     -- bash -c 'timeout 30 "$0" check "$1" < /dev/null' "$voxc" "$work/stdin.vox"
 lsystem_naming /dev/zero > "$work/zero.vox"
 expect rules_device_refused 1 "zero\.vox:3:11: error E0100: .*it is a character device" -- timeout 30 "$voxc" check "$work/zero.vox"
+# heightmap and mesh blocks read their files the same way
+mkfifo "$work/fifo.png" "$work/fifo.glb"
+printf 'world { size = [16, 16, 16]; }\nheightmap hills {\n  file = "fifo.png";\n  size = [16, 16];\n  height = [0, 8];\n}\nfield g = clamp(hills(wx, wz) - wy, 0, 1);\npipeline { start; set g; }\n' > "$work/fifo_heightmap.vox"
+expect heightmap_fifo_refused 1 "fifo_heightmap\.vox:3:10: error E0100: .*fifo\.png': it is a FIFO" -- timeout 30 "$voxc" check "$work/fifo_heightmap.vox"
+printf 'world { size = [16, 16, 16]; }\nmesh rock {\n  file = "fifo.glb";\n}\nfield g = clamp(-rock(wp), 0, 1);\npipeline { start; set g; }\n' > "$work/fifo_mesh.vox"
+expect mesh_fifo_refused 1 "fifo_mesh\.vox:3:10: error E0100: .*fifo\.glb': it is a FIFO" -- timeout 30 "$voxc" check "$work/fifo_mesh.vox"
 lsystem_naming . > "$work/dir.vox"
 expect rules_directory_refused 1 "dir\.vox:3:11: error E0100: .*it is a directory" -- timeout 30 "$voxc" check "$work/dir.vox"
 # the size cap: exactly 4 MiB of comments is read, one byte more is E0012 with the number

@@ -292,4 +292,33 @@ finally:
     watchdog.cancel()
     client.process.kill()
 
+# Heightmap and mesh files: one that is missing and one that is a FIFO are diagnostics at their
+# `file =` values, and the server keeps answering.
+os.mkfifo(os.path.join(work, "rock.fifo"))
+inputs = os.path.join(work, "inputs.vox")
+inputs_text = ("world { size = [16, 16, 16]; }\nheightmap hills {\n  file = \"missing.png\";\n  size = [16, 16];\n"
+               "  height = [0, 8];\n}\nmesh rock {\n  file = \"rock.fifo\";\n}\n"
+               "field g = clamp(hills(wx, wz) - wy, 0, 1) - clamp(-rock(wp), 0, 1);\npipeline { start; set g; }\n")
+client = Client(voxc)
+watchdog = threading.Timer(60, client.process.kill)
+watchdog.start()
+try:
+    client.request("initialize", {"capabilities": {}})
+    client.notify("textDocument/didOpen", {"textDocument": {"uri": uri(inputs), "languageId": "vox", "version": 1,
+                                                            "text": inputs_text}})
+    got = client.diagnostics_for(uri(inputs))
+    check("input_files_diagnosed_at_their_key",
+          [(d.get("code"), d["range"]["start"]["line"], d["range"]["start"]["character"]) for d in got]
+          == [("E0100", 2, 9), ("E0100", 7, 9)]
+          and "missing.png" in got[0]["message"] and "rock.fifo': it is a FIFO" in got[1]["message"], got)
+    shutdown = client.request("shutdown")
+    check("input_files_shutdown", "result" in shutdown and "error" not in shutdown, shutdown)
+    client.notify("exit", {})
+    check("input_files_exit_0", client.process.wait(timeout=30) == 0)
+except (EOFError, OSError, subprocess.TimeoutExpired) as e:
+    check("input_files_answered", False, "the server stopped answering: %r" % e)
+finally:
+    watchdog.cancel()
+    client.process.kill()
+
 finish()

@@ -32,6 +32,14 @@ mkdir -p "$work/with space"
 cp "$vox" "$rules" "$work/with space/"
 expect depfile_space 0 "" -- "$voxc" compile "$work/with space/world.vox" -o "$work/pkg4" -MF "$work/spaced.d"
 expect depfile_space_escaped 0 "" -- grep -qF 'with\ space/tunnels.rules' "$work/spaced.d"
+# Heightmap and mesh files are inputs too: the depfile names them, so a changed image or mesh
+# rebuilds the package.
+cp "$src/examples/imported_ridge.vox" "$src/examples/imported_ridge.png" "$src/examples/boulders.vox" \
+    "$src/examples/boulder.glb" "$work/proj/"
+expect depfile_heightmap 0 "\(2 inputs\)" -- "$voxc" compile "$work/proj/imported_ridge.vox" -o "$work/ridge" -MF "$work/ridge.d"
+expect depfile_heightmap_named 0 "" -- grep -qF "$work/proj/imported_ridge.png" "$work/ridge.d"
+expect depfile_mesh 0 "\(2 inputs\)" -- "$voxc" compile "$work/proj/boulders.vox" -o "$work/boulders" -MF "$work/boulders.d"
+expect depfile_mesh_named 0 "" -- grep -qF "$work/proj/boulder.glb" "$work/boulders.d"
 printf 'world { size = [8, 8, 8]; }\npipeline { start; nope; }\n' > "$work/broken.vox"
 expect depfile_not_on_error 1 "E0002" -- "$voxc" compile "$work/broken.vox" -o "$work/pkg5" -MD -MF "$work/broken.d"
 expect depfile_not_on_error_absent 1 "" -- test -e "$work/broken.d"
