@@ -15,6 +15,7 @@
 #include "CarveCases.h"
 #include "SpeleothemCases.h"
 #include "CurvesCases.h"
+#include "InputCases.h"
 #include "LsystemCases.h"
 #include "MeshCases.h"
 #include "TerrainCases.h"
@@ -200,6 +201,13 @@ int main(int argc, char** argv) {
                 if (uses("vulkan")) registerVulkan(reporter, *context, name, n, program);
                 if (uses("interp")) registerInterp(reporter, name, n, program);
             }
+        // Existing terrain in: a 4096^2 heightmap sampled over 512x128x512, a 100k-triangle mesh's SDF.
+        if (uses("vulkan") || uses("interp")) {
+            auto program = std::make_shared<const Program>(bench::heightmapProgram());
+            if (uses("vulkan")) registerVulkan(reporter, *context, "heightmap", 512, program);
+            if (uses("interp")) registerInterp(reporter, "heightmap", 512, program);
+        }
+        if (uses("host")) bench::registerMeshSdf(reporter);
         if (uses("vulkan") || uses("interp") || uses("host"))
             bench::registerCurves(reporter, context.get(), uses("interp"), uses("host"));
         if (uses("host")) bench::registerLsystemExpand(reporter);
