@@ -4,6 +4,7 @@
 #include "CheckInputs.h"
 #include "CheckTerrain.h"
 #include "Materials.h"
+#include "CheckKernelBounds.h"
 #include "CheckStamps.h"
 #include "Sections.h"
 #include "voxc/stages/StageKind.h"
@@ -138,6 +139,7 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
         context.curvesKinds.push_back(block.source);
     }
     program.speleothems = std::move(features.speleothems);
+    checkKernelBounds(context, program, grammars);
 
     program.pipeline.push_back({Stage::Kind::Start, 0, FieldMode::Set, {}, std::nullopt});
     const ast::Block* pipelineBlock = uniqueBlock(context, file, "pipeline");

@@ -247,6 +247,13 @@ struct Limits {
     int32_t maxStampReach = 64;
     int64_t maxStampOverlap = 512;
     int32_t maxStartShapes = 256;
+    // One generated kernel: the field DAG nodes it holds (a sweep's stamp kernel holds the fields
+    // of all its stamps; a field kernel one field, bounded by maxFieldNodes), and the loop
+    // iterations one invocation may take. lavapipe (llvmpipe) counts the iterations of all loops
+    // of an invocation group together and, past 65,535, silently leaves every loop: a kernel that
+    // could loop more would compute a wrong result, so the checker refuses it.
+    int64_t maxKernelFieldNodes = 100000;
+    int64_t maxKernelLoopIterations = 65535;
     int64_t maxSourceBytes = int64_t(4) << 20;
     // Depth of the parse tree: brackets, blocks, unary operators, `let`, `?:` and operator chains.
     int32_t maxNesting = 256;
