@@ -573,11 +573,20 @@ SolveReport solveLaplace(const std::string& name, const std::vector<uint8_t>& fi
         level.alongX.resize(components.size());
     }
 
+    // The finest unknowns go back into the components however the solve ends (a ConvergenceError
+    // leaves the last iterate at the free cells); moves, not copies of whole fields.
+    struct GiveBack {
+        std::vector<Field3*>& components;
+        std::vector<std::vector<float>>& finest;
+        ~GiveBack() {
+            for (size_t c = 0; c < components.size() && c < finest.size(); ++c) components[c]->values = std::move(finest[c]);
+        }
+    } giveBack{components, levels.front().u};
     // Full multigrid start: Dirichlet values restricted to every level (mean of the fixed
     // children), free cells 0; solve the coarsest, then prolongate and V-cycle level by level.
     for (Field3* component : components) {
         Level& top = levels.front();
-        top.u.push_back(component->values);
+        top.u.push_back(std::move(component->values)); // moved back on every way out (below)
         for (size_t i = 0; i < top.fixed.size(); ++i)
             if (!top.fixed[i]) top.u.back()[i] = 0.0f;
         top.f.emplace_back(); // the finest right-hand side is 0 and never read (zeroRhs)
@@ -606,7 +615,6 @@ SolveReport solveLaplace(const std::string& name, const std::vector<uint8_t>& fi
             throw ConvergenceError(name, report.cycles(), report.residuals.back(), tolerance);
         report.residuals.push_back(vCycle(levels, 0));
     }
-    for (size_t c = 0; c < components.size(); ++c) components[c]->values = levels.front().u[c];
     return report;
 }
 

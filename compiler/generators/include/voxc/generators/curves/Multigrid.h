@@ -36,7 +36,8 @@ std::vector<std::vector<uint8_t>> multigridMasks(const std::vector<MultigridLeve
 
 // Solves the components together: one schedule, one cycle count, stopped when the largest
 // residual of any component is <= tolerance (so a uniform constraint direction stays exact).
-// Cells with fixed[i] != 0 keep their values bitwise. Throws ConvergenceError past the cap.
+// Cells with fixed[i] != 0 keep their values bitwise. Throws ConvergenceError past the cap (the
+// free cells then hold the last iterate).
 SolveReport solveLaplace(const std::string& name, const std::vector<uint8_t>& fixed, std::vector<Field3*> components,
                          float tolerance, const Limits& limits);
 
