@@ -1,5 +1,6 @@
 #include "voxc/generators/curves/Scene.h"
 
+#include "HeapReuse.h"
 #include "Parallel.h"
 
 #include "voxc/builtins/Intervals.h"
@@ -71,6 +72,7 @@ private:
 } // namespace
 
 SolveTable solveScene(const Scene& scene, const Limits& limits, const Solvers& solvers, bool keepChannels) {
+    const FieldHeapReuse reuse; // the solve's freed fields serve its next ones (HeapReuse.h)
     Result solved = scene.constraints ? solveCurves(*scene.constraints, scene.options, limits, solvers)
                                       : runCurves(scene.curves, scene.box, scene.options, limits, solvers);
     const auto densityStart = std::chrono::steady_clock::now();
