@@ -10,4 +10,10 @@ namespace voxc::bench {
 // - compile_16cell_rules: one grammar of 256 rules (Limits::maxRulesPerSweep) with [4,2,2] windows.
 void registerCompileCases(JsonReporter& reporter);
 
+// stamp_symmetry_compile (n = 1, 48): the CPU seconds of a cold `voxc run` (every cache off, on
+// lavapipe) of bench/grammars/stamp_symmetry.vox, an lsystem_cave stamp, under `symmetry = none`
+// and `all`; one untimed run first, three timed. tests/cli/symmetry_compile_time.sh asserts the
+// ratio with a generous bound.
+void registerStampSymmetryCompile(JsonReporter& reporter);
+
 } // namespace voxc::bench

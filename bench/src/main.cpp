@@ -216,6 +216,7 @@ int main(int argc, char** argv) {
         bench::registerTerrainSchedule(reporter, options.terrainSides, uses("host"),
                                        context && context->device().type != DeviceType::Cpu ? context.get() : nullptr);
         if (uses("host")) bench::registerCompileCases(reporter);
+        if (uses("vulkan")) bench::registerStampSymmetryCompile(reporter);
         if (uses("host")) bench::registerLspLatency(reporter);
         // The meshing cases' grids come from the Vulkan pipeline, so they need the device.
         if (context) bench::registerMeshCases(reporter, *context, options.meshSizes, uses("host"), uses("vulkan"), uses("openvdb"));
