@@ -65,6 +65,9 @@ sed -e 's/iterations = 6;/iterations = 12;/' -e 's/^\(  rule [a-z_]* {\)$/\1 pro
 # The imported ridge from the south-east: the arch over the river, the ledge on the far ridge.
 "$voxc" render "$root/examples/imported_ridge.vox" -o "$root/docs/images/imported_ridge.png" --size 640x400 \
     --camera 170,80,170:64,14,64 --device lavapipe
+# The road curve through the imported ridge, cut open along it: the tunnel under the crest.
+"$voxc" render "$root/examples/carved_ridge.vox" -o "$root/docs/images/carved_ridge.png" --size 640x400 \
+    --camera 190,45,30:64,20,36 --cut "x>64" --device lavapipe
 # The two boulders in their fillets of earth.
 "$voxc" render "$root/examples/boulders.vox" -o "$root/docs/images/boulders.png" --size 640x400 \
     --camera -30,60,-30:40,14,44 --device lavapipe

@@ -69,5 +69,51 @@ TEST(vulkan_Inputs, HeightmapsAndMeshesMatchTheInterpreter) {
     }
 }
 
+// The same heightmap and boulder as inputs of a curves block (docs/curves.md, "Heightmaps and
+// meshes as inputs"), with a road curve cut across them: the solve runs on the host once, and
+// both backends combine its table the same way.
+std::string curvesInputsAt(const fs::path& dir, glm::ivec3 origin) {
+    return fmt::format(R"(
+world {{ size = [37, 30, 29]; origin = [{0}, {1}, {2}]; seed = 3; }}
+material rock {{ id = 1; }}
+material sand {{ id = 2; }}
+heightmap ridge {{ file = "{3}/ridge.png"; origin = [{4}, {5}]; size = [42.9, 35.1]; height = [{6}, {7}]; }}
+mesh boulder {{ file = "{3}/ball.glb"; translate = [{8}, {9}, {10}]; scale = 6.5; band = 3; }}
+curves carved {{
+  box = [[1, 0, 2], [35, 29, 26]];
+  inputs = [ridge, boulder];
+  dead_zone = 2;
+  input_material = rock;
+  input_amplitude = 0.5;
+  curve road {{
+    points = [[-2, 9, 6], [12, 11, 12], [24, 12, 16], [40, 10, 22]];
+    constraint {{ t = 0; material = sand; amplitude = 0.4; }}
+    constraint {{ t = 1; material = sand; }}
+  }}
+}}
+pipeline {{ start; set carved; }}
+)",
+                       origin.x, origin.y, origin.z, dir.string(), origin.x + 4, origin.z + 3, origin.y + 4,
+                       origin.y + 22, origin.x + 14, origin.y + 18, origin.z + 15);
+}
+
+TEST(vulkan_Inputs, CurvesWithHeightmapAndMeshInputsMatchTheInterpreter) {
+    const fs::path dir = inputsDir();
+    for (const glm::ivec3 origin : {glm::ivec3(0), glm::ivec3(-13, -7, 5)}) {
+        SCOPED_TRACE(fmt::format("origin {} {} {}", origin.x, origin.y, origin.z));
+        CheckResult result = checkSource(SourceFile("curves_inputs.vox", curvesInputsAt(dir, origin)));
+        ASSERT_TRUE(result.program) << result.rendered();
+        const Program& p = *result.program;
+        const DenseGrid expected = interpret(p);
+        size_t solid = 0;
+        for (float d : expected.data()) solid += d >= 0.5f;
+        EXPECT_GT(solid, expected.data().size() / 5);
+        EXPECT_LT(solid, expected.data().size() * 9 / 10);
+        EXPECT_GT(std::count(expected.materials().begin(), expected.materials().end(), uint8_t(1)), 100); // inputs
+        EXPECT_GT(std::count(expected.materials().begin(), expected.materials().end(), uint8_t(2)), 20);  // road
+        test::expectLavapipeMatchesAtEveryChunkSize(p, expected);
+    }
+}
+
 } // namespace
 } // namespace voxc

@@ -120,14 +120,15 @@ Program checkProgram(Context& context, const ast::File& file, const std::string&
     std::vector<std::string> stageNames = grammarNames;
     for (const ast::FieldDecl& field : file.fields) stageNames.push_back(field.name);
     for (const ast::FeatureDecl& feature : file.features) stageNames.push_back(feature.name);
+    // Heightmap and mesh files, read and made maps before the curves blocks that voxelise them
+    // and the fields that sample them.
+    program.inputs = checkInputs(context, file, path);
     program.curves = checkCurves(context, file, program.world, stageNames);
     // Terrain blocks are solve blocks too: their tables run on the curves stage kind. They are
     // generated before the fields are lowered, which may sample their maps (context.maps).
     for (const CurvesBlock& block : program.curves) stageNames.push_back(block.name);
     for (CurvesBlock& block : checkTerrains(context, file, program.world, stageNames))
         program.curves.push_back(std::move(block));
-    // Heightmap and mesh files, read and made maps before the fields that sample them.
-    program.inputs = checkInputs(context, file, path);
     program.fields = checkFields(context, file, grammarNames);
     CheckedFeatures features = checkFeatures(context, file, grammarNames, program.world, lsystems);
     std::vector<std::optional<Field>> stampFields(program.fields.size()); // the plain fields have none

@@ -9,8 +9,10 @@
 #include "Values.h"
 
 #include "voxc/generators/curves/Scene.h"
+#include "voxc/program/SampledMap.h"
 
 #include <fmt/format.h>
+#include <glm/common.hpp>
 #include <glm/vector_relational.hpp>
 
 #include <algorithm>
@@ -26,8 +28,11 @@ namespace {
 // All curves blocks together: a run solves every box (about 2 s of CPU per million cells on the
 // host), and its tables are uploaded whole (two words per cell).
 
-constexpr std::string_view kBlockKeys[] = {"box", "normals", "k", "sweeps", "smoothing", "noise_frequency",
-                                           "noise_seed"};
+constexpr std::string_view kBlockKeys[] = {"box",        "normals",         "k",
+                                           "sweeps",     "smoothing",       "noise_frequency",
+                                           "noise_seed", "inputs",          "dead_zone",
+                                           "input_amplitude", "input_roughness", "input_material"};
+constexpr int64_t kMaxDeadZone = 64;
 constexpr std::string_view kCurveKeys[] = {"points", "seed"};
 constexpr std::string_view kConstraintKeys[] = {"t", "left", "right", "amplitude", "roughness", "material"};
 constexpr std::string_view kNormalModes[] = {"laplace", "perona_malik"};
@@ -202,14 +207,100 @@ std::optional<curves::FeatureCurve> readCurve(Context& context, const ast::Block
     return curve;
 }
 
+// `inputs = [ridge, boulder];`: heightmap and mesh blocks (checked before the curves blocks)
+// turned into box-local surfaces: a heightmap's heights at the box's columns and one more on
+// every side, sampled as a field samples NAME(wx, wz); a mesh's placed triangles that can reach
+// the box. A block with errors of its own fails quietly (they are reported).
+bool readInputs(Context& context, const ast::File& file, const ast::Assignment& a, const World& world,
+                curves::Scene& scene) {
+    std::vector<const ast::Value*> names;
+    if (a.value.isList())
+        for (const ast::Value& element : a.value.elements) names.push_back(&element);
+    else
+        names.push_back(&a.value);
+    bool ok = true;
+    std::vector<std::string> seen;
+    for (const ast::Value* value : names) {
+        const ast::Expr* expr = value->isList() ? nullptr : value->scalar.get();
+        if (!expr || expr->kind != ast::Expr::Kind::Name) {
+            context.diagnostics.error("E0010", value->loc,
+                                      "'inputs' expects names of heightmap and mesh blocks, as in 'inputs = [ridge, "
+                                      "boulder];'");
+            ok = false;
+            continue;
+        }
+        const std::string& name = expr->name;
+        if (std::find(seen.begin(), seen.end(), name) != seen.end()) {
+            context.diagnostics.error("E0003", value->loc, fmt::format("'{}' is listed twice in 'inputs'", name));
+            ok = false;
+            continue;
+        }
+        seen.push_back(name);
+        const ast::Block* block = nullptr;
+        std::vector<std::string_view> candidates;
+        for (const ast::Block& b : file.blocks) {
+            if (!b.label) continue;
+            if (*b.label == name && !block) block = &b;
+            if (b.kind == "heightmap" || b.kind == "mesh") candidates.push_back(*b.label);
+        }
+        const bool isField = std::any_of(file.fields.begin(), file.fields.end(),
+                                         [&](const ast::FieldDecl& f) { return f.name == name; });
+        if (!block || (block->kind != "heightmap" && block->kind != "mesh")) {
+            if (block || isField)
+                context.diagnostics.error("E0010", value->loc,
+                                          fmt::format("'{}' is a {}; 'inputs' takes heightmap and mesh blocks", name,
+                                                      block ? block->kind + " block" : std::string("field")));
+            else
+                context.diagnostics.error("E0002", value->loc,
+                                          fmt::format("unknown heightmap or mesh '{}'{}", name,
+                                                      suggestOrList(name, candidates)));
+            ok = false;
+            continue;
+        }
+        const auto map = context.maps.find(name);
+        if (map == context.maps.end() || !map->second) {
+            ok = false; // the block's own errors are reported
+            continue;
+        }
+        auto surface = std::make_shared<curves::InputSurface>();
+        surface->name = name;
+        const glm::dvec3 base = glm::dvec3(world.origin) + glm::dvec3(scene.box.min);
+        if (block->kind == "heightmap") {
+            surface->kind = curves::InputSurface::Kind::Heightmap;
+            surface->heights.reserve(size_t(scene.box.size.x + 2) * size_t(scene.box.size.z + 2));
+            for (int32_t z = -1; z <= scene.box.size.z; ++z)
+                for (int32_t x = -1; x <= scene.box.size.x; ++x)
+                    surface->heights.push_back(
+                        double(sampleMap(*map->second, float(base.x + x), float(base.z + z))) - base.y);
+        } else {
+            const auto mesh = context.placedMeshes.find(name);
+            if (mesh == context.placedMeshes.end()) {
+                ok = false;
+                continue;
+            }
+            surface->kind = curves::InputSurface::Kind::Mesh;
+            const glm::dvec3 lo(-1.0), hi = glm::dvec3(scene.box.size);
+            for (const glm::uvec3& t : mesh->second->triangles) {
+                const std::array<glm::dvec3, 3> p = {mesh->second->points[t.x] - base, mesh->second->points[t.y] - base,
+                                                     mesh->second->points[t.z] - base};
+                const glm::dvec3 tlo = glm::min(p[0], glm::min(p[1], p[2])), thi = glm::max(p[0], glm::max(p[1], p[2]));
+                if (glm::all(glm::lessThanEqual(tlo, hi)) && glm::all(glm::greaterThanEqual(thi, lo)))
+                    surface->triangles.push_back(p);
+            }
+        }
+        scene.inputs.push_back(std::move(surface));
+    }
+    return ok;
+}
+
 // The options, the curves and the box.
-std::optional<curves::Scene> readScene(Context& context, const ast::Block& block, const World& world,
-                                       uint64_t& cellBudget, const curves::Limits& limits) {
+std::optional<curves::Scene> readScene(Context& context, const ast::File& file, const ast::Block& block,
+                                       const World& world, uint64_t& cellBudget, const curves::Limits& limits) {
     const std::string where = fmt::format("curves '{}'", *block.label);
     rejectUnexpectedMembers(context, block, where, {.blocks = true});
     BlockKeys keys(context, block, where, kBlockKeys);
     curves::Scene scene;
-    bool ok = true;
+    bool ok = true, boxRead = false;
     if (const ast::Assignment* a = keys.require("box")) {
         const std::optional<std::array<glm::ivec3, 2>> box = readBox(context, *a);
         ok = ok && box.has_value();
@@ -233,6 +324,7 @@ std::optional<curves::Scene> readScene(Context& context, const ast::Block& block
                     ok = false;
                 } else {
                     cellBudget -= scene.box.cellCount();
+                    boxRead = true;
                 }
             }
         }
@@ -269,6 +361,31 @@ std::optional<curves::Scene> readScene(Context& context, const ast::Block& block
         ok = ok && seed.has_value();
         if (seed) scene.noiseSeed = uint32_t(*seed);
     }
+    if (const ast::Assignment* a = keys.find("dead_zone")) {
+        const std::optional<int64_t> radius = readInteger(context, *a, 0, kMaxDeadZone);
+        ok = ok && radius.has_value();
+        if (radius) scene.inputOptions.deadZone = int32_t(*radius);
+    }
+    if (const ast::Assignment* a = keys.find("input_amplitude")) {
+        const std::optional<double> v = readNumber(context, *a, 0, 16);
+        ok = ok && v.has_value();
+        if (v) scene.inputOptions.amplitude = *v;
+    }
+    if (const ast::Assignment* a = keys.find("input_roughness")) {
+        const std::optional<double> v = readNumber(context, *a, 0, 1);
+        ok = ok && v.has_value();
+        if (v) scene.inputOptions.roughness = *v;
+    }
+    if (const ast::Assignment* a = keys.find("input_material")) {
+        const std::optional<uint8_t> m = readMaterialKey(context, *a);
+        ok = ok && m.has_value();
+        if (m) scene.inputOptions.material = *m;
+    }
+    // After the box, which the inputs are sampled over.
+    if (const ast::Assignment* a = keys.find("inputs")) {
+        const bool read = boxRead && readInputs(context, file, *a, world, scene);
+        ok = ok && read;
+    }
     size_t index = 0;
     for (const ast::Block& member : block.blocks) {
         if (member.kind != "curve") {
@@ -286,6 +403,7 @@ std::optional<curves::Scene> readScene(Context& context, const ast::Block& block
         if (curve) scene.curves.push_back(*curve);
     }
     if (!ok) return std::nullopt;
+    if (!scene.inputs.empty()) return scene; // the inputs are seed surfaces: curves are optional
     if (scene.curves.empty()) {
         context.diagnostics.error("E0009", block.loc,
                                   fmt::format("{} has no curve; add one, as in 'curve edge {{ points = [[0, 8, 0], "
@@ -349,17 +467,20 @@ std::vector<CurvesBlock> checkCurves(Context& context, const ast::File& file, co
             blocks.push_back(std::move(out));
             continue;
         }
-        std::optional<curves::Scene> scene = readScene(context, block, world, cellBudget, limits);
+        std::optional<curves::Scene> scene = readScene(context, file, block, world, cellBudget, limits);
         if (scene && checkSolveWork(context, block, *scene, limits)) {
             try {
                 scene->constraints = std::make_shared<const curves::Constraints>(
-                    curves::voxelize(scene->curves, scene->box, scene->options.seedValue, limits));
+                    curves::voxelize(scene->curves, scene->box, scene->options.seedValue, limits, scene->inputs,
+                                     scene->inputOptions));
                 warnAllAir(context, block, *scene->constraints);
                 out.min = scene->box.min;
                 out.size = scene->box.size;
                 for (const curves::FeatureCurve& curve : scene->curves)
                     for (const curves::ConstraintPoint& point : curve.constraints)
                         if (point.material != kMaterialNone) out.materials.push_back(uint8_t(point.material));
+                if (!scene->inputs.empty() && scene->inputOptions.material != kMaterialNone)
+                    out.materials.push_back(uint8_t(scene->inputOptions.material));
                 std::sort(out.materials.begin(), out.materials.end());
                 out.materials.erase(std::unique(out.materials.begin(), out.materials.end()), out.materials.end());
                 out.writesMaterials = !out.materials.empty();

@@ -217,8 +217,10 @@ std::shared_ptr<const SampledMap> checkMesh(Context& context, const ast::Block& 
     }
     inputs::DistanceGrid grid;
     try {
-        const inputs::TriangleMesh mesh = inputs::decodeMesh(*input.bytes, *format, inputLimits(context.limits));
+        inputs::TriangleMesh mesh = inputs::decodeMesh(*input.bytes, *format, inputLimits(context.limits));
         grid = inputs::meshDistances(mesh, transform, float(band), inputLimits(context.limits));
+        mesh.points = inputs::placePoints(mesh, transform);
+        context.placedMeshes[*block.label] = std::make_shared<const inputs::TriangleMesh>(std::move(mesh));
     } catch (const inputs::InputError& e) {
         context.diagnostics.error(e.code, fileKey.value.loc, fmt::format("mesh '{}': {}: {}", *block.label, input.path, e.what()));
         return nullptr;
@@ -257,7 +259,7 @@ std::vector<InputFile> checkInputs(Context& context, const ast::File& file, cons
         if (context.maps.contains(*block.label) || findFunction(*block.label)) {
             context.diagnostics.error("E0003", block.labelLoc,
                                       fmt::format("'{}' is already the name of a {}", *block.label,
-                                                  context.maps.contains(*block.label) ? "terrain, heightmap or mesh"
+                                                  context.maps.contains(*block.label) ? "heightmap or mesh"
                                                                                       : "builtin function"));
             continue;
         }

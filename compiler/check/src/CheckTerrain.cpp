@@ -331,6 +331,12 @@ std::vector<CurvesBlock> checkTerrains(Context& context, const ast::File& file, 
             blocks.push_back(std::move(out));
             continue;
         }
+        if (context.maps.contains(*block.label)) {
+            context.diagnostics.error("E0003", block.labelLoc,
+                                      fmt::format("'{}' is already the name of a heightmap or mesh", *block.label));
+            blocks.push_back(std::move(out));
+            continue;
+        }
         context.maps[*block.label] = nullptr; // until its map is made
         const uint64_t cells = uint64_t(world.size.x) * uint64_t(world.size.y) * uint64_t(world.size.z);
         if (world.unbounded.x || world.unbounded.z) {

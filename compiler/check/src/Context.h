@@ -3,6 +3,7 @@
 #include "Constants.h"
 #include "Materials.h"
 
+#include "voxc/generators/inputs/MeshFile.h"
 #include "voxc/program/Program.h"
 #include "voxc/syntax/Diagnostics.h"
 
@@ -26,6 +27,9 @@ struct Context {
     // run's solve, stages::solveBlocks); null for a block with errors (reported), so its uses
     // report nothing more.
     std::map<std::string, std::shared_ptr<const SampledMap>, std::less<>> maps{};
+    // Each mesh block's triangles placed in world voxels, for the curves blocks that take it as
+    // an input (docs/curves.md, "Heightmaps and meshes as inputs").
+    std::map<std::string, std::shared_ptr<const inputs::TriangleMesh>, std::less<>> placedMeshes{};
     // List entries of the lsystem_cave point sets checked so far: the runtime bounds their sum.
     uint64_t pointSetListEntries = 0;
     std::optional<uint32_t> seed{}; // CheckOptions::seed

@@ -84,6 +84,17 @@ void curvesKey(KeyText& key, const curves::Scene& scene) {
     const curves::Options& o = scene.options;
     key << scene.box.min << scene.box.size << int(o.normals) << o.k << o.sweeps << int(o.propagate) << int(o.seedValue)
         << o.smoothPasses << scene.noiseFrequency << scene.noiseSeed;
+    // The inputs' geometry by the digest of its doubles (a heightmap's columns may be millions).
+    const curves::InputOptions& i = scene.inputOptions;
+    key << scene.inputs.size() << i.deadZone << i.amplitude << i.roughness << i.material;
+    for (const std::shared_ptr<const curves::InputSurface>& input : scene.inputs) {
+        const auto bytes = [](const auto& values) {
+            return sha256Hex(std::string_view(reinterpret_cast<const char*>(values.data()),
+                                              values.size() * sizeof(values[0])));
+        };
+        key << int(input->kind) << input->triangles.size() << bytes(input->triangles) << input->heights.size()
+            << bytes(input->heights);
+    }
 }
 
 void terrainKey(KeyText& key, const terrain::TerrainBlock& block) {

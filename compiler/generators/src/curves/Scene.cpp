@@ -17,8 +17,9 @@ namespace voxc::curves {
 
 namespace {
 
-bool namesMaterial(const std::vector<FeatureCurve>& curves) {
-    for (const FeatureCurve& curve : curves)
+bool namesMaterial(const Scene& scene) {
+    if (!scene.inputs.empty() && scene.inputOptions.material != 0) return true;
+    for (const FeatureCurve& curve : scene.curves)
         for (const ConstraintPoint& point : curve.constraints)
             if (point.material != 0) return true;
     return false;
@@ -74,7 +75,11 @@ private:
 SolveTable solveScene(const Scene& scene, const Limits& limits, const Solvers& solvers, bool keepChannels) {
     const FieldHeapReuse reuse; // the solve's freed fields serve its next ones (HeapReuse.h)
     Result solved = scene.constraints ? solveCurves(*scene.constraints, scene.options, limits, solvers)
-                                      : runCurves(scene.curves, scene.box, scene.options, limits, solvers);
+                    : scene.inputs.empty()
+                        ? runCurves(scene.curves, scene.box, scene.options, limits, solvers)
+                        : solveCurves(voxelize(scene.curves, scene.box, scene.options.seedValue, limits, scene.inputs,
+                                               scene.inputOptions),
+                                      scene.options, limits, solvers);
     const auto densityStart = std::chrono::steady_clock::now();
     const Box& box = scene.box;
     const DisplacementBand band(box, scene.noiseFrequency, scene.noiseSeed);
@@ -82,7 +87,7 @@ SolveTable solveScene(const Scene& scene, const Limits& limits, const Solvers& s
     table.min = box.min;
     table.size = box.size;
     table.density.resize(box.cellCount());
-    const bool materials = namesMaterial(scene.curves);
+    const bool materials = namesMaterial(scene);
     if (materials) table.material.resize(box.cellCount());
     // A device evaluates the displacement at every cell, in one pass; the host only in the band.
     std::vector<float> displacements;

@@ -49,19 +49,28 @@ void countEdges(const std::vector<openvdb::Vec3s>& points, const std::vector<ope
 
 } // namespace
 
-DistanceGrid meshDistances(const TriangleMesh& mesh, const MeshTransform& transform, float band, const Limits& limits) {
-    static std::once_flag initialised;
-    std::call_once(initialised, [] { openvdb::initialize(); });
+std::vector<glm::dvec3> placePoints(const TriangleMesh& mesh, const MeshTransform& transform) {
     const glm::dmat4 matrix = worldMatrix(transform);
-    std::vector<openvdb::Vec3s> points;
-    points.reserve(mesh.points.size());
-    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+    std::vector<glm::dvec3> placed;
+    placed.reserve(mesh.points.size());
     for (size_t i = 0; i < mesh.points.size(); ++i) {
         const glm::dvec3 p = glm::dvec3(matrix * glm::dvec4(mesh.points[i], 1.0));
         for (int a = 0; a < 3; ++a)
             if (!(std::abs(p[a]) <= kMaxCoordinate))
                 throw InputError("E0102", fmt::format("vertex {} lies at ({}, {}, {}) once placed, beyond ±{} voxels", i,
                                                       p.x, p.y, p.z, kMaxCoordinate));
+        placed.push_back(p);
+    }
+    return placed;
+}
+
+DistanceGrid meshDistances(const TriangleMesh& mesh, const MeshTransform& transform, float band, const Limits& limits) {
+    static std::once_flag initialised;
+    std::call_once(initialised, [] { openvdb::initialize(); });
+    std::vector<openvdb::Vec3s> points;
+    points.reserve(mesh.points.size());
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+    for (const glm::dvec3& p : placePoints(mesh, transform)) {
         lo = glm::min(lo, p), hi = glm::max(hi, p);
         points.emplace_back(float(p.x), float(p.y), float(p.z));
     }

@@ -16,7 +16,10 @@ struct Scene {
     Options options;
     float noiseFrequency = 0.0625f; // f0, per voxel
     uint32_t noiseSeed = 0;         // the displacement's warped_fbm seed
-    // The curves voxelised into the box (voxelize with options.seedValue) by whoever made the
+    // Heightmaps and meshes voxelised after the curves, with the dead zone (Voxelize.h).
+    std::vector<std::shared_ptr<const InputSurface>> inputs;
+    InputOptions inputOptions;
+    // The curves and inputs voxelised into the box (voxelize with options.seedValue) by whoever made the
     // scene and reported voxelize's errors (the checker); null: solveScene voxelises them.
     std::shared_ptr<const Constraints> constraints;
 };

@@ -6,6 +6,8 @@
 #include "voxc/generators/curves/Grid.h"
 
 #include <array>
+#include <memory>
+#include <string>
 
 namespace voxc::curves {
 
@@ -30,8 +32,36 @@ struct Constraints {
 
 enum class SeedValue { PlaneDistance, Zero }; // A2.5: the default keeps the surface on the curve
 
-// Validates the box and curves (LimitError, ParameterError) and gathers every curve's triangles.
-Constraints voxelize(const std::vector<FeatureCurve>& curves, const Box& box, SeedValue seedValue, const Limits& limits);
+// An imported surface voxelised with the curves (Becher et al. §3.3, "Heightmaps and Meshes"):
+// a mesh's triangles, or a heightmap's proxy mesh, in box-local voxels. Both are seed surfaces
+// (they pin N, the parameters and S) whose normal is the triangle's face normal.
+struct InputSurface {
+    enum class Kind : uint8_t { Mesh, Heightmap }; // the priority after the curves, highest first
+    Kind kind = Kind::Mesh;
+    std::string name; // the block's, for messages
+    // Mesh: the triangles, wound counter-clockwise seen from outside, so (v1 - v0) x (v2 - v0)
+    // points into the air.
+    std::vector<std::array<glm::dvec3, 3>> triangles;
+    // Heightmap: the surface's box-local y over the columns x = -1 .. size.x, z = -1 .. size.z
+    // of the box (size.x + 2 per row, x fastest); each quad of four neighbouring columns is two
+    // triangles facing up.
+    std::vector<double> heights;
+};
+
+// What every input's triangles carry (the files hold no noise parameters or materials) and the
+// dead zone: a lower-priority input gathers only at cells farther than `deadZone` (Chebyshev,
+// voxels) from every cell a higher-priority one hit, curves over meshes over heightmaps.
+struct InputOptions {
+    int32_t deadZone = 2;
+    double amplitude = 0.0, roughness = 0.5;
+    uint16_t material = 0;
+};
+
+// Validates the box and curves (LimitError, ParameterError) and gathers every curve's triangles,
+// then the meshes' where no curve is near, then the heightmaps' where neither is.
+Constraints voxelize(const std::vector<FeatureCurve>& curves, const Box& box, SeedValue seedValue, const Limits& limits,
+                     const std::vector<std::shared_ptr<const InputSurface>>& inputs = {},
+                     const InputOptions& inputOptions = {});
 
 // The box checks voxelize makes, for callers that build Constraints themselves.
 void checkBox(const Box& box, const Limits& limits);

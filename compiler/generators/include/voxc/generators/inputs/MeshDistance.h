@@ -17,6 +17,10 @@ struct MeshTransform {
     double scale = 1.0;
 };
 
+// The mesh's points placed in world voxels; InputError E0102 when one is not finite or beyond
+// ±1e7.
+std::vector<glm::dvec3> placePoints(const TriangleMesh& mesh, const MeshTransform& transform);
+
 struct DistanceGrid {
     glm::ivec3 min{0};  // world voxel of cell (0, 0, 0); cell (i, j, k) is world voxel min + (i, j, k)
     glm::ivec3 size{0}; // cells per axis
