@@ -11,15 +11,21 @@
 // then failed on, is written to DIR (default diff-findings/) and makes the exit status 1; so does
 // a run where the checker rejected more than half the generated programs (the generator would be
 // testing nothing). Programs the checker rejects are counted, not compared.
+//
+// Each compared pair then gets the same random sphere brushes (what an edits file or the viewer's
+// brush replays, docs/cli.md "Edits files"), applied to the interpreter's dense grid and to the
+// device's chunked grid by their own loops, and is compared again.
 #include "ProgramGenerator.h"
 #include "voxc/check/Check.h"
 #include "voxc/stages/Pipeline.h"
 #include "voxc/core/Errors.h"
+#include "voxc/edit/Brush.h"
 #include "voxc/grid/Grid.h"
 #include "voxc/interp/Interpreter.h"
 #include "voxc/vulkan/Context.h"
 #include "voxc/vulkan/Executor.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -45,7 +51,7 @@ struct Options {
 };
 
 struct Tally {
-    uint64_t compared = 0, rejected = 0, findings = 0, voxels = 0, solidVoxels = 0;
+    uint64_t compared = 0, rejected = 0, findings = 0, voxels = 0, solidVoxels = 0, brushes = 0;
 };
 
 bool sameDensity(float a, float b, float tolerance) {
@@ -85,6 +91,30 @@ float declaredTolerance(const std::string& text) {
     return at == std::string::npos ? 0.0f : std::stof(text.substr(at + kKey.size()));
 }
 
+// 1 to 6 brushes from the program's text: carves and adds (some painting a material), centres
+// within or just outside the grid, radii from under a voxel to a third of it, hard to soft ramps.
+std::vector<voxc::Brush> randomBrushes(const std::string& text, const voxc::World& world) {
+    uint64_t state = 1469598103934665603ull; // FNV-1a of the text, then splitmix64 draws
+    for (unsigned char c : text) state = (state ^ c) * 1099511628211ull;
+    const auto next = [&] {
+        uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        return z ^ (z >> 31);
+    };
+    const auto uniform = [&](float lo, float hi) { return lo + (hi - lo) * float(next() >> 40) / float(1 << 24); };
+    std::vector<voxc::Brush> brushes(1 + next() % 6);
+    const glm::vec3 low = glm::vec3(world.origin) - 4.0f, high = glm::vec3(world.origin + world.size) + 4.0f;
+    for (voxc::Brush& brush : brushes) {
+        brush.op = next() % 2 ? voxc::Brush::Op::Carve : voxc::Brush::Op::Add;
+        brush.center = {uniform(low.x, high.x), uniform(low.y, high.y), uniform(low.z, high.z)};
+        brush.radius = uniform(0.3f, float(std::max({world.size.x, world.size.y, world.size.z})) / 3.0f);
+        brush.softness = uniform(0.1f, 6.0f);
+        brush.material = brush.op == voxc::Brush::Op::Add && next() % 2 ? uint8_t(1 + next() % 4) : 0;
+    }
+    return brushes;
+}
+
 // Checks, runs and compares one program; returns what went wrong, if anything.
 std::optional<std::string> compare(const std::string& name, const std::string& text, const Options& options, Tally& tally) {
     const voxc::CheckResult checked = voxc::checkSource(voxc::SourceFile(name, text));
@@ -96,11 +126,23 @@ std::optional<std::string> compare(const std::string& name, const std::string& t
     try {
         const voxc::DenseGrid expected = voxc::interpret(*checked.program);
         voxc::VulkanExecutor executor(lavapipe(), voxc::compileProgram(*checked.program));
-        const voxc::DenseGrid actual = executor.run().grid.toDense();
+        voxc::ChunkedGrid device = executor.run().grid;
         ++tally.compared;
         tally.voxels += expected.data().size();
         for (float density : expected.data()) tally.solidVoxels += density >= 0.5f;
-        return differences(expected, actual, declaredTolerance(text));
+        const float tolerance = declaredTolerance(text);
+        if (auto found = differences(expected, device.toDense(), tolerance)) return found;
+        voxc::DenseGrid edited = expected;
+        const std::vector<voxc::Brush> brushes = randomBrushes(text, checked.program->world);
+        for (const voxc::Brush& brush : brushes) {
+            voxc::applyBrush(edited, checked.program->world.origin, brush);
+            voxc::applyBrush(device, brush);
+        }
+        tally.brushes += brushes.size();
+        if (auto found = differences(edited, device.toDense(), tolerance))
+            return fmt::format("after {} brushes (interpreter's dense grid vs the device's chunked grid):\n{}",
+                               brushes.size(), *found);
+        return std::nullopt;
     } catch (const voxc::UserError& error) {
         // A limit of the run (a work budget, a device limit) rather than a disagreement.
         ++tally.rejected;
@@ -167,9 +209,10 @@ int main(int argc, char** argv) {
             if (options.verbose) fmt::print("--- {}\n{}", name, text);
             if (const auto what = compare(name, text, options, tally)) recordFinding(options, name, text, *what, tally);
         }
-        fmt::print("diff: {} programs from seed {}: {} compared bit for bit ({} voxels, {} of them solid), {} rejected, "
-                   "{} findings\n",
-                   generated, options.seed, tally.compared, tally.voxels, tally.solidVoxels, tally.rejected, tally.findings);
+        fmt::print("diff: {} programs from seed {}: {} compared bit for bit ({} voxels, {} of them solid; then again "
+                   "after {} brushes), {} rejected, {} findings\n",
+                   generated, options.seed, tally.compared, tally.voxels, tally.solidVoxels, tally.brushes, tally.rejected,
+                   tally.findings);
         if (tally.rejected * 2 > generated) {
             fmt::print("diff: the checker rejected more than half the generated programs (--verbose shows why)\n");
             return 1;
