@@ -82,8 +82,16 @@ TEST_P(mesh_ChunkSeams, meshMovesWithTheOrigin) {
     const Mesh atZero = meshSurfaceNets(makeGrid({0, 0, 0}, kSize, 16, shape), 0.5f);
     const Mesh moved = meshSurfaceNets(makeGrid(origin, kSize, 16, relative), 0.5f);
     EXPECT_EQ(moved.triangles, atZero.triangles);
-    EXPECT_EQ(moved.normals, atZero.normals);
     ASSERT_EQ(moved.positions.size(), atZero.positions.size());
+    // Gradient normals are the same bits; the few that follow their triangles instead
+    // (orientNormalsToFaces) come from the positions, which round differently far from zero.
+    size_t rederived = 0;
+    for (size_t v = 0; v < moved.normals.size(); ++v) {
+        if (moved.normals[v] == atZero.normals[v]) continue;
+        ++rederived;
+        EXPECT_GT(glm::dot(moved.normals[v], atZero.normals[v]), 0.99f) << "vertex " << v;
+    }
+    EXPECT_LT(rederived, moved.normals.size() / 50);
     // Far from zero a float keeps about 1/128 voxel of precision.
     for (size_t v = 0; v < moved.positions.size(); ++v)
         for (int a = 0; a < 3; ++a) ASSERT_NEAR(moved.positions[v][a] - float(origin[a]), atZero.positions[v][a], 1.0f / 64.0f);

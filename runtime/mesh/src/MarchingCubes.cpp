@@ -541,7 +541,59 @@ Mesh meshMarchingCubesCells(const ChunkedGrid& grid, const CellBox& cells, float
         if (stats) *stats = MeshStats{cellChunks(grid.layout()).size(), cellChunks(grid.layout()).size()};
         return {};
     }
-    return marching_cubes::SparseExtraction(grid, share, options.iso, margin, options.skipUniformChunks).run(stats);
+    Mesh mesh = marching_cubes::SparseExtraction(grid, share, options.iso, margin, options.skipUniformChunks).run(stats);
+    // A vertex's normal follows the triangles around its edge (orientNormalsToFaces), some of
+    // them in the cells just outside the box: they are meshed too, and the box's vertices take
+    // their normals from that larger mesh, so a tile's vertices carry the whole world's bits.
+    const surface_nets::CellRange around{glm::max(share.begin - 1, glm::ivec3(-1)), glm::min(share.end + 1, grid.layout().gridSize)};
+    if (around.begin == share.begin && around.end == share.end) {
+        orientNormalsToFaces(mesh);
+        return mesh;
+    }
+    Mesh larger = marching_cubes::SparseExtraction(grid, around, options.iso, margin, options.skipUniformChunks).run(nullptr);
+    orientNormalsToFaces(larger);
+    // Both meshes list their vertices by global edge, the box's a subset of the larger's, and
+    // no two edges share a position (the crossing margin), so one walk pairs them; the larger's
+    // copies made for normals follow its edge vertices.
+    const size_t largerEdges = larger.positions.size() - larger.normalSplits.size();
+    std::vector<uint32_t> inLarger(mesh.positions.size());
+    size_t at = 0;
+    for (size_t v = 0; v < mesh.positions.size(); ++v) {
+        while (at < largerEdges && std::memcmp(&larger.positions[at], &mesh.positions[v], sizeof(glm::vec3)) != 0) ++at;
+        VOXC_ASSERT(at < largerEdges);
+        inLarger[v] = uint32_t(at);
+        mesh.normals[v] = larger.normals[at];
+    }
+    // Triangles are in global cell order in both, the box's a subsequence of the larger's; each
+    // takes the larger's corners, a copy there becoming a copy here.
+    auto point = [&](uint32_t v) { return v >= largerEdges ? larger.normalSplits[v - largerEdges] : v; };
+    std::vector<uint32_t> copyHere(larger.normalSplits.size(), UINT32_MAX);
+    size_t u = 0;
+    for (size_t t = 0; t < mesh.triangles.size() / 3; ++t) {
+        auto same = [&] {
+            for (size_t k = 0; k < 3; ++k)
+                if (point(larger.triangles[u * 3 + k]) != inLarger[mesh.triangles[t * 3 + k]]) return false;
+            return true;
+        };
+        while (u < larger.triangles.size() / 3 && !same()) ++u;
+        VOXC_ASSERT(u < larger.triangles.size() / 3);
+        for (size_t k = 0; k < 3; ++k) {
+            const uint32_t corner = larger.triangles[u * 3 + k];
+            if (corner < largerEdges) continue;
+            uint32_t& copy = copyHere[corner - largerEdges];
+            if (copy == UINT32_MAX) {
+                const uint32_t original = mesh.triangles[t * 3 + k];
+                copy = uint32_t(mesh.positions.size());
+                mesh.positions.push_back(mesh.positions[original]);
+                mesh.normals.push_back(larger.normals[corner]);
+                mesh.vertexMaterials.push_back(mesh.vertexMaterials[original]);
+                mesh.normalSplits.push_back(original);
+            }
+            mesh.triangles[t * 3 + k] = copy;
+        }
+        ++u;
+    }
+    return mesh;
 }
 
 Mesh marching_cubes::mergeChunks(std::vector<ChunkMesh> parts) {
@@ -588,6 +640,7 @@ Mesh marching_cubes::mergeChunks(std::vector<ChunkMesh> parts) {
         for (uint64_t edge : t.edges) mesh.triangles.push_back(vertexOf(edge));
         mesh.triangleMaterials.push_back(t.material);
     }
+    orientNormalsToFaces(mesh);
     return mesh;
 }
 

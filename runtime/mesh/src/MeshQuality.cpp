@@ -30,11 +30,14 @@ MeshQuality measureMeshQuality(const Mesh& mesh) {
     auto validTriangle = [&](size_t t) {
         return mesh.triangles[t] < q.vertices && mesh.triangles[t + 1] < q.vertices && mesh.triangles[t + 2] < q.vertices;
     };
+    // Edges join points: a copy made for its normal is the vertex it copies (Mesh::normalSplits).
+    const size_t firstCopy = q.vertices - std::min(q.vertices, mesh.normalSplits.size());
+    auto point = [&](uint32_t v) { return v >= firstCopy && v < q.vertices ? mesh.normalSplits[v - firstCopy] : v; };
     std::vector<size_t> bucketStart(q.vertices + 1, 0);
     for (size_t t = 0; t + 3 <= mesh.triangles.size(); t += 3) {
         if (!validTriangle(t)) continue;
         for (int k = 0; k < 3; ++k) {
-            const uint32_t from = mesh.triangles[t + size_t(k)], to = mesh.triangles[t + size_t((k + 1) % 3)];
+            const uint32_t from = point(mesh.triangles[t + size_t(k)]), to = point(mesh.triangles[t + size_t((k + 1) % 3)]);
             if (from != to) ++bucketStart[std::min(from, to) + 1];
         }
     }
@@ -43,11 +46,11 @@ MeshQuality measureMeshQuality(const Mesh& mesh) {
     std::vector<size_t> fill(bucketStart.begin(), bucketStart.end() - 1);
 
     for (size_t t = 0; t + 3 <= mesh.triangles.size(); t += 3) {
-        const uint32_t i[3] = {mesh.triangles[t], mesh.triangles[t + 1], mesh.triangles[t + 2]};
         if (!validTriangle(t)) {
             ++q.badIndexTriangles;
             continue;
         }
+        const uint32_t i[3] = {point(mesh.triangles[t]), point(mesh.triangles[t + 1]), point(mesh.triangles[t + 2])};
         if (i[0] == i[1] || i[1] == i[2] || i[0] == i[2]) {
             ++q.repeatedIndexTriangles;
         } else {

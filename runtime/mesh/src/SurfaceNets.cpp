@@ -29,21 +29,6 @@ std::vector<ChunkSurface> extractAll(const ChunkedGrid& grid, const MeshOptions&
     return surfaces;
 }
 
-// Where the field gradient vanished at a vertex, the area-weighted face normals stand in.
-void fillMissingNormals(Mesh& mesh) {
-    std::vector<glm::vec3> faceSums(mesh.positions.size(), glm::vec3(0.0f));
-    bool missing = false;
-    for (const glm::vec3& n : mesh.normals) missing |= n == glm::vec3(0.0f);
-    if (!missing) return;
-    for (size_t t = 0; t < mesh.triangles.size(); t += 3) {
-        const uint32_t a = mesh.triangles[t], b = mesh.triangles[t + 1], c = mesh.triangles[t + 2];
-        const glm::vec3 face = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
-        for (uint32_t v : {a, b, c}) faceSums[v] += face;
-    }
-    for (size_t v = 0; v < mesh.normals.size(); ++v)
-        if (mesh.normals[v] == glm::vec3(0.0f) && glm::length(faceSums[v]) > 0.0f) mesh.normals[v] = glm::normalize(faceSums[v]);
-}
-
 } // namespace
 
 Mesh meshSurfaceNets(const ChunkedGrid& grid, float iso) { return meshSurfaceNets(grid, MeshOptions{.iso = iso}); }
@@ -88,7 +73,7 @@ Mesh meshSurfaceNets(const ChunkedGrid& grid, const MeshOptions& options, MeshSt
         mesh.triangles.insert(mesh.triangles.end(), {v[0], v[1], v[2], v[0], v[2], v[3]});
         mesh.triangleMaterials.insert(mesh.triangleMaterials.end(), {q.material, q.material});
     }
-    fillMissingNormals(mesh);
+    orientNormalsToFaces(mesh); // vanished gradients, and gradients across thin features
     return mesh;
 }
 

@@ -16,8 +16,11 @@ MeshTopology analyzeTopology(const Mesh& mesh) {
     std::vector<std::array<uint32_t, 3>> faces;
     edges.reserve(mesh.triangles.size());
     faces.reserve(mesh.triangles.size() / 3);
+    // A copy made for its normal is the point it copies (Mesh::normalSplits).
+    const size_t firstCopy = mesh.positions.size() - mesh.normalSplits.size();
+    auto point = [&](uint32_t v) { return v >= firstCopy ? mesh.normalSplits[v - firstCopy] : v; };
     for (size_t t = 0; t + 2 < mesh.triangles.size(); t += 3) {
-        const std::array<uint32_t, 3> f = {mesh.triangles[t], mesh.triangles[t + 1], mesh.triangles[t + 2]};
+        const std::array<uint32_t, 3> f = {point(mesh.triangles[t]), point(mesh.triangles[t + 1]), point(mesh.triangles[t + 2])};
         if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2]) {
             ++topology.degenerateTriangles;
         } else {

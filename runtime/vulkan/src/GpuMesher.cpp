@@ -338,6 +338,8 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
         }
         mesh.triangleMaterials[t] = uint8_t(triangleWords[t * kTriangleWords + 3]);
     }
+    // The host mesher's last step, on the host: the same function of the same mesh.
+    orientNormalsToFaces(mesh);
     return mesh;
 }
 

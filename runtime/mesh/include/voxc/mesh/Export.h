@@ -52,4 +52,13 @@ std::string objMaterialLibraryPath(const std::string& objPath);
 // it (the sRGB bytes decoded to linear: what `voxc render` draws a mesh file with).
 Mesh readPly(const std::string& path, std::vector<Material>* materials = nullptr);
 
+// Reads a mesh in any format voxc writes, by extension (any case): .ply (readPly), .obj (`v`,
+// `vn`, `f` with any index form, polygons as fans, `usemtl` names with the Kd of the `mtllib`
+// beside it, decoded from sRGB) and .glb/.gltf (tinygltf: every triangle primitive of the default
+// scene, placed by its nodes' transforms; a material's id is voxc's voxc_material_id extra, else
+// its index + 1, its colour the linear base colour). Where a file lacks normals, each vertex
+// takes its triangles' area-weighted normal. `materials`, when given, receives each material id
+// the file names with its name and linear colour. UserError on a file it cannot read.
+Mesh readMesh(const std::string& path, std::vector<Material>* materials = nullptr);
+
 } // namespace voxc

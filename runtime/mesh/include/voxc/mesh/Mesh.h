@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <glm/ext/vector_double3.hpp>
 #include <vector>
 
 namespace voxc {
@@ -15,6 +16,10 @@ struct Mesh {
     // (MarchingCubes.h; surface nets: docs/architecture.md). Same length as positions / triangles.size() / 3.
     std::vector<uint8_t> vertexMaterials;
     std::vector<uint8_t> triangleMaterials;
+    // The last normalSplits.size() vertices are copies orientNormalsToFaces made of vertices whose
+    // triangles face too many ways for one normal: copy i is a second normal at the point of
+    // vertex normalSplits[i], so the topology (analyzeTopology) counts it as that vertex.
+    std::vector<uint32_t> normalSplits;
 };
 
 struct MeshTopology {
@@ -31,5 +36,23 @@ struct MeshTopology {
 };
 
 MeshTopology analyzeTopology(const Mesh& mesh);
+
+// A triangle's geometric normal: the cross product of its edges b - a and c - a (counter-clockwise
+// seen from its front), in double from the float positions; zero for a triangle without area.
+glm::dvec3 triangleNormal(const Mesh& mesh, size_t triangle);
+
+// The normals a renderer shades with must face the side each triangle's winding shows, or a
+// triangle is lit from behind. A field's gradient (the meshers' normals) points the wrong way
+// where a feature is thinner than its central differences, so every vertex whose normal is
+// zero, or more than 90 degrees from the geometric normal of any triangle using it, takes
+// instead the sum of those triangles' unit normals, or where that is not within 90 degrees of
+// each, the direction whose largest angle to them is least. Where no direction is within 90
+// degrees of all (a thin sheet or ridge folds the triangles around a point back on themselves),
+// the triangles are split into groups, in triangle order, each joining the first group it can
+// share a normal with; the first keeps the vertex and each other group gets a copy at the same
+// position (appended, listed in Mesh::normalSplits) with its own normal. Positions are
+// untouched; the result depends only on the mesh, so a mesh that is the same for every chunking
+// keeps the same bits. Returns the number of vertices whose normal changed or that were split.
+size_t orientNormalsToFaces(Mesh& mesh);
 
 } // namespace voxc
