@@ -92,19 +92,14 @@ Scene runProgram(VulkanContext& context, const RenderOptions& options) {
 }
 
 void renderFile(const RenderOptions& options) {
-    if (options.file.empty()) throw UserError("render: a .vox file (or a .ply mesh) is required");
+    if (options.file.empty()) throw UserError("render: a .vox file (or a .ply, .obj, .glb or .gltf mesh) is required");
     if (options.output.empty()) throw UserError("render: nothing to write; give -o PICTURE.png");
     requireExtension(options.output, {".png"}, "picture");
     if (!std::isfinite(options.iso)) throw UserError(fmt::format("--iso {}: the surface level must be a finite number", options.iso));
     std::string extension = std::filesystem::path(options.file).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    // The other mesh formats voxc writes carry no more than the .ply does; rather than parse them
-    // as a program (a screen of syntax errors), say what render reads.
-    if (extension == ".glb" || extension == ".gltf" || extension == ".obj")
-        throw UserError(fmt::format("render: '{}' is a {} mesh; render reads a .vox program or a .ply mesh "
-                                    "(voxc run FILE.vox -o mesh.ply writes one)",
-                                    options.file, extension == ".obj" ? "Wavefront OBJ" : "glTF"));
-    const bool meshFile = extension == ".ply";
+    // Every mesh format voxc writes is drawn as a mesh (readMesh), never parsed as a program.
+    const bool meshFile = extension == ".ply" || extension == ".obj" || extension == ".glb" || extension == ".gltf";
     if (meshFile && options.chunkBorders) throw UserError("render: --chunk-borders needs a .vox file; a mesh file has no chunks");
     const rendering::ImageSize size = rendering::parseImageSize(options.size);
     const float aspect = float(size.width) / float(size.height);
@@ -120,7 +115,7 @@ void renderFile(const RenderOptions& options) {
     VulkanContext context(ContextOptions{.device = options.device, .validation = options.validate});
     Scene scene;
     if (meshFile) {
-        scene.mesh = readPly(options.file, &scene.materials); // the colours the file carries
+        scene.mesh = readMesh(options.file, &scene.materials); // the colours the file carries
         scene.worldBox = rendering::meshBounds(scene.mesh);
     } else {
         scene = runProgram(context, options);
@@ -171,8 +166,8 @@ void renderFile(const RenderOptions& options) {
 void addRenderCommand(CLI::App& app) {
     auto options = std::make_shared<RenderOptions>();
     CLI::App* command = app.add_subcommand(
-        "render", "Run a .vox file (or read a .ply mesh), mesh it and draw a shaded picture offscreen with Vulkan");
-    command->add_option("file", options->file, "The .vox file, or a .ply mesh written by `voxc run` (.glb and .obj are refused with a note)");
+        "render", "Run a .vox file (or read a mesh file), mesh it and draw a shaded picture offscreen with Vulkan");
+    command->add_option("file", options->file, "The .vox file, or a mesh file: .ply, .obj (with its .mtl), .glb or .gltf, such as `voxc run` writes");
     command->add_option("-o,--output", options->output, "The picture to write (.png)");
     command->add_option("--camera", options->camera,
                         "iso (default), top, side, or X,Y,Z:TX,TY,TZ (eye and target in world voxels)");
