@@ -87,8 +87,6 @@ Parameter constantParameter(const std::string& name, double written, const std::
     return p;
 }
 
-std::string formatNumber(double value) { return fmt::format("{}", value); }
-
 } // namespace
 
 struct Session::Loaded {
