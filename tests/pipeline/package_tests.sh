@@ -113,9 +113,13 @@ PY
     spv=$(ls "$pkg"/kernels/*.spv | head -1)
     broken; printf '\x01' | dd of="$work/broken/kernels/$(basename "$spv")" bs=1 seek=40 conv=notrunc status=none
     expect embed_package_corrupt_spirv 1 "kernels/$(basename "$spv") does not match its SHA-256" -- "$work/embed/embed" "$work/broken"
-    broken; echo "// edited" >> "$work/broken/sources/0.vox"
+    # Edits that keep each file's size (one that changes it is refused before it is read: the
+    # manifest gives every file's byte count).
+    broken; sed -i '1s/^./ /' "$work/broken/sources/0.vox"
     expect embed_package_edited_source 1 "sources/0.vox does not match its SHA-256" -- "$work/embed/embed" "$work/broken"
-    broken; sed -i '$ a // edited' "$work/broken/kernels/$(basename "$spv" .spv).comp"
+    broken; echo "// edited" >> "$work/broken/sources/0.vox"
+    expect embed_package_resized_source 1 "sources/0.vox is [0-9]+ bytes and manifest.json says [0-9]+" -- "$work/embed/embed" "$work/broken"
+    broken; sed -i '1s/^./ /' "$work/broken/kernels/$(basename "$spv" .spv).comp"
     expect embed_package_edited_glsl 1 "whose GLSL differs from its copy" -- "$work/embed/embed" "$work/broken"
     broken; sed -i 's/"halo": \[/"halo": [1,/' "$work/broken/manifest.json"
     expect embed_package_edited_manifest 1 "manifest.json differs from what its sources compile to" -- "$work/embed/embed" "$work/broken"

@@ -214,7 +214,7 @@ TEST(vulkan_Executor, GridBeyondTheStorageBufferLimitIsUserError) {
         VulkanExecutor executor(context, package);
         FAIL() << "a 32 GiB voxel buffer was accepted";
     } catch (const UserError& e) {
-        EXPECT_NE(std::string(e.what()).find("use a smaller grid"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("run a box of the world with --region"), std::string::npos) << e.what();
     }
 }
 
