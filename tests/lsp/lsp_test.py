@@ -260,65 +260,60 @@ client.request("initialize", {"capabilities": {}})
 client.process.stdin.close()
 check("end_without_exit_is_1", client.process.wait(timeout=30) == 1)
 
+def diagnose_then_shut_down(name, path, text, check_diagnostics):
+    """Opens `text` as `path` in a new server, hands its diagnostics to check_diagnostics(client, got),
+    then checks that shutdown and exit still work. A watchdog kills a server that stopped
+    answering, so a hang fails here instead of stalling the test."""
+    client = Client(voxc)
+    watchdog = threading.Timer(60, client.process.kill)
+    watchdog.start()
+    try:
+        client.request("initialize", {"capabilities": {}})
+        client.notify("textDocument/didOpen", {"textDocument": {"uri": uri(path), "languageId": "vox", "version": 1,
+                                                                "text": text}})
+        check_diagnostics(client, client.diagnostics_for(uri(path)))
+        shutdown = client.request("shutdown")
+        check(name + "_shutdown", "result" in shutdown and "error" not in shutdown, shutdown)
+        client.notify("exit", {})
+        check(name + "_exit_0", client.process.wait(timeout=30) == 0)
+    except (EOFError, OSError, subprocess.TimeoutExpired) as e:
+        check(name + "_answered", False, "the server stopped answering: %r" % e)
+    finally:
+        watchdog.cancel()
+        client.process.kill()
+
+
 # A document naming the server's own input (/dev/stdin, a pipe under an editor) or a FIFO as its
-# rule file still gets its diagnostics, and shutdown and exit still work: the check refuses
-# what is not a regular file without reading it. A watchdog kills a server that stopped
-# answering, so a hang fails here instead of stalling the test.
-fifo = os.path.join(work, "rules.fifo")
-os.mkfifo(fifo)
+# rule file still gets its diagnostics and the server keeps serving: the check refuses what is
+# not a regular file without reading it.
+os.mkfifo(os.path.join(work, "rules.fifo"))
 streams = os.path.join(work, "streams.vox")
-streams_text = ("world { size = [16, 16, 16]; }\nlsystem from_stdin {\n  rules = \"/dev/stdin\";\n}\n"
-                "lsystem from_fifo {\n  rules = \"rules.fifo\";\n}\n")
-client = Client(voxc)
-watchdog = threading.Timer(60, client.process.kill)
-watchdog.start()
-try:
-    client.request("initialize", {"capabilities": {}})
-    client.notify("textDocument/didOpen", {"textDocument": {"uri": uri(streams), "languageId": "vox", "version": 1,
-                                                            "text": streams_text}})
-    got = client.diagnostics_for(uri(streams))
+
+
+def check_streams(client, got):
     check("stream_rule_files_diagnosed",
           [(d.get("code"), d["range"]["start"]["line"]) for d in got] == [("E0100", 2), ("E0100", 5)]
           and "/dev/stdin': it is a FIFO" in got[0]["message"] and "rules.fifo': it is a FIFO" in got[1]["message"], got)
     check("stream_rule_files_still_serving", "result" in client.request("textDocument/hover", {
         "textDocument": {"uri": uri(streams)}, "position": {"line": 2, "character": 3}}))
-    shutdown = client.request("shutdown")
-    check("stream_rule_files_shutdown", "result" in shutdown and "error" not in shutdown, shutdown)
-    client.notify("exit", {})
-    check("stream_rule_files_exit_0", client.process.wait(timeout=30) == 0)
-except (EOFError, OSError, subprocess.TimeoutExpired) as e:
-    check("stream_rule_files_answered", False, "the server stopped answering: %r" % e)
-finally:
-    watchdog.cancel()
-    client.process.kill()
+
+
+diagnose_then_shut_down("stream_rule_files", streams,
+                        "world { size = [16, 16, 16]; }\nlsystem from_stdin {\n  rules = \"/dev/stdin\";\n}\n"
+                        "lsystem from_fifo {\n  rules = \"rules.fifo\";\n}\n", check_streams)
 
 # Heightmap and mesh files: one that is missing and one that is a FIFO are diagnostics at their
-# `file =` values, and the server keeps answering.
+# `file =` values.
 os.mkfifo(os.path.join(work, "rock.fifo"))
-inputs = os.path.join(work, "inputs.vox")
-inputs_text = ("world { size = [16, 16, 16]; }\nheightmap hills {\n  file = \"missing.png\";\n  size = [16, 16];\n"
-               "  height = [0, 8];\n}\nmesh rock {\n  file = \"rock.fifo\";\n}\n"
-               "field g = clamp(hills(wx, wz) - wy, 0, 1) - clamp(-rock(wp), 0, 1);\npipeline { start; set g; }\n")
-client = Client(voxc)
-watchdog = threading.Timer(60, client.process.kill)
-watchdog.start()
-try:
-    client.request("initialize", {"capabilities": {}})
-    client.notify("textDocument/didOpen", {"textDocument": {"uri": uri(inputs), "languageId": "vox", "version": 1,
-                                                            "text": inputs_text}})
-    got = client.diagnostics_for(uri(inputs))
-    check("input_files_diagnosed_at_their_key",
-          [(d.get("code"), d["range"]["start"]["line"], d["range"]["start"]["character"]) for d in got]
-          == [("E0100", 2, 9), ("E0100", 7, 9)]
-          and "missing.png" in got[0]["message"] and "rock.fifo': it is a FIFO" in got[1]["message"], got)
-    shutdown = client.request("shutdown")
-    check("input_files_shutdown", "result" in shutdown and "error" not in shutdown, shutdown)
-    client.notify("exit", {})
-    check("input_files_exit_0", client.process.wait(timeout=30) == 0)
-except (EOFError, OSError, subprocess.TimeoutExpired) as e:
-    check("input_files_answered", False, "the server stopped answering: %r" % e)
-finally:
-    watchdog.cancel()
-    client.process.kill()
+diagnose_then_shut_down(
+    "input_files", os.path.join(work, "inputs.vox"),
+    "world { size = [16, 16, 16]; }\nheightmap hills {\n  file = \"missing.png\";\n  size = [16, 16];\n"
+    "  height = [0, 8];\n}\nmesh rock {\n  file = \"rock.fifo\";\n}\n"
+    "field g = clamp(hills(wx, wz) - wy, 0, 1) - clamp(-rock(wp), 0, 1);\npipeline { start; set g; }\n",
+    lambda client, got: check(
+        "input_files_diagnosed_at_their_key",
+        [(d.get("code"), d["range"]["start"]["line"], d["range"]["start"]["character"]) for d in got]
+        == [("E0100", 2, 9), ("E0100", 7, 9)]
+        and "missing.png" in got[0]["message"] and "rock.fifo': it is a FIFO" in got[1]["message"], got))
 
 finish()

@@ -16,16 +16,6 @@
 namespace voxc {
 namespace {
 
-// Densities uniform in [0, 1] per voxel: sheets and ridges one voxel thin everywhere.
-ChunkedGrid noiseGrid(glm::ivec3 origin, glm::ivec3 size, int32_t chunkSize, unsigned seed) {
-    ChunkedGrid grid(ChunkLayout::make(origin, size, chunkSize));
-    std::mt19937 random(seed);
-    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    for (int z = 0; z < size.z; ++z)
-        for (int y = 0; y < size.y; ++y)
-            for (int x = 0; x < size.x; ++x) grid.at({x, y, z}) = unit(random);
-    return grid;
-}
 
 // Triangles with area whose vertex normals include one more than 90 degrees from their normal.
 size_t trianglesAgainstTheirNormals(const Mesh& mesh) {
@@ -49,7 +39,7 @@ void expectNormalsFaceTheirTriangles(const Mesh& mesh, const std::string& what) 
 TEST(mesh_FaceNormals, fieldGradientsTurnAgainstThinFeaturesWithoutTheStep) {
     // The meshers' own normals (the field gradient, before this step) face away from some
     // triangles on this field, so the tests below exercise the re-derivation.
-    const ChunkedGrid grid = noiseGrid({-3, 5, 2}, {24, 20, 22}, 8, 7);
+    const ChunkedGrid grid = test::noiseGrid({-3, 5, 2}, {24, 20, 22}, 8, 7);
     std::vector<marching_cubes::ChunkMesh> parts;
     for (int z = -1; z <= 3; ++z)
         for (int y = 0; y <= 3; ++y)
@@ -73,7 +63,7 @@ TEST(mesh_FaceNormals, bothMeshersAtEveryChunkSizeAndOrigin) {
     for (glm::ivec3 origin : {glm::ivec3(0), glm::ivec3(-37, 5, -70), glm::ivec3(1000, 17, -999)}) {
         std::vector<Mesh> mc;
         for (int32_t chunk : {8, 16, 32}) {
-            const ChunkedGrid grid = noiseGrid(origin, {29, 23, 26}, chunk, 3);
+            const ChunkedGrid grid = test::noiseGrid(origin, {29, 23, 26}, chunk, 3);
             const std::string at = " chunk " + std::to_string(chunk);
             mc.push_back(meshMarchingCubes(grid, MeshOptions{}));
             expectNormalsFaceTheirTriangles(mc.back(), "marching cubes" + at);
@@ -111,7 +101,7 @@ std::vector<std::array<Corner, 3>> cornerTriangles(const Mesh& mesh) {
 }
 
 TEST(mesh_FaceNormals, boxesOfCellsCarryTheWholeMeshsNormals) {
-    const ChunkedGrid grid = noiseGrid({4, -2, 9}, {26, 21, 24}, 16, 5);
+    const ChunkedGrid grid = test::noiseGrid({4, -2, 9}, {26, 21, 24}, 16, 5);
     const float margin = marching_cubes::crossingMargin(grid.layout());
     const Mesh whole = meshMarchingCubes(grid, MeshOptions{});
     std::vector<std::array<Corner, 3>> fromBoxes;

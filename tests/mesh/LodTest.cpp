@@ -29,14 +29,9 @@ std::function<float(glm::vec3)> sphereSdf(glm::vec3 c, float r) {
     return [=](glm::vec3 p) { return glm::length(p - c) - r; };
 }
 
-ChunkedGrid noiseGrid(glm::ivec3 origin, glm::ivec3 size, int32_t chunkSize, unsigned seed) {
-    ChunkedGrid grid(ChunkLayout::make(origin, size, chunkSize));
-    std::mt19937 random(seed);
-    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    for (int z = 0; z < size.z; ++z)
-        for (int y = 0; y < size.y; ++y)
-            for (int x = 0; x < size.x; ++x) grid.at({x, y, z}) = unit(random);
-    test::paintMaterials(grid, [](glm::ivec3 p) { return uint8_t(1 + unsigned(p.x * 7 + p.y * 3 + p.z) % 4); });
+ChunkedGrid stripedNoiseGrid(glm::ivec3 origin, glm::ivec3 size, int32_t chunkSize, unsigned seed) {
+    ChunkedGrid grid = test::noiseGrid(origin, size, chunkSize, seed);
+    test::paintMaterials(grid, test::stripeMaterial);
     return grid;
 }
 
@@ -158,7 +153,7 @@ std::vector<Fixture> crackFixtures(int32_t chunkSize) {
     std::vector<Fixture> fixtures;
     fixtures.push_back({"sphere w=8", makeGrid({0, 0, 0}, {64, 64, 64}, chunkSize, ramp(sphereSdf({32.4f, 30.2f, 33.7f}, 20.3f), 8.0f))});
     fixtures.push_back({"plane 24.3 w=8", makeGrid({0, 0, 0}, {64, 48, 64}, chunkSize, ramp([](glm::vec3 p) { return p.y - 24.3f; }, 8.0f))});
-    fixtures.push_back({"noise", noiseGrid({-37, -5, -70}, {48, 40, 56}, chunkSize, 3)});
+    fixtures.push_back({"noise", stripedNoiseGrid({-37, -5, -70}, {48, 40, 56}, chunkSize, 3)});
     return fixtures;
 }
 
@@ -171,7 +166,7 @@ int levelsPresent(const LodLayout& layout) {
 // its box.
 TEST(mesh_Lod, decimationKeepsLodZeroSamples) {
     for (glm::ivec3 origin : {glm::ivec3(0), glm::ivec3(-37, -5, -70), glm::ivec3(1000, 17, -999)}) {
-        ChunkedGrid grid = noiseGrid(origin, {37, 21, 30}, 8, 5);
+        ChunkedGrid grid = stripedNoiseGrid(origin, {37, 21, 30}, 8, 5);
         LodPyramid pyramid(grid, 3);
         auto expectDecimated = [&] {
             for (int k = 1; k <= 3; ++k) {
@@ -291,7 +286,7 @@ TEST(mesh_Lod, borderWallsStayOnTheWorldsBox) {
 
 // L3 on random balanced layouts of levels 0-2 over noise (every neighbourhood of levels).
 TEST(mesh_Lod, randomBalancedLayoutsAreCrackFree) {
-    const ChunkedGrid grid = noiseGrid({-3, 5, 2}, {40, 36, 44}, 8, 11);
+    const ChunkedGrid grid = stripedNoiseGrid({-3, 5, 2}, {40, 36, 44}, 8, 11);
     const LodPyramid pyramid(grid, 2);
     std::mt19937 random(23);
     for (int trial = 0; trial < 6; ++trial) {
@@ -445,7 +440,7 @@ TEST(mesh_Lod, levelZeroIsTheRegularMeshAndChunkSizeDoesNotShow) {
     for (glm::ivec3 origin : {glm::ivec3(0), glm::ivec3(-37, -5, -70), glm::ivec3(1000, 17, -999)}) {
         std::vector<Mesh> coarse;
         for (int32_t chunkSize : {8, 16, 32}) {
-            const ChunkedGrid grid = noiseGrid(origin, {41, 27, 35}, chunkSize, 9);
+            const ChunkedGrid grid = stripedNoiseGrid(origin, {41, 27, 35}, chunkSize, 9);
             const LodPyramid pyramid(grid, 1);
             EXPECT_TRUE(identical(meshLod(pyramid, LodLayout::uniform(grid.layout(), 0), MeshOptions{}), meshMarchingCubes(grid, MeshOptions{})))
                 << "chunk " << chunkSize;

@@ -35,15 +35,10 @@ long euler(const Mesh& m) {
     return long(m.positions.size()) - faces * 3 / 2 + faces;
 }
 
-// Uniform random densities: almost every cell face with four crossings is ambiguous.
-ChunkedGrid noiseGrid(glm::ivec3 origin, glm::ivec3 size, int32_t chunkSize, unsigned seed) {
-    ChunkedGrid grid(ChunkLayout::make(origin, size, chunkSize));
-    std::mt19937 random(seed);
-    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    for (int z = 0; z < size.z; ++z)
-        for (int y = 0; y < size.y; ++y)
-            for (int x = 0; x < size.x; ++x) grid.at({x, y, z}) = unit(random);
-    test::paintMaterials(grid, [&](glm::ivec3 p) { return uint8_t(1 + unsigned(p.x * 7 + p.y * 3 + p.z) % 4); });
+// Uniform random densities (almost every cell face with four crossings is ambiguous), striped materials.
+ChunkedGrid stripedNoiseGrid(glm::ivec3 origin, glm::ivec3 size, int32_t chunkSize, unsigned seed) {
+    ChunkedGrid grid = test::noiseGrid(origin, size, chunkSize, seed);
+    test::paintMaterials(grid, test::stripeMaterial);
     return grid;
 }
 
@@ -134,7 +129,7 @@ TEST(mesh_MarchingCubes, torusHasGenusOne) {
 
 // M5: random densities, the worst case for ambiguous faces (surface nets is not manifold here).
 TEST(mesh_MarchingCubes, noiseIsClosedManifoldAndOriented) {
-    const ChunkedGrid grid = noiseGrid({-3, 5, 2}, {24, 20, 22}, 8, 7);
+    const ChunkedGrid grid = stripedNoiseGrid({-3, 5, 2}, {24, 20, 22}, 8, 7);
     const Mesh mesh = meshMarchingCubes(grid, MeshOptions{});
     ASSERT_GT(mesh.triangles.size(), 30000u);
     expectManifold(mesh);
@@ -172,7 +167,7 @@ TEST(mesh_MarchingCubes, sparseExtractionEqualsTheChunkByChunkMesh) {
     for (const glm::ivec3 origin : {glm::ivec3(0), glm::ivec3(-37, -5, -70), glm::ivec3(1000, 17, -999)})
         for (const glm::ivec3 size : {glm::ivec3(70, 23, 41), glm::ivec3(3, 130, 9)})
             for (int32_t chunk : {2, 8, 32}) {
-                ChunkedGrid grid = noiseGrid(origin, size, chunk, 5);
+                ChunkedGrid grid = stripedNoiseGrid(origin, size, chunk, 5);
                 const ChunkLayout& layout = grid.layout();
                 std::mt19937 random{unsigned(chunk)};
                 std::uniform_int_distribution<int> pick(0, 199);
@@ -248,7 +243,7 @@ TEST(mesh_MarchingCubes, surfaceInOneTileVisitsOnlyThatTile) {
 // M7: chunks meshed separately agree on every border vertex, and welding them by edge key gives
 // the whole mesh.
 TEST(mesh_MarchingCubes, chunksMeshedSeparatelyAgreeOnTheirBorders) {
-    const ChunkedGrid grid = noiseGrid({-5, 3, -9}, {20, 19, 21}, 8, 11);
+    const ChunkedGrid grid = stripedNoiseGrid({-5, 3, -9}, {20, 19, 21}, 8, 11);
     const ChunkLayout& layout = grid.layout();
     std::map<uint64_t, marching_cubes::EdgeVertex> welded;
     size_t shared = 0, triangles = 0;

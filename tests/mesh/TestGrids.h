@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <glm/geometric.hpp>
+#include <random>
 
 namespace voxc::test {
 
@@ -23,6 +24,21 @@ inline void paintMaterials(ChunkedGrid& grid, const std::function<uint8_t(glm::i
         for (int y = 0; y < layout.gridSize.y; ++y)
             for (int x = 0; x < layout.gridSize.x; ++x) grid.materialAt({x, y, z}) = material(layout.gridOrigin + glm::ivec3(x, y, z));
 }
+
+// Densities uniform in [0, 1] per voxel, from `seed`: sheets and ridges one voxel thin everywhere,
+// and almost every cell face with four crossings ambiguous.
+inline ChunkedGrid noiseGrid(glm::ivec3 origin, glm::ivec3 size, int32_t chunkSize, unsigned seed) {
+    ChunkedGrid grid(ChunkLayout::make(origin, size, chunkSize));
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (int z = 0; z < size.z; ++z)
+        for (int y = 0; y < size.y; ++y)
+            for (int x = 0; x < size.x; ++x) grid.at({x, y, z}) = unit(random);
+    return grid;
+}
+
+// Four materials in diagonal stripes of world position.
+inline uint8_t stripeMaterial(glm::ivec3 p) { return uint8_t(1 + unsigned(p.x * 7 + p.y * 3 + p.z) % 4); }
 
 // Falls linearly from 1 at the centre to 0 at `falloff`, so the iso-level t sits at radius falloff*(1-t).
 inline std::function<float(glm::vec3)> coneBall(glm::vec3 centre, float falloff) {
