@@ -8,10 +8,12 @@
 #include <png.h>
 #include <tiffio.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -30,8 +32,9 @@ inline std::string readBytes(const std::filesystem::path& path) {
     return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-// Row-major pixels (row 0 first), 8 or 16 bits.
-inline std::string greyPng(int width, int height, const std::vector<uint16_t>& pixels, int depth) {
+// A PNG of `height` rows, each of width * channels * depth / 8 bytes, written by fillRow(y, row).
+inline std::string pngBytes(int width, int height, int depth, int colourType, int channels,
+                            const std::function<void(int, std::vector<png_byte>&)>& fillRow) {
     std::string out;
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     png_infop info = png_create_info_struct(png);
@@ -42,16 +45,12 @@ inline std::string greyPng(int width, int height, const std::vector<uint16_t>& p
             static_cast<std::string*>(png_get_io_ptr(p))->append(reinterpret_cast<const char*>(data), n);
         },
         [](png_structp) {});
-    png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), depth, PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE,
+    png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), depth, colourType, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_write_info(png, info);
-    std::vector<png_byte> row(size_t(width) * size_t(depth / 8));
+    std::vector<png_byte> row(size_t(width) * size_t(channels) * size_t(depth / 8));
     for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x) {
-            const uint16_t v = pixels[size_t(y) * size_t(width) + size_t(x)];
-            if (depth == 8) row[size_t(x)] = png_byte(v);
-            else row[2 * size_t(x)] = png_byte(v >> 8), row[2 * size_t(x) + 1] = png_byte(v & 0xFF);
-        }
+        fillRow(y, row);
         png_write_row(png, row.data());
     }
     png_write_end(png, nullptr);
@@ -59,25 +58,21 @@ inline std::string greyPng(int width, int height, const std::vector<uint16_t>& p
     return out;
 }
 
+// Row-major pixels (row 0 first), 8 or 16 bits.
+inline std::string greyPng(int width, int height, const std::vector<uint16_t>& pixels, int depth) {
+    return pngBytes(width, height, depth, PNG_COLOR_TYPE_GRAY, 1, [&](int y, std::vector<png_byte>& row) {
+        for (int x = 0; x < width; ++x) {
+            const uint16_t v = pixels[size_t(y) * size_t(width) + size_t(x)];
+            if (depth == 8) row[size_t(x)] = png_byte(v);
+            else row[2 * size_t(x)] = png_byte(v >> 8), row[2 * size_t(x) + 1] = png_byte(v & 0xFF);
+        }
+    });
+}
+
+// An 8-bit RGB image of one grey (100, 100, 100): a valid PNG a heightmap does not take.
 inline std::string rgbPng(int width, int height) {
-    std::string out;
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-    png_infop info = png_create_info_struct(png);
-    if (setjmp(png_jmpbuf(png))) throw std::runtime_error("libpng failed");
-    png_set_write_fn(
-        png, &out,
-        [](png_structp p, png_bytep data, png_size_t n) {
-            static_cast<std::string*>(png_get_io_ptr(p))->append(reinterpret_cast<const char*>(data), n);
-        },
-        [](png_structp) {});
-    png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
-                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    png_write_info(png, info);
-    std::vector<png_byte> row(size_t(width) * 3, 100);
-    for (int y = 0; y < height; ++y) png_write_row(png, row.data());
-    png_write_end(png, nullptr);
-    png_destroy_write_struct(&png, &info);
-    return out;
+    return pngBytes(width, height, 8, PNG_COLOR_TYPE_RGB, 3,
+                    [](int, std::vector<png_byte>& row) { std::fill(row.begin(), row.end(), png_byte(100)); });
 }
 
 // A C-order .npy of shape (rows, columns) (or any `shape` text) holding `data`'s bytes.
