@@ -27,6 +27,18 @@ int64_t loopsSaid(const CheckResult& result) {
     return std::stoll(match[1]);
 }
 
+// With maxKernelLoopIterations at `loops` the text checks; one below, it is the same E0012 with
+// the same count.
+void expectRefusedOnlyBelowItsCount(const std::string& text, int64_t loops) {
+    Limits limits;
+    limits.maxKernelLoopIterations = loops;
+    EXPECT_FALSE(checkWith(text, limits).hasErrors());
+    limits.maxKernelLoopIterations = loops - 1;
+    const CheckResult past = checkWith(text, limits);
+    ASSERT_EQ(codes(past), std::vector<std::string>{"E0012"});
+    EXPECT_EQ(loopsSaid(past), loops);
+}
+
 // A dense network (steps of 0.5, centres a quarter voxel apart: 82 loop iterations per lookup in
 // its fullest cell) stamped by a 1x1x1 rule whose reach holds it, the anchors `stride` apart:
 // up to 896 firings cover a voxel at stride [8, 6, 6].
@@ -65,13 +77,7 @@ TEST(check_KernelBounds, AStampPassThatCouldLoopPastTheLimitIsRefusedAtTheReach)
     ASSERT_GT(loops, 65535) << refused.diagnostics[0].message;
 
     // At the limit it checks; one past, the same error with the same count.
-    Limits limits;
-    limits.maxKernelLoopIterations = loops;
-    EXPECT_FALSE(checkWith(text, limits).hasErrors());
-    limits.maxKernelLoopIterations = loops - 1;
-    const CheckResult past = checkWith(text, limits);
-    ASSERT_EQ(codes(past), std::vector<std::string>{"E0012"});
-    EXPECT_EQ(loopsSaid(past), loops);
+    expectRefusedOnlyBelowItsCount(text, loops);
 
     // Anchors spaced further apart cover a voxel fewer times: the same carve checks.
     const CheckResult spaced = checkWith(denseStamp("0.5", "[16, 12, 12]"));
@@ -114,11 +120,7 @@ TEST(check_KernelBounds, ASpeleothemKernelThatCouldLoopPastTheLimitIsRefusedAtTh
     const int64_t loops = loopsSaid(refused);
     ASSERT_GT(loops, 65535) << refused.diagnostics[0].message;
 
-    Limits limits;
-    limits.maxKernelLoopIterations = loops;
-    EXPECT_FALSE(checkWith(text, limits).hasErrors());
-    limits.maxKernelLoopIterations = loops - 1;
-    EXPECT_EQ(loopsSaid(checkWith(text, limits)), loops);
+    expectRefusedOnlyBelowItsCount(text, loops);
 
     // Without keep_clear the column's loops stay far under the limit at any height; a lower grid
     // tests fewer voxels against the lists.
