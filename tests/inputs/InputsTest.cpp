@@ -138,8 +138,8 @@ struct MeshCase {
 };
 
 // Every voxel farther than one voxel from the analytic surface: solid exactly where the mesh's
-// signed distance is negative.
-void expectSignsAgree(const fs::path& dir, const MeshCase& c) {
+// signed distance is negative. `warning`: the one diagnostic expected, at the file value.
+void expectSignsAgree(const fs::path& dir, const MeshCase& c, const std::string& warning = "") {
     const std::string text = fmt::format(R"(world {{ size = [40, 36, 38]; origin = [-3, 2, 1]; }}
 mesh rock {{ file = "{}"; {} }}
 field inside = rock(wp) < 0 ? 1.0 : 0.0;
@@ -148,7 +148,14 @@ pipeline {{ start; set inside; }}
                                          c.file, c.keys);
     const CheckResult result = checkAt(dir / "m.vox", text);
     ASSERT_TRUE(result.program) << result.rendered();
-    EXPECT_TRUE(result.diagnostics.empty()) << result.rendered();
+    if (warning.empty()) {
+        EXPECT_TRUE(result.diagnostics.empty()) << result.rendered();
+    } else {
+        ASSERT_EQ(result.diagnostics.size(), 1u) << result.rendered();
+        EXPECT_EQ(result.diagnostics[0].code, warning);
+        EXPECT_EQ(result.diagnostics[0].loc.line, 2u);
+        EXPECT_EQ(result.diagnostics[0].loc.column, 20u); // `mesh rock { file = ` is 19 characters
+    }
     const DenseGrid grid = interpret(*result.program);
     size_t compared = 0, inside = 0, wrong = 0;
     for (int z = 0; z < 38; ++z)
@@ -192,6 +199,76 @@ TEST(Mesh, RotatedBoxSignsAgree) {
                                const glm::dvec3 e = glm::abs(local) - glm::dvec3(6, 4, 5);
                                return glm::length(glm::max(e, 0.0)) + std::min(std::max({e.x, e.y, e.z}), 0.0);
                            }});
+}
+
+// A box's analytic signed distance about `centre`, half extents `half`.
+double boxDistance(glm::dvec3 p, glm::dvec3 centre, glm::dvec3 half) {
+    const glm::dvec3 e = glm::abs(p - centre) - half;
+    return glm::length(glm::max(e, 0.0)) + std::min(std::max({e.x, e.y, e.z}), 0.0);
+}
+
+test::Shape insideOut(test::Shape shape) {
+    for (glm::uvec3& t : shape.triangles) std::swap(t.y, t.z);
+    return shape;
+}
+
+test::Shape joined(test::Shape a, const test::Shape& b) {
+    const uint32_t offset = uint32_t(a.points.size());
+    a.points.insert(a.points.end(), b.points.begin(), b.points.end());
+    for (const glm::uvec3& t : b.triangles) a.triangles.push_back(t + offset);
+    return a;
+}
+
+// A closed mesh wound clockwise seen from outside: warned about (W0213 with its volume) at the
+// file value, and signed as the solid all the same (the sign rule does not read the winding).
+TEST(Mesh, AnInsideOutMeshIsWarnedAboutAndSignedAsItsSolid) {
+    const fs::path dir = scratch();
+    test::writeBytes(dir / "crate.obj", test::obj(insideOut(test::box({-6, -4, -5}, {6, 4, 5}))));
+    expectSignsAgree(dir, {"crate.obj", "translate = [16.5, 18, 20]; band = 3;",
+                           [](glm::dvec3 p) { return boxDistance(p, {16.5, 18, 20}, {6, 4, 5}); }},
+                     "W0213");
+    const CheckResult result = checkAt(dir / "m.vox", "world { size = [32, 32, 32]; }\n"
+                                                      "mesh crate { file = \"crate.obj\"; }\n"
+                                                      "field f = crate(wp) < 0 ? 1.0 : 0.0;\npipeline { start; set f; }\n");
+    ASSERT_EQ(result.diagnostics.size(), 1u) << result.rendered();
+    EXPECT_NE(result.diagnostics[0].message.find("1 closed part is wound clockwise seen from outside (signed volume "
+                                                 "-960 cubic voxels)"),
+              std::string::npos)
+        << result.diagnostics[0].message;
+}
+
+// Each closed part is judged alone: an outward box beside an inside-out one is one part inside
+// out; the inner wall of a hollow (wound inward, inside an outward part's box) and outward parts
+// are none.
+TEST(Mesh, InsideOutPartsAreCountedOneByOne) {
+    const fs::path dir = scratch();
+    const test::Shape outer = test::box({0, 0, 0}, {10, 10, 10});
+    const test::Shape far = test::box({14, 0, 0}, {18, 4, 4});
+    const struct {
+        std::string file;
+        test::Shape shape;
+        size_t insideOutParts; // 0: no diagnostic
+    } cases[] = {
+        {"pair.obj", joined(outer, insideOut(far)), 1},
+        {"both.ply", joined(insideOut(outer), insideOut(far)), 2},
+        {"hollow.obj", joined(outer, insideOut(test::box({3, 3, 3}, {7, 7, 7}))), 0},
+        {"apart.obj", joined(outer, far), 0},
+    };
+    for (const auto& c : cases) {
+        test::writeBytes(dir / c.file, c.file.ends_with(".ply") ? test::ply(c.shape) : test::obj(c.shape));
+        const CheckResult result = checkAt(dir / "m.vox", "world { size = [32, 32, 32]; }\nmesh m { file = \"" + c.file +
+                                                              "\"; translate = [4, 4, 4]; }\n"
+                                                              "field f = m(wp) < 0 ? 1.0 : 0.0;\npipeline { start; set f; }\n");
+        ASSERT_TRUE(result.program) << c.file << "\n" << result.rendered();
+        if (c.insideOutParts == 0) {
+            EXPECT_TRUE(result.diagnostics.empty()) << c.file << "\n" << result.rendered();
+            continue;
+        }
+        ASSERT_EQ(result.diagnostics.size(), 1u) << c.file << "\n" << result.rendered();
+        EXPECT_EQ(result.diagnostics[0].code, "W0213");
+        const std::string parts = c.insideOutParts == 1 ? "1 closed part is" : fmt::format("{} closed parts are", c.insideOutParts);
+        EXPECT_NE(result.diagnostics[0].message.find(parts), std::string::npos) << result.diagnostics[0].message;
+    }
 }
 
 TEST(Mesh, AnOpenMeshIsWarnedAboutAtItsFile) {

@@ -232,6 +232,15 @@ std::shared_ptr<const SampledMap> checkMesh(Context& context, const ast::Block& 
                         "around a hole is whatever OpenVDB's fill carries through it; close the mesh to be sure of "
                         "its inside (docs/language.md, \"Meshes\")",
                         *block.label, grid.openEdges, grid.nonManifoldEdges));
+    if (grid.insideOutParts > 0)
+        context.diagnostics.warning(
+            "W0213", fileKey.value.loc,
+            fmt::format("mesh '{}' is inside out: {} closed part{} wound clockwise seen from outside (signed volume "
+                        "-{:.6g} cubic voxels); {}(p) does not depend on the winding, but a curves block taking it as "
+                        "an input puts the air on the side its faces point to, inside it; reverse the faces' winding "
+                        "(docs/language.md, \"Meshes\")",
+                        *block.label, grid.insideOutParts, grid.insideOutParts == 1 ? " is" : "s are",
+                        grid.insideOutVolume, *block.label));
     if (!claimCells(context, block, fileKey, uint64_t(grid.values.size()), budget)) return nullptr;
     auto map = std::make_shared<SampledMap>();
     map->name = *block.label;

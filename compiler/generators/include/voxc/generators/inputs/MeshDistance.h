@@ -30,6 +30,13 @@ struct DistanceGrid {
     // two: 0 for a closed, manifold surface.
     int64_t openEdges = 0;
     int64_t nonManifoldEdges = 0;
+    // Closed parts (connected through shared vertices, every edge bordering two of their
+    // triangles) wound clockwise seen from outside: their signed volume is negative, and they lie
+    // in no outward-wound closed part's box (the inner wall of a hollow is wound inward on
+    // purpose). Their volume in cubic voxels, together. 0 for a mesh wound as glTF, OBJ and PLY
+    // expect.
+    int64_t insideOutParts = 0;
+    double insideOutVolume = 0.0;
 };
 
 // The grid covers the transformed mesh's box grown by band + 1 voxels. InputError E0012 when it
