@@ -7,10 +7,10 @@ layout(push_constant, std430) uniform McPush {
     ivec4 gridOrigin;     // xyz: world coordinate of grid voxel (0,0,0); w: log2 chunk size
     ivec4 gridSize;       // xyz: voxels per axis; w: 1 when the material buffer has a uint per voxel
     ivec4 chunkBase;      // xyz: world chunk of voxel-buffer slot 0; w: slots along x
-    ivec4 cellChunkFirst; // xyz: first world chunk holding cells; w: voxel-buffer slots along y
-    ivec4 cellChunkCount; // xyz: world chunks holding cells per axis; w: 1 = skip uniform chunks
+    ivec4 tileFirst;      // xyz: first world 8^3 tile holding cells; w: voxel-buffer slots along y
+    ivec4 tileCount;      // xyz: such tiles per axis (the voxel tiles: one more per axis); w: unused
     vec4 surface;         // x: iso; y, z: the crossing's clamp, margin and 1 - margin
-    uvec4 levelOffset;    // element offsets of scan levels 1..3 in the scan buffer (x unused)
+    uvec4 levelOffset;    // element offsets of scan levels 0..3 in the scan buffer (level 0: the segments)
     uvec4 pass;           // x: workgroups along x; y: scanned levels; z: items of this dispatch; w: scan level
 } push;
 
@@ -39,7 +39,7 @@ uint voxelAddress(ivec3 local) {
     const ivec3 world = push.gridOrigin.xyz + local;
     const uvec3 entry = uvec3((world >> shift) - push.chunkBase.xyz);
     const uvec3 inside = uvec3(world & ((1 << shift) - 1));
-    const uint slot = entry.x + uint(push.chunkBase.w) * (entry.y + uint(push.cellChunkFirst.w) * entry.z);
+    const uint slot = entry.x + uint(push.chunkBase.w) * (entry.y + uint(push.tileFirst.w) * entry.z);
     const uint size = 1u << uint(shift);
     return slot * size * size * size + inside.x + size * (inside.y + size * inside.z);
 }
@@ -59,11 +59,27 @@ uint materialAt(ivec3 p) {
 
 // Cells are named by their minimum corner, grid-local, from -1 to gridSize - 1 per axis; their
 // key (x fastest) is voxc::surface_nets::CellDomain::key, the global order of the mesh.
-uvec3 cellDomain() { return uvec3(push.gridSize.xyz) + 1u; }
+//
+// The passes after mc_tiles.glsl visit only the active tiles: world-aligned 8^3 tiles of cells
+// that hold a cell the surface crosses, listed by the host in tile order (z, then y, then x) and
+// ranked. A cell of an active tile has a slot, rank * 512 + its place in the tile (x fastest); a
+// segment is the row of a tile's cells along x at one (y, z), slot / 8. The host also lists the
+// segments in global key order (segments.slot) and gives each segment its place in that order
+// (segmentOrder.place), which is the order of the scan.
+const uint kTileShift = 3u;
+const uint kTileSide = 1u << kTileShift;
 
-ivec3 cellOfKey(uint key) {
-    const uvec3 n = cellDomain();
-    return ivec3(key % n.x, (key / n.x) % n.y, key / (n.x * n.y)) - 1;
+// The segment's first world cell (its tile's low x).
+ivec3 segmentWorldCell(uint activeTile, uint segmentSlot) {
+    const uvec3 n = uvec3(push.tileCount.xyz);
+    const ivec3 tile = push.tileFirst.xyz + ivec3(activeTile % n.x, (activeTile / n.x) % n.y, activeTile / (n.x * n.y));
+    return (tile << kTileShift) + ivec3(0, segmentSlot & 7u, (segmentSlot >> 3) & 7u);
+}
+
+// The cells of a segment's row that are cells of the grid: grid-local x in [begin, end).
+ivec2 segmentCells(ivec3 worldFirst) {
+    const int x = worldFirst.x - push.gridOrigin.x;
+    return ivec2(max(x, -1), min(x + int(kTileSide), push.gridSize.x));
 }
 
 // Corner c of a cell is at offset (c&1, (c>>1)&1, (c>>2)&1); bit c of a case is corner c solid.

@@ -1,8 +1,9 @@
 #version 450
 // GPU marching cubes, pass 4, over the active cells (mc_compact.glsl): every cell writes the
-// vertices of the crossed edges it owns and its triangles at the places the scan gave them, so vertices come out ordered by global edge and
-// triangles by global cell then table order, as the CPU mesher orders them. A triangle names a
-// vertex by its owner cell's place plus the owner's crossed edges of lower axis. The arithmetic
+// vertices of the crossed edges it owns and its triangles at the places the scan gave them, so
+// vertices come out ordered by global edge and triangles by global cell then table order, as the
+// CPU mesher orders them. A triangle names a vertex by its owner cell's place plus the owner's
+// crossed edges of lower axis. The arithmetic
 // is the CPU mesher's, operation for operation (`precise`: no fused multiply-adds), so positions
 // and normals agree bit for bit where the device rounds as IEEE 754 requires.
 
@@ -12,17 +13,23 @@ layout(std430, set = 0, binding = 2) readonly buffer CaseTable {
     uint word[];
 } cases;
 layout(std430, set = 0, binding = 4) readonly buffer CellInfo {
-    uint info[]; // counts in bits 0-6 (owned crossed edges, triangles << 3)
+    uint info[]; // per cell slot: counts in bits 0-6, the segment's vertices (7-11) and triangles (12-18) before it
 } cells;
 layout(std430, set = 0, binding = 5) readonly buffer Scan {
     uvec4 value[];
 } scan;
-layout(std430, set = 0, binding = 8) readonly buffer CellPlace {
-    uint place[];
-} cellPlaces;
-layout(std430, set = 0, binding = 9) readonly buffer ActiveCells {
-    uint key[];
+layout(std430, set = 0, binding = 8) readonly buffer ActiveCells {
+    uint slot[];
 } activeCells;
+layout(std430, set = 0, binding = 10) readonly buffer TileRanks {
+    uint rank[]; // per tile of cells (x fastest): its rank among the active tiles, or none
+} tileRanks;
+layout(std430, set = 0, binding = 11) readonly buffer ActiveTiles {
+    uint tile[];
+} activeTiles;
+layout(std430, set = 0, binding = 13) readonly buffer SegmentOrder {
+    uint place[]; // per segment slot: its place in global key order
+} segmentOrder;
 // Seven words per vertex: position xyz and normal xyz (float bits), material.
 layout(std430, set = 0, binding = 6) writeonly buffer Vertices {
     uint word[];
@@ -32,12 +39,23 @@ layout(std430, set = 0, binding = 7) writeonly buffer Triangles {
     uint word[];
 } triangles;
 
-// The cell's first vertex and triangle: its place in its block plus its blocks' places above.
-uvec2 place(uint key) {
-    const uint packed = cellPlaces.place[key];
-    uvec2 sum = uvec2(packed & 0xffffu, packed >> 16);
-    for (uint level = 1u; level < push.pass.y; ++level) sum += scan.value[push.levelOffset[level] + (key >> (10u * level))].xy;
+// The first vertex and triangle of the cell in slot `slot`: its segment's place (the sum of the
+// segment's and its blocks' entries on every scan level) plus the segment's before the cell.
+uvec2 place(uint slot, uint info) {
+    const uint segment = segmentOrder.place[slot >> 3];
+    uvec2 sum = uvec2((info >> 7) & 31u, (info >> 12) & 127u);
+    for (uint level = 0u; level < push.pass.y; ++level) sum += scan.value[push.levelOffset[level] + (segment >> (10u * level))].xy;
     return sum;
+}
+
+// The slot of a grid-local cell of an active tile.
+uint slotOf(ivec3 cell) {
+    const ivec3 world = push.gridOrigin.xyz + cell;
+    const uvec3 tile = uvec3((world >> int(kTileShift)) - push.tileFirst.xyz);
+    const uvec3 n = uvec3(push.tileCount.xyz);
+    const uvec3 inTile = uvec3(world & int(kTileSide - 1u));
+    return tileRanks.rank[tile.x + n.x * (tile.y + n.y * tile.z)] * kTileSide * kTileSide * kTileSide + inTile.x +
+           kTileSide * (inTile.y + kTileSide * inTile.z);
 }
 
 vec3 gradientAt(ivec3 p) {
@@ -99,28 +117,28 @@ uint caseEdge(uint mask, uint i) { return (cases.word[mask * 10u + 1u + i / 4u] 
 void main() {
     const uint index = invocationIndex(64u);
     if (index >= push.pass.z) return;
-    const uint key = activeCells.key[index];
-    const uint info = cells.info[key] & 0x7fu;
-    const ivec3 cell = cellOfKey(key);
-    const uvec2 first = place(key);
+    const uint slot = activeCells.slot[index];
+    const uint info = cells.info[slot];
+    const ivec3 cell = segmentWorldCell(activeTiles.tile[slot >> 9], slot >> 3) - push.gridOrigin.xyz + ivec3(slot & 7u, 0, 0);
+    const uvec2 first = place(slot, info);
     uint rank = 0u;
     for (int axis = 0; axis < 3; ++axis)
         if (((info >> axis) & 1u) != 0u) writeVertex(first.x + rank++, cell, axis);
 
-    const uint triangleCount = info >> 3;
+    const uint triangleCount = (info >> 3) & 15u;
     if (triangleCount == 0u) return;
     const uint mask = cellCase(cell);
     const uint material = majorityMaterial(cell, mask);
-    const uvec3 n = cellDomain();
     for (uint t = 0u; t < triangleCount; ++t) {
         const uint base = (first.y + t) * 4u;
         for (uint k = 0u; k < 3u; ++k) {
-            // Edge e runs along axis e/4 from its lower corner (voxc::marching_cubes::edgeCorners).
+            // Edge e runs along axis e/4 from its lower corner (voxc::marching_cubes::edgeCorners);
+            // the cell owning that corner is crossed, so its tile is active.
             const uint edge = caseEdge(mask, t * 3u + k);
             const uint axis = edge / 4u, along = edge % 4u, u = (axis + 1u) % 3u, v = (axis + 2u) % 3u;
-            const ivec3 offset = cornerOffset((along & 1u) << u | (along >> 1) << v);
-            const uint owner = key + uint(offset.x) + n.x * (uint(offset.y) + n.y * uint(offset.z));
-            triangles.word[base + k] = place(owner).x + bitCount(cells.info[owner] & ((1u << axis) - 1u));
+            const uint owner = slotOf(cell + cornerOffset((along & 1u) << u | (along >> 1) << v));
+            const uint ownerInfo = cells.info[owner];
+            triangles.word[base + k] = place(owner, ownerInfo).x + bitCount(ownerInfo & ((1u << axis) - 1u));
         }
         triangles.word[base + 3u] = material;
     }

@@ -1,15 +1,15 @@
 #version 450
 // GPU marching cubes, pass 2: exclusive prefix sums of (vertices, triangles, active cells) over
-// the block totals of the level below (level 1 holds those of mc_count.glsl's 1024-cell blocks).
-// Each workgroup scans a block of 1024 elements of level push.pass.w in place and writes the
+// the totals of the level below (level 0 holds those of mc_count.glsl's segments, level 1 those
+// of level 0's 1024-element blocks). Each workgroup scans a block of 1024 elements of level push.pass.w in place and writes the
 // block's total to the next level; the host runs the levels in turn, behind a pipeline barrier
 // each (a workgroup barrier orders nothing between workgroups), until one block holds the level.
-// A cell's place is then its place in its block plus its blocks' entries on every level.
+// A segment's place is then the sum of its own and its blocks' entries on every level.
 
 layout(local_size_x = 256) in;
 
 layout(std430, set = 0, binding = 5) buffer Scan {
-    uvec4 value[]; // levels 1 and up at push.levelOffset[level]
+    uvec4 value[]; // level l at push.levelOffset[l]
 } scan;
 
 shared uvec4 partial[256];

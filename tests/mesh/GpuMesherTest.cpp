@@ -1,7 +1,8 @@
 // Marching cubes on the device (voxc/vulkan/GpuMesher.h) against the CPU mesher, its oracle: on
-// lavapipe the index buffer, materials and skipped-chunk counts are identical and positions and
-// normals bit-identical, for several examples, chunk sizes and origins that are not multiples
-// of the chunk size, with and without uniform-chunk skipping, under the validation layer.
+// lavapipe the index buffer, materials, skipped-chunk and active-tile counts are identical and
+// positions and normals bit-identical, for several examples, chunk sizes and origins that are not
+// multiples of the chunk size or of the 8^3 tiles, with and without skipping, under the
+// validation layer.
 #include "voxc/check/Check.h"
 #include "voxc/core/Errors.h"
 #include "voxc/mesh/MarchingCubes.h"
@@ -88,6 +89,15 @@ TEST(mesh_GpuMarchingCubes, MatchesTheCpuMesherBitForBit) {
                 expectSameMesh(cpu, gpuMesh, what);
                 EXPECT_EQ(gpuStats.chunks, cpuStats.chunks) << what;
                 EXPECT_EQ(gpuStats.skippedChunks, cpuStats.skippedChunks) << what;
+                EXPECT_EQ(gpuStats.tiles, cpuStats.tiles) << what;
+                EXPECT_EQ(gpuStats.activeTiles, cpuStats.activeTiles) << what;
+                // Only the crossed tiles' cells are counted (every tile's without skipping).
+                if (skip) {
+                    EXPECT_LT(gpuStats.activeTiles, gpuStats.tiles) << what;
+                    EXPECT_LE(gpuStats.cellsVisited, gpuStats.activeTiles * 512) << what;
+                } else {
+                    EXPECT_EQ(gpuStats.cellsVisited, cpuStats.cellsVisited) << what;
+                }
                 if (skip && iso == 0.5f) {
                     EXPECT_GT(gpuStats.skippedChunks, 0u) << what;
                 }
@@ -111,19 +121,22 @@ TEST(mesh_GpuMarchingCubes, IsTheSameForEveryChunkSizeAndRepeatedCall) {
     expectNoValidationMessages(context);
 }
 
-// The scan has one level per factor of 1024 cells: a grid of fewer than 1024 cells is one count
-// block and needs no scan dispatch; a 110 x 99 x 110 grid has 1.23 million cells, three levels.
+// The scan runs over the active tiles' rows of cells, one level per factor of 1024 rows: a grid
+// of fewer than 1024 cells has one block and one scan dispatch; a 110 x 99 x 110 grid meshed
+// without skipping has 15 x 13 x 15 tiles and 100 x 111 rows of them, 166,500 rows: three levels.
 TEST(mesh_GpuMarchingCubes, MatchesTheCpuMesherFromOneScanBlockToThreeLevels) {
     VulkanContext& context = validatedLavapipe();
     for (const glm::ivec3 size : {glm::ivec3(9, 8, 7), glm::ivec3(110, 99, 110)}) {
         VulkanExecutor executor(context, compileProgram(example("fields.vox", 16, {-3, 20, 5}, size), {}));
         const RunResult result = executor.run();
         GpuMarchingCubes gpu(executor);
-        const std::string what = fmt::format("{}x{}x{}", size.x, size.y, size.z);
         const float iso = size.x < 16 ? 0.0f : 0.5f; // the small box: whatever is not air
-        const Mesh cpu = meshMarchingCubes(result.grid, {.iso = iso});
-        ASSERT_GT(cpu.triangles.size(), 0u) << what;
-        expectSameMesh(cpu, gpu.mesh({.iso = iso}), what);
+        for (const bool skip : {true, false}) {
+            const std::string what = fmt::format("{}x{}x{} skip {}", size.x, size.y, size.z, skip);
+            const Mesh cpu = meshMarchingCubes(result.grid, {.iso = iso, .skipUniformChunks = skip});
+            ASSERT_GT(cpu.triangles.size(), 0u) << what;
+            expectSameMesh(cpu, gpu.mesh({.iso = iso, .skipUniformChunks = skip}), what);
+        }
     }
     expectNoValidationMessages(context);
 }

@@ -19,14 +19,17 @@ using namespace vulkan_detail;
 
 namespace {
 
-constexpr uint32_t kCellsPerGroup = 64;    // local size of the emit pass
-constexpr uint32_t kScanBlock = 1024;      // elements per count and scan workgroup (mc_count, mc_scan.glsl)
-constexpr uint32_t kScanBlockShift = 10;
+constexpr uint32_t kGroupSize = 64;        // local size of the tiles, count, compact and emit passes
+constexpr uint32_t kScanBlock = 1024;      // elements per scan workgroup (mc_scan.glsl)
+constexpr int kTileShift = 3;              // tiles of 8^3 cells (mc_common.glsl)
+constexpr uint32_t kTileSide = 1u << kTileShift;
+constexpr uint32_t kTileCells = kTileSide * kTileSide * kTileSide;
+constexpr uint32_t kTileSegments = kTileSide * kTileSide; // rows of a tile's cells along x
+constexpr uint32_t kNoRank = UINT32_MAX;
 constexpr uint32_t kCaseWords = 10;        // per case: triangle count, 36 edge bytes
 constexpr uint32_t kVertexWords = 7;       // position, normal, material
 constexpr uint32_t kTriangleWords = 4;     // three indices, material
 constexpr VkDeviceSize kTotalsBytes = 4 * sizeof(uint32_t); // a scan element: vertices, triangles, active cells
-static_assert(kScanBlock == 1u << kScanBlockShift);
 
 struct Access {
     VkPipelineStageFlags stage;
@@ -59,20 +62,99 @@ std::vector<uint32_t> packedCaseTable() {
 
 std::string mib(uint64_t bytes) { return fmt::format("{:.1f} MiB", double(bytes) / (1 << 20)); }
 
+uint32_t groupsOf(uint64_t items, uint32_t perGroup) { return uint32_t((items + perGroup - 1) / perGroup); }
+
+// What the host makes of mc_tiles.glsl's tile states: the tiles of cells the later passes visit,
+// ranked in tile order (z, then y, then x), and their segments in global key order.
+struct TileLists {
+    std::vector<uint32_t> ranks;        // per tile of cells: its rank, or kNoRank
+    std::vector<uint32_t> activeTiles;  // by rank: the tile's index
+    std::vector<uint32_t> segments;     // in global key order: rank * 64 + z * 8 + y within the tile
+    std::vector<uint32_t> segmentOrder; // per rank * 64 + z * 8 + y: its place in `segments`
+    size_t crossedTiles = 0;
+    size_t cells = 0;                   // the cells of the listed segments
+    std::vector<uint8_t> chunkCrossed;  // per world chunk holding cells
+};
+
+// A tile of cells reads its voxel tile and the low x face, y face, z face, xy, xz and yz edges
+// and corner of the voxel tiles after it: region r (bit r of a state) of the tile at offset r.
+constexpr glm::ivec3 kRegionTile[8] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}};
+
+TileLists listTiles(const uint32_t* states, glm::ivec3 tileFirst, glm::ivec3 n, const ChunkLayout& layout, bool skip) {
+    const glm::ivec3 v = n + 1; // voxel tiles per axis
+    const glm::ivec3 chunkFirst = (layout.gridOrigin - 1) >> layout.chunkShift;
+    const glm::ivec3 chunks = ((layout.gridOrigin + layout.gridSize - 1) >> layout.chunkShift) - chunkFirst + 1;
+    TileLists lists;
+    lists.ranks.assign(size_t(n.x) * size_t(n.y) * size_t(n.z), kNoRank);
+    lists.chunkCrossed.assign(size_t(chunks.x) * size_t(chunks.y) * size_t(chunks.z), 0);
+    std::vector<uint32_t> rowStart; // per row of tiles (y, z): its first rank
+    rowStart.reserve(size_t(n.y) * size_t(n.z) + 1);
+    size_t tile = 0;
+    for (int z = 0; z < n.z; ++z)
+        for (int y = 0; y < n.y; ++y) {
+            rowStart.push_back(uint32_t(lists.activeTiles.size()));
+            for (int x = 0; x < n.x; ++x, ++tile) {
+                uint32_t solid = 0, air = 0;
+                for (uint32_t r = 0; r < 8; ++r) {
+                    const glm::ivec3 t = glm::ivec3(x, y, z) + kRegionTile[r];
+                    const uint32_t state = states[size_t(t.x) + size_t(v.x) * (size_t(t.y) + size_t(v.y) * size_t(t.z))];
+                    solid |= (state >> r) & 1u;
+                    air |= (state >> (8 + r)) & 1u;
+                }
+                const bool crossed = solid && air;
+                if (crossed) {
+                    ++lists.crossedTiles;
+                    const glm::ivec3 chunk = (((tileFirst + glm::ivec3(x, y, z)) << kTileShift) >> layout.chunkShift) - chunkFirst;
+                    lists.chunkCrossed[size_t(chunk.x) + size_t(chunks.x) * (size_t(chunk.y) + size_t(chunks.y) * size_t(chunk.z))] = 1;
+                }
+                if (!crossed && skip) continue;
+                lists.ranks[tile] = uint32_t(lists.activeTiles.size());
+                lists.activeTiles.push_back(uint32_t(tile));
+            }
+        }
+    rowStart.push_back(uint32_t(lists.activeTiles.size()));
+    lists.segmentOrder.assign(lists.activeTiles.size() * kTileSegments, kNoRank);
+    // Global key order: z, then y, then x; a row of cells (y, z) crosses the tiles of tile row
+    // (y >> 3, z >> 3) in x order, which is their rank order. Rows outside the cells have none.
+    const glm::ivec3 firstCell = tileFirst << kTileShift;
+    auto insideCells = [&](int axis, int world) {
+        const int local = world - layout.gridOrigin[axis];
+        return local >= -1 && local < layout.gridSize[axis];
+    };
+    for (int z = 0; z < n.z; ++z)
+        for (uint32_t inZ = 0; inZ < kTileSide; ++inZ) {
+            if (!insideCells(2, firstCell.z + z * int(kTileSide) + int(inZ))) continue;
+            for (int y = 0; y < n.y; ++y)
+                for (uint32_t inY = 0; inY < kTileSide; ++inY) {
+                    if (!insideCells(1, firstCell.y + y * int(kTileSide) + int(inY))) continue;
+                    const size_t row = size_t(z) * size_t(n.y) + size_t(y);
+                    for (uint32_t rank = rowStart[row]; rank < rowStart[row + 1]; ++rank) {
+                        const uint32_t segment = rank * kTileSegments + inZ * kTileSide + inY;
+                        lists.segmentOrder[segment] = uint32_t(lists.segments.size());
+                        lists.segments.push_back(segment);
+                        const int tileX = firstCell.x + int(lists.activeTiles[rank] % uint32_t(n.x)) * int(kTileSide) - layout.gridOrigin.x;
+                        lists.cells += size_t(std::min(tileX + int(kTileSide), layout.gridSize.x) - std::max(tileX, -1));
+                    }
+                }
+        }
+    return lists;
+}
+
+
 } // namespace
 
 struct GpuMarchingCubes::Impl {
     ExecutorVoxels source;
     VulkanContext::Impl& ctx;
     ChunkLayout layout;
-    uint32_t cells = 0;                  // the cell domain, (gridSize + 1) per axis
-    glm::ivec3 cellChunkFirst{0}, cellChunkCount{0};
-    uint32_t chunkCount = 0;             // world chunks holding cells
-    std::vector<uint32_t> levelSize;     // elements per scan level: the cells, ..., 1 (the totals)
-    std::vector<uint32_t> levelOffset;   // of levels 1 and up in scanLevels ([0] unused: level 0 is cellPlaces)
+    glm::ivec3 tileFirst{0}, tileCount{0}; // world 8^3 tiles holding cells
+    uint32_t tiles = 0;                    // of cells; the voxel tiles are one more per axis
+    uint32_t voxelTiles = 0;
     McPipelines pipelines;
-    // `results` is host-visible: the totals and the chunk flags after the count, then the mesh.
-    DeviceBuffer caseTable, chunkFlags, cellInfo, cellPlaces, scanLevels, activeCells, vertices, triangles, results;
+    // Host-visible: tileStates (written by mc_tiles), the lists the host makes from them
+    // (tileRanks, activeTiles, segments, segmentOrder), and `results` (the totals, then the mesh).
+    DeviceBuffer caseTable, tileStates, tileRanks, activeTiles, segments, segmentOrder, cellInfo, scanLevels, activeCells,
+        vertices, triangles, results;
     VkCommandPool commandPool = VK_NULL_HANDLE;
     VkCommandBuffer cmd = VK_NULL_HANDLE;
     VkFence fence = VK_NULL_HANDLE;
@@ -88,6 +170,10 @@ struct GpuMarchingCubes::Impl {
     // smaller; true when replaced (a new buffer may reuse the old handle's value, so callers
     // cannot compare handles to know whether descriptors need an update).
     bool ensureBuffer(DeviceBuffer& buffer, VkDeviceSize bytes, MemoryUse use);
+    // Copies `words` into the host-visible `buffer` for the device; true when the buffer was replaced.
+    bool upload(DeviceBuffer& buffer, const std::vector<uint32_t>& words);
+    // Points every binding at its buffer.
+    void bindAll();
     McPush push(const MeshOptions& options) const;
     // Records `groups` workgroups of `pass`, split over x and y where x alone is not enough.
     void dispatch(McPass pass, McPush& push, uint32_t groups, uint32_t items);
@@ -99,7 +185,8 @@ GpuMarchingCubes::Impl::~Impl() {
     if (ctx.device) ctx.api.vkDeviceWaitIdle(ctx.device);
     if (fence) ctx.api.vkDestroyFence(ctx.device, fence, nullptr);
     if (commandPool) ctx.api.vkDestroyCommandPool(ctx.device, commandPool, nullptr);
-    for (DeviceBuffer* b : {&results, &triangles, &vertices, &activeCells, &scanLevels, &cellPlaces, &cellInfo, &chunkFlags, &caseTable})
+    for (DeviceBuffer* b : {&results, &triangles, &vertices, &activeCells, &scanLevels, &cellInfo, &segmentOrder, &segments,
+                            &activeTiles, &tileRanks, &tileStates, &caseTable})
         destroyBuffer(ctx, *b);
     destroyMcPipelines(ctx, pipelines);
 }
@@ -111,15 +198,15 @@ void GpuMarchingCubes::Impl::checkLimits() const {
                                     "(voxc run --mesh-on host)",
                                     ctx.info.name));
     const uint64_t maxRange = ctx.properties.limits.maxStorageBufferRange;
-    const uint64_t domain = uint64_t(layout.gridSize.x + 1) * uint64_t(layout.gridSize.y + 1) * uint64_t(layout.gridSize.z + 1);
-    // Triangle places are 32-bit sums of up to 12 triangles per cell; the largest buffer holds a
-    // uint per cell (cellInfo, cellPlaces).
-    const uint64_t cellBytes = domain * sizeof(uint32_t);
-    if (domain * marching_cubes::kMaxTrianglesPerCell > UINT32_MAX || cellBytes > maxRange)
-        throw UserError(fmt::format("marching cubes on the device needs {} buffers for the {} cells of a {}x{}x{} grid, "
+    // The largest buffer holds a uint per cell of every tile when all are active (cellInfo);
+    // triangle places are 32-bit sums of up to 12 triangles per cell.
+    const uint64_t slots = uint64_t(tiles) * kTileCells;
+    const uint64_t cellBytes = slots * sizeof(uint32_t);
+    if (slots * marching_cubes::kMaxTrianglesPerCell > UINT32_MAX || cellBytes > maxRange)
+        throw UserError(fmt::format("marching cubes on the device needs {} buffers for the {} cells of a {}x{}x{} grid's tiles, "
                                     "more than the Vulkan device '{}' can bind ({}); mesh on the host instead "
                                     "(voxc run --mesh-on host) or use a smaller grid",
-                                    mib(cellBytes), domain, layout.gridSize.x, layout.gridSize.y, layout.gridSize.z,
+                                    mib(cellBytes), slots, layout.gridSize.x, layout.gridSize.y, layout.gridSize.z,
                                     ctx.info.name, mib(maxRange)));
 }
 
@@ -128,40 +215,47 @@ bool GpuMarchingCubes::Impl::ensureBuffer(DeviceBuffer& buffer, VkDeviceSize byt
     destroyBuffer(ctx, buffer);
     const VkBufferUsageFlags usage =
         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-    buffer = createBuffer(ctx, bytes, usage, use);
+    buffer = createBuffer(ctx, std::max<VkDeviceSize>(bytes, 16), usage, use);
     return true;
 }
 
-void GpuMarchingCubes::Impl::createBuffers() {
-    const glm::ivec3 last = (layout.gridOrigin + layout.gridSize - 1) >> layout.chunkShift;
-    cellChunkFirst = (layout.gridOrigin - 1) >> layout.chunkShift; // as voxc::cellChunks
-    cellChunkCount = last - cellChunkFirst + 1;
-    chunkCount = uint32_t(cellChunkCount.x) * uint32_t(cellChunkCount.y) * uint32_t(cellChunkCount.z);
-    cells = uint32_t(layout.gridSize.x + 1) * uint32_t(layout.gridSize.y + 1) * uint32_t(layout.gridSize.z + 1);
-    levelSize = {cells};
-    do levelSize.push_back((levelSize.back() + kScanBlock - 1) / kScanBlock);
-    while (levelSize.back() > 1);
-    VOXC_ASSERT(levelSize.size() <= 4); // McPush::levelOffset
-    levelOffset = {0};
-    uint32_t offset = 0;
-    for (size_t level = 1; level < levelSize.size(); ++level) {
-        levelOffset.push_back(offset);
-        offset += levelSize[level];
-    }
+bool GpuMarchingCubes::Impl::upload(DeviceBuffer& buffer, const std::vector<uint32_t>& words) {
+    const bool replaced = ensureBuffer(buffer, words.size() * sizeof(uint32_t), MemoryUse::HostAccess);
+    std::memcpy(buffer.mapped, words.data(), words.size() * sizeof(uint32_t));
+    flushForDevice(ctx, buffer); // the queue submit makes it visible to the device
+    return replaced;
+}
 
+void GpuMarchingCubes::Impl::createBuffers() {
     const std::vector<uint32_t> table = packedCaseTable();
     ensureBuffer(caseTable, table.size() * sizeof(uint32_t), MemoryUse::HostAccess);
     std::memcpy(caseTable.mapped, table.data(), table.size() * sizeof(uint32_t));
     flushForDevice(ctx, caseTable); // the queue submit makes it visible to the device
-    ensureBuffer(chunkFlags, VkDeviceSize(chunkCount) * sizeof(uint32_t), MemoryUse::Device);
-    ensureBuffer(cellInfo, VkDeviceSize(cells) * sizeof(uint32_t), MemoryUse::Device);
-    ensureBuffer(cellPlaces, VkDeviceSize(cells) * sizeof(uint32_t), MemoryUse::Device);
-    ensureBuffer(scanLevels, VkDeviceSize(offset) * kTotalsBytes, MemoryUse::Device);
-    // Placeholders until a mesh has triangles: every binding of the set must name a buffer.
-    ensureBuffer(activeCells, 16, MemoryUse::Device);
-    ensureBuffer(vertices, 16, MemoryUse::Device);
-    ensureBuffer(triangles, 16, MemoryUse::Device);
-    ensureBuffer(results, kTotalsBytes + VkDeviceSize(chunkCount) * sizeof(uint32_t), MemoryUse::HostAccess);
+    ensureBuffer(tileStates, VkDeviceSize(voxelTiles) * sizeof(uint32_t), MemoryUse::HostAccess);
+    ensureBuffer(tileRanks, VkDeviceSize(tiles) * sizeof(uint32_t), MemoryUse::HostAccess);
+    // Placeholders until a mesh has active tiles and triangles: every binding of the set must name a buffer.
+    for (DeviceBuffer* b : {&activeTiles, &segments, &segmentOrder}) ensureBuffer(*b, 16, MemoryUse::HostAccess);
+    for (DeviceBuffer* b : {&cellInfo, &scanLevels, &activeCells, &vertices, &triangles}) ensureBuffer(*b, 16, MemoryUse::Device);
+    ensureBuffer(results, kTotalsBytes, MemoryUse::HostAccess);
+}
+
+void GpuMarchingCubes::Impl::bindAll() {
+    std::array<VkBuffer, kMcBindingCount> buffers{};
+    buffers[kMcVoxels] = source.voxels;
+    buffers[kMcMaterials] = source.materials;
+    buffers[kMcCaseTable] = caseTable.buffer;
+    buffers[kMcTileStates] = tileStates.buffer;
+    buffers[kMcCellInfo] = cellInfo.buffer;
+    buffers[kMcScanLevels] = scanLevels.buffer;
+    buffers[kMcVertices] = vertices.buffer;
+    buffers[kMcTriangles] = triangles.buffer;
+    buffers[kMcActiveCells] = activeCells.buffer;
+    buffers[kMcVoxelQuads] = source.voxels;
+    buffers[kMcTileRanks] = tileRanks.buffer;
+    buffers[kMcActiveTiles] = activeTiles.buffer;
+    buffers[kMcSegments] = segments.buffer;
+    buffers[kMcSegmentOrder] = segmentOrder.buffer;
+    bindMcBuffers(ctx, pipelines, buffers);
 }
 
 McPush GpuMarchingCubes::Impl::push(const MeshOptions& options) const {
@@ -170,20 +264,17 @@ McPush GpuMarchingCubes::Impl::push(const MeshOptions& options) const {
         p.gridOrigin[a] = layout.gridOrigin[a];
         p.gridSize[a] = layout.gridSize[a];
         p.chunkBase[a] = layout.chunkBase[a];
-        p.cellChunkFirst[a] = cellChunkFirst[a];
-        p.cellChunkCount[a] = cellChunkCount[a];
+        p.tileFirst[a] = tileFirst[a];
+        p.tileCount[a] = tileCount[a];
     }
     p.gridOrigin[3] = layout.chunkShift;
     p.gridSize[3] = source.hasMaterials ? 1 : 0;
     p.chunkBase[3] = layout.chunkCount.x;
-    p.cellChunkFirst[3] = layout.chunkCount.y;
-    p.cellChunkCount[3] = options.skipUniformChunks ? 1 : 0;
+    p.tileFirst[3] = layout.chunkCount.y;
     const float margin = marching_cubes::crossingMargin(layout);
     p.surface[0] = options.iso;
     p.surface[1] = margin;
     p.surface[2] = 1.0f - margin;
-    for (size_t l = 0; l < levelOffset.size(); ++l) p.levelOffset[l] = levelOffset[l];
-    p.pass[1] = uint32_t(levelSize.size() - 1);
     return p;
 }
 
@@ -220,12 +311,15 @@ void GpuMarchingCubes::Impl::submitAndWait() {
 
 GpuMarchingCubes::GpuMarchingCubes(VulkanExecutor& executor) : impl_(std::make_unique<Impl>(executor)) {
     Impl& s = *impl_;
+    const glm::ivec3 last = (s.layout.gridOrigin + s.layout.gridSize - 1) >> kTileShift;
+    s.tileFirst = (s.layout.gridOrigin - 1) >> kTileShift; // the cells run from -1 to gridSize - 1
+    s.tileCount = last - s.tileFirst + 1;
+    s.tiles = uint32_t(s.tileCount.x) * uint32_t(s.tileCount.y) * uint32_t(s.tileCount.z);
+    s.voxelTiles = uint32_t(s.tileCount.x + 1) * uint32_t(s.tileCount.y + 1) * uint32_t(s.tileCount.z + 1);
     s.checkLimits();
     createMcPipelines(s.ctx, s.pipelines);
     s.createBuffers();
-    bindMcBuffers(s.ctx, s.pipelines,
-                  {s.source.voxels, s.source.materials, s.caseTable.buffer, s.chunkFlags.buffer, s.cellInfo.buffer,
-                   s.scanLevels.buffer, s.vertices.buffer, s.triangles.buffer, s.cellPlaces.buffer, s.activeCells.buffer});
+    s.bindAll();
     const CommandSlot slot = createCommandSlot(s.ctx);
     s.commandPool = slot.pool;
     s.cmd = slot.commands;
@@ -240,41 +334,63 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     const VulkanApi& api = s.ctx.api;
     McPush push = s.push(options);
 
-    // Count and scan, then the totals (and which chunks were skipped) to the host.
+    // The voxel tiles' states, then on the host the tiles of cells the surface crosses (all of
+    // them when uniform regions are not skipped) and their segments.
     s.begin();
-    if (options.skipUniformChunks) {
-        s.dispatch(kMcChunks, push, s.chunkCount, s.chunkCount);
-        memoryBarrier(api, s.cmd, kCompute, kCompute);
+    s.dispatch(kMcTiles, push, groupsOf(s.voxelTiles, kGroupSize), s.voxelTiles);
+    memoryBarrier(api, s.cmd, kCompute, kHostRead);
+    s.submitAndWait();
+    invalidateForHost(s.ctx, s.tileStates);
+    TileLists lists = listTiles(static_cast<const uint32_t*>(s.tileStates.mapped), s.tileFirst, s.tileCount, s.layout,
+                                options.skipUniformChunks);
+    if (stats) {
+        *stats = MeshStats{lists.chunkCrossed.size(), 0};
+        if (options.skipUniformChunks)
+            stats->skippedChunks = size_t(std::count(lists.chunkCrossed.begin(), lists.chunkCrossed.end(), uint8_t(0)));
+        stats->tiles = s.tiles;
+        stats->activeTiles = lists.crossedTiles;
+        stats->cellsVisited = lists.cells;
     }
-    // The count scans its own 1024-cell blocks (level 0); the levels above follow.
-    s.dispatch(kMcCount, push, (s.cells + kScanBlock - 1) / kScanBlock, s.cells);
-    for (uint32_t level = 1; level + 1 < s.levelSize.size(); ++level) {
+    Mesh mesh;
+    const uint32_t segmentCount = uint32_t(lists.segments.size());
+    if (segmentCount == 0) return mesh;
+
+    // The scan's levels: the segments, then one element per 1024 of the level below, down to one.
+    std::vector<uint32_t> levelSize = {segmentCount};
+    do levelSize.push_back(groupsOf(levelSize.back(), kScanBlock));
+    while (levelSize.back() > 1);
+    VOXC_ASSERT(levelSize.size() <= 4); // McPush::levelOffset
+    uint32_t scanElements = 0;
+    for (size_t level = 0; level < levelSize.size(); ++level) {
+        push.levelOffset[level] = scanElements;
+        scanElements += levelSize[level];
+    }
+    push.pass[1] = uint32_t(levelSize.size() - 1);
+    s.upload(s.tileRanks, lists.ranks);
+    bool rebind = s.upload(s.activeTiles, lists.activeTiles);
+    rebind |= s.upload(s.segments, lists.segments);
+    rebind |= s.upload(s.segmentOrder, lists.segmentOrder);
+    rebind |= s.ensureBuffer(s.cellInfo, VkDeviceSize(lists.activeTiles.size()) * kTileCells * sizeof(uint32_t), MemoryUse::Device);
+    rebind |= s.ensureBuffer(s.scanLevels, VkDeviceSize(scanElements) * kTotalsBytes, MemoryUse::Device);
+    if (rebind) s.bindAll();
+
+    // Count and scan, then the totals to the host.
+    s.begin();
+    s.dispatch(kMcCount, push, groupsOf(segmentCount, kGroupSize), segmentCount);
+    for (uint32_t level = 0; level + 1 < levelSize.size(); ++level) {
         memoryBarrier(api, s.cmd, kCompute, kCompute);
         push.pass[3] = level;
-        s.dispatch(kMcScan, push, (s.levelSize[level] + kScanBlock - 1) / kScanBlock, s.levelSize[level]);
+        s.dispatch(kMcScan, push, groupsOf(levelSize[level], kScanBlock), levelSize[level]);
     }
     memoryBarrier(api, s.cmd, kCompute, kTransfer);
-    const VkBufferCopy totals{VkDeviceSize(s.levelOffset.back()) * kTotalsBytes, 0, kTotalsBytes};
+    const VkBufferCopy totals{VkDeviceSize(push.levelOffset[levelSize.size() - 1]) * kTotalsBytes, 0, kTotalsBytes};
     api.vkCmdCopyBuffer(s.cmd, s.scanLevels.buffer, s.results.buffer, 1, &totals);
-    if (options.skipUniformChunks) {
-        const VkBufferCopy flags{0, kTotalsBytes, VkDeviceSize(s.chunkCount) * sizeof(uint32_t)};
-        api.vkCmdCopyBuffer(s.cmd, s.chunkFlags.buffer, s.results.buffer, 1, &flags);
-    }
     memoryBarrier(api, s.cmd, kTransfer, kHostRead);
     s.submitAndWait();
     invalidateForHost(s.ctx, s.results);
     uint32_t counts[3];
     std::memcpy(counts, s.results.mapped, sizeof counts);
     const uint32_t vertexCount = counts[0], triangleCount = counts[1], activeCount = counts[2];
-    if (stats) {
-        *stats = MeshStats{s.chunkCount, 0};
-        if (options.skipUniformChunks) {
-            std::vector<uint32_t> uniform(s.chunkCount);
-            std::memcpy(uniform.data(), static_cast<const char*>(s.results.mapped) + kTotalsBytes, uniform.size() * sizeof(uint32_t));
-            for (uint32_t flag : uniform) stats->skippedChunks += flag;
-        }
-    }
-    Mesh mesh;
     if (triangleCount == 0) return mesh;
 
     // Emit into buffers of the counted size; words per element times the count stays below 2^32
@@ -286,23 +402,16 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
         throw UserError(fmt::format("the mesh has {} vertices and {} triangles, a {} and a {} buffer on the device, more than "
                                     "the Vulkan device '{}' can bind ({}); mesh on the host instead (voxc run --mesh-on host)",
                                     vertexCount, triangleCount, mib(vertexBytes), mib(triangleBytes), s.ctx.info.name, mib(maxRange)));
-    const bool newVertices = s.ensureBuffer(s.vertices, vertexBytes, MemoryUse::Device);
-    const bool newTriangles = s.ensureBuffer(s.triangles, triangleBytes, MemoryUse::Device);
-    const bool newActive = s.ensureBuffer(s.activeCells, VkDeviceSize(activeCount) * sizeof(uint32_t), MemoryUse::Device);
+    bool replaced = s.ensureBuffer(s.vertices, vertexBytes, MemoryUse::Device);
+    replaced |= s.ensureBuffer(s.triangles, triangleBytes, MemoryUse::Device);
+    replaced |= s.ensureBuffer(s.activeCells, VkDeviceSize(activeCount) * sizeof(uint32_t), MemoryUse::Device);
     s.ensureBuffer(s.results, vertexBytes + triangleBytes, MemoryUse::HostAccess);
-    if (newVertices || newTriangles || newActive) {
-        std::array<VkBuffer, kMcBindingCount> buffers{};
-        buffers[kMcVertices] = s.vertices.buffer;
-        buffers[kMcTriangles] = s.triangles.buffer;
-        buffers[kMcCellPlaces] = s.cellPlaces.buffer;
-        buffers[kMcActiveCells] = s.activeCells.buffer;
-        bindMcBuffers(s.ctx, s.pipelines, buffers, kMcVertices, kMcBindingCount);
-    }
-    // The active cells in cell order, then the emit over them alone.
+    if (replaced) s.bindAll();
+    // The active cells in key order, then the emit over them alone.
     s.begin();
-    s.dispatch(kMcCompact, push, (s.cells + kScanBlock - 1) / kScanBlock, s.cells); // 16 cells per invocation
+    s.dispatch(kMcCompact, push, groupsOf(segmentCount, kGroupSize), segmentCount);
     memoryBarrier(api, s.cmd, kCompute, kCompute);
-    s.dispatch(kMcEmit, push, (activeCount + kCellsPerGroup - 1) / kCellsPerGroup, activeCount);
+    s.dispatch(kMcEmit, push, groupsOf(activeCount, kGroupSize), activeCount);
     memoryBarrier(api, s.cmd, kCompute, kTransfer);
     const VkBufferCopy vertexCopy{0, 0, vertexBytes};
     api.vkCmdCopyBuffer(s.cmd, s.vertices.buffer, s.results.buffer, 1, &vertexCopy);

@@ -10,7 +10,7 @@ namespace voxc::vulkan_detail {
 
 namespace {
 
-constexpr const char* kPassFiles[kMcPassCount] = {"mc_chunks.glsl", "mc_count.glsl", "mc_scan.glsl", "mc_compact.glsl",
+constexpr const char* kPassFiles[kMcPassCount] = {"mc_tiles.glsl", "mc_count.glsl", "mc_scan.glsl", "mc_compact.glsl",
                                                    "mc_emit.glsl"};
 
 // The pass's #version line, then the shared declarations, then the rest of the pass.

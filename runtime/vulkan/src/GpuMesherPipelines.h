@@ -13,28 +13,32 @@ struct McPush {
     int32_t gridOrigin[4];     // w: log2 chunk size
     int32_t gridSize[4];       // w: 1 when the material buffer has a uint per voxel
     int32_t chunkBase[4];      // w: voxel-buffer slots along x
-    int32_t cellChunkFirst[4]; // w: voxel-buffer slots along y
-    int32_t cellChunkCount[4]; // w: 1 = skip uniform chunks
+    int32_t tileFirst[4];      // first 8^3 tile of cells; w: voxel-buffer slots along y
+    int32_t tileCount[4];      // tiles of cells per axis; w unused
     float surface[4];          // iso, margin, 1 - margin
-    uint32_t levelOffset[4];   // scan levels 1..3 in the scan buffer, in elements ([0] unused)
+    uint32_t levelOffset[4];   // scan levels 0..3 in the scan buffer, in elements
     uint32_t pass[4];          // workgroups along x, scanned levels, items, scan level
 };
 static_assert(sizeof(McPush) == 128, "must match mc_common.glsl; 128 bytes is every device's minimum");
 
-enum McPass : uint32_t { kMcChunks, kMcCount, kMcScan, kMcCompact, kMcEmit, kMcPassCount };
+enum McPass : uint32_t { kMcTiles, kMcCount, kMcScan, kMcCompact, kMcEmit, kMcPassCount };
 
 // Descriptor set 0 of the passes (the buffers' meaning is in the shaders).
 enum McBinding : uint32_t {
     kMcVoxels,
     kMcMaterials,
     kMcCaseTable,
-    kMcChunkFlags,
+    kMcTileStates,
     kMcCellInfo,
     kMcScanLevels,
     kMcVertices,
     kMcTriangles,
-    kMcCellPlaces,
     kMcActiveCells,
+    kMcVoxelQuads, // the voxel buffer again, as vec4
+    kMcTileRanks,
+    kMcActiveTiles,
+    kMcSegments,
+    kMcSegmentOrder,
     kMcBindingCount
 };
 

@@ -36,9 +36,10 @@ struct MeshOptions {
 struct MeshStats {
     size_t chunks = 0;        // world chunks holding cells
     size_t skippedChunks = 0; // of those, skipped because all their cells are on one side of iso
-    // Host marching cubes only: world-aligned 8^3 tiles of cells, those holding a cell the surface
+    // Marching cubes only: world-aligned 8^3 tiles of cells, those holding a cell the surface
     // crosses (the only tiles whose densities it reads past the one classifying pass), and the
-    // cells whose case it looked up (the crossed ones; every cell without skipping).
+    // cells whose case it looked up (on the host the crossed ones, on the device every cell of
+    // the crossed tiles; every cell without skipping).
     size_t tiles = 0;
     size_t activeTiles = 0;
     size_t cellsVisited = 0;

@@ -1,16 +1,19 @@
 #pragma once
 // Marching cubes on the Vulkan device, over the voxel and material buffers a VulkanExecutor's
 // run() left there (no densities cross to the host). Passes, each behind a pipeline barrier on
-// the one before (a workgroup barrier orders nothing between workgroups): a count pass (per cell:
-// the crossed edges it owns and its triangle count from the case table), an exclusive scan of
-// those counts in global cell order, a list of the cells with any, and an emit pass over that
-// list that writes every vertex and triangle at the place the scan gave it (docs/architecture.md,
-// "On the device"). The mesh is the CPU mesher's (voxc/mesh/MarchingCubes.h, the oracle): the
-// same case table, vertices ordered by global edge, triangles by global cell then table order,
-// the same arithmetic; so the index buffer and the materials are identical, and positions and
-// normals bit-identical where the device rounds as IEEE 754 requires (lavapipe;
-// tests/mesh/GpuMesherTest; no other device has been tried). Uniform chunks are skipped as the
-// CPU mesher skips them (the same MeshStats), after a pass that finds them on the device.
+// the one before (a workgroup barrier orders nothing between workgroups): a tiles pass records
+// on which sides of iso the voxels of each world-aligned 8^3 tile lie, from which the host lists
+// the tiles of cells the surface crosses (the active tiles) and their rows of cells in global
+// order; then a count pass over those rows alone (per cell: the crossed edges it owns and its
+// triangle count from the case table), an exclusive scan of the rows' counts in global cell
+// order, a list of the cells with any, and an emit pass over that list that writes every vertex
+// and triangle at the place the scan gave it (docs/architecture.md, "On the device"). The mesh
+// is the CPU mesher's (voxc/mesh/MarchingCubes.h, the oracle): the same case table, vertices
+// ordered by global edge, triangles by global cell then table order, the same arithmetic; so the
+// index buffer and the materials are identical, and positions and normals bit-identical where
+// the device rounds as IEEE 754 requires (lavapipe; tests/mesh/GpuMesherTest; no other device
+// has been tried). MeshStats' chunks, skipped chunks, tiles and active tiles are the CPU
+// mesher's.
 #include "voxc/mesh/SurfaceNets.h"
 #include "voxc/vulkan/Executor.h"
 
