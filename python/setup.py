@@ -1,14 +1,16 @@
-"""pip install --no-build-isolation ./python: the module voxc, built against a built libvoxc.
+"""pip install --no-build-isolation ./python: the module voxc from a voxc build.
 
-libvoxc (the C API) comes from a voxc build with VOXC_LIBVOXC=ON, as scripts/build.sh makes it:
-build/ beside this folder, or the build directory named by VOXC_BUILD_DIR. The extension links
-it, and the installed package carries a copy (voxc/libvoxc.so.0, found through the rpath
-$ORIGIN), so the install keeps working when the build tree changes or goes. Only setuptools and
-pybind11's headers (Debian's python3-setuptools and pybind11-dev) are needed, no network.
-docs/python.md.
+The build (scripts/build.sh: VOXC_LIBVOXC=ON, VOXC_PYTHON=ON) already compiled the extension,
+build/python/voxc/_native*.so, for the Python it was configured with; installing copies it and
+libvoxc.so.0 instead of compiling the module a second time (seconds instead of a minute or two on
+2 cores). The build directory is build/ beside this folder, or the one VOXC_BUILD_DIR names. The
+extension finds libvoxc beside itself (rpath $ORIGIN), so the installed package keeps working when
+the build tree changes or goes. Only setuptools (Debian's python3-setuptools) is needed, no
+network. docs/python.md.
 """
 import os
 import shutil
+import sys
 from pathlib import Path
 
 from setuptools import Extension, setup
@@ -17,34 +19,30 @@ from setuptools.command.build_ext import build_ext
 here = Path(__file__).resolve().parent
 root = here.parent
 build_dir = Path(os.environ.get("VOXC_BUILD_DIR", root / "build")).resolve()
-capi_dir = build_dir / "runtime" / "capi"
-library = capi_dir / "libvoxc.so.0"
+built_package = build_dir / "python" / "voxc"
+# What the extension is compiled from: a newer one means the build is out of date.
+sources = [here / "src" / "module.cpp", root / "runtime" / "capi" / "include" / "voxc" / "voxc.h"]
 
 
-def pybind11_include():
-    try:
-        import pybind11  # a pip-installed pybind11, if any
+class CopyBuiltExtension(build_ext):
+    """Installs the extension the CMake build compiled, and libvoxc.so.0 beside it."""
 
-        return [pybind11.get_include()]
-    except ImportError:
-        return []  # Debian's pybind11-dev: /usr/include/pybind11, on the compiler's path
-
-
-class BuildWithLibvoxc(build_ext):
-    """Builds the extension and puts libvoxc.so.0 beside it."""
-
-    def run(self):
-        if not library.exists():
+    def build_extension(self, ext):
+        target = Path(self.get_ext_fullpath(ext.name))
+        built = built_package / target.name
+        if not built.exists():
+            found = sorted(p.name for p in built_package.glob("_native*.so")) or "none"
             raise SystemExit(
-                f"voxc: {library} not found; build voxc first with scripts/build.sh "
-                "(cmake -DVOXC_LIBVOXC=ON), or set VOXC_BUILD_DIR to a build directory that has it"
+                f"voxc: {built} not found (built there: {found}); build voxc first with scripts/build.sh "
+                f"(the CMake option VOXC_PYTHON, for this Python: -DPython3_EXECUTABLE={sys.executable}), "
+                "or set VOXC_BUILD_DIR to a build directory that has it"
             )
-        super().run()
-        package_dir = Path(self.build_lib) / "voxc"
-        package_dir.mkdir(parents=True, exist_ok=True)
-        shutil.copy2(library, package_dir / library.name)
-        if self.inplace:
-            shutil.copy2(library, here / "voxc" / library.name)
+        stale = [s for s in sources if s.stat().st_mtime > built.stat().st_mtime]
+        if stale:
+            raise SystemExit(f"voxc: {built} is older than {stale[0]}; build voxc again (cmake --build build)")
+        target.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copy2(built, target)
+        shutil.copy2(built_package / "libvoxc.so.0", target.parent / "libvoxc.so.0")  # the symlink's file
 
 
 setup(
@@ -54,18 +52,11 @@ setup(
     packages=["voxc"],
     package_data={"voxc": ["__init__.pyi", "py.typed"]},
     ext_modules=[
-        Extension(
-            "voxc._native",
-            ["src/module.cpp"],
-            include_dirs=[str(root / "runtime" / "capi" / "include"), *pybind11_include()],
-            library_dirs=[str(capi_dir)],
-            libraries=["voxc"],
-            extra_compile_args=["-std=c++17", "-fvisibility=hidden"],
-            extra_link_args=["-Wl,-rpath,$ORIGIN"],
-            language="c++",
-        )
+        # Built by CMake (python/CMakeLists.txt); declared so that the wheel is tagged for this
+        # platform and Python, and copied by CopyBuiltExtension.
+        Extension("voxc._native", ["src/module.cpp"])
     ],
-    cmdclass={"build_ext": BuildWithLibvoxc},
+    cmdclass={"build_ext": CopyBuiltExtension},
     python_requires=">=3.9",
     install_requires=["numpy"],
     zip_safe=False,
