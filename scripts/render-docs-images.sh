@@ -62,7 +62,8 @@ sed -e 's/iterations = 6;/iterations = 12;/' -e 's/^\(  rule [a-z_]* {\)$/\1 pro
 # The range from the north-east, its peak in snow.
 "$voxc" render "$root/examples/mountains.vox" -o "$root/docs/images/mountains.png" --size 640x400 \
     --camera 150,90,-40:64,24,64 --device lavapipe
-# The imported ridge from the south-east: the arch over the river, the ledge on the far ridge.
+# The imported ridge from the south-east: the arch over the river, the ledge on the far ridge,
+# the boulder with the cave coming out through it.
 "$voxc" render "$root/examples/imported_ridge.vox" -o "$root/docs/images/imported_ridge.png" --size 640x400 \
     --camera 170,80,170:64,14,64 --device lavapipe
 # The road curve through the imported ridge, cut open along it: the tunnel under the crest.

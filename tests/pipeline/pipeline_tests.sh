@@ -36,10 +36,43 @@ expect depfile_space_escaped 0 "" -- grep -qF 'with\ space/tunnels.rules' "$work
 # rebuilds the package.
 cp "$src/examples/imported_ridge.vox" "$src/examples/imported_ridge.png" "$src/examples/boulders.vox" \
     "$src/examples/boulder.glb" "$work/proj/"
-expect depfile_heightmap 0 "\(2 inputs\)" -- "$voxc" compile "$work/proj/imported_ridge.vox" -o "$work/ridge" -MF "$work/ridge.d"
+expect depfile_heightmap 0 "\(3 inputs\)" -- "$voxc" compile "$work/proj/imported_ridge.vox" -o "$work/ridge" -MF "$work/ridge.d"
 expect depfile_heightmap_named 0 "" -- grep -qF "$work/proj/imported_ridge.png" "$work/ridge.d"
+expect depfile_heightmap_scene_mesh_named 0 "" -- grep -qF "$work/proj/boulder.glb" "$work/ridge.d"
 expect depfile_mesh 0 "\(2 inputs\)" -- "$voxc" compile "$work/proj/boulders.vox" -o "$work/boulders" -MF "$work/boulders.d"
 expect depfile_mesh_named 0 "" -- grep -qF "$work/proj/boulder.glb" "$work/boulders.d"
+# A build tool that reads the depfile (ninja, as CMake's generated rules do) rebuilds the package
+# when the heightmap or the mesh changes, and not when nothing did.
+mkdir "$work/ninja"
+cat > "$work/ninja/build.ninja" <<EOF
+rule voxc
+  command = "$voxc" compile \$in -o "$work/ninja/pkg" -q -MF \$out.d -MT \$out && touch \$out
+  depfile = \$out.d
+  deps = gcc
+build ridge.stamp: voxc $work/proj/imported_ridge.vox
+EOF
+expect ninja_builds 0 "\[1/1\]" -- ninja -C "$work/ninja"
+expect ninja_up_to_date 0 "no work to do" -- ninja -C "$work/ninja"
+sleep 1 # past the stamp's time, at a file system's coarsest resolution
+touch "$work/proj/imported_ridge.png"
+expect ninja_rebuilds_on_heightmap 0 "\[1/1\]" -- ninja -C "$work/ninja"
+expect ninja_up_to_date_again 0 "no work to do" -- ninja -C "$work/ninja"
+sleep 1
+touch "$work/proj/boulder.glb"
+expect ninja_rebuilds_on_mesh 0 "\[1/1\]" -- ninja -C "$work/ninja"
+# A damaged input is a located error at its block's file value, and the compile leaves no
+# package: a truncated heightmap, then a truncated mesh.
+mkdir "$work/damaged"
+cp "$work/proj/imported_ridge.vox" "$work/proj/boulder.glb" "$work/damaged/"
+head -c 3000 "$work/proj/imported_ridge.png" > "$work/damaged/imported_ridge.png"
+expect damaged_heightmap 1 "imported_ridge.vox:25:10: error E0102: heightmap 'ridge': .*truncated" -- \
+    "$voxc" compile "$work/damaged/imported_ridge.vox" -o "$work/damaged/pkg" -MD
+expect_no_file damaged_heightmap_no_package "$work/damaged/pkg"
+cp "$work/proj/imported_ridge.png" "$work/damaged/"
+head -c 2000 "$work/proj/boulder.glb" > "$work/damaged/boulder.glb"
+expect damaged_mesh 1 "imported_ridge.vox:33:10: error E0102: mesh 'boulder': " -- \
+    "$voxc" compile "$work/damaged/imported_ridge.vox" -o "$work/damaged/pkg" -MD
+expect_no_file damaged_mesh_no_package "$work/damaged/pkg"
 printf 'world { size = [8, 8, 8]; }\npipeline { start; nope; }\n' > "$work/broken.vox"
 expect depfile_not_on_error 1 "E0002" -- "$voxc" compile "$work/broken.vox" -o "$work/pkg5" -MD -MF "$work/broken.d"
 expect depfile_not_on_error_absent 1 "" -- test -e "$work/broken.d"
