@@ -321,6 +321,8 @@ std::vector<Malformed> malformedCases() {
     std::vector<float> withNan(64, 0.5f);
     withNan[19] = std::nanf("");
     const std::string plyBall = test::ply(test::icosphere(4.0f, 1));
+    // A .gltf whose one buffer is a file beside it, as many exporters write by default.
+    const std::string gltfExternal = R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 48, "uri": "rock.bin"}]})";
     return {
         {"TruncatedPng", "heightmap", "t.png", png16.substr(0, png16.size() / 2), "E0102", "truncated"},
         {"RgbPng", "heightmap", "rgb.png", test::rgbPng(4, 4), "E0010", "greyscale"},
@@ -329,8 +331,12 @@ std::vector<Malformed> malformedCases() {
         {"NpyOfDoubles", "heightmap", "d.npy", test::npy("<f8", "(8, 8)", std::string(512, '\0')), "E0010", "'<f8'"},
         {"NpyWithNan", "heightmap", "n.npy", test::npy("<f4", "(8, 8)", test::bytesOf(withNan)), "E0102", "pixel (3, 2)"},
         {"TruncatedTiff", "heightmap", "t.tif", std::string("II*\0\x08\0\0\0\x20\0", 10), "E0102", "TIFF"},
-        {"GlbMissingItsBuffer", "mesh", "b.glb", test::glb(test::icosphere(4.0f, 1), true), "E0102", "glTF"},
-        {"TruncatedGlb", "mesh", "t.glb", glbBall.substr(0, glbBall.size() - 40), "E0102", "glTF"},
+        {"GlbMissingItsBuffer", "mesh", "b.glb", test::glb(test::icosphere(4.0f, 1), true), "E0102",
+         "no BIN chunk, but its JSON names a buffer"},
+        {"TruncatedGlb", "mesh", "t.glb", glbBall.substr(0, glbBall.size() - 40), "E0102",
+         fmt::format("holds {} bytes where its header says {} (truncated)", glbBall.size() - 40, glbBall.size())},
+        {"GlbCutInItsHeader", "mesh", "h.glb", glbBall.substr(0, 14), "E0102", "ends inside its 20-byte header"},
+        {"GltfWithAnExternalBuffer", "mesh", "e.gltf", gltfExternal, "E0010", "external file 'rock.bin'"},
         {"NotAMesh", "mesh", "x.glb", "hello, world", "E0102", "glTF"},
         {"NanVertex", "mesh", "n.obj", "v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n", "E0102", "not finite"},
         {"ObjIndexOutOfRange", "mesh", "i.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", "E0102", "does not exist"},

@@ -67,13 +67,34 @@ private:
 bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
     return true;
 }
-bool noFileExists(const std::string&, void*) { return false; }
+// Every file "exists", so tinygltf asks readNoFile for it, which refuses it and keeps its name
+// (user data: the names asked for) for the error.
+bool anyFileExists(const std::string&, void*) { return true; }
 std::string keepPath(const std::string& path, void*) { return path; }
-bool readNoFile(std::vector<unsigned char>*, std::string* error, const std::string& path, void*) {
-    *error = fmt::format("the glTF refers to the external file '{}'; embed its buffers (export as .glb)", path);
+bool readNoFile(std::vector<unsigned char>*, std::string* error, const std::string& path, void* asked) {
+    static_cast<std::vector<std::string>*>(asked)->push_back(path);
+    *error = "not read";
     return false;
 }
 bool writeNoFile(std::string*, const std::string&, const std::vector<unsigned char>&, void*) { return false; }
+
+uint32_t littleEndian32(std::string_view bytes, size_t at) {
+    uint32_t v = 0;
+    for (size_t i = 0; i < 4; ++i) v |= uint32_t(uint8_t(bytes[at + i])) << (8 * i);
+    return v;
+}
+
+// A .glb's framing, checked before tinygltf reads it, so a file cut short says so. Returns
+// whether a BIN chunk follows the JSON chunk.
+bool checkGlbFraming(std::string_view bytes) {
+    if (bytes.size() < 20) malformed(fmt::format("the .glb file ends inside its 20-byte header, at {} bytes (truncated)", bytes.size()));
+    const uint32_t length = littleEndian32(bytes, 8);
+    if (length > bytes.size())
+        malformed(fmt::format("the .glb file holds {} bytes where its header says {} (truncated)", bytes.size(), length));
+    const uint64_t binAt = 20 + uint64_t(littleEndian32(bytes, 12));
+    if (binAt > length) malformed("the .glb's JSON chunk runs past the file's end (truncated)");
+    return binAt + 8 <= length && bytes.substr(size_t(binAt) + 4, 4) == std::string_view("BIN\0", 4);
+}
 
 // The bytes of accessor `index` as `count` elements of `components` components of
 // `componentSize` bytes, checked against its buffer view and buffer.
@@ -154,15 +175,26 @@ void addPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& primi
 TriangleMesh decodeGltf(std::string_view bytes, const Limits& limits) {
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(skipImage, nullptr);
-    loader.SetFsCallbacks({noFileExists, keepPath, readNoFile, writeNoFile, nullptr});
+    std::vector<std::string> externalFiles; // an image's is skipped; a buffer's fails the load
+    loader.SetFsCallbacks({anyFileExists, keepPath, readNoFile, writeNoFile, &externalFiles});
     tinygltf::Model model;
     std::string error, warning;
     const bool binary = bytes.size() >= 4 && bytes.substr(0, 4) == "glTF";
+    const bool binChunk = binary && checkGlbFraming(bytes);
     const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &error, &warning,
                                                          reinterpret_cast<const unsigned char*>(bytes.data()),
                                                          unsigned(bytes.size()), "")
                            : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(), unsigned(bytes.size()), "");
     if (!ok) {
+        // A .vox names one file, which the package and the depfile track: no buffer beside it.
+        for (const std::string& name : externalFiles)
+            if (error.find("File read error : " + name) != std::string::npos)
+                throw InputError("E0010", fmt::format("the glTF keeps a buffer in the external file '{}', which voxc "
+                                                      "does not read; export a .glb (or a .gltf with its buffers "
+                                                      "embedded)",
+                                                      name));
+        if (binary && !binChunk && error.find("BIN chunk") != std::string::npos)
+            malformed("the .glb has no BIN chunk, but its JSON names a buffer stored there (a buffer the file lacks)");
         while (!error.empty() && std::isspace(uint8_t(error.back()))) error.pop_back();
         malformed(fmt::format("not a readable glTF: {}", error.empty() ? "unknown error" : error));
     }
@@ -323,7 +355,8 @@ TriangleMesh decodePly(std::string_view bytes, const Limits& limits) {
         if (words[0] == "format" && words.size() >= 2) {
             format = words[1];
         } else if (words[0] == "element" && words.size() == 3) {
-            PlyElement element{std::string(words[1])};
+            PlyElement element;
+            element.name = std::string(words[1]);
             const auto [p, error] = std::from_chars(words[2].data(), words[2].data() + words[2].size(), element.count);
             if (error != std::errc()) malformed(fmt::format("the PLY element '{}' has no count", words[1]));
             elements.push_back(std::move(element));
