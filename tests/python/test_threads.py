@@ -5,17 +5,22 @@ import signal
 import threading
 import time
 
+import numpy as np
 import pytest
 
 import voxc
-from conftest import EXAMPLES
+from conftest import EXAMPLES, run_cli
 
 # overhang.vox with many more iterations: a run of seconds with a progress step per iteration
 # (the interpreter) or per batch of dispatches (Vulkan).
-def long_program(iterations):
+def program_text(iterations):
     text = (EXAMPLES / "overhang.vox").read_text()
     assert "iterations = 6;" in text
-    return voxc.Program(text=text.replace("iterations = 6;", f"iterations = {iterations};"), name=str(EXAMPLES / "long.vox"))
+    return text.replace("iterations = 6;", f"iterations = {iterations};")
+
+
+def long_program(iterations):
+    return voxc.Program(text=program_text(iterations), name=str(EXAMPLES / "long.vox"))
 
 
 def test_gil_is_released_during_a_run():
@@ -66,21 +71,31 @@ def test_progress_exception_propagates():
         voxc.Program(EXAMPLES / "lsystem_line.vox").run(device="interp", progress=progress)
 
 
-@pytest.mark.parametrize("device,iterations", [("interp", 400), ("lavapipe", 4000)])
-def test_ctrl_c_interrupts_a_long_run(device, iterations):
+@pytest.mark.parametrize("device,iterations", [("interp", 150), ("lavapipe", 1000)])
+def test_ctrl_c_interrupts_a_long_run(device, iterations, tmp):
     program = long_program(iterations)
     program.run(region=((0, 0, 0), (8, 8, 8)), device=device)  # the Vulkan device made before the clock starts
-    timer = threading.Timer(0.5, os.kill, (os.getpid(), signal.SIGINT))
-    start = time.perf_counter()
+    sent = []
+
+    def interrupt():
+        sent.append(time.perf_counter())
+        os.kill(os.getpid(), signal.SIGINT)
+
+    timer = threading.Timer(0.5, interrupt)
     timer.start()
     with pytest.raises(KeyboardInterrupt):
         program.run(device=device)
-    interrupted = time.perf_counter() - start
+    latency = time.perf_counter() - sent[0]
     timer.join()
-    # Nothing was handed out and the program still works: the whole run, for comparison.
+    # Nothing was handed out and the program still works: the whole run, as the command line's.
     start = time.perf_counter()
     grid = program.run(device=device)
     whole = time.perf_counter() - start
-    assert grid.density.shape == (64, 64, 64)
-    assert whole > 1.5, f"the run ({whole:.2f} s) is too short to tell"
-    assert interrupted < 0.75 * whole, f"interrupted after {interrupted:.2f} s of a {whole:.2f} s run"
+    (tmp / "long.vox").write_text(program_text(iterations))
+    run_cli("run" if device == "lavapipe" else "interp", tmp / "long.vox", "--voxels", tmp / "long.npy")
+    assert np.array_equal(grid.density, np.load(tmp / "long.npy"))
+    assert whole > 3, f"the run ({whole:.2f} s) is too short to tell"
+    # Vulkan batches end about every 50 ms while a progress callback (here: the signal check) is
+    # set, two in flight; the interpreter looks between grammar iterations (a few ms each).
+    print(f"{device}: stopped {latency:.3f} s after Ctrl+C; the whole run {whole:.2f} s")
+    assert latency < 1.0, f"stopped {latency:.2f} s after Ctrl+C, in a {whole:.2f} s run"

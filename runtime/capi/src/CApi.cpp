@@ -69,6 +69,10 @@ thread_local std::string lastError;
 thread_local voxc_progress_fn progressFn = nullptr;
 thread_local void* progressUser = nullptr;
 
+// How often a Vulkan run calls the progress callback (ExecutorOptions::batchMilliseconds): a
+// Ctrl+C in Python stops it within about two of these.
+constexpr double kProgressBatchMs = 50;
+
 // Thrown out of the compiler and the runtime when the progress callback asks to stop.
 struct Cancelled {};
 
@@ -202,7 +206,10 @@ voxc::ChunkedGrid runGrid(const voxc_program& handle, const voxc::Program& progr
                           voxc_backend backend) {
     reportProgress("generate", 0.0);
     if (backend == VOXC_BACKEND_VULKAN) {
-        voxc::VulkanExecutor executor(contextOf(handle), package, voxc::ExecutorOptions{.progress = progressOf("generate")});
+        // With a callback, batches of about kProgressBatchMs: it is called, and can stop the run, that often.
+        voxc::VulkanExecutor executor(contextOf(handle), package,
+                                      voxc::ExecutorOptions{.batchMilliseconds = progressFn ? kProgressBatchMs : 0,
+                                                            .progress = progressOf("generate")});
         voxc::ChunkedGrid grid = executor.run().grid;
         reportProgress("generate", 1.0);
         return grid;

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <optional>
 #include <span>
 
 namespace voxc {
@@ -69,6 +70,7 @@ struct VulkanExecutor::Impl {
         VkCommandBuffer cmd = VK_NULL_HANDLE;
         VkFence fence = VK_NULL_HANDLE;
         bool pending = false;
+        uint32_t dispatches = 0; // in the batch last submitted
     };
 
     VulkanContext::Impl& ctx;
@@ -381,9 +383,25 @@ RunResult VulkanExecutor::run() {
     constexpr uint32_t kNoStage = UINT32_MAX;
     uint32_t stage = kNoStage; // the package stage whose dispatches are being recorded
     Clock::time_point executeStart;
+    const uint32_t maxBatch = s.options.dispatchesPerBatch;
+    const bool timedBatches = s.options.batchMilliseconds > 0;
+    uint32_t batchSize = timedBatches ? std::min(16u, maxBatch) : maxBatch;
+    std::optional<Clock::time_point> lastFinished; // when the batch before the one waited for finished
     for (uint32_t batch = 0;; ++batch) {
         Impl::Frame& frame = s.frames[batch % 2];
+        const bool waits = frame.pending;
         s.wait(frame); // the batch before the previous one; the previous may still run meanwhile
+        if (timedBatches && waits) {
+            // The device ran the two batches back to back (or the host recorded the next one
+            // meanwhile): the time between them finishing is the waited batch's.
+            const Clock::time_point now = Clock::now();
+            if (lastFinished) {
+                const double ms = std::max(1e-3, std::chrono::duration<double, std::milli>(now - *lastFinished).count());
+                const double wanted = double(frame.dispatches) * s.options.batchMilliseconds / ms;
+                batchSize = uint32_t(std::clamp(wanted, std::max(1.0, batchSize / 2.0), std::min(double(maxBatch), batchSize * 2.0)));
+            }
+            lastFinished = now;
+        }
         if (s.options.progress) {
             try {
                 s.options.progress(double(stage == kNoStage ? 0 : stage) / double(std::max<size_t>(1, s.package.stages.size())));
@@ -409,7 +427,8 @@ RunResult VulkanExecutor::run() {
         api.vkCmdBindDescriptorSets(frame.cmd, VK_PIPELINE_BIND_POINT_COMPUTE, s.pipelines.layout, 0, 1,
                                     &s.pipelines.set, 0, nullptr);
         uint32_t bound = UINT32_MAX;
-        for (uint32_t n = 0; more && n < s.options.dispatchesPerBatch; ++n) {
+        uint32_t n = 0;
+        for (; more && n < batchSize; ++n) {
             if (next.stage != stage) {
                 if (stage != kNoStage) s.recordStageEnd(frame.cmd, stage, last);
                 stage = next.stage;
@@ -446,6 +465,7 @@ RunResult VulkanExecutor::run() {
         check(api.vkEndCommandBuffer(frame.cmd), "vkEndCommandBuffer");
         result.timings.recordMs += millisecondsSince(recordStart);
         if (batch == 0) executeStart = Clock::now();
+        frame.dispatches = n;
         s.submit(frame);
         if (!more) break;
     }

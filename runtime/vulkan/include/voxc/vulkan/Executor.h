@@ -26,6 +26,11 @@ struct ExecutorOptions {
     // Dispatches per command buffer. Batches are recorded while the previous one executes,
     // so a plan with many iterations never holds all of its commands at once.
     uint32_t dispatchesPerBatch = 4096;
+    // When above 0, batches are sized so that one finishes about every batchMilliseconds (at
+    // most dispatchesPerBatch dispatches, at least one): `progress`, called between batches, then
+    // runs that often, and a run it stops ends that soon (two batches are in flight). The size
+    // follows the time between batches finishing, at most halving or doubling from one to the next.
+    double batchMilliseconds = 0;
     // Copy through staging buffers even where device memory is host-visible (integrated GPUs,
     // lavapipe), i.e. what a discrete GPU does; lets tests cover that path on lavapipe.
     bool alwaysStage = false;
@@ -41,7 +46,8 @@ struct ExecutorOptions {
     bool readBack = true;
     // When set, called before each batch is recorded with the fraction of the package's stages
     // reached (0 to 1); it may throw to stop the run: the batches in flight are waited for and the
-    // exception leaves run() (libvoxc's progress callback, docs/embedding.md).
+    // exception leaves run() (libvoxc's progress callback, docs/embedding.md). batchMilliseconds
+    // says how often.
     std::function<void(double fraction)> progress{};
 };
 
