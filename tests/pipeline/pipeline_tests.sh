@@ -119,5 +119,15 @@ expect verbose_check 0 "checked .*world.vox \([0-9]+ bytes\) in [0-9.]+ ms: 0 er
 expect verbose_rule_file 0 "lsystem net imports the rule file .*tunnels.rules" -- "$voxc" compile -v "$vox" -o "$work/pkg7"
 expect verbose_compile_time 0 "compiled [0-9]+ kernels in [0-9.]+ ms" -- "$voxc" compile -v "$vox" -o "$work/pkg7"
 expect quiet_and_verbose 1 "excludes" -- "$voxc" check -q -v "$vox"
+# -v names each heightmap and mesh file with its size, and marks one outside the .vox's folder
+# (through .. or absolute), which a package built from it still copies.
+mkdir "$work/sub"
+sed -e 's#"imported_ridge.png"#"../proj/imported_ridge.png"#' -e "s#\"boulder.glb\"#\"$work/proj/boulder.glb\"#" \
+    "$work/proj/imported_ridge.vox" > "$work/sub/ridge.vox"
+expect verbose_input_inside 0 "heightmap ridge reads .*/proj/imported_ridge.png \([0-9]+ bytes\)$" -- "$voxc" check -v "$work/proj/imported_ridge.vox"
+expect verbose_input_outside_relative 0 "heightmap ridge reads .*/sub/../proj/imported_ridge.png \([0-9]+ bytes\), outside the .vox's folder" -- \
+    "$voxc" check -v "$work/sub/ridge.vox"
+expect verbose_input_outside_absolute 0 "mesh boulder reads $work/proj/boulder.glb \([0-9]+ bytes\), outside the .vox's folder" -- \
+    "$voxc" check -v "$work/sub/ridge.vox"
 
 finish
