@@ -64,8 +64,7 @@ uint materialAt(ivec3 p) {
 // that hold a cell the surface crosses, listed by the host in tile order (z, then y, then x) and
 // ranked. A cell of an active tile has a slot, rank * 512 + its place in the tile (x fastest); a
 // segment is the row of a tile's cells along x at one (y, z), slot / 8. The host also lists the
-// segments in global key order (segments.slot) and gives each segment its place in that order
-// (segmentOrder.place), which is the order of the scan.
+// segments in global key order (segments.slot), the order of the scan.
 const uint kTileShift = 3u;
 const uint kTileSide = 1u << kTileShift;
 
@@ -76,6 +75,11 @@ ivec3 segmentWorldCell(uint activeTile, uint segmentSlot) {
     return (tile << kTileShift) + ivec3(0, segmentSlot & 7u, (segmentSlot >> 3) & 7u);
 }
 
+// The grid-local cell of a slot of the tile with index `tile`.
+ivec3 cellOfSlot(uint tile, uint slot) {
+    return segmentWorldCell(tile, slot >> 3) - push.gridOrigin.xyz + ivec3(slot & 7u, 0, 0);
+}
+
 // The cells of a segment's row that are cells of the grid: grid-local x in [begin, end).
 ivec2 segmentCells(ivec3 worldFirst) {
     const int x = worldFirst.x - push.gridOrigin.x;
@@ -84,10 +88,3 @@ ivec2 segmentCells(ivec3 worldFirst) {
 
 // Corner c of a cell is at offset (c&1, (c>>1)&1, (c>>2)&1); bit c of a case is corner c solid.
 ivec3 cornerOffset(uint corner) { return ivec3(corner & 1u, (corner >> 1) & 1u, (corner >> 2) & 1u); }
-
-uint cellCase(ivec3 cell) {
-    uint mask = 0u;
-    for (uint c = 0u; c < 8u; ++c)
-        if (solidAt(cell + cornerOffset(c))) mask |= 1u << c;
-    return mask;
-}

@@ -15,7 +15,7 @@ layout(std430, set = 0, binding = 2) readonly buffer CaseTable {
 } cases;
 // Per cell slot. Bits 0-2: owned crossed edges by axis; bits 3-6: triangle count; bits 7-11: the
 // segment's vertices before the cell; bits 12-18: its triangles before the cell (at most 3 * 7
-// and 12 * 7).
+// and 12 * 7); bits 19-26: its case.
 layout(std430, set = 0, binding = 4) writeonly buffer CellInfo {
     uint info[];
 } cells;
@@ -57,7 +57,7 @@ void main() {
         for (uint axis = 0u; axis < 3u; ++axis)
             if (lowerSolid != (((mask >> (1u << axis)) & 1u) != 0u)) info |= 1u << axis;
         info |= cases.word[mask * 10u] << 3;
-        cells.info[firstSlot + uint(x)] = info | sum.x << 7 | sum.y << 12;
+        cells.info[firstSlot + uint(x)] = info | sum.x << 7 | sum.y << 12 | mask << 19;
         sum += uvec3(bitCount(info & 7u), info >> 3, info != 0u ? 1u : 0u);
     }
     scan.value[push.levelOffset[0] + index] = uvec4(sum, 0u);

@@ -30,6 +30,7 @@ constexpr uint32_t kCaseWords = 10;        // per case: triangle count, 36 edge 
 constexpr uint32_t kVertexWords = 7;       // position, normal, material
 constexpr uint32_t kTriangleWords = 4;     // three indices, material
 constexpr VkDeviceSize kTotalsBytes = 4 * sizeof(uint32_t); // a scan element: vertices, triangles, active cells
+constexpr VkDeviceSize kActiveCellBytes = 4 * sizeof(uint32_t); // slot, first vertex, first triangle, counts
 
 struct Access {
     VkPipelineStageFlags stage;
@@ -70,7 +71,6 @@ struct TileLists {
     std::vector<uint32_t> ranks;        // per tile of cells: its rank, or kNoRank
     std::vector<uint32_t> activeTiles;  // by rank: the tile's index
     std::vector<uint32_t> segments;     // in global key order: rank * 64 + z * 8 + y within the tile
-    std::vector<uint32_t> segmentOrder; // per rank * 64 + z * 8 + y: its place in `segments`
     size_t crossedTiles = 0;
     size_t cells = 0;                   // the cells of the listed segments
     std::vector<uint8_t> chunkCrossed;  // per world chunk holding cells
@@ -113,7 +113,6 @@ TileLists listTiles(const uint32_t* states, glm::ivec3 tileFirst, glm::ivec3 n, 
             }
         }
     rowStart.push_back(uint32_t(lists.activeTiles.size()));
-    lists.segmentOrder.assign(lists.activeTiles.size() * kTileSegments, kNoRank);
     // Global key order: z, then y, then x; a row of cells (y, z) crosses the tiles of tile row
     // (y >> 3, z >> 3) in x order, which is their rank order. Rows outside the cells have none.
     const glm::ivec3 firstCell = tileFirst << kTileShift;
@@ -130,7 +129,6 @@ TileLists listTiles(const uint32_t* states, glm::ivec3 tileFirst, glm::ivec3 n, 
                     const size_t row = size_t(z) * size_t(n.y) + size_t(y);
                     for (uint32_t rank = rowStart[row]; rank < rowStart[row + 1]; ++rank) {
                         const uint32_t segment = rank * kTileSegments + inZ * kTileSide + inY;
-                        lists.segmentOrder[segment] = uint32_t(lists.segments.size());
                         lists.segments.push_back(segment);
                         const int tileX = firstCell.x + int(lists.activeTiles[rank] % uint32_t(n.x)) * int(kTileSide) - layout.gridOrigin.x;
                         lists.cells += size_t(std::min(tileX + int(kTileSide), layout.gridSize.x) - std::max(tileX, -1));
@@ -152,9 +150,9 @@ struct GpuMarchingCubes::Impl {
     uint32_t voxelTiles = 0;
     McPipelines pipelines;
     // Host-visible: tileStates (written by mc_tiles), the lists the host makes from them
-    // (tileRanks, activeTiles, segments, segmentOrder), and `results` (the totals, then the mesh).
-    DeviceBuffer caseTable, tileStates, tileRanks, activeTiles, segments, segmentOrder, cellInfo, scanLevels, activeCells,
-        vertices, triangles, results;
+    // (tileRanks, activeTiles, segments), and `results` (the totals, then the mesh).
+    DeviceBuffer caseTable, tileStates, tileRanks, activeTiles, segments, cellInfo, scanLevels, activeCells,
+        vertexEdges, vertices, triangles, results;
     VkCommandPool commandPool = VK_NULL_HANDLE;
     VkCommandBuffer cmd = VK_NULL_HANDLE;
     VkFence fence = VK_NULL_HANDLE;
@@ -185,7 +183,7 @@ GpuMarchingCubes::Impl::~Impl() {
     if (ctx.device) ctx.api.vkDeviceWaitIdle(ctx.device);
     if (fence) ctx.api.vkDestroyFence(ctx.device, fence, nullptr);
     if (commandPool) ctx.api.vkDestroyCommandPool(ctx.device, commandPool, nullptr);
-    for (DeviceBuffer* b : {&results, &triangles, &vertices, &activeCells, &scanLevels, &cellInfo, &segmentOrder, &segments,
+    for (DeviceBuffer* b : {&results, &triangles, &vertices, &vertexEdges, &activeCells, &scanLevels, &cellInfo, &segments,
                             &activeTiles, &tileRanks, &tileStates, &caseTable})
         destroyBuffer(ctx, *b);
     destroyMcPipelines(ctx, pipelines);
@@ -234,8 +232,8 @@ void GpuMarchingCubes::Impl::createBuffers() {
     ensureBuffer(tileStates, VkDeviceSize(voxelTiles) * sizeof(uint32_t), MemoryUse::HostAccess);
     ensureBuffer(tileRanks, VkDeviceSize(tiles) * sizeof(uint32_t), MemoryUse::HostAccess);
     // Placeholders until a mesh has active tiles and triangles: every binding of the set must name a buffer.
-    for (DeviceBuffer* b : {&activeTiles, &segments, &segmentOrder}) ensureBuffer(*b, 16, MemoryUse::HostAccess);
-    for (DeviceBuffer* b : {&cellInfo, &scanLevels, &activeCells, &vertices, &triangles}) ensureBuffer(*b, 16, MemoryUse::Device);
+    for (DeviceBuffer* b : {&activeTiles, &segments}) ensureBuffer(*b, 16, MemoryUse::HostAccess);
+    for (DeviceBuffer* b : {&cellInfo, &scanLevels, &activeCells, &vertexEdges, &vertices, &triangles}) ensureBuffer(*b, 16, MemoryUse::Device);
     ensureBuffer(results, kTotalsBytes, MemoryUse::HostAccess);
 }
 
@@ -254,7 +252,7 @@ void GpuMarchingCubes::Impl::bindAll() {
     buffers[kMcTileRanks] = tileRanks.buffer;
     buffers[kMcActiveTiles] = activeTiles.buffer;
     buffers[kMcSegments] = segments.buffer;
-    buffers[kMcSegmentOrder] = segmentOrder.buffer;
+    buffers[kMcVertexEdges] = vertexEdges.buffer;
     bindMcBuffers(ctx, pipelines, buffers);
 }
 
@@ -369,7 +367,6 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     s.upload(s.tileRanks, lists.ranks);
     bool rebind = s.upload(s.activeTiles, lists.activeTiles);
     rebind |= s.upload(s.segments, lists.segments);
-    rebind |= s.upload(s.segmentOrder, lists.segmentOrder);
     rebind |= s.ensureBuffer(s.cellInfo, VkDeviceSize(lists.activeTiles.size()) * kTileCells * sizeof(uint32_t), MemoryUse::Device);
     rebind |= s.ensureBuffer(s.scanLevels, VkDeviceSize(scanElements) * kTotalsBytes, MemoryUse::Device);
     if (rebind) s.bindAll();
@@ -402,16 +399,20 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
         throw UserError(fmt::format("the mesh has {} vertices and {} triangles, a {} and a {} buffer on the device, more than "
                                     "the Vulkan device '{}' can bind ({}); mesh on the host instead (voxc run --mesh-on host)",
                                     vertexCount, triangleCount, mib(vertexBytes), mib(triangleBytes), s.ctx.info.name, mib(maxRange)));
+    VOXC_ASSERT(vertexCount < (1u << 29)); // mc_compact.glsl keeps a first vertex above 3 bits: 28 bytes each fit 2^32
     bool replaced = s.ensureBuffer(s.vertices, vertexBytes, MemoryUse::Device);
     replaced |= s.ensureBuffer(s.triangles, triangleBytes, MemoryUse::Device);
-    replaced |= s.ensureBuffer(s.activeCells, VkDeviceSize(activeCount) * sizeof(uint32_t), MemoryUse::Device);
+    replaced |= s.ensureBuffer(s.activeCells, VkDeviceSize(activeCount) * kActiveCellBytes, MemoryUse::Device);
+    replaced |= s.ensureBuffer(s.vertexEdges, VkDeviceSize(vertexCount) * sizeof(uint32_t), MemoryUse::Device);
     s.ensureBuffer(s.results, vertexBytes + triangleBytes, MemoryUse::HostAccess);
     if (replaced) s.bindAll();
-    // The active cells in key order, then the emit over them alone.
+    // The active cells and the vertices in key order, then the vertices and the triangles
+    // (independent of each other) over those lists alone.
     s.begin();
     s.dispatch(kMcCompact, push, groupsOf(segmentCount, kGroupSize), segmentCount);
     memoryBarrier(api, s.cmd, kCompute, kCompute);
-    s.dispatch(kMcEmit, push, groupsOf(activeCount, kGroupSize), activeCount);
+    s.dispatch(kMcEmitVertices, push, groupsOf(vertexCount, kGroupSize), vertexCount);
+    s.dispatch(kMcEmitTriangles, push, groupsOf(activeCount, kGroupSize), activeCount);
     memoryBarrier(api, s.cmd, kCompute, kTransfer);
     const VkBufferCopy vertexCopy{0, 0, vertexBytes};
     api.vkCmdCopyBuffer(s.cmd, s.vertices.buffer, s.results.buffer, 1, &vertexCopy);

@@ -11,7 +11,7 @@ namespace voxc::vulkan_detail {
 namespace {
 
 constexpr const char* kPassFiles[kMcPassCount] = {"mc_tiles.glsl", "mc_count.glsl", "mc_scan.glsl", "mc_compact.glsl",
-                                                   "mc_emit.glsl"};
+                                                   "mc_vertices.glsl", "mc_triangles.glsl"};
 
 // The pass's #version line, then the shared declarations, then the rest of the pass.
 std::string passSource(const char* file) {

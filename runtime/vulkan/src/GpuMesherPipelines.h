@@ -21,7 +21,7 @@ struct McPush {
 };
 static_assert(sizeof(McPush) == 128, "must match mc_common.glsl; 128 bytes is every device's minimum");
 
-enum McPass : uint32_t { kMcTiles, kMcCount, kMcScan, kMcCompact, kMcEmit, kMcPassCount };
+enum McPass : uint32_t { kMcTiles, kMcCount, kMcScan, kMcCompact, kMcEmitVertices, kMcEmitTriangles, kMcPassCount };
 
 // Descriptor set 0 of the passes (the buffers' meaning is in the shaders).
 enum McBinding : uint32_t {
@@ -38,7 +38,7 @@ enum McBinding : uint32_t {
     kMcTileRanks,
     kMcActiveTiles,
     kMcSegments,
-    kMcSegmentOrder,
+    kMcVertexEdges,
     kMcBindingCount
 };
 

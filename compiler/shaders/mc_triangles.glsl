@@ -1,0 +1,81 @@
+#version 450
+// GPU marching cubes, pass 5, over the active cells (mc_compact.glsl): every cell writes its
+// triangles at the place the scan gave it, so triangles come out ordered by global cell then
+// table order, as the CPU mesher orders them. A triangle names a vertex by its owner cell's
+// first vertex plus the owner's crossed edges of lower axis.
+
+layout(local_size_x = 64) in;
+
+layout(std430, set = 0, binding = 2) readonly buffer CaseTable {
+    uint word[];
+} cases;
+layout(std430, set = 0, binding = 4) readonly buffer CellInfo {
+    uint info[]; // per cell slot owning vertices: its owned edges | first vertex << 3 (mc_compact.glsl)
+} cells;
+layout(std430, set = 0, binding = 8) readonly buffer ActiveCells {
+    uvec4 cell[]; // slot, first vertex, first triangle, mc_count.glsl's word
+} activeCells;
+layout(std430, set = 0, binding = 10) readonly buffer TileRanks {
+    uint rank[]; // per tile of cells (x fastest): its rank among the active tiles, or none
+} tileRanks;
+layout(std430, set = 0, binding = 11) readonly buffer ActiveTiles {
+    uint tile[];
+} activeTiles;
+// Four words per triangle: three vertex indices, material.
+layout(std430, set = 0, binding = 7) writeonly buffer Triangles {
+    uint word[];
+} triangles;
+
+// The slot of a grid-local cell of an active tile.
+uint slotOf(ivec3 cell) {
+    const ivec3 world = push.gridOrigin.xyz + cell;
+    const uvec3 tile = uvec3((world >> int(kTileShift)) - push.tileFirst.xyz);
+    const uvec3 n = uvec3(push.tileCount.xyz);
+    const uvec3 inTile = uvec3(world & int(kTileSide - 1u));
+    return tileRanks.rank[tile.x + n.x * (tile.y + n.y * tile.z)] * kTileSide * kTileSide * kTileSide + inTile.x +
+           kTileSide * (inTile.y + kTileSide * inTile.z);
+}
+
+// The most common material among the solid corners; ties go to the lowest id. Indexed by corner
+// alone, so that the compiler keeps the ids in registers (lavapipe spills an array indexed by a
+// running count to memory, one lane at a time).
+uint majorityMaterial(ivec3 cell, uint mask) {
+    uint ids[8];
+    for (uint c = 0u; c < 8u; ++c) ids[c] = ((mask >> c) & 1u) != 0u ? materialAt(cell + cornerOffset(c)) : 0u;
+    uint best = 0u, bestVotes = 0u;
+    for (uint i = 0u; i < 8u; ++i) {
+        if (((mask >> i) & 1u) == 0u) continue;
+        uint votes = 0u;
+        for (uint j = 0u; j < 8u; ++j) votes += ((mask >> j) & 1u) != 0u && ids[j] == ids[i] ? 1u : 0u;
+        if (votes > bestVotes || (votes == bestVotes && ids[i] < best)) {
+            best = ids[i];
+            bestVotes = votes;
+        }
+    }
+    return best;
+}
+
+uint caseEdge(uint mask, uint i) { return (cases.word[mask * 10u + 1u + i / 4u] >> (8u * (i % 4u))) & 0xffu; }
+
+void main() {
+    const uint index = invocationIndex(64u);
+    if (index >= push.pass.z) return;
+    const uvec4 entry = activeCells.cell[index];
+    const uint slot = entry.x, info = entry.w;
+    const ivec3 cell = cellOfSlot(activeTiles.tile[slot >> 9], slot);
+    const uint triangleCount = (info >> 3) & 15u;
+    const uint mask = (info >> 19) & 0xffu;
+    const uint material = majorityMaterial(cell, mask);
+    for (uint t = 0u; t < triangleCount; ++t) {
+        const uint base = (entry.z + t) * 4u;
+        for (uint k = 0u; k < 3u; ++k) {
+            // Edge e runs along axis e/4 from its lower corner (voxc::marching_cubes::edgeCorners);
+            // the cell owning that corner is crossed, so its tile is active.
+            const uint edge = caseEdge(mask, t * 3u + k);
+            const uint axis = edge / 4u, along = edge % 4u, u = (axis + 1u) % 3u, v = (axis + 2u) % 3u;
+            const uint owner = cells.info[slotOf(cell + cornerOffset((along & 1u) << u | (along >> 1) << v))];
+            triangles.word[base + k] = (owner >> 3) + bitCount(owner & ((1u << axis) - 1u));
+        }
+        triangles.word[base + 3u] = material;
+    }
+}
