@@ -8,6 +8,7 @@
 #include "voxc/mesh/MarchingCubes.h"
 #include "voxc/mesh/MeshQuality.h"
 #include "voxc/stages/Pipeline.h"
+#include "voxc/syntax/SourceFile.h"
 #include "voxc/vulkan/Context.h"
 #include "voxc/vulkan/Executor.h"
 #include "voxc/vulkan/GpuMesher.h"
@@ -105,6 +106,38 @@ TEST(mesh_GpuMarchingCubes, MatchesTheCpuMesherBitForBit) {
             }
         expectNoValidationMessages(context);
     }
+}
+
+// A surface inside one world-aligned 8^3 tile (the host test mesh_MarchingCubes.
+// surfaceInOneTileVisitsOnlyThatTile's ball): the device counts the 512 cells of that tile alone,
+// no other, and meshes them as the host does.
+TEST(mesh_GpuMarchingCubes, ASurfaceInOneTileIsCountedInThatTileAlone) {
+    VulkanContext& context = validatedLavapipe();
+    const std::string text = "world {\n  size = [64, 64, 64];\n  seed = 1;\n}\n"
+                             "field ball = max(0.0, 1.0 - length(wp - vec3(11.5, 11.5, 11.5)) / 3.6);\n"
+                             "pipeline {\n  start;\n  set ball;\n}\n";
+    for (const glm::ivec3 origin : {glm::ivec3(0), glm::ivec3(-40, 8, 3)}) {
+        CheckResult checked = checkSource(SourceFile("ball.vox", text));
+        ASSERT_TRUE(checked.program) << checked.rendered();
+        Program program = std::move(*checked.program);
+        program.world.chunkSize = 32;
+        program.world.origin = origin;
+        VulkanExecutor executor(context, compileProgram(program, {}));
+        const RunResult result = executor.run();
+        GpuMarchingCubes gpu(executor);
+        MeshStats cpuStats, gpuStats;
+        const Mesh cpu = meshMarchingCubes(result.grid, {}, &cpuStats);
+        const Mesh gpuMesh = gpu.mesh({}, &gpuStats);
+        const std::string what = fmt::format("origin {} {} {}", origin.x, origin.y, origin.z);
+        ASSERT_EQ(cpuStats.activeTiles, 1u) << what;
+        expectSameMesh(cpu, gpuMesh, what);
+        EXPECT_GT(gpuMesh.triangles.size(), 0u) << what;
+        EXPECT_EQ(gpuStats.activeTiles, 1u) << what;
+        EXPECT_EQ(gpuStats.cellsVisited, 512u) << what;
+        EXPECT_EQ(gpuStats.tiles, cpuStats.tiles) << what;
+        EXPECT_EQ(gpuStats.skippedChunks, gpuStats.chunks - 1) << what;
+    }
+    expectNoValidationMessages(context);
 }
 
 TEST(mesh_GpuMarchingCubes, IsTheSameForEveryChunkSizeAndRepeatedCall) {
