@@ -17,41 +17,13 @@ voxc_command, source_dir, work = sys.argv[sys.argv.index("--") + 1:]
 source_dir, work = Path(source_dir), Path(work)
 sys.path.insert(0, str(source_dir / "editors" / "blender"))
 sys.path.insert(0, str(source_dir / "tests" / "python"))
+sys.path.insert(0, str(source_dir / "tests" / "blender"))
 import voxc_import  # noqa: E402
 from mesh_files import read_ply  # noqa: E402
 
+from blender_checks import check_against_cli, cli_mesh, expect, finish, vertex_count  # noqa: E402
+
 voxc_import.register()
-failures = []
-
-
-def expect(condition, what):
-    print(("ok   " if condition else "FAIL ") + what)
-    if not condition:
-        failures.append(what)
-
-
-def cli_mesh(vox, ply):
-    subprocess.run([voxc_command, "run", str(vox), "-o", str(ply), "--mesh-on", "host"], check=True, capture_output=True)
-    return read_ply(ply)
-
-
-def check_against_cli(collection, stem, ply):
-    """One object per material present: its triangles, vertices and material as voxc run's mesh."""
-    ids = np.unique(ply["materials"])
-    expect(len(collection.objects) == len(ids), f"{len(collection.objects)} objects for {len(ids)} materials")
-    for material_id in ids:
-        triangles = ply["triangles"][ply["materials"] == material_id]
-        objects = [o for o in collection.objects if o["voxc_material_id"] == int(material_id)]
-        expect(len(objects) == 1, f"one object of material {material_id}")
-        if not objects:
-            continue
-        mesh = objects[0].data
-        expect(len(mesh.polygons) == len(triangles), f"{objects[0].name}: {len(mesh.polygons)} triangles == {len(triangles)}")
-        used = np.unique(triangles)
-        expect(len(mesh.vertices) == len(used), f"{objects[0].name}: {len(mesh.vertices)} vertices == {len(used)}")
-        co = np.empty(3 * len(mesh.vertices), dtype=np.float32)
-        mesh.vertices.foreach_get("co", co)
-        expect(np.array_equal(co.reshape(-1, 3), ply["vertices"][used]), f"{objects[0].name}: positions equal voxc's")
 
 
 # examples/scene.vox: objects, materials and counts.
@@ -59,8 +31,8 @@ scene = work / "scene.vox"
 shutil.copy(source_dir / "examples" / "scene.vox", scene)
 bpy.ops.import_scene.voxc(filepath=str(scene), device="lavapipe", watch=True)
 collection = bpy.data.collections["scene"]
-ply = cli_mesh(scene, work / "scene.ply")
-check_against_cli(collection, "scene", ply)
+ply = cli_mesh(voxc_command, scene, work / "scene.ply")
+check_against_cli(collection, ply)
 declared = {"dirt": (0.45, 0.33, 0.22), "bedrock": (0.38, 0.38, 0.40), "sandstone": (0.80, 0.58, 0.40),
             "sand": (0.90, 0.82, 0.58), "grass": (0.33, 0.55, 0.22)}
 for obj in collection.objects:
@@ -74,17 +46,18 @@ bpy.ops.import_scene.voxc(filepath=str(scene), device="interp", use_seed=True, s
                           region_min=(8, 0, 8), region_max=(72, 48, 72), lod=1)
 subprocess.run([voxc_command, "run", str(scene), "--region", "8,0,8:72,48,72", "--lod", "1", "--seed", "9",
                 "-o", str(work / "part.ply")], check=True, capture_output=True)
-check_against_cli(collection, "scene", read_ply(work / "part.lod1.ply"))
+check_against_cli(collection, read_ply(work / "part.lod1.ply"))
 
-# The watch: a saved edit is imported again, replacing the objects.
+# The watch's check, called here directly (watch_test.py lets Blender's timer call it): a saved
+# edit is imported again, replacing the objects.
 bpy.ops.import_scene.voxc(filepath=str(scene), device="lavapipe", watch=True)
-before = sum(len(o.data.vertices) for o in collection.objects)
+before = vertex_count(collection)
 expect(voxc_import.reimport_changed() == [], "nothing imported again while the file is unchanged")
 time.sleep(0.01)
 scene.write_text(scene.read_text().replace("peak = 10;", "peak = 6;"))
 expect(voxc_import.reimport_changed() == ["scene"], "the saved file imported again")
-check_against_cli(collection, "scene", cli_mesh(scene, work / "scene2.ply"))
-after = sum(len(o.data.vertices) for o in collection.objects)
+check_against_cli(collection, cli_mesh(voxc_command, scene, work / "scene2.ply"))
+after = vertex_count(collection)
 expect(after != before, f"the edit changed the mesh ({before} -> {after} vertices)")
 
 # A file with errors: a Blender error report with file:line:col, and the last good objects stay.
@@ -94,9 +67,8 @@ try:
     expect(False, "an error report for the broken file")
 except RuntimeError as error:
     expect(f"{scene}:" in str(error) and "error E0" in str(error), f"reported: {str(error).splitlines()[0]}")
-expect(sum(len(o.data.vertices) for o in collection.objects) == after, "the last good objects stay")
+expect(vertex_count(collection) == after, "the last good objects stay")
 
-if failures:
-    print(f"{len(failures)} failures", file=sys.stderr)
+if finish():
     sys.exit(1)
 print("blender import test passed")
