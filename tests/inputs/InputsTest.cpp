@@ -271,6 +271,28 @@ TEST(Mesh, InsideOutPartsAreCountedOneByOne) {
     }
 }
 
+// Two closed boxes that pass through each other, as models built of parts often are: warned about
+// (W0214, naming the crossing pairs) at the file value, and signed as the union of the two solids.
+TEST(Mesh, ASelfIntersectingMeshIsWarnedAboutAndSignedAsTheUnion) {
+    const fs::path dir = scratch();
+    test::writeBytes(dir / "parts.glb", test::glb(joined(test::box({-8, -5, -6}, {2, 5, 6}), test::box({-2, -4, -4}, {8, 4, 4}))));
+    const glm::dvec3 centre(16.5, 18, 20);
+    expectSignsAgree(dir, {"parts.glb", "translate = [16.5, 18, 20]; band = 3;",
+                           [&](glm::dvec3 p) {
+                               return std::min(boxDistance(p, centre + glm::dvec3(-3, 0, 0), {5, 5, 6}),
+                                               boxDistance(p, centre + glm::dvec3(3, 0, 0), {5, 4, 4}));
+                           }},
+                     "W0214");
+    const CheckResult result = checkAt(dir / "m.vox", "world { size = [32, 32, 32]; }\n"
+                                                      "mesh parts { file = \"parts.glb\"; translate = [16, 16, 16]; }\n"
+                                                      "field f = parts(wp) < 0 ? 1.0 : 0.0;\npipeline { start; set f; }\n");
+    ASSERT_EQ(result.diagnostics.size(), 1u) << result.rendered();
+    // Box B's four long faces (8 triangles) pass through box A's x = 2 face (2 triangles); each of
+    // B's triangles there crosses one or both of A's.
+    EXPECT_NE(result.diagnostics[0].message.find("pairs of triangles cross (the first: triangles "), std::string::npos)
+        << result.diagnostics[0].message;
+}
+
 TEST(Mesh, AnOpenMeshIsWarnedAboutAtItsFile) {
     const fs::path dir = scratch();
     test::Shape open = test::box({-6, -4, -5}, {6, 4, 5});

@@ -232,6 +232,14 @@ std::shared_ptr<const SampledMap> checkMesh(Context& context, const ast::Block& 
                         "around a hole is whatever OpenVDB's fill carries through it; close the mesh to be sure of "
                         "its inside (docs/language.md, \"Meshes\")",
                         *block.label, grid.openEdges, grid.nonManifoldEdges));
+    if (grid.crossingPairs > 0)
+        context.diagnostics.warning(
+            "W0214", fileKey.value.loc,
+            fmt::format("mesh '{}' intersects itself: {} pair{} of triangles cross (the first: triangles {} and {}); "
+                        "{}(p) is the union of the solids it encloses, as OpenVDB's sign rule reads it (docs/language.md, "
+                        "\"Meshes\")",
+                        *block.label, grid.crossingPairs, grid.crossingPairs == 1 ? "" : "s", grid.firstCrossing.first,
+                        grid.firstCrossing.second, *block.label));
     if (grid.insideOutParts > 0)
         context.diagnostics.warning(
             "W0213", fileKey.value.loc,

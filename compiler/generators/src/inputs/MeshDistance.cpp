@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/ext/vector_int3_sized.hpp>
 #include <glm/vector_relational.hpp>
 #include <glm/mat4x4.hpp>
 #include <openvdb/openvdb.h>
@@ -12,6 +13,7 @@
 #include <limits>
 #include <map>
 #include <mutex>
+#include <unordered_map>
 
 namespace voxc::inputs {
 
@@ -26,6 +28,86 @@ glm::dmat4 worldMatrix(const MeshTransform& transform) {
     m = glm::rotate(m, radians.y, glm::dvec3(0, 1, 0));
     m = glm::rotate(m, radians.x, glm::dvec3(1, 0, 0));
     return glm::scale(m, glm::dvec3(transform.scale));
+}
+
+// Six times the signed volume of (a, b, c, d): positive when d lies on the side of abc its
+// counter-clockwise normal points to.
+double orient(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const glm::dvec3& d) {
+    return glm::dot(b - a, glm::cross(c - a, d - a));
+}
+
+// Whether segment pq passes through the inside of triangle abc, strictly (touching is not).
+bool segmentCrosses(const glm::dvec3& p, const glm::dvec3& q, const glm::dvec3& a, const glm::dvec3& b,
+                    const glm::dvec3& c) {
+    const double dp = orient(a, b, c, p), dq = orient(a, b, c, q);
+    if (!(dp * dq < 0.0)) return false;
+    const double s1 = orient(p, q, a, b), s2 = orient(p, q, b, c), s3 = orient(p, q, c, a);
+    return (s1 > 0.0 && s2 > 0.0 && s3 > 0.0) || (s1 < 0.0 && s2 < 0.0 && s3 < 0.0);
+}
+
+// Two triangles that are not coplanar cross iff an edge of one passes through the other.
+bool trianglesCross(const std::array<glm::dvec3, 3>& t, const std::array<glm::dvec3, 3>& u) {
+    for (int k = 0; k < 3; ++k)
+        if (segmentCrosses(t[k], t[(k + 1) % 3], u[0], u[1], u[2]) || segmentCrosses(u[k], u[(k + 1) % 3], t[0], t[1], t[2]))
+            return true;
+    return false;
+}
+
+struct CellHash {
+    size_t operator()(const glm::i64vec3& c) const {
+        return size_t((uint64_t(c.x) * 0x9E3779B97F4A7C15ull) ^ (uint64_t(c.y) * 0xC2B2AE3D27D4EB4Full) ^
+                      (uint64_t(c.z) * 0x165667B19E3779F9ull));
+    }
+};
+
+// Pairs of triangles sharing no vertex (after welding) that cross each other: the triangles'
+// boxes in a spatial hash of cells as wide as the mean triangle's longest box side, and a pair
+// whose boxes overlap tested in the one cell that holds the overlap's lowest corner. Bounded: at
+// most 32 cell entries per triangle and 64 pair tests per triangle (plus 10^6); past either the
+// search stops and what it found so far is reported.
+void findCrossings(const std::vector<glm::dvec3>& p, const std::vector<openvdb::Vec3I>& triangles,
+                   const std::vector<uint32_t>& id, DistanceGrid& grid) {
+    const size_t n = triangles.size();
+    if (n < 2) return;
+    std::vector<std::array<glm::dvec3, 3>> corners(n);
+    std::vector<glm::dvec3> lo(n), hi(n);
+    double meanSide = 0.0;
+    for (size_t i = 0; i < n; ++i) {
+        for (int k = 0; k < 3; ++k) corners[i][size_t(k)] = p[triangles[i][k]];
+        lo[i] = glm::min(glm::min(corners[i][0], corners[i][1]), corners[i][2]);
+        hi[i] = glm::max(glm::max(corners[i][0], corners[i][1]), corners[i][2]);
+        meanSide += std::max({hi[i].x - lo[i].x, hi[i].y - lo[i].y, hi[i].z - lo[i].z}) / double(n);
+    }
+    const double side = std::max(meanSide, 1e-6);
+    const auto cellOf = [&](const glm::dvec3& q) { return glm::i64vec3(glm::floor(q / side)); };
+    const uint64_t maxEntries = 32 * uint64_t(n), maxTests = 64 * uint64_t(n) + 1'000'000;
+    std::unordered_map<glm::i64vec3, std::vector<uint32_t>, CellHash> cells;
+    uint64_t entries = 0, tests = 0;
+    for (size_t i = 0; i < n; ++i) {
+        const glm::i64vec3 a = cellOf(lo[i]), b = cellOf(hi[i]);
+        for (int64_t z = a.z; z <= b.z; ++z)
+            for (int64_t y = a.y; y <= b.y; ++y)
+                for (int64_t x = a.x; x <= b.x; ++x) {
+                    if (++entries > maxEntries) return;
+                    cells[glm::i64vec3(x, y, z)].push_back(uint32_t(i));
+                }
+    }
+    for (const auto& [at, members] : cells)
+        for (size_t x = 0; x < members.size(); ++x)
+            for (size_t y = x + 1; y < members.size(); ++y) {
+                const uint32_t i = members[x], j = members[y];
+                if (glm::any(glm::lessThan(hi[i], lo[j])) || glm::any(glm::lessThan(hi[j], lo[i]))) continue;
+                if (cellOf(glm::max(lo[i], lo[j])) != at) continue; // tested in another cell
+                const openvdb::Vec3I &t = triangles[i], &u = triangles[j];
+                bool shared = false;
+                for (int k = 0; k < 3; ++k)
+                    for (int m = 0; m < 3; ++m) shared = shared || id[t[k]] == id[u[m]];
+                if (shared) continue;
+                if (++tests > maxTests) return;
+                if (!trianglesCross(corners[i], corners[j])) continue;
+                const std::pair<uint32_t, uint32_t> pair{std::min(i, j), std::max(i, j)};
+                grid.firstCrossing = grid.crossingPairs++ == 0 ? pair : std::min(grid.firstCrossing, pair);
+            }
 }
 
 // Edges after welding equal positions: how many border one triangle, and more than two; and the
@@ -87,6 +169,9 @@ void surveyTopology(const std::vector<openvdb::Vec3s>& points, const std::vector
         ++grid.insideOutParts;
         grid.insideOutVolume += -part.volume / 6.0;
     }
+    std::vector<glm::dvec3> exact(points.size());
+    for (size_t i = 0; i < points.size(); ++i) exact[i] = glm::dvec3(points[i].x(), points[i].y(), points[i].z());
+    findCrossings(exact, triangles, id, grid);
 }
 
 } // namespace

@@ -5,6 +5,8 @@
 #include "voxc/generators/inputs/MeshFile.h"
 
 #include <glm/vec3.hpp>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace voxc::inputs {
@@ -37,6 +39,11 @@ struct DistanceGrid {
     // expect.
     int64_t insideOutParts = 0;
     double insideOutVolume = 0.0;
+    // Pairs of triangles that share no vertex and cross each other (an edge of one passes through
+    // the other; coplanar overlaps and touching are not counted), and the lowest such pair of
+    // triangle indices (in the file's order).
+    int64_t crossingPairs = 0;
+    std::pair<uint32_t, uint32_t> firstCrossing{0, 0};
 };
 
 // The grid covers the transformed mesh's box grown by band + 1 voxels. InputError E0012 when it
