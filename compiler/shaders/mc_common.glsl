@@ -21,6 +21,11 @@ layout(std430, set = 0, binding = 0) readonly buffer Voxels {
 layout(std430, set = 0, binding = 1) readonly buffer Materials {
     uint material[];
 } materials;
+// The voxel buffer again, four densities to an element: a row of a chunk is contiguous, so four
+// samples from x = 0 mod 4 along it are one read.
+layout(std430, set = 0, binding = 9) readonly buffer VoxelQuads {
+    vec4 density[];
+} quads;
 
 // Dispatches are at most 65535 workgroups along x, so large ones use y as well. The local size
 // is a parameter: this file comes before the pass's local_size layout, where gl_WorkGroupSize
@@ -51,6 +56,12 @@ float densityAt(ivec3 p) {
 }
 
 bool solidAt(ivec3 p) { return densityAt(p) > push.surface.x; }
+
+// solidAt for four densities: not finite reads 0.
+bvec4 solidQuad(vec4 d) {
+    const vec4 finite = mix(vec4(0.0), d, lessThan(abs(d), vec4(uintBitsToFloat(0x7f800000u))));
+    return greaterThan(finite, vec4(push.surface.x));
+}
 
 uint materialAt(ivec3 p) {
     if (push.gridSize.w == 0 || !insideGrid(p)) return 0u;

@@ -11,10 +11,6 @@
 
 layout(local_size_x = 64) in;
 
-// The voxel buffer of binding 0, four densities to an element.
-layout(std430, set = 0, binding = 9) readonly buffer VoxelQuads {
-    vec4 density[];
-} quads;
 // Bits 0-7: the regions holding a solid voxel; bits 8-15: those holding an air voxel.
 layout(std430, set = 0, binding = 3) writeonly buffer TileStates {
     uint state[];
@@ -28,12 +24,6 @@ uint rowRegions(uint y, uint z) {
 }
 uint firstVoxelRegions(uint y, uint z) {
     return kLowX | (y == 0u ? kEdgeXY : 0u) | (z == 0u ? kEdgeXZ : 0u) | (y == 0u && z == 0u ? kCorner : 0u);
-}
-
-// solidAt for four densities: not finite reads 0.
-bvec4 solidQuad(vec4 d) {
-    const vec4 finite = mix(vec4(0.0), d, lessThan(abs(d), vec4(uintBitsToFloat(0x7f800000u))));
-    return greaterThan(finite, vec4(push.surface.x));
 }
 
 void main() {

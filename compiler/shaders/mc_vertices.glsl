@@ -19,10 +19,34 @@ layout(std430, set = 0, binding = 6) writeonly buffer Vertices {
     uint word[];
 } vertices;
 
+// The samples a vertex reads (its edge's lower sample - 1 to its upper sample + 1) are read
+// from one base address where they all lie in the grid and in the lower sample's chunk, as most
+// do, and otherwise through densityAt, which finds each one's chunk: the same values.
+bool windowInside = false;
+uint windowBase = 0u;
+ivec3 windowOrigin = ivec3(0);
+
+void openWindow(ivec3 lower, ivec3 upper) {
+    const int side = 1 << push.gridOrigin.w;
+    const ivec3 inChunk = (push.gridOrigin.xyz + lower) & (side - 1);
+    windowInside = all(greaterThanEqual(lower, ivec3(1))) && all(lessThan(upper + 1, push.gridSize.xyz)) &&
+                   all(greaterThanEqual(inChunk, ivec3(1))) && all(lessThan(inChunk + (upper - lower) + 1, ivec3(side)));
+    windowBase = voxelAddress(lower);
+    windowOrigin = lower;
+}
+
+float sampleAt(ivec3 p) {
+    if (!windowInside) return densityAt(p);
+    const int side = 1 << push.gridOrigin.w;
+    const ivec3 d = p - windowOrigin;
+    const float v = voxels.density[uint(int(windowBase) + d.x + side * (d.y + side * d.z))];
+    return isnan(v) || isinf(v) ? 0.0 : v;
+}
+
 vec3 gradientAt(ivec3 p) {
-    precise vec3 g = 0.5 * vec3(densityAt(p + ivec3(1, 0, 0)) - densityAt(p - ivec3(1, 0, 0)),
-                                densityAt(p + ivec3(0, 1, 0)) - densityAt(p - ivec3(0, 1, 0)),
-                                densityAt(p + ivec3(0, 0, 1)) - densityAt(p - ivec3(0, 0, 1)));
+    precise vec3 g = 0.5 * vec3(sampleAt(p + ivec3(1, 0, 0)) - sampleAt(p - ivec3(1, 0, 0)),
+                                sampleAt(p + ivec3(0, 1, 0)) - sampleAt(p - ivec3(0, 1, 0)),
+                                sampleAt(p + ivec3(0, 0, 1)) - sampleAt(p - ivec3(0, 0, 1)));
     return g;
 }
 
@@ -31,7 +55,8 @@ void writeVertex(uint index, ivec3 lower, int axis) {
     step[axis] = 1;
     const ivec3 upper = lower + step;
     const float iso = push.surface.x;
-    const float d0 = densityAt(lower), d1 = densityAt(upper);
+    openWindow(lower, upper);
+    const float d0 = sampleAt(lower), d1 = sampleAt(upper);
     // In double, as voxc::marching_cubes::crossing: iso lies between the samples.
     const float t = clamp(float((double(iso) - double(d0)) / (double(d1) - double(d0))), push.surface.y, push.surface.z);
     precise vec3 position = vec3(push.gridOrigin.xyz + lower);
