@@ -73,7 +73,7 @@ private:
 } // namespace
 
 SolveTable solveScene(const Scene& scene, const Limits& limits, const Solvers& solvers, bool keepChannels) {
-    const FieldHeapReuse reuse; // the solve's freed fields serve its next ones (HeapReuse.h)
+    const FieldHeapReuse reuse(scene.box.cellCount()); // the solve's freed fields serve its next ones (HeapReuse.h)
     Result solved = scene.constraints ? solveCurves(*scene.constraints, scene.options, limits, solvers)
                     : scene.inputs.empty()
                         ? runCurves(scene.curves, scene.box, scene.options, limits, solvers)
