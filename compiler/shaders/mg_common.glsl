@@ -9,7 +9,7 @@ layout(push_constant) uniform Push {
     ivec4 fine;   // xyz: the level a pass works on (the finer of two); w: its first cell
     ivec4 coarse; // xyz: the next coarser level; w: its first cell
     ivec4 halved; // xyz: 1 where the coarse level halves the axis; w: colour / mode / add
-    vec4 weight;  // xyz: the fine level's stencil weight per axis (4^-scale)
+    vec4 weight;  // xyz: the fine level's stencil weight per axis (4^-scale); w: the smoother's over-relaxation
 } push;
 
 layout(std430, set = 0, binding = 0) readonly buffer Mask { uint fixedCell[]; };

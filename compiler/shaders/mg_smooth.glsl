@@ -1,9 +1,10 @@
 #version 450
 // <<COMPONENTS>>
 #include "mg_common.glsl"
-// Multigrid pass: one red-black Gauss-Seidel half sweep on level push.fine, colour push.halved.w
-// (cells with (x + y + z) & 1 == colour). u_i = (sum_j w_j u_j - f_i) / sum_j w_j over the
-// in-box neighbours, both sums from 0 in neighbour order; fixed cells keep their values. A
+// Multigrid pass: one red-black over-relaxed Gauss-Seidel half sweep on level push.fine, colour
+// push.halved.w (cells with (x + y + z) & 1 == colour). u_i += omega * (g - u_i), omega =
+// push.weight.w, g = (sum_j w_j u_j - f_i) / sum_j w_j over the in-box neighbours, both sums
+// from 0 in neighbour order; fixed cells keep their values. A
 // colour's cells read only the other colour, so the parallel sweep is the host's serial one.
 // One invocation per cell of the colour: x = 2 * id.x + parity.
 
@@ -27,7 +28,9 @@ void main() {
         if (p.z > 0) { sum += push.weight.z * loadU(c, i - slice); weights += push.weight.z; }
         if (p.z + 1 < l.z) { sum += push.weight.z * loadU(c, i + slice); weights += push.weight.z; }
         if (weights > 0.0) {
-            precise float value = (sum - loadF(c, i)) / weights;
+            const float ui = loadU(c, i);
+            precise float gaussSeidel = (sum - loadF(c, i)) / weights;
+            precise float value = ui + push.weight.w * (gaussSeidel - ui);
             storeU(c, i, value);
         }
     }

@@ -197,10 +197,11 @@ TEST(CurvesSolve, FlatBoxCoarsensItsLongAxes) {
 // The convergence factor per V-cycle (max residual after a cycle over the one before) on the
 // spec's two geometries with values that vary along the constraints, so the solve has work to do:
 // a tilted seed plane through a 64x32x64 box (A4.5's plane, voxelised) and the cave roof's two
-// seed planes (A4.6) across a 64x17x64 box. Measured: 0.25-0.39 on the plane and 0.14-0.23 on
-// the cave roof (V(3,3), Dirichlet coarse cells wherever a child is fixed), not the 0.1 a
-// textbook Poisson multigrid reaches: a coarse cell with one fixed child holds its whole
-// correction at 0, so the coarse correction is weak near the constraints (docs/curves.md).
+// seed planes (A4.6) across a 64x17x64 box. Measured with the over-relaxed smoother (omega =
+// 1.5): 0.11-0.19 on the plane and 0.12-0.18 on the cave roof; with plain Gauss-Seidel they were
+// 0.25-0.36 and 0.14-0.23, because a coarse cell with one fixed child holds its whole correction
+// at 0, so the coarse correction is weak near the constraints (docs/curves.md). The bound, 0.2,
+// fails if the schedule falls back to the plain smoother's rate.
 std::vector<float> cycleFactors(const std::vector<uint8_t>& fixed, Field3& values) {
     // Down to 1e-5, ten times float32's rounding floor for values of order 1 (past it, rounding
     // decides the residual and the ratio says nothing about the schedule).
@@ -237,7 +238,7 @@ TEST(CurvesSolve, ConvergenceFactorPerVCycleOnThePlane) {
     std::vector<uint8_t> fixed(cs.flags.size());
     for (size_t i = 0; i < fixed.size(); ++i) fixed[i] = (cs.flags[i] & kInNormals) ? 1 : 0;
     Field3 values = varyingValues(cs.box, fixed);
-    expectFactors("plane", cycleFactors(fixed, values), 0.4f);
+    expectFactors("plane", cycleFactors(fixed, values), 0.2f);
 }
 
 TEST(CurvesSolve, ConvergenceFactorPerVCycleOnTheCaveRoof) {
@@ -247,7 +248,7 @@ TEST(CurvesSolve, ConvergenceFactorPerVCycleOnTheCaveRoof) {
         for (int32_t x = 0; x < box.size.x; ++x)
             for (int32_t y : {4, 12}) fixed[box.index(x, y, z)] = 1;
     Field3 values = varyingValues(box, fixed);
-    expectFactors("cave roof", cycleFactors(fixed, values), 0.4f);
+    expectFactors("cave roof", cycleFactors(fixed, values), 0.2f);
 }
 
 TEST(CurvesSolve, CycleCapIsATypedErrorWithTheNumbers) {

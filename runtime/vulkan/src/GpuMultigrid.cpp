@@ -52,7 +52,8 @@ struct Builder {
         const glm::ivec3 c = levels[coarse].size;
         s.push = {f.size.x, f.size.y, f.size.z, offsets[fine], c.x, c.y, c.z, offsets[coarse],
                   f.halved.x, f.halved.y, f.halved.z, w, std::bit_cast<int32_t>(f.weight.x),
-                  std::bit_cast<int32_t>(f.weight.y), std::bit_cast<int32_t>(f.weight.z), 0};
+                  std::bit_cast<int32_t>(f.weight.y), std::bit_cast<int32_t>(f.weight.z),
+                  std::bit_cast<int32_t>(curves::kOverRelaxation)};
         return s;
     }
     void smooth(std::vector<SolveStep>& out, size_t l, int32_t sweeps) const {

@@ -21,6 +21,8 @@ struct SolveReport {
 
 // The schedule's constants: V(3,3) cycles, 50 red-black sweeps on the coarsest level.
 inline constexpr int32_t kPreSmooth = 3, kPostSmooth = 3, kCoarsestSweeps = 50;
+// The smoother's over-relaxation: a relaxed cell takes u + omega * (gauss_seidel - u).
+inline constexpr float kOverRelaxation = 1.5f;
 
 // One level of the hierarchy, finest first: its size, the axes the next (coarser) level halves
 // (none on the coarsest) and its stencil weight per axis (1 / cell width^2 in finest cells, exact).
