@@ -128,6 +128,29 @@ TEST(vulkan_Executor, StagingBatchingAndSplittingGiveTheSameResult) {
     EXPECT_EQ(other.grid.data(), plain.grid.data());
 }
 
+TEST(vulkan_Executor, TimedBatchesCallProgressOftenAndGiveTheSameResult) {
+    // libvoxc sizes batches by time when a progress callback is set, so that Ctrl+C in Python
+    // stops a run promptly: a target no batch can meet shrinks them to one dispatch each.
+    std::vector<TestGrammar> grammars = mixedGrammars();
+    grammars[0].iterations = 40; // some 500 dispatches
+    const KernelPackage package = makePackage(makeWorld(kGridSize, {-37, -5, -100}, 16), true, grammars);
+    int plainCalls = 0;
+    ExecutorOptions plainOptions;
+    plainOptions.progress = [&](double) { ++plainCalls; };
+    const RunResult plain = runPackage(package, plainOptions);
+    int timedCalls = 0;
+    ExecutorOptions options;
+    options.batchMilliseconds = 1e-9;
+    options.progress = [&](double) { ++timedCalls; };
+    const RunResult timed = runPackage(package, options);
+    EXPECT_EQ(timed.grid.data(), plain.grid.data());
+    EXPECT_EQ(timed.dispatches, plain.dispatches);
+    ASSERT_GT(plain.dispatches, 256u);
+    EXPECT_EQ(plainCalls, 1); // one batch of up to 4096 dispatches
+    // 16, 16, 8, 4, 2, then one dispatch per batch.
+    EXPECT_GT(uint64_t(timedCalls), plain.dispatches - 64);
+}
+
 TEST(vulkan_Executor, ValidationLayerReportsNothing) {
     ContextOptions contextOptions;
     contextOptions.validation = true;
