@@ -350,7 +350,7 @@ std::vector<Malformed> malformedCases() {
         {"RgbPng", "heightmap", "rgb.png", test::rgbPng(4, 4), "E0010", "greyscale"},
         {"NotAnImage", "heightmap", "x.png", "hello, world", "E0102", "not a height image"},
         {"TruncatedNpy", "heightmap", "t.npy", test::npy("<f4", "(8, 8)", std::string(100, '\0')), "E0102", "truncated"},
-        {"NpyOfDoubles", "heightmap", "d.npy", test::npy("<f8", "(8, 8)", std::string(512, '\0')), "E0010", "'<f8'"},
+        {"NpyOfDoubles", "heightmap", "d.npy", test::npy("<f8", "(8, 8)", std::string(512, '\0')), "E0010", "'<f8'; a height image is float32 ('<f4') or uint16 ('<u2'): save it with numpy as array.astype(numpy.float32)"},
         {"NpyWithNan", "heightmap", "n.npy", test::npy("<f4", "(8, 8)", test::bytesOf(withNan)), "E0102", "pixel (3, 2)"},
         {"TruncatedTiff", "heightmap", "t.tif", std::string("II*\0\x08\0\0\0\x20\0", 10), "E0102", "TIFF"},
         {"GlbMissingItsBuffer", "mesh", "b.glb", test::glb(test::icosphere(4.0f, 1), true), "E0102",

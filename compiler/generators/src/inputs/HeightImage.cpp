@@ -156,7 +156,10 @@ HeightImage decodeNpy(std::string_view bytes, const Limits& limits) {
     bool isFloat = false;
     if (descr == "<f4" || descr == "=f4") itemSize = 4, isFloat = true;
     else if (descr == "<u2" || descr == "=u2") itemSize = 2;
-    else throw InputError("E0010", fmt::format("the .npy array holds '{}'; a height image is float32 ('<f4') or uint16 ('<u2')", descr));
+    else
+        throw InputError("E0010", fmt::format("the .npy array holds '{}'; a height image is float32 ('<f4') or uint16 "
+                                              "('<u2'): save it with numpy as array.astype(numpy.float32)",
+                                              descr));
     const size_t count = size_t(width) * size_t(height);
     const size_t dataStart = headerStart + headerLength;
     if (bytes.size() - dataStart < count * itemSize)
