@@ -76,13 +76,17 @@ RowNeighbours rowNeighbours(const Box& b, const float* u, int32_t y, int32_t z, 
             z + 1 < b.size.z ? u + i + slice : absent};
 }
 
-// out[x] = (sum_j w_j u_j - rhs[x]) / weights for x in [1, n - 1), the sum from 0 in neighbour
-// order. Plain arguments and restrict pointers let the compiler vectorise it (elementwise only:
-// no operation is reordered).
+// The over-relaxed update of a cell whose Gauss-Seidel value is `relaxed`.
+inline float overRelaxed(float u, float relaxed, float omega) { return u + omega * (relaxed - u); }
+
+// out[x] = overRelaxed(centre[x], (sum_j w_j u_j - rhs[x]) / weights) for x in [1, n - 1), the
+// sum from 0 in neighbour order. Plain arguments and restrict pointers let the compiler vectorise
+// it (elementwise only: no operation is reordered). Every cell is computed, so the store is a
+// plain select (a select around the arithmetic would not be if-converted: it may trap).
 VOXC_ROW_KERNEL
 void relaxRow(const float* __restrict centre, const float* __restrict ym, const float* __restrict yp,
               const float* __restrict zm, const float* __restrict zp, const float* __restrict rhs, float wx, float wy,
-              float wz, float weights, int32_t n, float* __restrict out) {
+              float wz, float weights, float omega, int32_t n, float* __restrict out) {
     for (int32_t x = 1; x + 1 < n; ++x) {
         float sum = 0.0f;
         sum += wx * centre[x - 1];
@@ -91,19 +95,14 @@ void relaxRow(const float* __restrict centre, const float* __restrict ym, const 
         sum += wy * yp[x];
         sum += wz * zm[x];
         sum += wz * zp[x];
-        out[x] = (sum - rhs[x]) / weights;
+        out[x] = overRelaxed(centre[x], (sum - rhs[x]) / weights, omega);
     }
 }
 
-// The over-relaxed update of a cell whose Gauss-Seidel value is `relaxed`.
-inline float overRelaxed(float u, float relaxed, float omega) { return u + omega * (relaxed - u); }
-
-// u[x] = overRelaxed(u[x], relaxed[x]) for x in [1, n - 1) where keep[x] is 0; a select, so it
-// vectorises.
+// u[x] = relaxed[x] for x in [1, n - 1) where keep[x] is 0; a select, so it vectorises.
 VOXC_ROW_KERNEL
-void storeRelaxed(const float* __restrict relaxed, const uint8_t* __restrict keep, float omega, int32_t n,
-                  float* __restrict u) {
-    for (int32_t x = 1; x + 1 < n; ++x) u[x] = keep[x] ? u[x] : u[x] + omega * (relaxed[x] - u[x]);
+void storeRelaxed(const float* __restrict relaxed, const uint8_t* __restrict keep, int32_t n, float* __restrict u) {
+    for (int32_t x = 1; x + 1 < n; ++x) u[x] = keep[x] ? u[x] : relaxed[x];
 }
 
 void computeKeepMasks(Level& level) {
@@ -139,14 +138,14 @@ void relaxColourRow(Level& level, size_t c, int32_t colour, bool zeroRhs, int32_
     if (y + 1 < b.size.y) weights += wy;
     if (z > 0) weights += wz;
     if (z + 1 < b.size.z) weights += wz;
-    relaxRow(u + i0, r.ym, r.yp, r.zm, r.zp, rhs, wx, wy, wz, weights, n, relaxed);
+    relaxRow(u + i0, r.ym, r.yp, r.zm, r.zp, rhs, wx, wy, wz, weights, omega, n, relaxed);
     const int32_t parity = (y + z + colour) & 1;
     const uint8_t* fixed = level.fixed.data() + i0;
     if (exactWrites) {
         for (int32_t x = 2 - parity; x + 1 < n; x += 2)
-            if (!fixed[x]) u[i0 + size_t(x)] = overRelaxed(u[i0 + size_t(x)], relaxed[x], omega);
+            if (!fixed[x]) u[i0 + size_t(x)] = relaxed[x];
     } else {
-        storeRelaxed(relaxed, level.keep[parity].data() + i0, omega, n, u + i0);
+        storeRelaxed(relaxed, level.keep[parity].data() + i0, n, u + i0);
     }
     // The end cells, on the per-cell path (a missing x neighbour).
     auto endCell = [&](int32_t x) {
