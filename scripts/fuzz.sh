@@ -27,7 +27,8 @@ usage() { sed -n '4,5p' "$0" | sed 's/^# *//' >&2; exit 2; }
 build_fuzz_tree() {
     command -v clang++ >/dev/null || { echo "fuzz.sh: clang++ not found (scripts/install-deps.sh installs it)" >&2; exit 1; }
     if [ ! -f "$fuzz_build/CMakeCache.txt" ]; then
-        CC=clang CXX=clang++ cmake -S "$root" -B "$fuzz_build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DVOXC_FUZZ=ON >/dev/null
+        CC=clang CXX=clang++ cmake -S "$root" -B "$fuzz_build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DVOXC_FUZZ=ON \
+            -DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=16 >/dev/null
     fi
     cmake --build "$fuzz_build" -j"$(nproc)" --target voxc_fuzz_dictionary "${libfuzzer_targets[@]/#/voxc_fuzz_}"
     "$fuzz_build/tests/fuzz/voxc_fuzz_dictionary" > "$fuzz_build/tests/fuzz/vox.dict"

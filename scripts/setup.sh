@@ -4,7 +4,8 @@
 # install the Python module into venv/ (scripts/python-venv.sh).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-"$root/scripts/build.sh"
+# What a user runs: the voxc binary, libvoxc and the Python module (scripts/test.sh builds the rest).
+"$root/scripts/build.sh" voxc voxc_capi voxc_python
 "$root/scripts/python-venv.sh"
 mkdir -p "$root/out"
 "$root/build/compiler/driver/voxc" run "$root/examples/overhang.vox" \

@@ -17,7 +17,7 @@ namespace voxc::bench {
 
 namespace {
 
-constexpr int kChunk = 32;
+constexpr int kCarveChunk = 32;
 
 constexpr const char* kCarveProgram = R"(
 world { size = [128, 32, 128]; chunk = 32; seed = 7; }
@@ -70,7 +70,7 @@ void registerLsystemCarve(JsonReporter& reporter, VulkanContext* context, bool i
             state.counters["chunks"] = chunks;
             state.counters["ms_per_chunk"] = ms / double(state.iterations()) / chunks;
         })->UseManualTime()->Unit(benchmark::kMillisecond);
-        reporter.describe(name + "/manual_time", {"lsystem_carve", kChunk, "vulkan", context->device().name});
+        reporter.describe(name + "/manual_time", {"lsystem_carve", kCarveChunk, "vulkan", context->device().name});
     }
     if (interp) {
         const std::string name = "lsystem_carve/interp";
@@ -88,7 +88,7 @@ void registerLsystemCarve(JsonReporter& reporter, VulkanContext* context, bool i
             state.counters["chunks"] = chunks;
             state.counters["ms_per_chunk"] = ms / double(state.iterations()) / chunks;
         })->UseManualTime()->Unit(benchmark::kMillisecond);
-        reporter.describe(name + "/manual_time", {"lsystem_carve", kChunk, "interp", "cpu (1 thread)"});
+        reporter.describe(name + "/manual_time", {"lsystem_carve", kCarveChunk, "interp", "cpu (1 thread)"});
     }
 }
 

@@ -28,7 +28,7 @@ namespace {
 // All curves blocks together: a run solves every box (about 2 s of CPU per million cells on the
 // host), and its tables are uploaded whole (two words per cell).
 
-constexpr std::string_view kBlockKeys[] = {"box",        "normals",         "k",
+constexpr std::string_view kCurvesKeys[] = {"box",        "normals",         "k",
                                            "sweeps",     "smoothing",       "noise_frequency",
                                            "noise_seed", "inputs",          "dead_zone",
                                            "input_amplitude", "input_roughness", "input_material"};
@@ -298,7 +298,7 @@ std::optional<curves::Scene> readScene(Context& context, const ast::File& file, 
                                        const World& world, uint64_t& cellBudget, const curves::Limits& limits) {
     const std::string where = fmt::format("curves '{}'", *block.label);
     rejectUnexpectedMembers(context, block, where, {.blocks = true});
-    BlockKeys keys(context, block, where, kBlockKeys);
+    BlockKeys keys(context, block, where, kCurvesKeys);
     curves::Scene scene;
     bool ok = true, boxRead = false;
     if (const ast::Assignment* a = keys.require("box")) {

@@ -45,7 +45,6 @@ void warnOffGrid(Context& context, const ast::Assignment& a, const dey::Generato
 
 // Every generator takes `material = NAME;`: the material its pipeline stages write unless the
 // stage names its own.
-constexpr std::string_view kMaterialKey = "material";
 
 struct CheckedFeature {
     Field field;

@@ -19,7 +19,6 @@ namespace {
 
 constexpr std::string_view kHeightmapKeys[] = {"file", "origin", "size", "height", "values"};
 constexpr std::string_view kMeshKeys[] = {"file", "translate", "rotate", "scale", "band"};
-constexpr double kMaxCoordinate = 1e7;
 
 inputs::Limits inputLimits(const Limits& limits) {
     inputs::Limits out;

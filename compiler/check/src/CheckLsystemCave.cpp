@@ -43,7 +43,7 @@ constexpr NumberKey kNumberKeys[] = {
     {"min_scale", 0.05, 16, &CarveParams::minScale},
     {"max_scale", 0.05, 16, &CarveParams::maxScale},
 };
-constexpr std::string_view kLsystemKey = "lsystem", kMaterialKey = "material";
+constexpr std::string_view kLsystemKey = "lsystem";
 
 // The lsystem block `lsystem = NAME;` names, or a located error.
 const CheckedLsystem* readLsystemKey(Context& context, const ast::Assignment& a, const ast::File& file,

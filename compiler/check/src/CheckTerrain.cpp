@@ -21,9 +21,8 @@ namespace voxc::check {
 namespace {
 
 constexpr int32_t kMaxLevel = 12;              // 4096^2 cells, the generator's largest level
-constexpr double kMaxCoordinate = 1e7;
 
-constexpr std::string_view kBlockKeys[] = {"origin",   "size",  "levels",     "base",  "max_height",
+constexpr std::string_view kTerrainKeys[] = {"origin",   "size",  "levels",     "base",  "max_height",
                                            "ramp",     "preset", "steps_scale", "material",
                                            "deposit_material", "deposit_threshold"};
 constexpr std::string_view kNoiseKeys[] = {"amplitude", "scale", "seed"};
@@ -226,7 +225,7 @@ terrain::ErosionSettings shiftedPreset(const std::string& name, int32_t minLevel
 std::optional<TerrainBlock> readTerrain(Context& context, const ast::Block& block, const World& world) {
     const std::string where = fmt::format("terrain '{}'", *block.label);
     rejectUnexpectedMembers(context, block, where, {.blocks = true});
-    BlockKeys keys(context, block, where, kBlockKeys);
+    BlockKeys keys(context, block, where, kTerrainKeys);
     TerrainBlock out;
     terrain::Domain& domain = out.map.domain;
     bool ok = true;

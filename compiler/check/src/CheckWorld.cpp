@@ -116,11 +116,9 @@ std::optional<std::array<double, 3>> readKey(Context& context, const ast::Assign
     return std::nullopt;
 }
 
-// Every shape takes `material = NAME;` besides its registry keys: materials are a property of
-// the start block, not of one shape.
-constexpr std::string_view kMaterialKey = "material";
-
-// One shape: its keys come from the Shapes registry, never from this file.
+// One shape: its keys come from the Shapes registry, never from this file, and every shape also
+// takes `material = NAME;` (kMaterialKey): materials are a property of the start block, not of
+// one shape.
 std::optional<StartShape> checkShape(Context& context, const ast::Block& block) {
     std::optional<ShapeKind> kind = findShape(block.kind);
     if (!kind) {

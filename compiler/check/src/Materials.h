@@ -15,6 +15,9 @@
 
 namespace voxc::check {
 
+// The key that names a block's material.
+constexpr std::string_view kMaterialKey = "material";
+
 struct Context;
 
 class MaterialNames {

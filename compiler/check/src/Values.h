@@ -16,6 +16,9 @@
 
 namespace voxc::check {
 
+// The largest magnitude a coordinate key (an origin, a size, a height) takes.
+constexpr double kMaxCoordinate = 1e7;
+
 // Shortest text that reads back as `v`: 64, 0.5, -1e+30.
 std::string formatNumber(double v);
 // "[3, 3, 1]"

@@ -33,11 +33,11 @@ struct Refused {
     bool notAPackage = false;
 };
 
-[[noreturn]] void fail(const fs::path&, const std::string& why) { throw Refused{why}; }
+[[noreturn]] void refuse(const fs::path&, const std::string& why) { throw Refused{why}; }
 
 [[noreturn]] void failErrno(const fs::path& dir, const std::string& what) {
     if (errno == ENOENT) throw Vanished{};
-    fail(dir, fmt::format("cannot read {}: {}", what, std::strerror(errno)));
+    refuse(dir, fmt::format("cannot read {}: {}", what, std::strerror(errno)));
 }
 
 [[noreturn]] void foreign(const std::string& relative) {
@@ -83,11 +83,11 @@ OpenFile openAt(const fs::path& dir, int dirFd, const std::string& name, const s
 std::string readOpen(const fs::path& dir, const OpenFile& file, const std::string& shown, uint64_t& packageBytes) {
     const uint64_t size = file.size;
     if (size > kMaxPackageFileBytes)
-        fail(dir, fmt::format("{} is {} bytes, more than a package file may hold ({} bytes); the package is corrupt",
+        refuse(dir, fmt::format("{} is {} bytes, more than a package file may hold ({} bytes); the package is corrupt",
                               shown, size, kMaxPackageFileBytes));
     packageBytes += size;
     if (packageBytes > kMaxPackageBytes)
-        fail(dir, fmt::format("its files pass {} bytes at {}; the package is corrupt", kMaxPackageBytes, shown));
+        refuse(dir, fmt::format("its files pass {} bytes at {}; the package is corrupt", kMaxPackageBytes, shown));
     std::string bytes;
     char buffer[65536];
     for (;;) {
@@ -98,7 +98,7 @@ std::string readOpen(const fs::path& dir, const OpenFile& file, const std::strin
         if (n < 0) failErrno(dir, shown);
         if (n == 0) return bytes;
         bytes.append(buffer, size_t(n));
-        if (bytes.size() > size) fail(dir, fmt::format("{} grew while voxc read it", shown));
+        if (bytes.size() > size) refuse(dir, fmt::format("{} grew while voxc read it", shown));
     }
 }
 
@@ -157,10 +157,10 @@ std::optional<std::map<std::string, std::string>> readPackage(const fs::path& di
     struct stat st {};
     if (::lstat(dir.c_str(), &st) != 0) {
         if (errno == ENOENT) return std::nullopt;
-        fail(dir, std::strerror(errno));
+        refuse(dir, std::strerror(errno));
     }
-    if (S_ISLNK(st.st_mode)) fail(dir, "it is a symbolic link; give the directory it points to");
-    if (!S_ISDIR(st.st_mode)) fail(dir, "it exists and is not a directory");
+    if (S_ISLNK(st.st_mode)) refuse(dir, "it is a symbolic link; give the directory it points to");
+    if (!S_ISDIR(st.st_mode)) refuse(dir, "it exists and is not a directory");
     const Fd dirFd(::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC));
     if (dirFd.get() < 0) failErrno(dir, "the directory");
 
@@ -203,7 +203,7 @@ std::optional<std::map<std::string, std::string>> readPackage(const fs::path& di
                     // Not what voxc wrote: loading refuses it unread; writing replaces the package,
                     // which the missing entry tells the writer.
                     if (verb == PackageVerb::Load)
-                        fail(dir, fmt::format("{} is {} bytes and manifest.json says {}; the package is corrupt; compile it "
+                        refuse(dir, fmt::format("{} is {} bytes and manifest.json says {}; the package is corrupt; compile it "
                                               "again with `voxc compile`",
                                               relative, open.size, expected->second));
                     continue;
@@ -233,7 +233,7 @@ std::optional<std::map<std::string, std::string>> existingPackage(const fs::path
             } catch (const Vanished&) {
             }
         }
-        fail(dir, "it keeps being replaced while voxc reads it");
+        refuse(dir, "it keeps being replaced while voxc reads it");
     } catch (const Refused& refused) {
         throw UserError(fmt::format("cannot {} package '{}': {}{}", writing ? "write" : "load", dir.string(),
                                     refused.why,

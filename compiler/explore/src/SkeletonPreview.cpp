@@ -13,11 +13,11 @@ namespace {
 
 constexpr Rgb kBackground{250, 250, 247};
 constexpr Rgb kFrame{170, 170, 165};
-constexpr Rgb kInk{40, 40, 40};
+constexpr Rgb kCaptionInk{40, 40, 40};
 constexpr Rgb kConnection{214, 39, 40};
 constexpr Rgb kEndpoint{31, 119, 180};
 constexpr int kMargin = 8;
-constexpr int kTextScale = 2;
+constexpr int kCaptionScale = 2;
 
 Rgb segmentColor(lsystem::SymbolType type) {
     switch (type) {
@@ -89,7 +89,7 @@ Image renderSkeletonPreview(const lsystem::Skeleton& skeleton, const std::string
     const int inner = viewSize - 2 * kMargin;
     const double scale = double(inner) / span;
 
-    const int captionHeight = textHeight(kTextScale) + 2 * kMargin;
+    const int captionHeight = textHeight(kCaptionScale) + 2 * kMargin;
     Image image(2 * viewSize + kMargin, viewSize + captionHeight, kBackground);
     const Projection top{min, max, scale, kMargin, kMargin, inner, 0, 2, false};
     const Projection side{min, max, scale, viewSize + kMargin, kMargin, inner, 0, 1, true};
@@ -97,7 +97,7 @@ Image renderSkeletonPreview(const lsystem::Skeleton& skeleton, const std::string
     drawView(image, skeleton, side);
     drawText(image, top.left + 3, top.top + 3, "TOP X-Z", kFrame, 1);
     drawText(image, side.left + 3, side.top + 3, "SIDE X-Y", kFrame, 1);
-    drawText(image, kMargin, viewSize + kMargin, caption, kInk, kTextScale);
+    drawText(image, kMargin, viewSize + kMargin, caption, kCaptionInk, kCaptionScale);
     return image;
 }
 
@@ -108,7 +108,7 @@ Image contactSheet(const std::vector<Image>& previews, const std::vector<std::st
         cellWidth = std::max(cellWidth, preview.width);
         cellHeight = std::max(cellHeight, preview.height);
     }
-    const int labelHeight = textHeight(kTextScale) + kMargin;
+    const int labelHeight = textHeight(kCaptionScale) + kMargin;
     cellHeight += labelHeight;
     const int rows = int((previews.size() + size_t(columns) - 1) / size_t(columns));
     const int shown = std::min(columns, int(previews.size()));
@@ -116,7 +116,7 @@ Image contactSheet(const std::vector<Image>& previews, const std::vector<std::st
     for (size_t i = 0; i < previews.size(); ++i) {
         const int left = kMargin + int(i % size_t(columns)) * (cellWidth + kMargin);
         const int top = kMargin + int(i / size_t(columns)) * (cellHeight + kMargin);
-        drawText(sheet, left, top, labels[i], kInk, kTextScale);
+        drawText(sheet, left, top, labels[i], kCaptionInk, kCaptionScale);
         const Image& preview = previews[i];
         for (int y = 0; y < preview.height; ++y)
             for (int x = 0; x < preview.width; ++x) sheet.set(left + x, top + labelHeight + y, preview.at(x, y));

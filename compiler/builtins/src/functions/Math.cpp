@@ -12,8 +12,6 @@ namespace voxc::function_records {
 
 namespace {
 
-int componentCount(Type t) { return t == Type::Vec3 ? 3 : t == Type::Vec2 ? 2 : 1; }
-
 float component(const Value& value, int c) { return value.type == Type::Float ? value.v.x : value.v[c]; }
 
 // Applies `f` per component; a float argument is broadcast; the result has the widest argument type.
@@ -100,8 +98,6 @@ float dotOf(const Value& a, const Value& b) {
 }
 
 // GLSL emitters: a GLSL function applied to the arguments, or a fixed expression.
-template <const char* Name>
-std::string glslCall(std::span<const std::string> args, std::span<const Type>) { return call(Name, args); }
 
 constexpr char kMin[] = "mathMin", kMax[] = "mathMax", kAbs[] = "abs", kFloor[] = "floor", kSqrt[] = "sqrt",
                kPow[] = "mathPow", kSin[] = "sin", kCos[] = "cos", kMix[] = "mathMix", kSmoothstep[] = "mathSmoothstep",
@@ -112,11 +108,8 @@ std::string clampGlsl(std::span<const std::string> a, std::span<const Type>) {
     return "mathMin(mathMax(" + a[0] + ", " + a[1] + "), " + a[2] + ")";
 }
 
-constexpr std::string_view kMathLibrary[] = {"math_functions.glsl"};
-constexpr std::span<const std::string_view> kNone{};
 
 // Tolerances (Vulkan precision rules, on the domains tests/functions samples; see docs/functions.md).
-constexpr float kExact = 0.0f;
 constexpr float kSqrtTolerance = 4e-5f;    // 3 ulp-ish relative, results up to 100 (args up to 1e4)
 constexpr float kLengthTolerance = 1e-4f;  // as sqrt, results up to 173 (components up to 100)
 constexpr float kPowTolerance = 2e-3f;     // exp2(y log2 x), 3 + 2|y log2 x| ulp: results up to 1000 on x in [0.1, 10], |y| <= 3

@@ -11,9 +11,6 @@ namespace {
 
 using noise::kWarpedFbmRoughness, noise::kWarpedFbmWarpHigh, noise::kWarpedFbmWarpLow;
 
-bool matches(std::span<const Type> args, std::initializer_list<Type> expected) {
-    return std::equal(args.begin(), args.end(), expected.begin(), expected.end());
-}
 
 template <Type R>
 std::optional<Type> pointSeed(std::span<const Type> a) { // f(p: vec3, seed: int) -> R
@@ -36,8 +33,6 @@ std::optional<Type> warpedFbmRule(std::span<const Type> a) {
 
 uint32_t seedOf(const Value& v) { return uint32_t(v.i); }
 
-template <const char* Name>
-std::string glslCall(std::span<const std::string> args, std::span<const Type>) { return call(Name, args); }
 
 constexpr char kPerlin3[] = "noisePerlin3", kSimplex3[] = "noiseSimplex3", kValue3[] = "noiseValue3",
                kWorley3[] = "noiseWorley3", kWorleyF1[] = "noiseWorleyF1", kWorleyF2[] = "noiseWorleyF2",

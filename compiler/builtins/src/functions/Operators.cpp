@@ -10,7 +10,6 @@ namespace voxc::function_records {
 
 namespace {
 
-int width(Type t) { return t == Type::Vec3 ? 3 : t == Type::Vec2 ? 2 : 1; }
 
 // Arithmetic: (T, T) -> T, (V, float) -> V, (float, V) -> V like GLSL; (int, int) -> int when allowed.
 template <bool AllowInt>
@@ -54,8 +53,8 @@ template <typename FloatOp, typename IntOp>
 Value arithmetic(std::span<const Value> a, FloatOp f, IntOp i) {
     if (a[0].type == Type::Int) return Value::makeInt(wrap(i(uint32_t(a[0].i), uint32_t(a[1].i))));
     Value out;
-    out.type = width(a[0].type) >= width(a[1].type) ? a[0].type : a[1].type;
-    for (int c = 0; c < width(out.type); ++c) {
+    out.type = componentCount(a[0].type) >= componentCount(a[1].type) ? a[0].type : a[1].type;
+    for (int c = 0; c < componentCount(out.type); ++c) {
         const float x = a[0].type == Type::Float ? a[0].v.x : a[0].v[c];
         const float y = a[1].type == Type::Float ? a[1].v.x : a[1].v[c];
         out.v[c] = f(x, y);
@@ -109,8 +108,6 @@ constexpr char kPlus[] = "+", kMinus[] = "-", kTimes[] = "*", kOver[] = "/", kLe
                kGreater[] = ">", kGreaterEqual[] = ">=", kEqual[] = "==", kNotEqual[] = "!=", kAnd[] = "&&",
                kOr[] = "||", kNot[] = "!";
 
-constexpr std::span<const std::string_view> kNone{};
-constexpr float kExact = 0.0f;
 // Vulkan allows division 2.5 ulp; this absolute figure holds for quotients up to about 3 in
 // magnitude (lavapipe divides exactly). Non-zero, so constant folding leaves divisions alone.
 constexpr float kDivision = 1e-6f;

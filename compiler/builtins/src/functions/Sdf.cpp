@@ -11,9 +11,6 @@ namespace voxc::function_records {
 
 namespace {
 
-bool matches(std::span<const Type> args, std::initializer_list<Type> expected) {
-    return std::equal(args.begin(), args.end(), expected.begin(), expected.end());
-}
 
 template <Type... Args>
 std::optional<Type> toFloat(std::span<const Type> a) { // f(Args...) -> float
@@ -92,8 +89,6 @@ template <float (*F)(float, float, float)>
 Value evalSmooth(std::span<const Value> a) { return Value::makeFloat(F(f(a[0]), f(a[1]), f(a[2]))); }
 Value evalDensity(std::span<const Value> a) { return Value::makeFloat(density(f(a[0]), a.size() == 2 ? f(a[1]) : 1.0f)); }
 
-template <const char* Name>
-std::string glslCall(std::span<const std::string> args, std::span<const Type>) { return call(Name, args); }
 std::string unionGlsl(std::span<const std::string> a, std::span<const Type>) { return "mathMin(" + a[0] + ", " + a[1] + ")"; }
 std::string subtractGlsl(std::span<const std::string> a, std::span<const Type>) {
     return "mathMax(" + a[0] + ", -(" + a[1] + "))";
@@ -110,11 +105,9 @@ constexpr char kSphere[] = "sdfSphere", kBox[] = "sdfBox", kCapsule[] = "sdfCaps
                kSmoothSubtract[] = "sdfSmoothSubtract", kSmoothIntersect[] = "sdfSmoothIntersect";
 
 constexpr std::string_view kSdfLibs[] = {"math_functions.glsl", "sdf_functions.glsl"};
-constexpr std::string_view kMathLibrary[] = {"math_functions.glsl"}; // mathMin, mathMax
 
 // Tolerances (Vulkan precision rules, on the domain tests/functions samples: every component in
 // [-50, 50]; see docs/functions.md). Sums, products, min, max and abs are exact or correctly rounded.
-constexpr float kExact = 0.0f;
 constexpr float kDistanceTolerance = 1e-4f;  // one sqrt (a few ulp relative) of distances up to ~350
 constexpr float kCapsuleTolerance = 2e-4f;   // + one division feeding the closest point on the segment
 constexpr float kPlaneTolerance = 1e-4f;     // sqrt and one division, results up to ~140

@@ -16,8 +16,6 @@ namespace voxc::inputs {
 
 namespace {
 
-[[noreturn]] void malformed(const std::string& message) { throw InputError("E0102", message); }
-
 void checkPixels(int64_t width, int64_t height, const Limits& limits, std::string_view what) {
     if (width <= 0 || height <= 0) malformed(fmt::format("the {} has no pixels ({} x {})", what, width, height));
     if (width * height > limits.maxPixels)

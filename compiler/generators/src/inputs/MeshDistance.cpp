@@ -157,7 +157,8 @@ void surveyTopology(const std::vector<openvdb::Vec3s>& points, const std::vector
         if (!part.hasOrigin) part.origin = p[0], part.hasOrigin = true;
         part.volume += glm::dot(p[0] - part.origin, glm::cross(p[1] - part.origin, p[2] - part.origin));
     }
-    for (const auto& [key, part] : parts) {
+    for (const auto& entry : parts) {
+        const Part& part = entry.second;
         if (!part.closed || !(part.volume < 0.0)) continue;
         // The inner wall of a hollow, inside an outward part's box, is wound inward on purpose.
         const bool wall = std::any_of(parts.begin(), parts.end(), [&](const auto& other) {

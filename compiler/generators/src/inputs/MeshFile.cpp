@@ -19,8 +19,6 @@ namespace voxc::inputs {
 
 namespace {
 
-[[noreturn]] void malformed(const std::string& message) { throw InputError("E0102", message); }
-
 std::string lower(std::string_view s) {
     std::string out(s);
     for (char& c : out) c = char(std::tolower(uint8_t(c)));

@@ -25,14 +25,14 @@ constexpr std::string_view kDefaultRules =
     "Z;I[I][I];none;1\n";
 
 // A field of a record: its trimmed text and the 1-based column where that text starts.
-struct Field {
+struct RecordField {
     std::string_view text;
     uint32_t column;
 };
 
 bool isBlank(char c) { return c == ' ' || c == '\t'; }
 
-Field trimmed(std::string_view text, uint32_t column) {
+RecordField trimmed(std::string_view text, uint32_t column) {
     while (!text.empty() && isBlank(text.front())) text.remove_prefix(1), ++column;
     while (!text.empty() && isBlank(text.back())) text.remove_suffix(1);
     return {text, column};
@@ -56,10 +56,10 @@ std::optional<RuleSet> parseRuleFile(const SourceFile& source, Diagnostics& diag
     for (uint32_t line = 1; line <= source.lineCount(); ++line) {
         std::string_view text = source.line(line);
         if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
-        const Field whole = trimmed(text, 1);
+        const RecordField whole = trimmed(text, 1);
         if (whole.text.empty() || whole.text.front() == '#') continue;
 
-        std::vector<Field> fields;
+        std::vector<RecordField> fields;
         size_t begin = 0;
         for (size_t i = 0; i <= text.size(); ++i)
             if (i == text.size() || text[i] == ';') {
@@ -71,10 +71,10 @@ std::optional<RuleSet> parseRuleFile(const SourceFile& source, Diagnostics& diag
                               fmt::format("expected 4 fields 'Symbol;SubstituteString;Type;Weight', found {}", fields.size()));
             continue;
         }
-        const Field& symbol = fields[0];
-        const Field& substitute = fields[1];
-        const Field& type = fields[2];
-        const Field& weight = fields[3];
+        const RecordField& symbol = fields[0];
+        const RecordField& substitute = fields[1];
+        const RecordField& type = fields[2];
+        const RecordField& weight = fields[3];
         bool ok = true;
         if (symbol.text.size() != 1) {
             fail("E0001", at(line, symbol.column, symbol.text.size()),

@@ -25,4 +25,7 @@ struct InputError : std::runtime_error {
     InputError(std::string code, const std::string& message) : std::runtime_error(message), code(std::move(code)) {}
 };
 
+// The file is not what its format says (E0102).
+[[noreturn]] inline void malformed(const std::string& message) { throw InputError("E0102", message); }
+
 } // namespace voxc::inputs
