@@ -147,13 +147,12 @@ void surveyTopology(const std::vector<openvdb::Vec3s>& points, const std::vector
         grid.nonManifoldEdges += count > 2;
         if (count != 2) parts[root(edge.first)].closed = false;
     }
+    std::vector<glm::dvec3> exact(points.size());
+    for (size_t i = 0; i < points.size(); ++i) exact[i] = glm::dvec3(points[i].x(), points[i].y(), points[i].z());
     for (const openvdb::Vec3I& t : triangles) {
         Part& part = parts[root(id[t[0]])];
-        glm::dvec3 p[3];
-        for (int k = 0; k < 3; ++k) {
-            p[k] = glm::dvec3(points[t[k]].x(), points[t[k]].y(), points[t[k]].z());
-            part.lo = glm::min(part.lo, p[k]), part.hi = glm::max(part.hi, p[k]);
-        }
+        const glm::dvec3 p[3] = {exact[t[0]], exact[t[1]], exact[t[2]]};
+        for (const glm::dvec3& corner : p) part.lo = glm::min(part.lo, corner), part.hi = glm::max(part.hi, corner);
         if (!part.hasOrigin) part.origin = p[0], part.hasOrigin = true;
         part.volume += glm::dot(p[0] - part.origin, glm::cross(p[1] - part.origin, p[2] - part.origin));
     }
@@ -170,8 +169,6 @@ void surveyTopology(const std::vector<openvdb::Vec3s>& points, const std::vector
         ++grid.insideOutParts;
         grid.insideOutVolume += -part.volume / 6.0;
     }
-    std::vector<glm::dvec3> exact(points.size());
-    for (size_t i = 0; i < points.size(); ++i) exact[i] = glm::dvec3(points[i].x(), points[i].y(), points[i].z());
     findCrossings(exact, triangles, id, grid);
 }
 
