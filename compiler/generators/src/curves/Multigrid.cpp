@@ -3,7 +3,7 @@
 #include "Parallel.h"
 
 #include <algorithm>
-#include <barrier>
+#include <atomic>
 #include <cmath>
 #include <thread>
 
@@ -55,7 +55,7 @@ void forNeighbours(const Box& b, int32_t x, int32_t y, int32_t z, Visit&& visit)
 
 // Slices of at least this many cells are split between two threads (order-free passes only).
 constexpr int32_t kMinSlicesForThreads = 16;
-// Levels of at least this many cells smooth on two threads (smooth: half the rows of each slice).
+// Levels of at least this many cells smooth on two threads (smooth: half the slices each).
 constexpr uint64_t kMinCellsForThreadedSmoothing = 1u << 15;
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
@@ -343,16 +343,31 @@ void prolong(const Box& coarse, const std::vector<float>& e, Level& fine, std::v
 // them: slice z + 1 got it earlier in the same step, slice z in the step before, slice z - 1 two
 // steps before, and half sweep h + 1 reaches none of them before h is done. So each cell takes
 // the value the plain sweep-by-sweep loop gives it, bit for bit, while a sweep's slices are still
-// in cache for the next. On two threads each takes half the rows of every slice: a cell's z
-// neighbours lie in its own rows, and the other colour's cells of its slice (rows y +- 1) do not
-// change during the step, so one barrier per step keeps the order.
+// in cache for the next. The order of the slices does not matter to that argument, so on two
+// threads each runs the wavefront over its own half of the slices towards the middle (the lower
+// half upwards, the upper half downwards): the two meet only at the two middle slices, where each
+// thread waits before half sweep h of its middle slice until the other has done half sweep h - 1
+// of its own (a counter per thread), a handful of waits per pass instead of one barrier per
+// slice, which on a loaded machine mostly waited for the other thread to get a core. The middle
+// slices store only the colour's cells (the other thread reads their other colour meanwhile).
 // The same pass may first add a coarse correction (`correction`: slice t at step t, the sweeps
-// one slice behind, so half sweep 0 of a slice finds its neighbour slices corrected, those of
-// the other thread's rows in an earlier step) and measure the max residual with f = 0 at the end
-// (`maxResidual`: the slice two sweeps behind the last half sweep, once its neighbour slices are
-// final; as maxResidualOf, and a max does not depend on the order).
+// one slice behind, so half sweep 0 of a slice finds its neighbour slices corrected; a middle
+// slice's correction counts as the stage before its half sweep 0) and measure the max residual
+// with f = 0 at the end (`maxResidual`: the slice two sweeps behind the last half sweep, once its
+// neighbour slices are final, the middle ones after both threads are done; as maxResidualOf, and
+// a max does not depend on the order).
 struct Correction {
     const Prolongation& prolongation; // its prepared rows: the level's alongX
+};
+
+// A thread's share of the slices: `count` slices from `first` in steps of `direction`, the last
+// of them next to the other thread's share; `own` and `other` count the stages done on this
+// share's and the other share's last slice (null on one thread).
+struct Slab {
+    int32_t first, count, direction;
+    std::atomic<int32_t>* own = nullptr;
+    std::atomic<int32_t>* other = nullptr;
+    int32_t slice(int32_t j) const { return first + direction * j; }
 };
 
 void smooth(Level& level, int32_t sweeps, bool zeroRhs, const Correction* correction = nullptr,
@@ -362,45 +377,68 @@ void smooth(Level& level, int32_t sweeps, bool zeroRhs, const Correction* correc
     const int32_t halfSweeps = 2 * std::max(sweeps, 0);
     // With a correction, step t adds it to slice t and the sweeps run one slice behind.
     const int32_t lag = correction ? 1 : 0;
-    const int32_t steps = b.size.z + halfSweeps - 1 + lag + (maxResidual ? 1 : 0);
     // Nothing below allocates or throws: the scratch rows exist before the threads start.
     std::vector<float> scratch(4 * size_t(b.size.x), 0.0f);
-    const bool threaded = b.cellCount() >= kMinCellsForThreadedSmoothing && b.size.y >= 2;
+    const bool threaded = b.cellCount() >= kMinCellsForThreadedSmoothing && b.size.z >= 4;
     float worst[2] = {0.0f, 0.0f};
-    auto rows = [&](int32_t y0, int32_t y1, float* relaxed, float* residual, float& w, auto&& sync) {
+    auto measure = [&](int32_t z, float* residual, float& w) {
+        for (const std::vector<float>& u : level.u)
+            for (int32_t y = 0; y < b.size.y; ++y) {
+                residualRow(level, u, nullptr, y, z, residual);
+                w = maxAbs(residual, b.size.x, w);
+            }
+    };
+    auto run = [&](const Slab& slab, float* relaxed, float* residual, float& w) {
+        const int32_t last = slab.count - 1;
+        const bool meets = slab.other != nullptr;
+        // Before stage k of the middle slice (the correction, then the half sweeps), the other
+        // thread's middle slice must have done its stage k - 1.
+        auto waitFor = [&](int32_t stage) {
+            for (int32_t done = slab.other->load(std::memory_order_acquire); done < stage;
+                 done = slab.other->load(std::memory_order_acquire))
+                slab.other->wait(done, std::memory_order_acquire);
+        };
+        auto finished = [&](int32_t stage) {
+            slab.own->store(stage + 1, std::memory_order_release);
+            slab.own->notify_one();
+        };
+        const int32_t steps = slab.count + halfSweeps - 1 + lag + (maxResidual ? 1 : 0);
         for (int32_t t = 0; t < steps; ++t) {
-            if (correction && t < b.size.z)
+            if (correction && t < slab.count) {
                 for (size_t c = 0; c < level.u.size(); ++c)
-                    for (int32_t y = y0; y < y1; ++y)
-                        correction->prolongation.row(level.alongX[c], level.u[c], true, y, t);
+                    for (int32_t y = 0; y < b.size.y; ++y)
+                        correction->prolongation.row(level.alongX[c], level.u[c], true, y, slab.slice(t));
+                if (meets && t == last) finished(0);
+            }
             for (int32_t h = 0; h < halfSweeps; ++h) {
-                const int32_t z = t - lag - h;
-                if (z < 0 || z >= b.size.z) continue;
+                const int32_t j = t - lag - h;
+                if (j < 0 || j > last) continue;
+                const bool middle = meets && j == last;
+                if (middle) waitFor(lag + h);
                 for (size_t c = 0; c < level.u.size(); ++c)
-                    for (int32_t y = y0; y < y1; ++y)
-                        relaxColourRow(level, c, h & 1, zeroRhs, y, z, threaded && (y == y0 || y + 1 == y1), zeros.data(),
-                                       relaxed);
+                    for (int32_t y = 0; y < b.size.y; ++y)
+                        relaxColourRow(level, c, h & 1, zeroRhs, y, slab.slice(j), middle, zeros.data(), relaxed);
+                if (middle) finished(lag + h);
             }
             const int32_t measured = t - lag - halfSweeps;
-            if (maxResidual && measured >= 0 && measured < b.size.z)
-                for (const std::vector<float>& u : level.u)
-                    for (int32_t y = y0; y < y1; ++y) {
-                        residualRow(level, u, nullptr, y, measured, residual);
-                        w = maxAbs(residual, b.size.x, w);
-                    }
-            sync();
+            if (maxResidual && measured >= 0 && measured < last + (meets ? 0 : 1))
+                measure(slab.slice(measured), residual, w);
         }
     };
     float* first = scratch.data();
     float* second = scratch.data() + 2 * size_t(b.size.x);
     if (!threaded) {
-        rows(0, b.size.y, first, first + b.size.x, worst[0], [] {});
+        run(Slab{0, b.size.z, 1}, first, first + b.size.x, worst[0]);
     } else {
-        const int32_t mid = b.size.y / 2;
-        std::barrier<> step(2);
-        std::thread other([&] { rows(0, mid, second, second + b.size.x, worst[1], [&] { step.arrive_and_wait(); }); });
-        rows(mid, b.size.y, first, first + b.size.x, worst[0], [&] { step.arrive_and_wait(); });
+        const int32_t mid = b.size.z / 2;
+        std::atomic<int32_t> lower{0}, upper{0};
+        std::thread other([&] { run(Slab{0, mid, 1, &lower, &upper}, second, second + b.size.x, worst[1]); });
+        run(Slab{b.size.z - 1, b.size.z - mid, -1, &upper, &lower}, first, first + b.size.x, worst[0]);
         other.join();
+        if (maxResidual) {
+            measure(mid - 1, first + b.size.x, worst[0]);
+            measure(mid, first + b.size.x, worst[0]);
+        }
     }
     if (maxResidual) *maxResidual = std::max(worst[0], worst[1]);
 }
