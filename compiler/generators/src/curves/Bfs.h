@@ -1,10 +1,11 @@
 #pragma once
 // BFS helpers shared by the layer-by-layer propagations (normal fill, material, surface): a
 // layer reads only cells set in earlier layers, so the order within a layer never matters.
+#include "Parallel.h"
+
 #include "voxc/generators/curves/Grid.h"
 
 #include <algorithm>
-#include <atomic>
 #include <exception>
 #include <thread>
 
@@ -33,78 +34,96 @@ inline std::vector<size_t> nextLayer(const Box& b, const std::vector<size_t>& fr
     return out;
 }
 
-// Whether cell k was set in a layer before `l` (layer[k] in [0, l)): a relaxed atomic load, as
-// the other thread of growLayers may be claiming k meanwhile (then it reads -1 or l: not set).
+// Whether cell k was set in a layer before `l` (layer[k] in [0, l)); growLayers sets every
+// cell's layer before it values any, so the threads only read them.
 inline bool setBefore(const std::vector<int32_t>& layer, size_t k, int32_t l) {
-    const int32_t v = std::atomic_ref<const int32_t>(layer[k]).load(std::memory_order_relaxed);
+    const int32_t v = layer[k];
     return v >= 0 && v < l;
 }
 
-// Fronts of at least this many cells are expanded by two threads.
+// Layers of at least this many cells are valued by two threads.
 inline constexpr size_t kMinFrontForThreads = 8192;
 
-// Grows BFS layers from the cells of layer 0 (`front`, with layer[i] == 0; every other cell -1)
-// until no cell is reached, in one pass per layer over the compacted front: each front cell
-// claims its unreached neighbours (layer[j] from -1 to the new layer, an atomic exchange, so a
-// cell is claimed once even on two threads) and `value(j, p, layer)` computes and stores the
-// claimed cell's result at once. `value` must read only cells of earlier layers
-// (0 <= layer[k] < the layer it is given) and write only cell j: then no cell's result depends
-// on the order of the front or on the threads, and the next front is the claimed cells in any
-// order. Returns the number of layers after 0.
+// Grows BFS layers from the cells of layer 0 (layer[i] == 0; every other cell -1) and calls `value(j, p, layer)` once for every other cell j (p its coordinates) to compute and
+// store its result. `value` must read only cells of earlier layers (0 <= layer[k] < the layer it
+// is given) and write only cell j: then no cell's result depends on the order a layer's cells are
+// visited or on the threads. The box has no obstacles, so a cell's BFS layer is its city-block
+// distance to the nearest cell of layer 0: three separable passes (along x, y, z, each forwards
+// then backwards) give every layer at once, a counting sort lists each layer's cells in index
+// order, and the values run layer by layer over those lists, slice by slice through the box (a
+// front grown by claiming neighbours, in the order they were claimed, read its cells nearly at
+// random and paid an atomic exchange per cell). Returns the number of layers after 0.
 template <typename Value>
-int32_t growLayers(const Box& b, std::vector<uint32_t> front, std::vector<int32_t>& layer, Value&& value) {
-    const size_t row = size_t(b.size.x), slice = row * size_t(b.size.y);
-    const int32_t offsets[6] = {-1, 1, -int32_t(row), int32_t(row), -int32_t(slice), int32_t(slice)};
-    auto expand = [&](const uint32_t* first, const uint32_t* last, int32_t l, std::vector<uint32_t>& out) {
-        for (const uint32_t* f = first; f != last; ++f) {
-            const glm::ivec3 p = coordinates(b, *f);
-            const bool inside[6] = {p.x > 0, p.x + 1 < b.size.x, p.y > 0, p.y + 1 < b.size.y, p.z > 0, p.z + 1 < b.size.z};
-            for (int32_t n = 0; n < 6; ++n) {
-                if (!inside[n]) continue;
-                const uint32_t j = uint32_t(int64_t(*f) + offsets[n]);
-                std::atomic_ref<int32_t> claim(layer[j]);
-                if (claim.load(std::memory_order_relaxed) != -1) continue;
-                int32_t expected = -1;
-                if (!claim.compare_exchange_strong(expected, l, std::memory_order_relaxed)) continue;
-                glm::ivec3 q = p;
-                q[n / 2] += (n & 1) ? 1 : -1;
-                value(size_t(j), q, l);
-                out.push_back(j);
+int32_t growLayers(const Box& b, std::vector<int32_t>& layer, Value&& value) {
+    if (std::find(layer.begin(), layer.end(), 0) == layer.end()) return 0; // no cell to grow from
+    const int32_t nx = b.size.x, ny = b.size.y, nz = b.size.z;
+    const size_t row = size_t(nx), slice = row * size_t(ny);
+    // Past every city-block distance in a box (axes < 2^20 cells each), and far from overflow.
+    constexpr int32_t kFar = 1 << 29;
+    for (int32_t& v : layer) v = v == 0 ? 0 : kFar;
+    forTwoSlabs(nz, 2, [&](int32_t z0, int32_t z1) {
+        for (int32_t z = z0; z < z1; ++z) {
+            int32_t* s = layer.data() + size_t(z) * slice;
+            for (int32_t y = 0; y < ny; ++y) {
+                int32_t* r = s + size_t(y) * row;
+                for (int32_t x = 1; x < nx; ++x) r[x] = std::min(r[x], r[x - 1] + 1);
+                for (int32_t x = nx - 1; x-- > 0;) r[x] = std::min(r[x], r[x + 1] + 1);
+            }
+            for (int32_t y = 1; y < ny; ++y)
+                for (size_t x = 0; x < row; ++x) s[size_t(y) * row + x] = std::min(s[size_t(y) * row + x], s[size_t(y - 1) * row + x] + 1);
+            for (int32_t y = ny - 1; y-- > 0;)
+                for (size_t x = 0; x < row; ++x) s[size_t(y) * row + x] = std::min(s[size_t(y) * row + x], s[size_t(y + 1) * row + x] + 1);
+        }
+    });
+    forTwoSlabs(ny, 2, [&](int32_t y0, int32_t y1) {
+        for (int32_t y = y0; y < y1; ++y) {
+            for (int32_t z = 1; z < nz; ++z) {
+                int32_t* r = layer.data() + size_t(z) * slice + size_t(y) * row;
+                for (size_t x = 0; x < row; ++x) r[x] = std::min(r[x], r[x - slice] + 1);
+            }
+            for (int32_t z = nz - 1; z-- > 0;) {
+                int32_t* r = layer.data() + size_t(z) * slice + size_t(y) * row;
+                for (size_t x = 0; x < row; ++x) r[x] = std::min(r[x], r[x + slice] + 1);
             }
         }
+    });
+    // Each layer's cells in index order: start[l] .. start[l + 1] of `order`.
+    int32_t layers = 0;
+    for (int32_t v : layer) layers = std::max(layers, v);
+    std::vector<uint32_t> start(size_t(layers) + 2, 0);
+    for (int32_t v : layer) ++start[size_t(v) + 1];
+    for (size_t l = 1; l < start.size(); ++l) start[l] += start[l - 1];
+    std::vector<uint32_t> order(layer.size()), fill(start.begin(), start.end() - 1);
+    for (size_t i = 0; i < layer.size(); ++i) order[fill[size_t(layer[i])]++] = uint32_t(i);
+    auto run = [&](const uint32_t* first, const uint32_t* last, int32_t l) {
+        for (const uint32_t* c = first; c != last; ++c) value(size_t(*c), coordinates(b, *c), l);
     };
-    int32_t l = 0;
-    std::vector<uint32_t> next, second;
-    while (!front.empty()) {
-        ++l;
-        next.clear();
-        if (front.size() < kMinFrontForThreads) {
-            expand(front.data(), front.data() + front.size(), l, next);
-        } else {
-            second.clear();
-            const uint32_t* mid = front.data() + front.size() / 2;
-            std::exception_ptr failed;
-            std::thread other([&] {
-                try {
-                    expand(front.data(), mid, l, second);
-                } catch (...) {
-                    failed = std::current_exception();
-                }
-            });
-            try {
-                expand(mid, front.data() + front.size(), l, next);
-            } catch (...) {
-                other.join();
-                throw;
-            }
-            other.join();
-            if (failed) std::rethrow_exception(failed);
-            next.insert(next.end(), second.begin(), second.end());
+    for (int32_t l = 1; l <= layers; ++l) {
+        const uint32_t* first = order.data() + start[size_t(l)];
+        const uint32_t* last = order.data() + start[size_t(l) + 1];
+        if (size_t(last - first) < kMinFrontForThreads) {
+            run(first, last, l);
+            continue;
         }
-        if (next.empty()) return l - 1;
-        std::swap(front, next);
+        const uint32_t* mid = first + (last - first) / 2;
+        std::exception_ptr failed;
+        std::thread other([&] {
+            try {
+                run(first, mid, l);
+            } catch (...) {
+                failed = std::current_exception();
+            }
+        });
+        try {
+            run(mid, last, l);
+        } catch (...) {
+            other.join();
+            throw;
+        }
+        other.join();
+        if (failed) std::rethrow_exception(failed);
     }
-    return l == 0 ? 0 : l - 1;
+    return layers;
 }
 
 } // namespace voxc::curves

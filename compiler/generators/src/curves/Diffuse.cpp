@@ -108,15 +108,13 @@ MaterialField propagateMaterial(const Constraints& cs) {
     const Box& b = cs.box;
     MaterialField out{std::vector<uint16_t>(b.cellCount(), 0), Field3(b), std::vector<uint8_t>(b.cellCount(), 0), 0};
     std::vector<int32_t> layer(b.cellCount(), -1);
-    std::vector<uint32_t> front;
     for (size_t i = 0; i < out.assigned.size(); ++i)
         if (cs.flags[i] & kInParams) {
             out.assigned[i] = 1, out.material[i] = cs.material[i], out.confidence.values[i] = 1.0f;
             layer[i] = 0;
-            front.push_back(uint32_t(i));
         }
     const size_t row = size_t(b.size.x), slice = row * size_t(b.size.y);
-    out.layers = growLayers(b, std::move(front), layer, [&](size_t p, glm::ivec3 q, int32_t l) {
+    out.layers = growLayers(b, layer, [&](size_t p, glm::ivec3 q, int32_t l) {
         const bool inside[6] = {q.x > 0, q.x + 1 < b.size.x, q.y > 0, q.y + 1 < b.size.y, q.z > 0, q.z + 1 < b.size.z};
         const size_t neighbour[6] = {p - 1, p + 1, p - row, p + row, p - slice, p + slice};
         uint16_t ids[6];

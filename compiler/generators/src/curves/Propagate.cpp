@@ -16,15 +16,13 @@ SurfaceField propagateSurface(const Constraints& cs, const Field3& nx, const Fie
                               PropagateRule rule) {
     const Box& b = cs.box;
     SurfaceField out{Field3(b, std::numeric_limits<float>::infinity()), std::vector<int32_t>(b.cellCount(), -1), 0};
-    std::vector<uint32_t> front;
     for (size_t i = 0; i < out.layer.size(); ++i)
         if (cs.flags[i] & kInSurface) {
             out.layer[i] = 0, out.distance.values[i] = cs.surface.values[i];
-            front.push_back(uint32_t(i));
         }
     const Field3* normal[3] = {&nx, &ny, &nz};
     const size_t row = size_t(b.size.x), slice = row * size_t(b.size.y);
-    out.layers = growLayers(b, std::move(front), out.layer, [&](size_t p, glm::ivec3 q, int32_t layer) {
+    out.layers = growLayers(b, out.layer, [&](size_t p, glm::ivec3 q, int32_t layer) {
         // Candidates from the neighbours set in earlier layers, in neighbour order.
         const bool inside[6] = {q.x > 0, q.x + 1 < b.size.x, q.y > 0, q.y + 1 < b.size.y, q.z > 0, q.z + 1 < b.size.z};
         const size_t neighbour[6] = {p - 1, p + 1, p - row, p + row, p - slice, p + slice};
