@@ -1,5 +1,5 @@
 #pragma once
-// While a curves solve runs, the fields it frees (32 MiB each at 256x128x256) go back to the heap
+// While a curves solve (or the check's voxelisation) runs, the fields it frees (32 MiB each at 256x128x256) go back to the heap
 // for the next field instead of to the kernel. glibc maps every allocation over its mmap
 // threshold (adaptive, at most 32 MiB) afresh, so every field was a fresh mapping whose first
 // touch faulted in each of its pages (8,193 faults per 32 MiB field); reused from the heap it costs

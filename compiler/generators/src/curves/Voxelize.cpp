@@ -1,5 +1,7 @@
 #include "voxc/generators/curves/Voxelize.h"
 
+#include "HeapReuse.h"
+
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 
@@ -203,6 +205,9 @@ private:
 Constraints voxelize(const std::vector<FeatureCurve>& curves, const Box& box, SeedValue seedValue, const Limits& limits,
                      const std::vector<std::shared_ptr<const InputSurface>>& inputs, const InputOptions& inputOptions) {
     checkBox(box, limits);
+    // The constraints' eight fields (27 bytes per box cell) come from the heap in huge pages, as
+    // a solve's fields do (HeapReuse.h).
+    const FieldHeapReuse reuse(box.cellCount());
     if (curves.size() > limits.maxCurves) throw LimitError("curves", curves.size(), limits.maxCurves);
     Gatherer gatherer(box, seedValue, limits);
     uint64_t segments = 0;
