@@ -15,7 +15,9 @@
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/VolumeToMesh.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <glm/common.hpp>
 #include <iostream>
 #include <memory>
@@ -50,6 +52,7 @@ ChunkedGrid resample(const ChunkedGrid& source, int factor) {
                 grid.at(p) = d;
                 grid.materialAt(p) = dense.materialAt(glm::min((p + factor / 2) / factor, dense.size() - 1));
             }
+    grid.recordTileRanges(); // as the executor's read-back does for the grids it makes
     return grid;
 }
 
@@ -174,6 +177,23 @@ void registerMeshCases(JsonReporter& reporter, VulkanContext& context, const std
                     size_t triangles = meshMarchingCubes(*input->grid, {}).triangles.size() / 3; // warm-up
                     for (auto _ : state) triangles = meshMarchingCubes(*input->grid, {}).triangles.size() / 3;
                     setCounters(state, input->n, triangles);
+                });
+                // The executor's read-back of the grid with its tile ranges (loadDensities, which
+                // the host mesher's case reads), against a plain copy of the same bytes.
+                add(fmt::format("mesh_tile_ranges_{}", example), "host", hostDescription(), [input, &context](benchmark::State& state) {
+                    input->make(context);
+                    ChunkedGrid target(input->grid->layout());
+                    const float* source = input->grid->data().data();
+                    target.loadDensities(source); // warm-up: the target's pages
+                    for (auto _ : state) target.loadDensities(source);
+                    double copyMs = 1e300;
+                    for (int i = 0; i < 3; ++i) {
+                        const auto start = std::chrono::steady_clock::now();
+                        std::memcpy(target.data().data(), source, input->grid->data().size() * sizeof(float));
+                        copyMs = std::min(copyMs, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+                    }
+                    state.counters["memcpy_ms"] = copyMs;
+                    setCounters(state, input->n, 0);
                 });
                 // Levels 0-2 around a corner of the grid, transition cells where they meet; the
                 // pyramid is made once, outside the timing (it changes only with the voxels).

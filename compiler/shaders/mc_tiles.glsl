@@ -7,14 +7,18 @@
 // of cells the surface crosses (GpuMesher.cpp), and the later passes visit only those. Tiles
 // lie inside one chunk (chunks are at least 8 wide and aligned to their size), so a tile inside
 // the grid is read four samples at a time along its rows; a tile wholly outside reads as the
-// outside (density 0) without a read.
+// outside (density 0) without a read. The host fills the states in first: where the grid's tile
+// ranges put a tile on one side of iso it writes that tile's state, and kUnknownState elsewhere;
+// only the unknown tiles are read here.
 
 layout(local_size_x = 64) in;
 
 // Bits 0-7: the regions holding a solid voxel; bits 8-15: those holding an air voxel.
-layout(std430, set = 0, binding = 3) writeonly buffer TileStates {
+layout(std430, set = 0, binding = 3) buffer TileStates {
     uint state[];
 } tiles;
+
+const uint kUnknownState = 0xffffffffu; // GpuMesher.cpp, kUnknownTileState
 
 const uint kWhole = 1u, kLowX = 2u, kLowY = 4u, kLowZ = 8u, kEdgeXY = 16u, kEdgeXZ = 32u, kEdgeYZ = 64u, kCorner = 128u;
 
@@ -28,7 +32,7 @@ uint firstVoxelRegions(uint y, uint z) {
 
 void main() {
     const uint index = invocationIndex(64u);
-    if (index >= push.pass.z) return;
+    if (index >= push.pass.z || tiles.state[index] != kUnknownState) return;
     const uvec3 n = uvec3(push.tileCount.xyz) + 1u;
     const ivec3 tile = push.tileFirst.xyz + ivec3(index % n.x, (index / n.x) % n.y, index / (n.x * n.y));
     const ivec3 first = (tile << kTileShift) - push.gridOrigin.xyz; // grid-local voxel

@@ -156,6 +156,13 @@ TEST(mesh_MarchingCubes, meshIsIdenticalForEveryChunkSizeAndOrigin) {
         expectIdentical(meshMarchingCubes(grid(8), MeshOptions{}), reference, "second run" + at);
         expectIdentical(meshMarchingCubes(grid(8), MeshOptions{.skipUniformChunks = false}), reference, "without skipping" + at);
         for (int32_t chunk : {16, 32, 64}) expectIdentical(meshMarchingCubes(grid(chunk), MeshOptions{}), reference, "chunk " + std::to_string(chunk) + at);
+        for (int32_t chunk : {4, 8, 32}) {
+            ChunkedGrid ranged = grid(chunk);
+            ranged.recordTileRanges();
+            MeshStats rangedStats;
+            expectIdentical(meshMarchingCubes(ranged, MeshOptions{}, &rangedStats), reference, "with tile ranges, chunk " + std::to_string(chunk) + at);
+            EXPECT_LT(rangedStats.samplesRead, size_t(66) * 30 * 50) << "uniform tiles are not read";
+        }
     }
 }
 
@@ -198,8 +205,52 @@ TEST(mesh_MarchingCubes, sparseExtractionEqualsTheChunkByChunkMesh) {
                     expectIdentical(meshMarchingCubes(grid, MeshOptions{.iso = iso}), oracle, what);
                     expectIdentical(meshMarchingCubes(grid, MeshOptions{.iso = iso, .skipUniformChunks = false}), oracle,
                                     "without skipping, " + what);
+                    ChunkedGrid ranged = grid;
+                    ranged.recordTileRanges();
+                    expectIdentical(meshMarchingCubes(ranged, MeshOptions{.iso = iso}), oracle, "with tile ranges, " + what);
                 }
             }
+}
+
+// The tile ranges bound every world-aligned 8^3 tile's densities inside the grid, not finite read
+// as 0, at chunk sizes below and above the tile's; loadDensities copies the bytes and records the
+// same ranges as recordTileRanges; writing a density forgets them.
+TEST(mesh_MarchingCubes, tileRangesBoundEveryTile) {
+    for (int32_t chunk : {4, 8, 32}) {
+        ChunkedGrid grid = test::noiseGrid({-13, 5, 30}, {37, 20, 9}, chunk, 3);
+        grid.at({0, 0, 0}) = NAN;
+        grid.at({36, 19, 8}) = -INFINITY;
+        grid.at({20, 3, 3}) = 7.0f;
+        ChunkedGrid loaded(grid.layout());
+        loaded.loadDensities(grid.data().data());
+        grid.recordTileRanges();
+        // Read through const views: writable access would forget the ranges.
+        const ChunkedGrid& view = grid;
+        const ChunkedGrid& loadedView = loaded;
+        ASSERT_NE(loadedView.tileRanges(), nullptr);
+        EXPECT_TRUE(sameBytes(loadedView.data(), view.data()));
+        const TileRanges& ranges = *view.tileRanges();
+        const ChunkLayout& layout = view.layout();
+        std::vector<TileRanges::Range> expected(ranges.ranges.size(), {INFINITY, -INFINITY});
+        for (int z = 0; z < layout.gridSize.z; ++z)
+            for (int y = 0; y < layout.gridSize.y; ++y)
+                for (int x = 0; x < layout.gridSize.x; ++x) {
+                    const float d = std::isfinite(view.at({x, y, z})) ? view.at({x, y, z}) : 0.0f;
+                    TileRanges::Range& r = expected[ranges.index((layout.gridOrigin + glm::ivec3(x, y, z)) >> 3)];
+                    r = {std::min(r.low, d), std::max(r.high, d)};
+                }
+        EXPECT_EQ(ranges.count, ((layout.gridOrigin + layout.gridSize - 1) >> 3) - (layout.gridOrigin >> 3) + 1);
+        for (size_t t = 0; t < expected.size(); ++t) {
+            EXPECT_EQ(ranges.ranges[t].low, expected[t].low) << "tile " << t << ", chunk " << chunk;
+            EXPECT_EQ(ranges.ranges[t].high, expected[t].high) << "tile " << t << ", chunk " << chunk;
+            EXPECT_EQ(loadedView.tileRanges()->ranges[t].low, expected[t].low);
+            EXPECT_EQ(loadedView.tileRanges()->ranges[t].high, expected[t].high);
+        }
+        EXPECT_EQ(ranges.at(glm::ivec3(7, 8, 33) >> 3).high, 7.0f);
+        EXPECT_EQ(ranges.at(glm::ivec3(23, 24, 38) >> 3).low, 0.0f) << "-inf reads 0";
+        grid.at({1, 1, 1}) = 2.0f;
+        EXPECT_EQ(view.tileRanges(), nullptr);
+    }
 }
 
 // A surface inside one world-aligned 8^3 tile: the mesher looks up the cases of that tile's crossed
@@ -233,10 +284,19 @@ TEST(mesh_MarchingCubes, surfaceInOneTileVisitsOnlyThatTile) {
         EXPECT_EQ(stats.activeTiles, 1u);
         EXPECT_EQ(stats.cellsVisited, crossed);
         EXPECT_EQ(stats.skippedChunks, stats.chunks - 1);
+        EXPECT_EQ(stats.samplesRead, size_t(64) * 64 * 64) << "without tile ranges every sample is classified";
         expectIdentical(meshMarchingCubes(grid, MeshOptions{.skipUniformChunks = false}, &full), mesh, "without skipping");
         EXPECT_EQ(full.cellsVisited, size_t(65) * 65 * 65);
         EXPECT_EQ(full.activeTiles, 1u);
         EXPECT_GT(mesh.triangles.size(), 0u);
+        // With the grid's tile ranges, only the ball's tile is read: every other tile is air.
+        ChunkedGrid ranged = grid;
+        ranged.recordTileRanges();
+        MeshStats rangedStats;
+        expectIdentical(meshMarchingCubes(ranged, MeshOptions{}, &rangedStats), mesh, "with tile ranges");
+        EXPECT_EQ(rangedStats.samplesRead, 512u);
+        EXPECT_EQ(rangedStats.cellsVisited, crossed);
+        EXPECT_EQ(rangedStats.activeTiles, 1u);
     }
 }
 

@@ -2,6 +2,11 @@
 
 #include "voxc/core/Errors.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <glm/common.hpp>
+#include <glm/vector_relational.hpp>
 #include <numeric>
 
 namespace voxc {
@@ -74,7 +79,90 @@ ChunkedGrid ChunkedGrid::fromDense(const DenseGrid& grid, const ChunkLayout& lay
                 chunked.at({x, y, z}) = grid.at({x, y, z});
                 chunked.materialAt({x, y, z}) = grid.materialAt({x, y, z});
             }
+    chunked.recordTileRanges();
     return chunked;
+}
+
+void ChunkedGrid::recordTileRanges() { summarize(data_.data(), nullptr); }
+
+void ChunkedGrid::loadDensities(const float* chunkMajor) { summarize(chunkMajor, data_.data()); }
+
+namespace {
+
+// A density as the meshers read it.
+inline float meshedDensity(float d) { return std::isfinite(d) ? d : 0.0f; }
+
+} // namespace
+
+void ChunkedGrid::summarize(const float* source, float* copyTo) {
+    constexpr int kShift = TileRanges::kShift, kSide = 1 << kShift;
+    const ChunkLayout& l = layout_;
+    TileRanges tiles;
+    tiles.first = l.gridOrigin >> kShift;
+    tiles.count = ((l.gridOrigin + l.gridSize - 1) >> kShift) - tiles.first + 1;
+    tiles.ranges.assign(size_t(tiles.count.x) * size_t(tiles.count.y) * size_t(tiles.count.z), {INFINITY, -INFINITY});
+    const int c = l.chunkSize;
+    const size_t chunkVoxels = l.chunkVoxels();
+    // Per tile a chunk meets (one when chunks are smaller than tiles), the least and greatest
+    // density of each of its eight columns along x: whole tile rows update them lane by lane
+    // (vectorised), and the columns are reduced once per chunk.
+    const int perAxis = std::max(1, c >> kShift);
+    const size_t lanes = size_t(perAxis) * size_t(perAxis) * size_t(perAxis) * kSide;
+    std::vector<float> lows(lanes), highs(lanes);
+    // In the buffer's order, one chunk at a time: a chunk (128 KiB at size 32) is copied and then
+    // read again from the cache, so copying and summarising cost one pass over memory.
+    size_t slot = 0;
+    for (int cz = 0; cz < l.chunkCount.z; ++cz)
+        for (int cy = 0; cy < l.chunkCount.y; ++cy)
+            for (int cx = 0; cx < l.chunkCount.x; ++cx, ++slot) {
+                const float* chunk = source + slot * chunkVoxels;
+                if (copyTo) std::memcpy(copyTo + slot * chunkVoxels, chunk, chunkVoxels * sizeof(float));
+                const glm::ivec3 chunkWorld = (l.chunkBase + glm::ivec3(cx, cy, cz)) * c;
+                // The chunk's voxels inside the grid, chunk-local [low, high).
+                const glm::ivec3 low = glm::max(l.gridOrigin - chunkWorld, glm::ivec3(0));
+                const glm::ivec3 high = glm::min(l.gridOrigin + l.gridSize - chunkWorld, glm::ivec3(c));
+                if (glm::any(glm::greaterThanEqual(low, high))) continue;
+                std::fill(lows.begin(), lows.end(), INFINITY);
+                std::fill(highs.begin(), highs.end(), -INFINITY);
+                const bool wholeRows = low.x == 0 && high.x == c && c >= kSide;
+                for (int z = low.z; z < high.z; ++z)
+                    for (int y = low.y; y < high.y; ++y) {
+                        const float* row = chunk + size_t(c) * (size_t(y) + size_t(c) * size_t(z));
+                        const size_t tileRow = (size_t(z >> kShift) * size_t(perAxis) + size_t(y >> kShift)) * size_t(perAxis);
+                        if (wholeRows) {
+                            for (int t = 0; t < perAxis; ++t) {
+                                float* lo = lows.data() + (tileRow + size_t(t)) * kSide;
+                                float* hi = highs.data() + (tileRow + size_t(t)) * kSide;
+                                const float* v = row + t * kSide;
+                                for (int i = 0; i < kSide; ++i) {
+                                    const float d = meshedDensity(v[i]);
+                                    lo[i] = std::min(lo[i], d);
+                                    hi[i] = std::max(hi[i], d);
+                                }
+                            }
+                        } else {
+                            for (int x = low.x; x < high.x; ++x) {
+                                const size_t lane = (tileRow + size_t(x >> kShift)) * kSide + size_t(x & (kSide - 1));
+                                const float d = meshedDensity(row[x]);
+                                lows[lane] = std::min(lows[lane], d);
+                                highs[lane] = std::max(highs[lane], d);
+                            }
+                        }
+                    }
+                const glm::ivec3 tileFirst = chunkWorld >> kShift;
+                size_t t = 0;
+                for (int z = 0; z < perAxis; ++z)
+                    for (int y = 0; y < perAxis; ++y)
+                        for (int x = 0; x < perAxis; ++x, ++t) {
+                            const float lo = *std::min_element(lows.begin() + ptrdiff_t(t * kSide), lows.begin() + ptrdiff_t((t + 1) * kSide));
+                            const float hi = *std::max_element(highs.begin() + ptrdiff_t(t * kSide), highs.begin() + ptrdiff_t((t + 1) * kSide));
+                            if (lo > hi) continue; // no voxel of the grid in this tile
+                            TileRanges::Range& r = tiles.at(tileFirst + glm::ivec3(x, y, z));
+                            r.low = std::min(r.low, lo);
+                            r.high = std::max(r.high, hi);
+                        }
+            }
+    tileRanges_ = std::move(tiles);
 }
 
 } // namespace voxc

@@ -262,7 +262,7 @@ class SparseExtraction {
 public:
     SparseExtraction(const ChunkedGrid& grid, const CellRange& cells, float iso, float margin, bool skip)
         : grid_(grid), reader_(grid), cells_(cells), iso_(iso), margin_(margin), skip_(skip),
-          signs_(mesh_bits::classifySamples(grid, iso, cells.begin, cells.end - cells.begin + 1)),
+          signs_(mesh_bits::classifySamples(grid, iso, cells.begin, cells.end - cells.begin + 1, skip ? grid.tileRanges() : nullptr)),
           extent_(signs_.extent), table_(caseTable()) {
         for (int e = 0; e < 12; ++e) {
             const glm::ivec3 o = cornerOffset(edgeCorners(e)[0]);
@@ -486,6 +486,7 @@ private:
         stats.activeTiles = 0;
         for (const auto& h : tileHit_) stats.activeTiles += h.load(std::memory_order_relaxed);
         stats.cellsVisited = cellsVisited_.load();
+        stats.samplesRead = signs_.samplesRead;
     }
 
     const ChunkedGrid& grid_;

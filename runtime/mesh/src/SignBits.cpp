@@ -3,6 +3,7 @@
 #include "ChunkWorkers.h"
 
 #include <algorithm>
+#include <atomic>
 
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
@@ -60,7 +61,7 @@ Classify classifier() {
 
 const char* classificationPath() { return classifier() == classifyScalar ? "scalar" : "avx2"; }
 
-SignBits classifySamples(const ChunkedGrid& grid, float iso, glm::ivec3 first, glm::ivec3 extent) {
+SignBits classifySamples(const ChunkedGrid& grid, float iso, glm::ivec3 first, glm::ivec3 extent, const TileRanges* ranges) {
     const ChunkLayout& layout = grid.layout();
     SignBits signs;
     signs.first = first;
@@ -73,9 +74,12 @@ SignBits classifySamples(const ChunkedGrid& grid, float iso, glm::ivec3 first, g
     const int inBegin = std::max(first.x, 0), inEnd = std::min(first.x + extent.x, layout.gridSize.x);
     const float* data = grid.data().data();
     const int chunkMask = layout.chunkSize - 1;
+    constexpr int tileSide = 1 << TileRanges::kShift;
+    std::atomic<size_t> samplesRead{0};
 
     forEachChunk(size_t(extent.z), [&](size_t slice) {
         const int z = int(slice), gz = first.z + z;
+        size_t read = 0;
         for (int y = 0; y < extent.y; ++y) {
             const int gy = first.y + y;
             uint64_t* row = signs.row(y, z);
@@ -86,16 +90,34 @@ SignBits classifySamples(const ChunkedGrid& grid, float iso, glm::ivec3 first, g
                     if (!rowInside || first.x + x < inBegin || first.x + x >= inEnd) row[x >> 6] |= uint64_t(1) << (x & 63);
             }
             if (!rowInside) continue;
-            // Along x a chunk's row is contiguous: classify it one chunk segment at a time.
+            // Along x a chunk's row is contiguous: classify it one chunk segment at a time, and
+            // with tile ranges one tile's segment at a time.
+            const int worldY = layout.gridOrigin.y + gy, worldZ = layout.gridOrigin.z + gz;
             for (int gx = inBegin; gx < inEnd;) {
                 const int worldX = layout.gridOrigin.x + gx;
-                const int count = std::min(layout.chunkSize - (worldX & chunkMask), inEnd - gx);
+                int count = std::min(layout.chunkSize - (worldX & chunkMask), inEnd - gx);
+                if (ranges) {
+                    count = std::min(count, tileSide - (worldX & (tileSide - 1)));
+                    const TileRanges::Range& range = ranges->at(glm::ivec3(worldX, worldY, worldZ) >> TileRanges::kShift);
+                    if (range.low > iso) {
+                        putBits(row, gx - first.x, (uint64_t(1) << count) - 1, count);
+                        gx += count;
+                        continue;
+                    }
+                    if (range.high <= iso) {
+                        gx += count;
+                        continue;
+                    }
+                }
                 classify(data + layout.address({gx, gy, gz}), count, iso, row, gx - first.x);
+                read += size_t(count);
                 gx += count;
             }
         }
+        samplesRead += read;
         return true;
     });
+    signs.samplesRead = samplesRead.load();
     return signs;
 }
 

@@ -21,6 +21,7 @@ struct SignBits {
     size_t words = 0;     // 64-bit words per row; the last word holds no sample (it reads as 0)
     // Not zeroed up front: each worker writes its rows whole (and so first touches their pages).
     std::unique_ptr<uint64_t[]> bits;
+    size_t samplesRead = 0; // the densities classification read (the rest came from tile ranges)
 
     const uint64_t* row(int y, int z) const { return bits.get() + (size_t(z) * size_t(extent.y) + size_t(y)) * words; }
     uint64_t* row(int y, int z) { return bits.get() + (size_t(z) * size_t(extent.y) + size_t(y)) * words; }
@@ -28,7 +29,9 @@ struct SignBits {
 
 // Classifies the samples [first, first + extent) of `grid` (outside the grid: air unless iso < 0),
 // solid bit = density > iso, on the chunk workers; with AVX2 when the CPU has it (same bits).
-SignBits classifySamples(const ChunkedGrid& grid, float iso, glm::ivec3 first, glm::ivec3 extent);
+// Given the grid's tile ranges, a tile that lies on one side of iso is classified from its range,
+// without reading its densities (the same bits).
+SignBits classifySamples(const ChunkedGrid& grid, float iso, glm::ivec3 first, glm::ivec3 extent, const TileRanges* ranges);
 
 // "avx2" or "scalar": which sample classification this CPU runs.
 const char* classificationPath();

@@ -16,6 +16,7 @@
 #include <cstring>
 #include <optional>
 #include <span>
+#include <utility>
 
 namespace voxc {
 
@@ -92,6 +93,7 @@ struct VulkanExecutor::Impl {
     DeviceBuffer tileRanges, tileDirty, activeTiles, activeDispatch, skipStats, tileOccupancy;
     NonFiniteCounters nonFinite; // kBindingNonFinite and its per-stage copies
     bool hasRun = false;         // the voxel buffer holds a run's result
+    std::optional<TileRanges> readBackRanges; // of the voxel buffer, where the last run read it back
     VkCommandPool commandPool = VK_NULL_HANDLE;
     Frame frames[2];
     double setupMs = 0;
@@ -367,13 +369,14 @@ double VulkanExecutor::setupMs() const { return impl_->setupMs; }
 
 vulkan_detail::ExecutorVoxels VulkanExecutor::deviceVoxels() const {
     const Impl& s = *impl_;
-    return {&s.ctx, s.voxels.buffer, s.materials.buffer, s.package.usesMaterials, s.hasRun};
+    return {&s.ctx, s.voxels.buffer, s.materials.buffer, s.package.usesMaterials, s.hasRun, &s.readBackRanges};
 }
 
 RunResult VulkanExecutor::run() {
     Impl& s = *impl_;
     const VulkanApi& api = s.ctx.api;
     RunResult result{ChunkedGrid(s.options.readBack ? s.layout : ChunkLayout{}), {}, 0};
+    s.readBackRanges.reset(); // the voxel buffer changes from here on
     result.timings.setupMs = s.setupMs;
 
     DispatchCursor cursor(s.package, s.maxGroups, s.tileShift);
@@ -477,10 +480,12 @@ RunResult VulkanExecutor::run() {
         const Clock::time_point readStart = Clock::now();
         const DeviceBuffer& source = s.staged ? s.readback : s.voxels;
         invalidateForHost(s.ctx, source);
-        std::vector<float>& data = result.grid.data();
         const VkDeviceSize voxelBytes = s.voxels.size;
-        VOXC_ASSERT(data.size() * sizeof(float) == voxelBytes && voxelBytes <= source.size);
-        std::memcpy(data.data(), source.mapped, voxelBytes);
+        VOXC_ASSERT(result.grid.data().size() * sizeof(float) == voxelBytes && voxelBytes <= source.size);
+        // The copy records the grid's tile ranges on the way, for the meshers (the device one
+        // keeps them: they describe the voxel buffer until the next run).
+        result.grid.loadDensities(static_cast<const float*>(source.mapped));
+        s.readBackRanges = *std::as_const(result.grid).tileRanges();
         if (s.package.usesMaterials) {
             if (!s.staged) invalidateForHost(s.ctx, s.materials);
             s.readMaterials(s.staged ? s.readback : s.materials, s.staged ? voxelBytes : 0, result.grid);

@@ -2,6 +2,9 @@
 // The device buffers a VulkanExecutor's run() leaves behind, for the GPU mesher (GpuMesher.cpp),
 // which meshes them where they are instead of reading the densities back first.
 #include "ContextImpl.h"
+#include "voxc/grid/Grid.h"
+
+#include <optional>
 
 namespace voxc::vulkan_detail {
 
@@ -11,6 +14,9 @@ struct ExecutorVoxels {
     VkBuffer materials = VK_NULL_HANDLE; // uint ids at the same addresses when hasMaterials, else one element
     bool hasMaterials = false;
     bool hasRun = false; // run() has filled the buffers
+    // The tile ranges of the densities the last run() read back (ChunkedGrid::loadDensities);
+    // empty when it did not read them back. Points into the executor, so it follows every run.
+    const std::optional<TileRanges>* tileRanges = nullptr;
 };
 
 } // namespace voxc::vulkan_detail

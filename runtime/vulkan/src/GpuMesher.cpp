@@ -8,6 +8,7 @@
 #include "voxc/mesh/MarchingCubes.h"
 
 #include <fmt/format.h>
+#include <glm/vector_relational.hpp>
 
 #include <algorithm>
 #include <cstring>
@@ -64,6 +65,39 @@ std::vector<uint32_t> packedCaseTable() {
 std::string mib(uint64_t bytes) { return fmt::format("{:.1f} MiB", double(bytes) / (1 << 20)); }
 
 uint32_t groupsOf(uint64_t items, uint32_t perGroup) { return uint32_t((items + perGroup - 1) / perGroup); }
+
+// A tile state mc_tiles.glsl never writes (it sets bits 0-15 only): the tile's voxels are to be read.
+constexpr uint32_t kUnknownTileState = UINT32_MAX;
+constexpr uint32_t kSolidTileState = 0xffu, kAirTileState = 0xffu << 8; // all eight regions solid, all air
+
+// The states of the voxel tiles (`n` per axis from world tile `tileFirst`) that the grid's tile
+// ranges put on one side of iso, as mc_tiles.glsl would record them, and kUnknownTileState for
+// the others (all of them without ranges). A tile's voxels outside the grid read 0, as there.
+void knownTileStates(const TileRanges* ranges, float iso, glm::ivec3 tileFirst, glm::ivec3 n, const ChunkLayout& layout,
+                     uint32_t* states) {
+    size_t i = 0;
+    for (int z = 0; z < n.z; ++z)
+        for (int y = 0; y < n.y; ++y)
+            for (int x = 0; x < n.x; ++x, ++i) {
+                if (!ranges) {
+                    states[i] = kUnknownTileState;
+                    continue;
+                }
+                const glm::ivec3 tile = tileFirst + glm::ivec3(x, y, z);
+                const glm::ivec3 first = (tile << kTileShift) - layout.gridOrigin, last = first + int(kTileSide) - 1;
+                float low = 0.0f, high = 0.0f;
+                if (glm::all(glm::greaterThanEqual(last, glm::ivec3(0))) && glm::all(glm::lessThan(first, layout.gridSize))) {
+                    const TileRanges::Range& range = ranges->at(tile);
+                    low = range.low;
+                    high = range.high;
+                    if (glm::any(glm::lessThan(first, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(last, layout.gridSize))) {
+                        low = std::min(low, 0.0f); // across the grid's border
+                        high = std::max(high, 0.0f);
+                    }
+                }
+                states[i] = low > iso ? kSolidTileState : high <= iso ? kAirTileState : kUnknownTileState;
+            }
+}
 
 // What the host makes of mc_tiles.glsl's tile states: the tiles of cells the later passes visit,
 // ranked in tile order (z, then y, then x), and their segments in global key order.
@@ -332,8 +366,13 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     const VulkanApi& api = s.ctx.api;
     McPush push = s.push(options);
 
-    // The voxel tiles' states, then on the host the tiles of cells the surface crosses (all of
-    // them when uniform regions are not skipped) and their segments.
+    // The voxel tiles' states (from the executor's tile ranges where they settle a tile, else
+    // from its voxels), then on the host the tiles of cells the surface crosses (all of them when
+    // uniform regions are not skipped) and their segments.
+    const std::optional<TileRanges>& ranges = *s.source.tileRanges;
+    knownTileStates(ranges && options.skipUniformChunks ? &*ranges : nullptr, options.iso, s.tileFirst, s.tileCount + 1, s.layout,
+                    static_cast<uint32_t*>(s.tileStates.mapped));
+    flushForDevice(s.ctx, s.tileStates); // the queue submit makes it visible to the device
     s.begin();
     s.dispatch(kMcTiles, push, groupsOf(s.voxelTiles, kGroupSize), s.voxelTiles);
     memoryBarrier(api, s.cmd, kCompute, kHostRead);

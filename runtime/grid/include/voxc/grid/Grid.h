@@ -6,6 +6,7 @@
 #include "voxc/program/Program.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <span>
 #include <vector>
@@ -53,14 +54,49 @@ struct ChunkLayout {
     size_t address(glm::ivec3 local) const;
 };
 
+// The least and greatest density of every world-aligned 8^3 tile of a grid, counting only the
+// tile's voxels inside the grid and reading a density that is not finite as 0 (as the meshers
+// read it): a tile whose least density is above an iso, or whose greatest is not, lies on one
+// side of it, and the mesher classifies it without reading its voxels.
+struct TileRanges {
+    static constexpr int kShift = 3; // tiles of 8^3 voxels
+    struct Range {
+        float low, high;
+    };
+    glm::ivec3 first{0}; // world tile coordinate of entry 0 (gridOrigin >> kShift)
+    glm::ivec3 count{0}; // tiles per axis that hold voxels of the grid
+    std::vector<Range> ranges;
+
+    size_t index(glm::ivec3 worldTile) const {
+        const glm::ivec3 t = worldTile - first;
+        return size_t(t.x) + size_t(count.x) * (size_t(t.y) + size_t(count.y) * size_t(t.z));
+    }
+    const Range& at(glm::ivec3 worldTile) const { return ranges[index(worldTile)]; }
+    Range& at(glm::ivec3 worldTile) { return ranges[index(worldTile)]; }
+};
+
 class ChunkedGrid {
 public:
     explicit ChunkedGrid(const ChunkLayout& layout);
     const ChunkLayout& layout() const { return layout_; }
     float at(glm::ivec3 local) const { return data_[layout_.address(local)]; }
-    float& at(glm::ivec3 local) { return data_[layout_.address(local)]; }
-    std::vector<float>& data() { return data_; }
+    // Writable access to the densities forgets the tile ranges (they may no longer hold).
+    float& at(glm::ivec3 local) {
+        tileRanges_.reset();
+        return data_[layout_.address(local)];
+    }
+    std::vector<float>& data() {
+        tileRanges_.reset();
+        return data_;
+    }
     const std::vector<float>& data() const { return data_; }
+    // The densities' tile ranges where the producer of the grid recorded them, else null.
+    const TileRanges* tileRanges() const { return tileRanges_ ? &*tileRanges_ : nullptr; }
+    // Records the tile ranges of the densities as they are now (one pass over them).
+    void recordTileRanges();
+    // Copies the layout's chunk-major densities (data().size() floats, e.g. a device buffer
+    // mapped for reading) into the grid and records their tile ranges in the same pass.
+    void loadDensities(const float* chunkMajor);
     uint8_t materialAt(glm::ivec3 local) const { return materials_[layout_.address(local)]; }
     uint8_t& materialAt(glm::ivec3 local) { return materials_[layout_.address(local)]; }
     std::vector<uint8_t>& materials() { return materials_; }
@@ -70,9 +106,13 @@ public:
     static ChunkedGrid fromDense(const DenseGrid& grid, const ChunkLayout& layout);
 
 private:
+    // Copies `source` into data_ when `copyTo` is data_.data(), and records the tile ranges of `source`.
+    void summarize(const float* source, float* copyTo);
+
     ChunkLayout layout_;
     std::vector<float> data_;
     std::vector<uint8_t> materials_; // same addresses as data_
+    std::optional<TileRanges> tileRanges_;
 };
 
 // NumPy .npy, float32, C order, shape (sx, sy, sz): arr[x,y,z] is voxel (x,y,z). Written atomically;

@@ -43,6 +43,10 @@ struct MeshStats {
     size_t tiles = 0;
     size_t activeTiles = 0;
     size_t cellsVisited = 0;
+    // Host marching cubes only: the densities its classifying pass read. With the grid's tile
+    // ranges (ChunkedGrid::tileRanges) only the tiles that straddle iso are read; without them,
+    // or without skipping, every sample.
+    size_t samplesRead = 0;
 };
 
 Mesh meshSurfaceNets(const ChunkedGrid& grid, const MeshOptions& options, MeshStats* stats = nullptr);

@@ -64,7 +64,7 @@ struct RunTimings {
     double setupMs = 0;    // executor construction: pipelines, buffers, chunk-table upload (same every run)
     double recordMs = 0;   // command recording in this run (overlaps execution after the first batch)
     double executeMs = 0;  // first submit -> last fence signalled
-    double readbackMs = 0; // device results -> ChunkedGrid
+    double readbackMs = 0; // device results -> ChunkedGrid, with its tile ranges (ChunkedGrid::loadDensities)
 };
 
 struct RunResult {

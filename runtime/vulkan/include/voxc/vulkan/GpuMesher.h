@@ -2,7 +2,8 @@
 // Marching cubes on the Vulkan device, over the voxel and material buffers a VulkanExecutor's
 // run() left there (no densities cross to the host). Passes, each behind a pipeline barrier on
 // the one before (a workgroup barrier orders nothing between workgroups): a tiles pass records
-// on which sides of iso the voxels of each world-aligned 8^3 tile lie, from which the host lists
+// on which sides of iso the voxels of each world-aligned 8^3 tile lie (reading only the tiles
+// that the tile ranges of the executor's read-back, where it read back, leave open), from which the host lists
 // the tiles of cells the surface crosses (the active tiles) and their rows of cells in global
 // order; then a count pass over those rows alone (per cell: the crossed edges it owns and its
 // triangle count from the case table), an exclusive scan of the rows' counts in global cell
