@@ -53,10 +53,14 @@ void forNeighbours(const Box& b, int32_t x, int32_t y, int32_t z, Visit&& visit)
 // is -0 only when both are), and s + (+0) = s for every s that is not -0, so the sums, and with
 // them every bit, equal those of the loop that skips it.
 
-// Slices of at least this many cells are split between two threads (order-free passes only).
-constexpr int32_t kMinSlicesForThreads = 16;
-// Levels of at least this many cells smooth on two threads (smooth: half the slices each).
-constexpr uint64_t kMinCellsForThreadedSmoothing = 1u << 15;
+// Passes over a level of at least this many cells run on two threads (smooth: half the slices
+// each; the order-free passes through forTwoSlabs). A smaller level's pass takes well under a
+// millisecond, less than starting a thread costs on a loaded machine, where the new thread
+// waits for a core (with 32,768 cells and 16 slices, the levels of 64x32x64 and 32x16x32 cells
+// took 90 ms of the normals' solve at 256x128x256 at a load of 6, against 51 ms now).
+constexpr uint64_t kMinCellsForThreads = 1u << 18;
+// forTwoSlabs' minimum slice count for a pass over `cells` cells.
+int32_t minSlicesForThreads(uint64_t cells) { return cells >= kMinCellsForThreads ? 2 : INT32_MAX; }
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
 // An AVX2 clone where the CPU has it: elementwise IEEE +, x, / give the same bits at every width,
@@ -293,7 +297,7 @@ public:
     void prepare(const std::vector<float>& e, std::vector<float>& alongX) const {
         const int32_t n = fine_.box.size.x;
         alongX.resize(size_t(n) * size_t(coarse_.size.y) * size_t(coarse_.size.z));
-        forTwoSlabs(coarse_.size.z, kMinSlicesForThreads, [&](int32_t z0, int32_t z1) {
+        forTwoSlabs(coarse_.size.z, minSlicesForThreads(fine_.box.cellCount()), [&](int32_t z0, int32_t z1) {
             for (int32_t z = z0; z < z1; ++z)
                 for (int32_t y = 0; y < coarse_.size.y; ++y)
                     interpolateAlongX(e.data() + coarse_.index(0, y, z), xs0_.data(), xs1_.data(), near_[0], far_[0], n,
@@ -331,7 +335,7 @@ void prolong(const Box& coarse, const std::vector<float>& e, Level& fine, std::v
     const Prolongation p(coarse, fine);
     std::vector<float>& alongX = fine.alongX.front();
     p.prepare(e, alongX);
-    forTwoSlabs(fine.box.size.z, kMinSlicesForThreads, [&](int32_t z0, int32_t z1) {
+    forTwoSlabs(fine.box.size.z, minSlicesForThreads(fine.box.cellCount()), [&](int32_t z0, int32_t z1) {
         for (int32_t z = z0; z < z1; ++z)
             for (int32_t y = 0; y < fine.box.size.y; ++y) p.row(alongX, u, add, y, z);
     });
@@ -379,7 +383,7 @@ void smooth(Level& level, int32_t sweeps, bool zeroRhs, const Correction* correc
     const int32_t lag = correction ? 1 : 0;
     // Nothing below allocates or throws: the scratch rows exist before the threads start.
     std::vector<float> scratch(4 * size_t(b.size.x), 0.0f);
-    const bool threaded = b.cellCount() >= kMinCellsForThreadedSmoothing && b.size.z >= 4;
+    const bool threaded = b.cellCount() >= kMinCellsForThreads && b.size.z >= 4;
     float worst[2] = {0.0f, 0.0f};
     auto measure = [&](int32_t z, float* residual, float& w) {
         for (const std::vector<float>& u : level.u)
@@ -499,7 +503,7 @@ void restrictResidual(const Level& fine, size_t c, bool zeroRhs, Level& coarse) 
     const Box& cb = coarse.box;
     const float* rhs = zeroRhs ? nullptr : fine.f[c].data();
     std::vector<float>& out = coarse.f[c];
-    forTwoSlabs(cb.size.z, kMinSlicesForThreads, [&](int32_t z0, int32_t z1) {
+    forTwoSlabs(cb.size.z, minSlicesForThreads(b.cellCount()), [&](int32_t z0, int32_t z1) {
         std::vector<float> residual(size_t(b.size.x)), sum(size_t(cb.size.x));
         for (int32_t pz = z0; pz < z1; ++pz)
             for (int32_t py = 0; py < cb.size.y; ++py) {
@@ -550,7 +554,7 @@ float vCycle(std::vector<Level>& levels, size_t l, bool measure = true) {
 float maxResidualOf(const Level& level) {
     const Box& b = level.box;
     float worst[2] = {0.0f, 0.0f};
-    forTwoSlabs(b.size.z, kMinSlicesForThreads, [&](int32_t z0, int32_t z1) {
+    forTwoSlabs(b.size.z, minSlicesForThreads(b.cellCount()), [&](int32_t z0, int32_t z1) {
         std::vector<float> residual(size_t(b.size.x));
         float& w = worst[z0 == 0 ? 0 : 1];
         for (const std::vector<float>& u : level.u)
