@@ -26,9 +26,6 @@ struct Level {
     glm::vec3 weight{1.0f};
     std::vector<uint8_t> fixed;
     std::vector<std::vector<float>> u, f; // per component: unknowns (or corrections) and right-hand side
-    // Per row parity p: 1 where a half sweep of a row with (y + z + colour) & 1 == p leaves the
-    // cell alone (fixed, or of the other colour), so the sweep's store is a branch-free select.
-    std::vector<uint8_t> keep[2];
     // Per component: the coarser level's correction interpolated along x (Prolongation::prepare),
     // kept between V-cycles so its pages are touched once per solve.
     std::vector<std::vector<float>> alongX;
@@ -103,20 +100,14 @@ void relaxRow(const float* __restrict centre, const float* __restrict ym, const 
     }
 }
 
-// u[x] = relaxed[x] for x in [1, n - 1) where keep[x] is 0; a select, so it vectorises.
+// u[x] = relaxed[x] for x in [1, n - 1) where the cell is free and (x + parity) is even (the
+// half sweep's colour in a row of that parity); a branch-free select, so it vectorises. (Masks
+// of the cells to keep, per level and parity, cost as much to read and 2 bytes per cell of fresh
+// memory.)
 VOXC_ROW_KERNEL
-void storeRelaxed(const float* __restrict relaxed, const uint8_t* __restrict keep, int32_t n, float* __restrict u) {
-    for (int32_t x = 1; x + 1 < n; ++x) u[x] = keep[x] ? u[x] : relaxed[x];
-}
-
-void computeKeepMasks(Level& level) {
-    const int32_t n = level.box.size.x;
-    for (int32_t p = 0; p < 2; ++p) {
-        level.keep[p].resize(level.fixed.size());
-        for (size_t r = 0; r < level.fixed.size(); r += size_t(n))
-            for (int32_t x = 0; x < n; ++x)
-                level.keep[p][r + size_t(x)] = level.fixed[r + size_t(x)] || ((x + p) & 1) ? 1 : 0;
-    }
+void storeRelaxed(const float* __restrict relaxed, const uint8_t* __restrict fixed, int32_t parity, int32_t n,
+                  float* __restrict u) {
+    for (int32_t x = 1; x + 1 < n; ++x) u[x] = (fixed[x] | ((x + parity) & 1)) ? u[x] : relaxed[x];
 }
 
 // Red-black over-relaxed Gauss-Seidel half sweep of colour `colour` on row (y, z) of component
@@ -149,7 +140,7 @@ void relaxColourRow(Level& level, size_t c, int32_t colour, bool zeroRhs, int32_
         for (int32_t x = 2 - parity; x + 1 < n; x += 2)
             if (!fixed[x]) u[i0 + size_t(x)] = relaxed[x];
     } else {
-        storeRelaxed(relaxed, level.keep[parity].data() + i0, n, u + i0);
+        storeRelaxed(relaxed, fixed, parity, n, u + i0);
     }
     // The end cells, on the per-cell path (a missing x neighbour).
     auto endCell = [&](int32_t x) {
@@ -603,7 +594,7 @@ std::vector<std::vector<uint8_t>> multigridMasks(const std::vector<MultigridLeve
 
 float maxResidual(const std::vector<uint8_t>& fixed, const Field3& u) {
     if (u.values.size() != fixed.size()) throw InternalError("curves: a residual with a mask of another size");
-    Level level{u.box, glm::vec3(1.0f), fixed, {u.values}, {}, {}, {}};
+    Level level{u.box, glm::vec3(1.0f), fixed, {u.values}, {}, {}};
     return maxResidualOf(level);
 }
 
@@ -618,11 +609,8 @@ SolveReport solveLaplace(const std::string& name, const std::vector<uint8_t>& fi
     std::vector<std::vector<uint8_t>> masks = multigridMasks(shapes, fixed);
     std::vector<Level> levels;
     for (size_t l = 0; l < shapes.size(); ++l)
-        levels.push_back(Level{Box{glm::ivec3(0), shapes[l].size}, shapes[l].weight, std::move(masks[l]), {}, {}, {}, {}});
-    for (Level& level : levels) {
-        computeKeepMasks(level);
-        level.alongX.resize(components.size());
-    }
+        levels.push_back(Level{Box{glm::ivec3(0), shapes[l].size}, shapes[l].weight, std::move(masks[l]), {}, {}, {}});
+    for (Level& level : levels) level.alongX.resize(components.size());
 
     // The finest unknowns go back into the components however the solve ends (a ConvergenceError
     // leaves the last iterate at the free cells); moves, not copies of whole fields.
