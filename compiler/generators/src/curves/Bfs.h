@@ -6,7 +6,7 @@
 #include "voxc/generators/curves/Grid.h"
 
 #include <algorithm>
-#include <exception>
+#include <atomic>
 #include <thread>
 
 namespace voxc::curves {
@@ -41,8 +41,8 @@ inline bool setBefore(const std::vector<int32_t>& layer, size_t k, int32_t l) {
     return v >= 0 && v < l;
 }
 
-// Layers of at least this many cells are valued by two threads.
-inline constexpr size_t kMinFrontForThreads = 8192;
+// Layers of at least this many cells are valued by two threads, in chunks of kLayerChunk cells.
+inline constexpr uint32_t kMinFrontForThreads = 8192, kLayerChunk = 1024;
 
 // Grows BFS layers from the cells of layer 0 (layer[i] == 0; every other cell -1) and calls `value(j, p, layer)` once for every other cell j (p its coordinates) to compute and
 // store its result. `value` must read only cells of earlier layers (0 <= layer[k] < the layer it
@@ -98,30 +98,71 @@ int32_t growLayers(const Box& b, std::vector<int32_t>& layer, Value&& value) {
     auto run = [&](const uint32_t* first, const uint32_t* last, int32_t l) {
         for (const uint32_t* c = first; c != last; ++c) value(size_t(*c), coordinates(b, *c), l);
     };
+    // A large layer's cells are taken in chunks from a shared counter by this thread and a helper
+    // that lives as long as the growth, whichever comes first: a thread without a core (a loaded
+    // machine) then holds a layer up by at most the chunk it took. (Halving every layer between
+    // two threads, each started for its layer, made the fronts slower on two loaded cores than on
+    // one.) The layer's description is written before its generation is published in `claim`
+    // (generation << 32 | the next cell to take); a take is a compare-exchange on that word, so
+    // it succeeds only while the layer it read is the current one and unfinished.
+    std::atomic<uint64_t> claim{0};
+    std::atomic<uint32_t> done{0}, count{0};
+    std::atomic<const uint32_t*> cells{nullptr};
+    std::atomic<int32_t> current{0};
+    std::atomic<bool> stop{false};
+    auto help = [&](uint32_t generation) {
+        uint64_t word = claim.load(std::memory_order_acquire);
+        while (uint32_t(word >> 32) == generation) {
+            const uint32_t next = uint32_t(word), n = count.load(std::memory_order_relaxed);
+            if (next >= n) return;
+            const uint32_t* layerCells = cells.load(std::memory_order_relaxed);
+            const int32_t l = current.load(std::memory_order_relaxed);
+            const uint32_t taken = std::min(next + kLayerChunk, n);
+            if (!claim.compare_exchange_weak(word, (word & ~uint64_t(0xffffffffu)) | taken, std::memory_order_acq_rel,
+                                             std::memory_order_acquire))
+                continue;
+            run(layerCells + next, layerCells + taken, l);
+            done.fetch_add(taken - next, std::memory_order_release);
+            done.notify_one();
+        }
+    };
+    std::thread helper;
+    uint32_t generation = 0;
     for (int32_t l = 1; l <= layers; ++l) {
         const uint32_t* first = order.data() + start[size_t(l)];
-        const uint32_t* last = order.data() + start[size_t(l) + 1];
-        if (size_t(last - first) < kMinFrontForThreads) {
-            run(first, last, l);
+        const uint32_t n = start[size_t(l) + 1] - start[size_t(l)];
+        if (n < kMinFrontForThreads) {
+            run(first, first + n, l);
             continue;
         }
-        const uint32_t* mid = first + (last - first) / 2;
-        std::exception_ptr failed;
-        std::thread other([&] {
-            try {
-                run(first, mid, l);
-            } catch (...) {
-                failed = std::current_exception();
-            }
-        });
-        try {
-            run(mid, last, l);
-        } catch (...) {
-            other.join();
-            throw;
-        }
-        other.join();
-        if (failed) std::rethrow_exception(failed);
+        if (!helper.joinable())
+            helper = std::thread([&] {
+                for (uint32_t seen = 0;;) {
+                    uint64_t word = claim.load(std::memory_order_acquire);
+                    while (uint32_t(word >> 32) == seen) {
+                        claim.wait(word, std::memory_order_acquire);
+                        word = claim.load(std::memory_order_acquire);
+                    }
+                    if (stop.load(std::memory_order_acquire)) return;
+                    seen = uint32_t(word >> 32);
+                    help(seen);
+                }
+            });
+        count.store(n, std::memory_order_relaxed);
+        cells.store(first, std::memory_order_relaxed);
+        current.store(l, std::memory_order_relaxed);
+        done.store(0, std::memory_order_relaxed);
+        claim.store(uint64_t(++generation) << 32, std::memory_order_release);
+        claim.notify_one();
+        help(generation);
+        for (uint32_t d = done.load(std::memory_order_acquire); d < n; d = done.load(std::memory_order_acquire))
+            done.wait(d, std::memory_order_acquire);
+    }
+    if (helper.joinable()) {
+        stop.store(true, std::memory_order_release);
+        claim.store(uint64_t(++generation) << 32, std::memory_order_release);
+        claim.notify_one();
+        helper.join();
     }
     return layers;
 }
