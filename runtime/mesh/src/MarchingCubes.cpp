@@ -2,6 +2,7 @@
 
 #include "CellExtraction.h"
 #include "ChunkWorkers.h"
+#include "HugePages.h"
 #include "SignBits.h"
 #include "voxc/core/Errors.h"
 
@@ -294,12 +295,12 @@ public:
         Mesh mesh;
         forEachChunk(2, [&](size_t half) {
             if (half == 0) {
-                mesh.triangles.resize(triangles * 3);
-                mesh.triangleMaterials.resize(triangles);
+                mesh_memory::resizeOnHugePages(mesh.triangles, triangles * 3);
+                mesh_memory::resizeOnHugePages(mesh.triangleMaterials, triangles);
             } else {
-                mesh.positions.resize(vertices);
-                mesh.normals.resize(vertices);
-                mesh.vertexMaterials.resize(vertices);
+                mesh_memory::resizeOnHugePages(mesh.positions, vertices);
+                mesh_memory::resizeOnHugePages(mesh.normals, vertices);
+                mesh_memory::resizeOnHugePages(mesh.vertexMaterials, vertices);
             }
             return true;
         });

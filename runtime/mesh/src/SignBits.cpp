@@ -1,6 +1,7 @@
 #include "SignBits.h"
 
 #include "ChunkWorkers.h"
+#include "HugePages.h"
 
 #include <algorithm>
 #include <atomic>
@@ -67,7 +68,9 @@ SignBits classifySamples(const ChunkedGrid& grid, float iso, glm::ivec3 first, g
     signs.first = first;
     signs.extent = extent;
     signs.words = size_t(extent.x + 63) / 64 + 1;
-    signs.bits.reset(new uint64_t[signs.words * size_t(extent.y) * size_t(extent.z)]);
+    const size_t words = signs.words * size_t(extent.y) * size_t(extent.z);
+    signs.bits.reset(new uint64_t[words]);
+    mesh_memory::adviseHugePages(signs.bits.get(), words * sizeof(uint64_t));
     const Classify classify = classifier();
     const bool outsideSolid = 0.0f > iso;
     // Grid-local x range of the row inside the grid: [inBegin, inEnd).
