@@ -146,13 +146,21 @@ void OutputFiles::add(const std::string& path, const std::function<void(std::ost
 
     int fd = -1;
     for (int attempt = 0; fd < 0; ++attempt) {
+        if (attempt == 100) throw cannotWrite(path, "every temp file name beside it is taken");
         staged->temp = siblingName(staged->target);
         staged->tempEntry = CleanupEntry(staged->temp.string());
+        // Armed before open() creates the file, so a signal between the two cannot leave it
+        // behind; a name an earlier process left is skipped without arming it.
+        if (::access(staged->temp.c_str(), F_OK) == 0) continue;
+        staged->tempEntry.removeOnSignal();
         fd = ::open(staged->temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (fd < 0 && (errno != EEXIST || attempt == 100)) throw cannotWrite(path, std::strerror(errno));
+        if (fd < 0) {
+            const int openError = errno;
+            staged->tempEntry.ignoreOnSignal();
+            if (openError != EEXIST) throw cannotWrite(path, std::strerror(openError));
+        }
     }
     staged->tempExists = true;
-    staged->tempEntry.removeOnSignal();
     int error = 0;
     try {
         error = writeAndSync(fd, staged->target, write);
@@ -192,6 +200,7 @@ void OutputFiles::renameAll() {
         if (!several || ::lstat(staged->target.c_str(), &previous) != 0) continue; // nothing to keep
         std::string backup = siblingName(staged->target);
         CleanupEntry entry(backup);
+        entry.removeOnSignal(); // before the link exists, so a signal cannot leave it behind
         if (::link(staged->target.c_str(), backup.c_str()) != 0) {
             // A file system without hard links: a copy does as well.
             std::error_code ec;
@@ -200,7 +209,6 @@ void OutputFiles::renameAll() {
         }
         staged->backup = backup;
         staged->backupEntry = std::move(entry);
-        staged->backupEntry.removeOnSignal();
     }
     for (size_t i = 0; i < staged_.size(); ++i) {
         Staged& file = *staged_[i];
