@@ -20,6 +20,7 @@ packages=(
   python3-matplotlib # docs/python.md's walk-through (tests/python)
   blender # the Blender add-on's headless test (editors/blender); 153 packages, 570 MB installed
   clang libclang-rt-14-dev
+  lld # scripts/build.sh links with it
 )
 missing=()
 for p in "${packages[@]}"; do
