@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc {
-namespace {
+namespace aggregates_check_test {
 
 using test::check;
 using test::codes;
@@ -107,5 +107,5 @@ TEST(check_Aggregates, BadBlocksAreLocatedErrors) {
     EXPECT_EQ(codes(check(ruleWhere("wher { mean = [0, 1]; }"))), Codes{"E0008"});
 }
 
-} // namespace
+} // namespace aggregates_check_test
 } // namespace voxc

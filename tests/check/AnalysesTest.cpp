@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc {
-namespace {
+namespace analyses_test {
 
 using test::check;
 using test::codes;
@@ -58,5 +58,5 @@ TEST(check_Analyses, NoWarningsWhenThereAreErrors) {
     EXPECT_EQ(codes(result), Codes{"E0007"});
 }
 
-} // namespace
+} // namespace analyses_test
 } // namespace voxc

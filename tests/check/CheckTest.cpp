@@ -9,7 +9,7 @@
 #include <fstream>
 
 namespace voxc {
-namespace {
+namespace check_test {
 
 using test::check;
 using test::codes;
@@ -246,5 +246,5 @@ TEST(check_Files, MissingAndBinaryFiles) {
     EXPECT_FALSE(check("world { size = [8, 8, 8]; } // caf\xC3\xA9, \xE2\x82\xAC").hasErrors());
 }
 
-} // namespace
+} // namespace check_test
 } // namespace voxc

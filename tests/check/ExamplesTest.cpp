@@ -6,7 +6,7 @@
 #include <filesystem>
 
 namespace voxc {
-namespace {
+namespace examples_test {
 
 class check_Examples : public testing::TestWithParam<std::string> {};
 
@@ -52,5 +52,5 @@ TEST(check_Examples, OverhangIsDeyTable33) {
     for (int x = 0; x < 3; ++x) EXPECT_EQ(ledge.symbol[cellIndex(ledge.size, x, 2, 0)].predicates.at(0).op, SymbolOp::GEQ);
 }
 
-} // namespace
+} // namespace examples_test
 } // namespace voxc

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc {
-namespace {
+namespace feature_check_test {
 
 using test::check;
 using test::codes;
@@ -50,5 +50,5 @@ TEST(check_Features, ValuesOffTheThesisGridWarn) {
     EXPECT_EQ(codes(check(kWorld + "feature a = arch { peak = 7; }\n" + pipeline)), Codes{"W0205"});
 }
 
-} // namespace
+} // namespace feature_check_test
 } // namespace voxc

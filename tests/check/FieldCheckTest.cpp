@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc {
-namespace {
+namespace field_check_test {
 
 using test::check;
 using test::codes;
@@ -190,5 +190,5 @@ TEST(check_Fields, TypeErrorsQuoteTheSignature) {
     })) << "no note quotes " << signature;
 }
 
-} // namespace
+} // namespace field_check_test
 } // namespace voxc

@@ -11,7 +11,7 @@
 #include <string>
 
 namespace voxc {
-namespace {
+namespace kernel_bounds_test {
 
 using test::codes;
 
@@ -172,5 +172,5 @@ TEST(check_KernelBounds, AStampKernelHoldsAtMostTheFieldNodesOfTheLimit) {
         << past.diagnostics[0].message;
 }
 
-} // namespace
+} // namespace kernel_bounds_test
 } // namespace voxc

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc {
-namespace {
+namespace layout_test {
 
 using test::check;
 using test::oneRule;
@@ -90,5 +90,5 @@ TEST(check_Layout, ShapeErrors) {
               std::vector<std::string>{"E0005"});
 }
 
-} // namespace
+} // namespace layout_test
 } // namespace voxc

@@ -8,7 +8,7 @@
 #include <limits>
 
 namespace voxc {
-namespace {
+namespace limits_test {
 
 using test::check;
 using test::codes;
@@ -174,5 +174,5 @@ TEST(check_Limits, NonFiniteConstantOverridesAreE0007) {
     }
 }
 
-} // namespace
+} // namespace limits_test
 } // namespace voxc

@@ -23,7 +23,7 @@
 #include <tuple>
 
 namespace voxc {
-namespace {
+namespace lsystem_check_test {
 
 using namespace lsystem;
 using test::check;
@@ -251,5 +251,5 @@ TEST(check_Lsystem, RandomRulesDrawProductionsFromTheSeed) {
     EXPECT_TRUE(differs);
 }
 
-} // namespace
+} // namespace lsystem_check_test
 } // namespace voxc

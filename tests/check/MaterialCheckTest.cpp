@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc {
-namespace {
+namespace material_check_test {
 
 using test::check;
 using test::codes;
@@ -208,5 +208,5 @@ TEST(check_Materials, DifferentMaterialTestsSeparateEqualPriorityRules) {
     EXPECT_EQ(codes(check(head + a + c + "}")), Codes{"W0203"});
 }
 
-} // namespace
+} // namespace material_check_test
 } // namespace voxc

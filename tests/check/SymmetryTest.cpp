@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc {
-namespace {
+namespace symmetry_test {
 
 using test::check;
 using test::codes;
@@ -138,5 +138,5 @@ TEST(check_Symmetry, WarningsOncePerDeclaredRule) {
     EXPECT_NE(tooDeep.diagnostics[0].message.find("'r@rot90y'"), std::string::npos) << tooDeep.rendered();
 }
 
-} // namespace
+} // namespace symmetry_test
 } // namespace voxc

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc {
-namespace {
+namespace terrain_check_test {
 
 const std::string kWorld = "world { size = [64, 32, 64]; }\nmaterial rock { id = 1; }\nmaterial sand { id = 2; }\n";
 
@@ -70,11 +70,11 @@ TEST(check_Terrain, SameFileSameTable) {
     EXPECT_EQ(tableOf(a).density, tableOf(b).density);
 }
 
-} // namespace
+} // namespace terrain_check_test
 } // namespace voxc
 
 namespace voxc {
-namespace {
+namespace terrain_check_test {
 
 // The surface height of column (x, z): the lowest y whose density is below 0.5.
 int surfaceAt(const SolveTable& table, int x, int z) {
@@ -123,5 +123,5 @@ TEST(check_Terrain, MetaPointErrorsAreLocated) {
     EXPECT_EQ(test::codes(test::check(splineWith("knot { at = 0; }"))), std::vector<std::string>{"E0008"});
 }
 
-} // namespace
+} // namespace terrain_check_test
 } // namespace voxc

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc {
-namespace {
+namespace unused_test {
 
 using test::codes;
 using Codes = std::vector<std::string>;
@@ -38,5 +38,5 @@ TEST(check_Unused, UsingEverythingWarnsNothing) {
     EXPECT_EQ(codes(result), Codes{}) << result.rendered();
 }
 
-} // namespace
+} // namespace unused_test
 } // namespace voxc

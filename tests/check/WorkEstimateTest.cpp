@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc {
-namespace {
+namespace work_estimate_test {
 
 using test::codes;
 using Codes = std::vector<std::string>;
@@ -126,5 +126,5 @@ TEST(check_Work, DistinctKernelsAreBounded) {
     EXPECT_NE(result.diagnostics[0].message.find("needs 4 kernels"), std::string::npos);
 }
 
-} // namespace
+} // namespace work_estimate_test
 } // namespace voxc

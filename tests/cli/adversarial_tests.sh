@@ -21,7 +21,7 @@ expect rules_fifo_refused 1 "fifo\.vox:3:11: error E0100: cannot read file '.*fi
 lsystem_naming /dev/stdin > "$work/stdin.vox"
 # stdin a pipe that stays open (as under `voxc lsp`), a terminal-like device, and /dev/null
 expect rules_stdin_pipe_refused 1 "stdin\.vox:3:11: error E0100: .*'/dev/stdin': it is a FIFO" \
-    -- bash -c 'sleep 40 | timeout 30 "$0" check "$1"' "$voxc" "$work/stdin.vox"
+    -- bash -c 'timeout 30 "$0" check "$1" < <(exec sleep 40 2>/dev/null)' "$voxc" "$work/stdin.vox"
 expect rules_stdin_device_refused 1 "stdin\.vox:3:11: error E0100: .*'/dev/stdin': it is a character device" \
     -- bash -c 'timeout 30 "$0" check "$1" < /dev/null' "$voxc" "$work/stdin.vox"
 lsystem_naming /dev/zero > "$work/zero.vox"

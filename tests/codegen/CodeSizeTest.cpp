@@ -12,7 +12,7 @@
 #include <spirv-tools/libspirv.h>
 
 namespace voxc::codegen {
-namespace {
+namespace code_size_test {
 
 // SPIR-V 2.17 ("Universal Limits"): at most 524287 variables of the Function storage class.
 constexpr double kMaxFunctionVariables = 524287;
@@ -78,5 +78,5 @@ TEST(codegen_CodeSize, TheLargestSweepTheLimitsAllowFitsSpirvsVariableLimit) {
     EXPECT_LT(atLimit, kMaxFunctionVariables) << perRule / 512 << " variables per written cell, " << fixed << " fixed";
 }
 
-} // namespace
+} // namespace code_size_test
 } // namespace voxc::codegen

@@ -10,7 +10,7 @@
 #include <unistd.h>
 
 namespace voxc::codegen {
-namespace {
+namespace compile_cache_test {
 
 namespace fs = std::filesystem;
 
@@ -127,5 +127,5 @@ TEST(SpirvMemoScopes, CompileAKernelOncePerMemo) {
     EXPECT_EQ(compileCacheCounts().compiled - inScopes.compiled, 1u) << "no memo outside its scopes";
 }
 
-} // namespace
+} // namespace compile_cache_test
 } // namespace voxc::codegen

@@ -16,7 +16,7 @@
 #include <sstream>
 
 namespace voxc::codegen {
-namespace {
+namespace golden_test {
 
 namespace fs = std::filesystem;
 
@@ -84,5 +84,5 @@ TEST(codegen_Golden, FieldsExample) {
 }
 #endif
 
-} // namespace
+} // namespace golden_test
 } // namespace voxc::codegen

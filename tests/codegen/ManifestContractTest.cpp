@@ -22,7 +22,7 @@
 #include <spirv-tools/libspirv.h>
 
 namespace voxc::codegen {
-namespace {
+namespace manifest_contract_test {
 
 namespace fs = std::filesystem;
 
@@ -194,5 +194,5 @@ TEST(codegen_ManifestContract, BuffersTheCompilerFillsAreFilesOfThePackage) {
 }
 #endif
 
-} // namespace
+} // namespace manifest_contract_test
 } // namespace voxc::codegen

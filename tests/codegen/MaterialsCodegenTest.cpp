@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc::codegen {
-namespace {
+namespace materials_codegen_test {
 
 bool declaresMaterials(const Kernel& kernel) {
     return kernel.glsl.find("#version 450\n#define VOXC_MATERIALS\n") == 0;
@@ -84,5 +84,5 @@ TEST(codegen_Materials, ManifestRecordsMaterials) {
               std::string::npos);
 }
 
-} // namespace
+} // namespace materials_codegen_test
 } // namespace voxc::codegen

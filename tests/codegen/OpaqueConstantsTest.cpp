@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc::codegen {
-namespace {
+namespace opaque_constants_test {
 
 // The GLSL of field f = `expression` (the only field kernel of the program).
 std::string fieldGlsl(const std::string& expression) {
@@ -45,6 +45,6 @@ TEST(codegen_OpaqueConstants, CallsOnConstantsAloneAreFoldedInFloatAndHideTheirV
     EXPECT_TRUE(has(glsl, "= 183.327194; // constant, for the driver to fold in float"));
 }
 
-} // namespace
+} // namespace opaque_constants_test
 } // namespace voxc::codegen
 #endif

@@ -24,7 +24,7 @@
 #include <unistd.h>
 
 namespace voxc::codegen {
-namespace {
+namespace package_directory_test {
 
 namespace fs = std::filesystem;
 using Tree = test::PackageTree;
@@ -282,5 +282,5 @@ TEST_F(codegen_PackageDirectory, TempDirectoriesOfDeadProcessesAreRemoved) {
     EXPECT_TRUE(fs::exists(root_ / ".pkg.voxc-tmp.notes"));
 }
 
-} // namespace
+} // namespace package_directory_test
 } // namespace voxc::codegen

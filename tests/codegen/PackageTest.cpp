@@ -24,7 +24,7 @@
 #include <sstream>
 
 namespace voxc::codegen {
-namespace {
+namespace package_test {
 
 namespace fs = std::filesystem;
 
@@ -373,5 +373,5 @@ TEST_F(codegen_Package, SpirvValAcceptsEveryWrittenModule) {
     EXPECT_EQ(modules, 9);
 }
 
-} // namespace
+} // namespace package_test
 } // namespace voxc::codegen

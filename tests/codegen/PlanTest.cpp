@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc::codegen {
-namespace {
+namespace plan_test {
 
 std::vector<std::string> kernelNames(const KernelPackage& package) {
     std::vector<std::string> names;
@@ -88,5 +88,5 @@ TEST(codegen_Plan, SweepKernelsCarryTheirRulesAndWindow) {
     EXPECT_NE(package.kernels.at(4).glsl.find("Every rule of this sweep can never match"), std::string::npos);
 }
 
-} // namespace
+} // namespace plan_test
 } // namespace voxc::codegen

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc {
-namespace {
+namespace shaders_test {
 
 TEST(codegen_Shaders, EveryTemplateIsEmbedded) {
     const std::vector<std::string_view> names = shaderFileNames();
@@ -19,5 +19,5 @@ TEST(codegen_Shaders, EveryTemplateIsEmbedded) {
 
 TEST(codegen_Shaders, UnknownTemplateIsAnInternalError) { EXPECT_THROW(shaderSource("nope.glsl"), InternalError); }
 
-} // namespace
+} // namespace shaders_test
 } // namespace voxc

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc::codegen {
-namespace {
+namespace spirv_test {
 
 TEST(codegen_Spirv, EveryKernelOfTheSampleIsValid) {
     const KernelPackage package = compileProgram(test::sampleProgram());
@@ -63,5 +63,5 @@ TEST(codegen_Spirv, CellsWithMoreThan32PredicatesUseSeveralMasks) {
     EXPECT_EQ(spirvValidationErrors(kernel.spirv), std::nullopt);
 }
 
-} // namespace
+} // namespace spirv_test
 } // namespace voxc::codegen

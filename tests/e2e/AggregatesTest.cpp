@@ -14,7 +14,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc {
-namespace {
+namespace aggregates_test {
 
 constexpr glm::ivec3 kWindow{3, 2, 3};
 constexpr float kMark = 7.0f;
@@ -142,5 +142,5 @@ grammar g {
     EXPECT_EQ(test::countBitDifferences(interpret(program), all), 0u);
 }
 
-} // namespace
+} // namespace aggregates_test
 } // namespace voxc

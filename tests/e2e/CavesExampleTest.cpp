@@ -21,7 +21,7 @@
 #include <vector>
 
 namespace voxc {
-namespace {
+namespace caves_example_test {
 
 // Component id per air voxel (density < 0.5), 6-connected, and each component's size.
 struct AirComponents {
@@ -103,5 +103,5 @@ TEST(e2e_CavesExample, OneConnectedNetworkWithRoomsTunnelsAndSpeleothems) {
     EXPECT_GT(flowstone, 500u);
 }
 
-} // namespace
+} // namespace caves_example_test
 } // namespace voxc

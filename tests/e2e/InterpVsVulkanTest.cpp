@@ -21,7 +21,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc {
-namespace {
+namespace interp_vs_vulkan_test {
 
 // `name` is an example in examples/ or, with a "cases/" prefix, a file beside this test.
 Program loadExample(const std::string& name) {
@@ -93,5 +93,5 @@ INSTANTIATE_TEST_SUITE_P(Examples, InterpVsVulkan, ::testing::ValuesIn(cases()),
                        o.z < 0 ? "m" + std::to_string(-o.z) : std::to_string(o.z));
 });
 
-} // namespace
+} // namespace interp_vs_vulkan_test
 } // namespace voxc

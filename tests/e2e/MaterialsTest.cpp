@@ -17,7 +17,7 @@
 #include <set>
 
 namespace voxc {
-namespace {
+namespace materials_test {
 
 using test::lavapipe;
 
@@ -107,5 +107,5 @@ TEST(e2e_Materials, RepeatedRunsClearMaterials) {
     EXPECT_EQ(test::countVoxelDifferences(first, second), 0u);
 }
 
-} // namespace
+} // namespace materials_test
 } // namespace voxc

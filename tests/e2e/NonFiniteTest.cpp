@@ -19,7 +19,7 @@
 #include <cmath>
 
 namespace voxc {
-namespace {
+namespace non_finite_test {
 
 using test::lavapipe;
 
@@ -140,5 +140,5 @@ TEST(NonFinite, CountsDoNotAccumulateOverRuns) {
     for (size_t s = 0; s < first.size(); ++s) EXPECT_EQ(first[s].count, second[s].count) << "stage " << s;
 }
 
-} // namespace
+} // namespace non_finite_test
 } // namespace voxc

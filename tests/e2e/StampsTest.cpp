@@ -19,7 +19,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc {
-namespace {
+namespace stamps_test {
 
 Program checked(const std::string& text) { return test::checkedProgram("stamps.vox", text); }
 
@@ -292,5 +292,5 @@ pipeline {{ start; dig; {} }}
     EXPECT_EQ(test::countBitDifferences(stampedGrid, test::runOnLavapipe(stamped)), 0u);
 }
 
-} // namespace
+} // namespace stamps_test
 } // namespace voxc

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc {
-namespace {
+namespace symmetry_test {
 
 const char* kPrelude = R"(
 world { size = [40, 24, 40]; origin = [-7, 0, 13]; chunk = 16; seed = 99; }
@@ -79,5 +79,5 @@ TEST(e2e_Symmetry, RotationsEqualHandWrittenRules) {
     EXPECT_EQ(test::countVoxelDifferences(test::runOnLavapipe(once), expected), 0u);
 }
 
-} // namespace
+} // namespace symmetry_test
 } // namespace voxc

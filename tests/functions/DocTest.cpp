@@ -11,7 +11,7 @@
 #include <sstream>
 
 namespace voxc {
-namespace {
+namespace doc_test {
 
 std::string readDoc() {
     std::ifstream in(std::string(VOXC_SOURCE_DIR) + "/docs/functions.md");
@@ -36,5 +36,5 @@ TEST(functions_Doc, EveryRecordIsNamedInTheDoc) {
     for (const FunctionInfo& f : functions()) EXPECT_NE(doc.find("`" + std::string(f.name) + "`"), std::string::npos) << f.name;
 }
 
-} // namespace
+} // namespace doc_test
 } // namespace voxc

@@ -13,7 +13,7 @@
 #include <vector>
 
 namespace voxc {
-namespace {
+namespace noise_batch_test {
 
 float scalarWarpedFbm(float x, float y, float z, float roughness, float low, float high, uint32_t seed) {
     const FunctionInfo* f = findFunction("warped_fbm");
@@ -56,5 +56,5 @@ TEST(NoiseBatch, NonFiniteLanesAreNaNLikeTheBuiltin) {
     EXPECT_TRUE(std::isnan(out[1]) && std::isnan(out[6]) && std::isnan(out[9]));
 }
 
-} // namespace
+} // namespace noise_batch_test
 } // namespace voxc

@@ -13,7 +13,7 @@
 #include <vector>
 
 namespace voxc {
-namespace {
+namespace properties_test {
 
 Value call(std::string_view name, std::vector<Value> args) {
     const FunctionInfo* f = findFunction(name);
@@ -238,5 +238,5 @@ TEST(functions_Math, FollowsGlslDefinitions) {
     EXPECT_NEAR(call("cos", {f(0.5f)}).v.x, std::cos(0.5), 1e-7);
 }
 
-} // namespace
+} // namespace properties_test
 } // namespace voxc

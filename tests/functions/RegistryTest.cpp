@@ -11,7 +11,7 @@
 #include <set>
 
 namespace voxc {
-namespace {
+namespace registry_test {
 
 Type parseType(std::string text) {
     // Generic signatures name a placeholder; its first instance is checked.
@@ -113,5 +113,5 @@ TEST(functions_Registry, TypeNames) {
     EXPECT_EQ(typeName(Type::Vec3), "vec3");
 }
 
-} // namespace
+} // namespace registry_test
 } // namespace voxc

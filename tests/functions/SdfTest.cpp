@@ -14,7 +14,7 @@
 #include <vector>
 
 namespace voxc {
-namespace {
+namespace sdf_test {
 
 float call(std::string_view name, std::vector<Value> args) {
     const FunctionInfo* f = findFunction(name);
@@ -227,5 +227,5 @@ TEST(functions_Sdf, GrammarThresholdSeesTheSurfaceOfAGeneratedTerrain) {
     }
 }
 
-} // namespace
+} // namespace sdf_test
 } // namespace voxc

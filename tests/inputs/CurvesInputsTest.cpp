@@ -16,7 +16,7 @@
 #include <set>
 
 namespace voxc {
-namespace {
+namespace curves_inputs_test {
 
 namespace fs = std::filesystem;
 using curves::Box;
@@ -240,5 +240,5 @@ pipeline { start; set rock; }
     expect(3, "E0007", 7, 15, "dead_zone");
 }
 
-} // namespace
+} // namespace curves_inputs_test
 } // namespace voxc

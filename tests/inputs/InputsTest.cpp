@@ -17,7 +17,7 @@
 #include <glm/trigonometric.hpp>
 
 namespace voxc {
-namespace {
+namespace inputs_test {
 
 namespace fs = std::filesystem;
 
@@ -476,5 +476,5 @@ TEST(Inputs, APackageKeepsItsInputFilesAndLoadsWithoutThem) {
     EXPECT_EQ(interpret(loaded.program).data(), interpret(*checked.program).data());
 }
 
-} // namespace
+} // namespace inputs_test
 } // namespace voxc

@@ -17,7 +17,7 @@
 #include <unistd.h>
 
 namespace voxc {
-namespace {
+namespace meshed_input_test {
 
 namespace fs = std::filesystem;
 
@@ -74,5 +74,5 @@ TEST(MeshedInput, RotatedBoxIsWithinOneVoxel) {
               1.0);
 }
 
-} // namespace
+} // namespace meshed_input_test
 } // namespace voxc

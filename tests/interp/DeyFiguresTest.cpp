@@ -13,7 +13,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc {
-namespace {
+namespace dey_figures_test {
 
 using test::gridFromRows;
 using test::makeGrammar;
@@ -82,5 +82,5 @@ TEST(interp_Dey, Figure32Transform) {
     EXPECT_EQ(test::gridRows(grid), (std::vector<std::string>{"0.2 0.5 0.5", "0.3 0 0.5", "0.5 0.9 0.5"}));
 }
 
-} // namespace
+} // namespace dey_figures_test
 } // namespace voxc

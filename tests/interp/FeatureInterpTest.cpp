@@ -12,7 +12,7 @@
 #include <cstring>
 
 namespace voxc {
-namespace {
+namespace feature_interp_test {
 
 const std::string kWorld = "world { size = [64, 64, 64]; seed = 5; }\n";
 
@@ -155,5 +155,5 @@ INSTANTIATE_TEST_SUITE_P(Generators, FeatureKeys, ::testing::ValuesIn(variations
     return info.param.generator + "_" + keyOf(info.param.change);
 });
 
-} // namespace
+} // namespace feature_interp_test
 } // namespace voxc

@@ -12,7 +12,7 @@
 #include <cmath>
 
 namespace voxc {
-namespace {
+namespace field_interp_test {
 
 Program checked(const std::string& text) { return test::checkedProgram("test.vox", text); }
 
@@ -126,5 +126,5 @@ TEST(interp_Fields, ExampleRunsAndCarvesTheTunnel) {
     EXPECT_EQ(grid.at({44, 45, 16}), 1.0f); // the pillar rises above the ground
 }
 
-} // namespace
+} // namespace field_interp_test
 } // namespace voxc

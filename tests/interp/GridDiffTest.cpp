@@ -9,7 +9,7 @@
 #include <random>
 
 namespace voxc {
-namespace {
+namespace grid_diff_test {
 
 TEST(interp_GridDiff, KindsOfChange) {
     EXPECT_EQ(classifyChange(1.0f, 1, 0.0f, 1, 0.5f), ChangeKind::Carved);
@@ -103,5 +103,5 @@ TEST(interp_GridDiff, ReportAndSlices) {
     EXPECT_NE(materials.find("\n1 | s  |\n0 | rRr|\n"), std::string::npos) << materials;
 }
 
-} // namespace
+} // namespace grid_diff_test
 } // namespace voxc

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc {
-namespace {
+namespace interpreter_test {
 
 using test::gridFromRows;
 using test::gridRows;
@@ -194,5 +194,5 @@ TEST(interp_Interpreter, StartShapesInOrder) {
     EXPECT_EQ(interpret(program).data(), grid.data());
 }
 
-} // namespace
+} // namespace interpreter_test
 } // namespace voxc

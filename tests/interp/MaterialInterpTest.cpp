@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc {
-namespace {
+namespace material_interp_test {
 
 using test::gridFromRows;
 using test::makeGrammar;
@@ -81,5 +81,5 @@ TEST(interp_Materials, FieldStagesPaintWhereTheFieldWins) {
     EXPECT_EQ(painted.at({4, 0, 0}), 0.0f);
 }
 
-} // namespace
+} // namespace material_interp_test
 } // namespace voxc

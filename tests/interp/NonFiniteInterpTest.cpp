@@ -13,7 +13,7 @@
 #include <limits>
 
 namespace voxc {
-namespace {
+namespace non_finite_interp_test {
 
 Program checked(const std::string& text) { return test::checkedProgram("test.vox", text); }
 
@@ -98,5 +98,5 @@ TEST(interp_NonFinite, MinMaxClampAndSmoothstepIgnoreANaNOperand) {
     EXPECT_TRUE(std::isnan(findFunction("perlin3")->eval(point).v.x));
 }
 
-} // namespace
+} // namespace non_finite_interp_test
 } // namespace voxc

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc {
-namespace {
+namespace random_choice_test {
 
 using test::makeGrammar;
 using test::makeProgram;
@@ -94,5 +94,5 @@ TEST(interp_Random, DrawsDependOnWorldNotGridPosition) {
     for (int x = 0; x < 16; ++x) EXPECT_EQ(b.at({x, 0, 0}), a.at({x + 16, 0, 0})) << x;
 }
 
-} // namespace
+} // namespace random_choice_test
 } // namespace voxc

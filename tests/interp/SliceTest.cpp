@@ -11,7 +11,7 @@
 #include <sstream>
 
 namespace voxc {
-namespace {
+namespace slice_test {
 
 // Every density band on one z layer, plus a second layer to tell the axes apart.
 DenseGrid bandGrid() {
@@ -58,5 +58,5 @@ TEST(interp_Slice, OutOfRangeIsAUserError) {
     EXPECT_THROW(renderSlice(grid, 0, -1), UserError);
 }
 
-} // namespace
+} // namespace slice_test
 } // namespace voxc

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc {
-namespace {
+namespace trace_test {
 
 using test::makeGrammar;
 using test::makeProgram;
@@ -169,5 +169,5 @@ TEST(interp_Trace, UnknownNamesInAFilterAreErrorsListingTheNames) {
     EXPECT_EQ(filterError(program, {.rule = std::string("dot"), .grammar = std::string("tiny")}), "");
 }
 
-} // namespace
+} // namespace trace_test
 } // namespace voxc

@@ -9,7 +9,7 @@
 #include <tuple>
 
 namespace voxc {
-namespace {
+namespace chunk_seam_test {
 
 using test::makeGrid;
 
@@ -106,5 +106,5 @@ INSTANTIATE_TEST_SUITE_P(origins, mesh_ChunkSeams,
                          testing::Values(glm::ivec3(0, 0, 0), glm::ivec3(-37, -5, -100), glm::ivec3(100003, 7, -65541)),
                          originName);
 
-} // namespace
+} // namespace chunk_seam_test
 } // namespace voxc

@@ -14,7 +14,7 @@
 #include <sstream>
 
 namespace voxc {
-namespace {
+namespace export_test {
 
 Mesh ballMesh() {
     return meshSurfaceNets(test::makeGrid({-4, 0, 7}, {12, 11, 13}, 8, test::coneBall({1.5f, 5.2f, 13.1f}, 9.0f)), 0.5f);
@@ -270,5 +270,5 @@ TEST(mesh_Export, failedObjKeepsThePreviousLibrary) {
     EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()), 2);
 }
 
-} // namespace
+} // namespace export_test
 } // namespace voxc

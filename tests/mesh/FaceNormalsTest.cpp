@@ -14,7 +14,7 @@
 #include <tuple>
 
 namespace voxc {
-namespace {
+namespace face_normals_test {
 
 
 // Triangles with area whose vertex normals include one more than 90 degrees from their normal.
@@ -137,5 +137,5 @@ TEST(mesh_FaceNormals, aFoldNoNormalCanFaceSplitsItsVertex) {
     EXPECT_EQ(analyzeTopology(mesh).boundaryEdges, analyzeTopology(Mesh{mesh.positions, mesh.normals, {0, 1, 2, 0, 4, 3, 0, 2, 5}}).boundaryEdges);
 }
 
-} // namespace
+} // namespace face_normals_test
 } // namespace voxc

@@ -17,7 +17,7 @@
 #include <unistd.h>
 
 namespace voxc {
-namespace {
+namespace gltf_test {
 
 using test::GlbFile;
 using test::parseGlb;
@@ -254,5 +254,5 @@ TEST(mesh_Glb, writeMeshPicksGlbByExtension) {
     std::filesystem::remove_all(dir);
 }
 
-} // namespace
+} // namespace gltf_test
 } // namespace voxc

@@ -18,7 +18,7 @@
 #include <unordered_map>
 
 namespace voxc {
-namespace {
+namespace lod_test {
 
 using test::makeGrid;
 
@@ -456,5 +456,5 @@ TEST(mesh_Lod, levelZeroIsTheRegularMeshAndChunkSizeDoesNotShow) {
     }
 }
 
-} // namespace
+} // namespace lod_test
 } // namespace voxc

@@ -9,7 +9,7 @@
 #include <set>
 
 namespace voxc {
-namespace {
+namespace marching_cubes_table_test {
 
 using marching_cubes::caseTable;
 using marching_cubes::cornerOffset;
@@ -129,5 +129,5 @@ TEST(mesh_McTable, vertexSitsAtTheInterpolatedCrossing) {
     EXPECT_TRUE(found);
 }
 
-} // namespace
+} // namespace marching_cubes_table_test
 } // namespace voxc

@@ -16,7 +16,7 @@
 #include <set>
 
 namespace voxc {
-namespace {
+namespace marching_cubes_test {
 
 using test::makeGrid;
 
@@ -399,5 +399,5 @@ TEST(mesh_MarchingCubes, nonFiniteAndHugeDensitiesGiveFiniteUnitNormals) {
     for (const glm::vec3& n : mesh.normals) EXPECT_NEAR(glm::length(n), 1.0f, 1e-6f);
 }
 
-} // namespace
+} // namespace marching_cubes_test
 } // namespace voxc

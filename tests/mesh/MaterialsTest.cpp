@@ -9,7 +9,7 @@
 #include <random>
 
 namespace voxc {
-namespace {
+namespace materials_test {
 
 using test::makeGrid;
 using test::paintMaterials;
@@ -175,5 +175,5 @@ TEST(mesh_SkipChunks, emptyGridSkipsEveryChunkAndSolidGridOnlyItsInterior) {
     expectSameMesh(mesh, meshSurfaceNets(solid, MeshOptions{.skipUniformChunks = false}));
 }
 
-} // namespace
+} // namespace materials_test
 } // namespace voxc

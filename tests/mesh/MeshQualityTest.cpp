@@ -6,7 +6,7 @@
 #include <limits>
 
 namespace voxc {
-namespace {
+namespace mesh_quality_test {
 
 // A unit tetrahedron, counter-clockwise seen from outside.
 Mesh tetrahedron() {
@@ -109,5 +109,5 @@ TEST(mesh_Quality, emptyMeshIsTriviallyManifold) {
     EXPECT_EQ(q.triangles, 0u);
 }
 
-} // namespace
+} // namespace mesh_quality_test
 } // namespace voxc

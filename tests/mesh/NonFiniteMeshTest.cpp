@@ -11,7 +11,7 @@
 #include <limits>
 
 namespace voxc {
-namespace {
+namespace non_finite_mesh_test {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
@@ -63,5 +63,5 @@ TEST(mesh_NonFinite, DensitiesAtTheFloatLimitsGiveFiniteVertices) {
     expectFiniteAndClosed(meshSurfaceNets(grid, FLT_MAX / 2));
 }
 
-} // namespace
+} // namespace non_finite_mesh_test
 } // namespace voxc

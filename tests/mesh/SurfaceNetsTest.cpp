@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc {
-namespace {
+namespace surface_nets_test {
 
 using test::box;
 using test::coneBall;
@@ -110,5 +110,5 @@ TEST(mesh_SurfaceNets, saddleFaceIsClosedButNotManifold) {
     EXPECT_EQ(topology.misorientedEdges, 0u);
 }
 
-} // namespace
+} // namespace surface_nets_test
 } // namespace voxc

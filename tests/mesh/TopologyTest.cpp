@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 namespace voxc {
-namespace {
+namespace topology_test {
 
 // A tetrahedron wound counter-clockwise seen from outside.
 Mesh tetrahedron() {
@@ -57,5 +57,5 @@ TEST(mesh_Topology, repeatedIndexAndZeroAreaAreDegenerate) {
     EXPECT_EQ(analyzeTopology(mesh).degenerateTriangles, 2u);
 }
 
-} // namespace
+} // namespace topology_test
 } // namespace voxc

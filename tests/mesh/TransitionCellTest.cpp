@@ -13,7 +13,7 @@
 #include <random>
 
 namespace voxc {
-namespace {
+namespace transition_cell_test {
 
 namespace tc = transition_cells;
 
@@ -121,5 +121,5 @@ TEST(mesh_TransitionCells, threeFaceCornerCasesAreClosedManifoldAndOutward) {
     expectPatternsManifold(e, 1500);
 }
 
-} // namespace
+} // namespace transition_cell_test
 } // namespace voxc
