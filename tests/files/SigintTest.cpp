@@ -1,6 +1,7 @@
 // Ctrl-C while `voxc run` writes a big mesh: the temp file goes and the user's previous mesh stays
-// byte for byte. The voxc binary runs as a child; inotify reports the temp file's creation and
-// SIGSTOP freezes the child there, so the signal provably lands mid-write without any timing.
+// byte for byte; while `voxc compile` makes its package directory, nothing is left. The voxc
+// binary runs as a child; inotify reports the temp file's creation and SIGSTOP freezes the child
+// there, so the signal provably lands mid-write without any timing.
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
@@ -152,6 +153,41 @@ TEST(files_Sigint, ctrlCDuringAPlyWriteKeepsThePreviousMesh) {
 TEST(files_Sigint, ctrlCDuringAnObjWriteKeepsThePreviousObjAndMtl) {
     interruptMeshWrite("sigint_obj", kRockWaves, ".obj",
                        {{"waves.obj", "the user's mesh"}, {"waves.mtl", "newmtl the_users_own\n"}});
+}
+
+// Ctrl-C as `voxc compile` makes its package's temp directory, stopped at the directory's
+// creation event: the signal leaves nothing beside the source (the directory is armed for
+// removal before mkdir() makes it). A compile that finished before it could be stopped is run
+// again, a bounded number of times.
+TEST(files_Sigint, ctrlCAsAPackageDirectoryIsMadeLeavesNothing) {
+    const std::string dir = testing::TempDir() + "files_sigint_package/";
+    const std::string log = testing::TempDir() + "files_sigint_package.log";
+    bool interrupted = false;
+    for (int attempt = 0; attempt < 5 && !interrupted; ++attempt) {
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        std::ofstream(dir + "waves.vox") << kWaves;
+        const int watch = inotify_init1(IN_CLOEXEC);
+        ASSERT_GE(watch, 0) << std::strerror(errno);
+        ASSERT_GE(inotify_add_watch(watch, dir.c_str(), IN_CREATE), 0) << std::strerror(errno);
+        const pid_t child = spawnVoxc({"compile", dir + "waves.vox", "-o", dir + "pkg"}, log);
+        ASSERT_GT(child, 0);
+        int status = 0;
+        const std::optional<std::string> temp = awaitCreation(watch, ".pkg.voxc-tmp.", child, status);
+        ::close(watch);
+        ASSERT_TRUE(temp) << "voxc exited (status " << status << ") without making a temp directory:\n" << readFile(log);
+        ::kill(child, SIGSTOP);
+        ASSERT_EQ(::waitpid(child, &status, WUNTRACED), child);
+        if (!WIFSTOPPED(status)) continue; // the compile ended first
+        interrupted = true;
+        ::kill(child, SIGINT);
+        ::kill(child, SIGCONT);
+        ASSERT_EQ(::waitpid(child, &status, 0), child);
+        EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT)
+            << "wait status " << status << ", want killed by SIGINT:\n" << readFile(log);
+        EXPECT_EQ(namesIn(dir), std::vector<std::string>{"waves.vox"});
+    }
+    ASSERT_TRUE(interrupted) << "every compile finished before it could be stopped";
 }
 
 } // namespace

@@ -60,13 +60,20 @@ void removeAbandonedTempDirectories(const fs::path& dir) {
 }
 
 // A new, empty directory beside `dir`, created with the usual permissions (mkdir honours the umask).
-fs::path createTempSibling(const fs::path& dir) {
+// `cleanup` removes it on a signal and is armed before mkdir() makes it, so a signal between the
+// two cannot leave it behind; a name another process holds is skipped without arming it.
+fs::path createTempSibling(const fs::path& dir, CleanupEntry& cleanup) {
     std::random_device random;
     for (int attempt = 0; attempt < 100; ++attempt) {
         const fs::path temp =
             dir.parent_path() / fmt::format("{}{}.{:08x}", tempPrefix(dir), ::getpid(), uint32_t(random()));
+        cleanup = CleanupEntry(temp.string());
+        if (::access(temp.c_str(), F_OK) == 0) continue;
+        cleanup.removeTreeOnSignal();
         if (::mkdir(temp.c_str(), 0777) == 0) return temp;
-        if (errno != EEXIST) fail(dir, fmt::format("cannot create a directory beside it: {}", std::strerror(errno)));
+        const int mkdirError = errno;
+        cleanup.ignoreOnSignal();
+        if (mkdirError != EEXIST) fail(dir, fmt::format("cannot create a directory beside it: {}", std::strerror(mkdirError)));
     }
     fail(dir, "cannot find a free temp directory name beside it");
 }
@@ -127,7 +134,9 @@ bool renameIntoPlace(const fs::path& dir, const fs::path& temp) {
 void exchangeIntoPlace(const fs::path& dir, const fs::path& temp) {
     if (::renameat2(AT_FDCWD, temp.c_str(), AT_FDCWD, dir.c_str(), RENAME_EXCHANGE) != 0) {
         if (errno != EINVAL && errno != ENOSYS) fail(dir, std::strerror(errno));
-        const fs::path old = createTempSibling(dir);
+        CleanupEntry oldCleanup;
+        const fs::path old = createTempSibling(dir, oldCleanup);
+        oldCleanup.ignoreOnSignal(); // it is about to hold the previous package, which a signal keeps
         if (::rename(dir.c_str(), old.c_str()) != 0) {
             const int renameError = errno;
             ::rmdir(old.c_str());
@@ -173,13 +182,11 @@ PackageWrite writePackage(const KernelPackage& package, const std::string& dirNa
     fs::create_directories(dir.parent_path(), error);
     if (error) fail(dir, fmt::format("cannot create {}: {}", dir.parent_path().string(), error.message()));
     removeAbandonedTempDirectories(dir);
-    const fs::path temp = createTempSibling(dir);
+    // Ctrl-C while the package is built or swapped removes the temp directory (after a swap it
+    // holds the old package, which goes anyway).
     CleanupEntry cleanup;
+    const fs::path temp = createTempSibling(dir, cleanup);
     try {
-        // Ctrl-C while the package is built or swapped removes the temp directory (after a swap
-        // it holds the old package, which goes anyway).
-        cleanup = CleanupEntry(temp.string());
-        cleanup.removeTreeOnSignal();
         writeTree(dir, temp, files);
         if (!existing) {
             if (renameIntoPlace(dir, temp)) {
