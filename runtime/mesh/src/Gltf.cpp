@@ -80,7 +80,7 @@ VertexStreams optimizeForRendering(const Mesh& mesh, std::map<uint8_t, std::vect
     all.reserve(mesh.triangles.size());
     for (auto& [id, indices] : groups) {
         std::vector<uint32_t> ordered(indices.size());
-        meshopt_optimizeVertexCache(ordered.data(), indices.data(), indices.size(), vertexCount);
+        meshopt_optimizeVertexCacheFifo(ordered.data(), indices.data(), indices.size(), vertexCount, 16);
         indices = std::move(ordered);
         all.insert(all.end(), indices.begin(), indices.end());
     }

@@ -33,7 +33,7 @@ void writeObj(OutputFiles& outputs, const std::string& path, const Mesh& mesh, s
 // name, the material's colour as its base colour (linear, like voxc's colours), so no two
 // materials are equal but for their names, and extras voxc_material_id / voxc_color.
 // Y up and counter-clockwise front faces, as voxc meshes already are. Ordered for rendering with
-// meshoptimizer: each primitive's triangles for the vertex cache (windings kept), then the vertices
+// meshoptimizer: each primitive's triangles for a 16-entry FIFO vertex cache (windings kept), then the vertices
 // in first-use order (unused ones left out); the same mesh, deterministically renumbered. An empty
 // mesh is a scene without nodes and without a BIN chunk.
 std::string encodeGlb(const Mesh& mesh, std::span<const Material> materials = {});
