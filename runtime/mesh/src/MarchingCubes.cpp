@@ -2,9 +2,9 @@
 
 #include "CellExtraction.h"
 #include "ChunkWorkers.h"
-#include "HugePages.h"
 #include "SignBits.h"
 #include "voxc/core/Errors.h"
+#include "voxc/core/HugePages.h"
 
 #include <algorithm>
 #include <atomic>
@@ -295,12 +295,12 @@ public:
         Mesh mesh;
         forEachChunk(2, [&](size_t half) {
             if (half == 0) {
-                mesh_memory::resizeOnHugePages(mesh.triangles, triangles * 3);
-                mesh_memory::resizeOnHugePages(mesh.triangleMaterials, triangles);
+                resizeOnHugePages(mesh.triangles, triangles * 3);
+                resizeOnHugePages(mesh.triangleMaterials, triangles);
             } else {
-                mesh_memory::resizeOnHugePages(mesh.positions, vertices);
-                mesh_memory::resizeOnHugePages(mesh.normals, vertices);
-                mesh_memory::resizeOnHugePages(mesh.vertexMaterials, vertices);
+                resizeOnHugePages(mesh.positions, vertices);
+                resizeOnHugePages(mesh.normals, vertices);
+                resizeOnHugePages(mesh.vertexMaterials, vertices);
             }
             return true;
         });

@@ -1,7 +1,7 @@
 #include "SignBits.h"
 
 #include "ChunkWorkers.h"
-#include "HugePages.h"
+#include "voxc/core/HugePages.h"
 
 #include <algorithm>
 #include <atomic>
@@ -70,7 +70,7 @@ SignBits classifySamples(const ChunkedGrid& grid, float iso, glm::ivec3 first, g
     signs.words = size_t(extent.x + 63) / 64 + 1;
     const size_t words = signs.words * size_t(extent.y) * size_t(extent.z);
     signs.bits.reset(new uint64_t[words]);
-    mesh_memory::adviseHugePages(signs.bits.get(), words * sizeof(uint64_t));
+    adviseHugePages(signs.bits.get(), words * sizeof(uint64_t));
     const Classify classify = classifier();
     const bool outsideSolid = 0.0f > iso;
     // Grid-local x range of the row inside the grid: [inBegin, inEnd).

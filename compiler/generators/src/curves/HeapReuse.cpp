@@ -1,13 +1,12 @@
 #include "HeapReuse.h"
 
+#include "voxc/core/HugePages.h"
+
 #include <cstdlib>
 #include <mutex>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
-#endif
-#if defined(__linux__)
-#include <sys/mman.h>
 #endif
 
 #include <algorithm>
@@ -33,17 +32,11 @@ constexpr uintptr_t kHugePage = 2u << 20;
 // free returns it to the top of the heap, which the raised trim threshold keeps) and asks for
 // huge pages over it; the solve's fields are then carved from it.
 void reserveHugePages(uint64_t bytes) {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
     if (bytes < 4 * kHugePage) return;
     void* block = std::malloc(size_t(bytes));
     if (!block) return;
-    const uintptr_t first = (uintptr_t(block) + kHugePage - 1) & ~(kHugePage - 1);
-    const uintptr_t last = (uintptr_t(block) + bytes) & ~(kHugePage - 1);
-    if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE); // advice: may fail
+    adviseHugePages(block, size_t(bytes));
     std::free(block);
-#else
-    (void)bytes;
-#endif
 }
 #endif
 

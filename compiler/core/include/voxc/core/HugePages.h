@@ -1,10 +1,10 @@
 #pragma once
-// The host mesher's largest buffers (the sign bits and the mesh's arrays, tens of MiB at 512^3)
-// are larger than glibc's mmap threshold, so every call maps them afresh and their first touches
-// fault in each 4 KiB page (about 10,000 faults for a 512^3 grid's mesh, at several microseconds
-// each in a virtual machine). Marked for transparent huge pages before the first touch
-// (MADV_HUGEPAGE; the kernel's default mode "madvise" gives them only where asked) they fault in
-// 2 MiB at a time. Elsewhere than Linux this does nothing.
+// Buffers larger than glibc's mmap threshold (the host mesher's sign bits and mesh arrays, a curves
+// solve's heap) are fresh mappings whose first touches fault in each 4 KiB page (about 10,000
+// faults for a 512^3 grid's mesh, at several microseconds each in a virtual machine). Marked for
+// transparent huge pages before the first touch (MADV_HUGEPAGE; the kernel's default mode
+// "madvise" gives them only where asked) they fault in 2 MiB at a time. Elsewhere than Linux this
+// does nothing.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -13,7 +13,7 @@
 #include <sys/mman.h>
 #endif
 
-namespace voxc::mesh_memory {
+namespace voxc {
 
 // Asks for huge pages over the whole 2 MiB pages inside [data, data + bytes) (advice: may fail).
 inline void adviseHugePages(void* data, size_t bytes) {
@@ -36,4 +36,4 @@ template <class T> void resizeOnHugePages(std::vector<T>& v, size_t n) {
     v.resize(n);
 }
 
-} // namespace voxc::mesh_memory
+} // namespace voxc
