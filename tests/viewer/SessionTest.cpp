@@ -2,8 +2,13 @@
 // re-run, a broken file that keeps the last world, edits with undo and redo, the saved edits format.
 #include "voxc/viewer/Session.h"
 
+#include "voxc/check/Check.h"
+#include "voxc/check/FeatureOverrides.h"
+#include "voxc/codegen/CompileCache.h"
 #include "voxc/core/Errors.h"
 #include "voxc/mesh/MarchingCubes.h"
+#include "voxc/stages/SolveCache.h"
+#include "voxc/syntax/Parser.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -49,8 +54,9 @@ protected:
     const Parameter& parameter(const Session& session, const std::string& name) {
         const auto& all = session.parameters();
         const auto it = std::find_if(all.begin(), all.end(), [&](const Parameter& p) { return p.name == name; });
+        static const Parameter missing{};
         EXPECT_NE(it, all.end()) << name;
-        return *it;
+        return it == all.end() ? missing : *it;
     }
 
     std::filesystem::path directory_;
@@ -245,6 +251,142 @@ TEST_F(SessionTest, SavedEditsAreTheRunEditsFormatWithShortestExactFloats) {
               "  {\"op\": \"add\", \"center\": [10, 12, 30], \"radius\": 3, \"softness\": 1, \"material\": \"rock\"}\n"
               "]\n");
     EXPECT_EQ(formatEdits({}, {}), "[]\n");
+}
+
+// A terrain, a curves block and an lsystem carved by a feature, small enough to solve in a moment.
+constexpr const char* kBlocksProgram = R"(world { size = [32, 24, 32]; chunk = 16; seed = 2; }
+material sand { id = 1; color = [0.8, 0.7, 0.5]; }
+material rock { id = 2; color = [0.5, 0.5, 0.5]; }
+start { fill { value = 0; } }
+terrain valley {
+  size = 32;  levels = [2, 5];  max_height = 10;  preset = mountain_river;  steps_scale = 0.05;  material = rock;
+  noise { amplitude = 2; }
+  spline river { points = [[0, 4, 16], [10, 4, 20], [22, 4, 12], [32, 4, 16]]; radius = 2; rain = 0.5; }
+}
+curves cliffs {
+  box = [[0, 0, 0], [31, 23, 15]];
+  curve face {
+    points = [[-2, 12, 8], [10, 12, 8], [21, 12, 8], [33, 12, 8]];
+    constraint { t = 0; material = sand; amplitude = 1; }
+    constraint { t = 1; material = sand; }
+  }
+  curve {
+    points = [[-2, 20, 2], [10, 20, 2], [21, 20, 2], [33, 20, 2]];
+    constraint { t = 0; }
+    constraint { t = 1; roughness = 0.25; }
+  }
+}
+lsystem net { expansions = 2; start = [4, 12, 24]; production Z { "FZ[RFZ]"; } }
+feature tunnels = lsystem_cave { lsystem = net; radius = 2; }
+pipeline { start; set valley; union cliffs; subtract tunnels; }
+)";
+
+TEST_F(SessionTest, CurvesTerrainAndLsystemKeysAreParametersWithTheCheckersRanges) {
+    write(kBlocksProgram);
+    Session session(context(), {path()});
+    ASSERT_TRUE(session.hasWorld()) << session.lastError();
+    struct Expected {
+        const char* name;
+        double value, min, max;
+        bool integer;
+    };
+    // Written values, and the language's defaults where the file leaves a key out.
+    const Expected expected[] = {
+        {"cliffs.face.constraint[0].amplitude", 1, 0, 16, false},
+        {"cliffs.face.constraint[1].amplitude", 0, 0, 16, false},
+        {"cliffs.face.constraint[0].roughness", 0.5, 0, 1, false},
+        {"cliffs.curve.constraint[1].roughness", 0.25, 0, 1, false},
+        {"cliffs.noise_frequency", 0.0625, 0, 16, false},
+        {"cliffs.smoothing", 1, 0, 64, true},
+        {"valley.river.rain", 0.5, 0, 1000, false},
+        {"valley.river.radius", 2, 0, 1e6, false},
+        {"valley.noise.amplitude", 2, 0, 1e6, false},
+        {"valley.steps_scale", 0.05, 0, 100, false},
+        {"valley.max_height", 10, 1, 1e6, false},
+        {"net.expansions", 2, 0, 16, true},
+        {"net.seed", 0, 0, 4294967295.0, true},
+        {"net.angle", 45, 0, 180, false},
+    };
+    for (const Expected& e : expected) {
+        const Parameter& p = parameter(session, e.name);
+        EXPECT_EQ(p.kind, Parameter::Kind::BlockKey) << e.name;
+        EXPECT_EQ(p.value, e.value) << e.name;
+        EXPECT_EQ(p.min, e.min) << e.name;
+        EXPECT_EQ(p.max, e.max) << e.name;
+        EXPECT_EQ(p.integer, e.integer) << e.name;
+        EXPECT_LE(p.sliderMax - p.sliderMin, 1e6) << e.name;
+    }
+    // Every block key's range is the checker's: both ends pass its range checks (E0007; a bound on
+    // work, E0012, depends on the whole file: 16 expansions of this net carve too many points), a
+    // step past either is an error.
+    Diagnostics parseErrors;
+    const SourceFile source(path(), kBlocksProgram);
+    const ast::File file = parse(source, parseErrors);
+    ASSERT_FALSE(parseErrors.hasErrors());
+    size_t blockKeys = 0;
+    for (const Parameter& p : session.parameters()) {
+        if (p.kind != Parameter::Kind::BlockKey) continue;
+        ++blockKeys;
+        const auto checkWith = [&](double value) {
+            return checkSource(SourceFile(path(), overrideFeatureKeys(kBlocksProgram, file, {{p.name, value}})));
+        };
+        for (const double inside : {p.min, p.max}) {
+            const CheckResult checked = checkWith(inside);
+            for (const Diagnostic& d : checked.diagnostics)
+                EXPECT_TRUE(d.severity != Severity::Error || d.code == "E0012")
+                    << p.name << " = " << inside << "\n" << checked.rendered();
+        }
+        const double step = p.integer ? 1.0 : std::max(1e-3, 1e-3 * (p.max - p.min));
+        for (const double outside : {p.min - step, p.max + step}) {
+            const CheckResult checked = checkWith(outside);
+            EXPECT_TRUE(checked.hasErrors()) << p.name << " = " << outside;
+        }
+    }
+    EXPECT_GE(blockKeys, 30u);
+}
+
+TEST_F(SessionTest, CurvesTerrainAndLsystemSlidersRerunAsIfTheFileSaidSo) {
+    // A solve cache of this test's own, so what solves below does not depend on earlier runs.
+    const std::optional<std::filesystem::path> cache = codegen::compileCacheDirectory();
+    codegen::setCompileCacheDirectory(directory_ / "cache");
+    struct Restore {
+        std::optional<std::filesystem::path> cache;
+        ~Restore() { codegen::setCompileCacheDirectory(cache); }
+    } restore{cache};
+    write(kBlocksProgram);
+    Session session(context(), {path()});
+    ASSERT_TRUE(session.hasWorld()) << session.lastError();
+    const std::vector<glm::vec3> before = session.world().mesh().positions;
+    ASSERT_TRUE(session.setParameter("cliffs.face.constraint[1].amplitude", 3)) << session.lastError();
+    EXPECT_TRUE(session.world().mesh().positions != before);
+    // A terrain key solves the terrain again; the curves block, unchanged, comes from the cache.
+    const stages::SolveCacheCounts counts = stages::solveCacheCounts();
+    ASSERT_TRUE(session.setParameter("valley.river.rain", 2)) << session.lastError();
+    EXPECT_EQ(stages::solveCacheCounts().solved - counts.solved, 1u);
+    EXPECT_EQ(stages::solveCacheCounts().hits - counts.hits, 1u);
+    ASSERT_TRUE(session.setParameter("net.expansions", 3)) << session.lastError();
+    EXPECT_TRUE(parameter(session, "net.expansions").overridden);
+    EXPECT_THROW(session.setParameter("cliffs.face.constraint[0].roughness", 1.5), UserError);
+    EXPECT_THROW(session.setParameter("net.expansions", 17), UserError);
+    // The same world as a file that writes the three values (one of them a key the file left out).
+    std::string text = kBlocksProgram;
+    const std::string secondPoint = "constraint { t = 1; material = sand; }";
+    text.replace(text.find(secondPoint), secondPoint.size(), "constraint { t = 1; material = sand; amplitude = 3; }");
+    text.replace(text.find("rain = 0.5"), 10, "rain = 2");
+    text.replace(text.find("expansions = 2"), 14, "expansions = 3");
+    write(text);
+    Session written(context(), {path()});
+    ASSERT_TRUE(written.hasWorld()) << written.lastError();
+    EXPECT_TRUE(written.world().mesh().positions == session.world().mesh().positions);
+
+    try {
+        session.setParameter("cliffs.face.constraint[3].amplitude", 1);
+        ADD_FAILURE() << "an unknown name was accepted";
+    } catch (const UserError& error) {
+        const std::string message = error.what();
+        for (const char* listed : {"cliffs.face.constraint[1].amplitude", "valley.river.rain", "net.expansions", "seed"})
+            EXPECT_NE(message.find(listed), std::string::npos) << listed << " in " << message;
+    }
 }
 
 } // namespace

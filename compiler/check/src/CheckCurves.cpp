@@ -32,7 +32,6 @@ constexpr std::string_view kCurvesKeys[] = {"box",        "normals",         "k"
                                            "sweeps",     "smoothing",       "noise_frequency",
                                            "noise_seed", "inputs",          "dead_zone",
                                            "input_amplitude", "input_roughness", "input_material"};
-constexpr int64_t kMaxDeadZone = 64;
 constexpr std::string_view kCurveKeys[] = {"points", "seed"};
 constexpr std::string_view kConstraintKeys[] = {"t", "left", "right", "amplitude", "roughness", "material"};
 constexpr std::string_view kNormalModes[] = {"laplace", "perona_malik"};
@@ -94,12 +93,12 @@ std::optional<curves::ConstraintPoint> readConstraint(Context& context, const as
             if (v) (std::string_view(side) == "left" ? point.left : point.right) = *v;
         }
     if (const ast::Assignment* a = keys.find("amplitude")) {
-        const std::optional<double> v = readNumber(context, *a, 0, 16);
+        const std::optional<double> v = readKey(context, *a, "constraint");
         ok = ok && v.has_value();
         if (v) point.amplitude = *v;
     }
     if (const ast::Assignment* a = keys.find("roughness")) {
-        const std::optional<double> v = readNumber(context, *a, 0, 1);
+        const std::optional<double> v = readKey(context, *a, "constraint");
         ok = ok && v.has_value();
         if (v) point.roughness = *v;
     }
@@ -347,32 +346,32 @@ std::optional<curves::Scene> readScene(Context& context, const ast::File& file, 
         if (sweeps) scene.options.sweeps = uint32_t(*sweeps);
     }
     if (const ast::Assignment* a = keys.find("smoothing")) {
-        const std::optional<int64_t> passes = readInteger(context, *a, 0, limits.maxSmoothPasses);
+        const std::optional<double> passes = readKey(context, *a, "curves");
         ok = ok && passes.has_value();
         if (passes) scene.options.smoothPasses = int32_t(*passes);
     }
     if (const ast::Assignment* a = keys.find("noise_frequency")) {
-        const std::optional<double> f = readNumber(context, *a, 0, 16);
+        const std::optional<double> f = readKey(context, *a, "curves");
         ok = ok && f.has_value();
         if (f) scene.noiseFrequency = float(*f);
     }
     if (const ast::Assignment* a = keys.find("noise_seed")) {
-        const std::optional<int64_t> seed = readInteger(context, *a, 0, std::numeric_limits<uint32_t>::max());
+        const std::optional<double> seed = readKey(context, *a, "curves");
         ok = ok && seed.has_value();
         if (seed) scene.noiseSeed = uint32_t(*seed);
     }
     if (const ast::Assignment* a = keys.find("dead_zone")) {
-        const std::optional<int64_t> radius = readInteger(context, *a, 0, kMaxDeadZone);
+        const std::optional<double> radius = readKey(context, *a, "curves");
         ok = ok && radius.has_value();
         if (radius) scene.inputOptions.deadZone = int32_t(*radius);
     }
     if (const ast::Assignment* a = keys.find("input_amplitude")) {
-        const std::optional<double> v = readNumber(context, *a, 0, 16);
+        const std::optional<double> v = readKey(context, *a, "curves");
         ok = ok && v.has_value();
         if (v) scene.inputOptions.amplitude = *v;
     }
     if (const ast::Assignment* a = keys.find("input_roughness")) {
-        const std::optional<double> v = readNumber(context, *a, 0, 1);
+        const std::optional<double> v = readKey(context, *a, "curves");
         ok = ok && v.has_value();
         if (v) scene.inputOptions.roughness = *v;
     }

@@ -44,6 +44,16 @@ void number(Context& context, const BlockKeys& keys, std::string_view key, doubl
     }
 }
 
+// A key of blockKeys(block) (voxc/check/KeyRanges.h) within its range.
+void keyNumber(Context& context, const BlockKeys& keys, std::string_view block, std::string_view key, double& out,
+               bool& ok) {
+    if (const ast::Assignment* a = keys.find(key)) {
+        const std::optional<double> v = readKey(context, *a, block);
+        ok = ok && v.has_value();
+        if (v) out = *v;
+    }
+}
+
 std::optional<std::array<int32_t, 2>> readLevels(Context& context, const ast::Assignment& a) {
     const std::optional<std::array<double, 2>> v = readRange(context, a);
     if (!v) return std::nullopt;
@@ -112,7 +122,7 @@ bool readControlPoints(Context& context, const ast::Assignment& a, std::vector<g
 
 // Table 3.1's attributes of a meta point, over what `meta` already holds.
 void readMetaKeys(Context& context, const BlockKeys& keys, terrain::MetaPoint& meta, bool& ok) {
-    number(context, keys, "radius", 0, 1e6, meta.radius, ok);
+    keyNumber(context, keys, "spline", "radius", meta.radius, ok);
     for (auto [key, side] : {std::pair{"left", &meta.left}, std::pair{"right", &meta.right}})
         if (const ast::Assignment* a = keys.find(key)) {
             std::optional<glm::dvec2> v = readPair(context, *a, -1e6, 1e6);
@@ -124,15 +134,15 @@ void readMetaKeys(Context& context, const BlockKeys& keys, terrain::MetaPoint& m
             ok = ok && v.has_value();
             if (v) *side = *v;
         }
-    number(context, keys, "hardness", 0, 1, meta.hardness, ok);
-    // The generator's own bound (one source), so the error is here at the key, not at the block.
-    constexpr double factor = terrain::kMaxMetaFactor;
-    number(context, keys, "noise_amplitude", 0, factor, meta.noiseAmplitude, ok);
-    number(context, keys, "roughness", 0, 1, meta.noiseRoughness, ok);
-    number(context, keys, "warp_low", 0, factor, meta.warpLow, ok);
-    number(context, keys, "warp_high", 0, factor, meta.warpHigh, ok);
-    number(context, keys, "rain", 0, factor, meta.rain, ok);
-    number(context, keys, "capacity", 0, factor, meta.capacity, ok);
+    keyNumber(context, keys, "spline", "hardness", meta.hardness, ok);
+    // The generator's own bound (terrain::kMaxMetaFactor, through KeyRanges), so the error is here
+    // at the key, not at the block.
+    keyNumber(context, keys, "spline", "noise_amplitude", meta.noiseAmplitude, ok);
+    keyNumber(context, keys, "spline", "roughness", meta.noiseRoughness, ok);
+    keyNumber(context, keys, "spline", "warp_low", meta.warpLow, ok);
+    keyNumber(context, keys, "spline", "warp_high", meta.warpHigh, ok);
+    keyNumber(context, keys, "spline", "rain", meta.rain, ok);
+    keyNumber(context, keys, "spline", "capacity", meta.capacity, ok);
 }
 
 // The spline's own keys are one meta point, constant along it; `meta` blocks instead place meta
@@ -240,8 +250,8 @@ std::optional<TerrainBlock> readTerrain(Context& context, const ast::Block& bloc
     }
     number(context, keys, "size", 1, 1e6, domain.size, ok);
     number(context, keys, "base", -kMaxCoordinate, kMaxCoordinate, out.base, ok);
-    number(context, keys, "max_height", 1e-3, 1e6, domain.maxHeight, ok);
-    number(context, keys, "ramp", 0.25, 64, out.ramp, ok);
+    keyNumber(context, keys, "terrain", "max_height", domain.maxHeight, ok);
+    keyNumber(context, keys, "terrain", "ramp", out.ramp, ok);
     // By default the finest level has about one cell per voxel.
     domain.maxLevel = std::clamp(int32_t(std::ceil(std::log2(domain.size))), 2, kMaxLevel);
     domain.minLevel = std::min(2, domain.maxLevel);
@@ -251,7 +261,7 @@ std::optional<TerrainBlock> readTerrain(Context& context, const ast::Block& bloc
         if (levels) domain.minLevel = (*levels)[0], domain.maxLevel = (*levels)[1];
     }
     double stepsScale = 1.0;
-    number(context, keys, "steps_scale", 0, 100, stepsScale, ok);
+    keyNumber(context, keys, "terrain", "steps_scale", stepsScale, ok);
     if (const ast::Assignment* a = keys.find("material")) {
         out.material = readMaterialKey(context, *a);
         ok = ok && out.material.has_value();
@@ -260,7 +270,7 @@ std::optional<TerrainBlock> readTerrain(Context& context, const ast::Block& bloc
         out.depositMaterial = readMaterialKey(context, *a);
         ok = ok && out.depositMaterial.has_value();
     }
-    number(context, keys, "deposit_threshold", 0, 1e6, out.depositThreshold, ok);
+    keyNumber(context, keys, "terrain", "deposit_threshold", out.depositThreshold, ok);
     for (const ast::Block& nested : block.blocks) {
         if (nested.kind == "spline") {
             if (!checkLabel(context, nested, true)) {
@@ -274,10 +284,10 @@ std::optional<TerrainBlock> readTerrain(Context& context, const ast::Block& bloc
             checkLabel(context, nested, false);
             rejectUnexpectedMembers(context, nested, "'noise' block", {});
             BlockKeys noise(context, nested, "'noise' block", kNoiseKeys);
-            number(context, noise, "amplitude", 0, 1e6, out.map.noise.amplitude, ok);
-            number(context, noise, "scale", 0, 1e6, out.map.noise.scale, ok);
+            keyNumber(context, noise, "noise", "amplitude", out.map.noise.amplitude, ok);
+            keyNumber(context, noise, "noise", "scale", out.map.noise.scale, ok);
             if (const ast::Assignment* a = noise.find("seed")) {
-                const std::optional<int64_t> v = readInteger(context, *a, 0, UINT32_MAX);
+                const std::optional<double> v = readKey(context, *a, "noise");
                 ok = ok && v.has_value();
                 if (v) out.map.noise.seed = uint32_t(*v);
             }

@@ -32,28 +32,52 @@ const ast::Assignment* findAssignment(const ast::Block& block, std::string_view 
 
 namespace {
 
-const ast::Block* findBlock(const std::vector<ast::Block>& blocks, std::string_view kind, std::string_view label) {
-    for (const ast::Block& block : blocks)
-        if (block.kind == kind && block.label == label) return &block;
-    return nullptr;
-}
-
-// The block an override's name points into and the key: "feature.key", "grammar.key",
-// "grammar.rule.key"; nullptr when the file has no such block.
-std::pair<const ast::Block*, std::string> keyBlock(const ast::File& file, const std::string& name) {
-    const size_t dot = name.find('.');
-    const size_t last = name.rfind('.');
-    const std::string owner = name.substr(0, dot), key = name.substr(last + 1);
-    if (dot == last) {
-        for (const ast::FeatureDecl& decl : file.features)
-            if (decl.name == owner) return {&decl.body, key};
-        return {findBlock(file.blocks, "grammar", owner), key};
+// A nested block of `parent` named by one segment of a key's name: its label, its kind when it is
+// the only block of that kind there, or KIND[I].
+const ast::Block* findMember(const ast::Block& parent, std::string_view segment) {
+    for (const ast::Block& member : parent.blocks)
+        if (member.label == segment) return &member;
+    const size_t open = segment.find('[');
+    if (open != std::string_view::npos) {
+        if (segment.back() != ']') return nullptr;
+        const std::string_view digits = segment.substr(open + 1, segment.size() - open - 2);
+        if (digits.empty() || digits.size() > 9 ||
+            !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
+            return nullptr;
+        size_t index = std::stoul(std::string(digits));
+        for (const ast::Block& member : parent.blocks)
+            if (member.kind == segment.substr(0, open) && index-- == 0) return &member;
+        return nullptr;
     }
-    const ast::Block* grammar = findBlock(file.blocks, "grammar", owner);
-    return {grammar ? findBlock(grammar->blocks, "rule", name.substr(dot + 1, last - dot - 1)) : nullptr, key};
+    const ast::Block* only = nullptr;
+    for (const ast::Block& member : parent.blocks)
+        if (member.kind == segment && !member.label) {
+            if (only != nullptr) return nullptr;
+            only = &member;
+        }
+    return only;
 }
 
 } // namespace
+
+std::optional<KeyTarget> findKeyTarget(const ast::File& file, std::string_view name) {
+    const size_t dot = name.find('.');
+    const size_t last = name.rfind('.');
+    if (dot == std::string_view::npos || last + 1 == name.size()) return std::nullopt;
+    const std::string_view owner = name.substr(0, dot);
+    const ast::Block* block = nullptr;
+    for (const ast::FeatureDecl& decl : file.features)
+        if (block == nullptr && decl.name == owner) block = &decl.body;
+    for (const ast::Block& top : file.blocks)
+        if (block == nullptr && top.label == owner) block = &top;
+    for (size_t at = dot + 1; block != nullptr && at <= last;) {
+        const size_t next = name.find('.', at); // at most `last`
+        block = findMember(*block, name.substr(at, next - at));
+        at = next + 1;
+    }
+    if (block == nullptr) return std::nullopt;
+    return KeyTarget{block, std::string(name.substr(last + 1))};
+}
 
 std::string overrideFeatureKeys(const std::string& text, const ast::File& file, const std::map<std::string, double>& overrides) {
     if (overrides.empty()) return text;
@@ -65,8 +89,10 @@ std::string overrideFeatureKeys(const std::string& text, const ast::File& file, 
     std::vector<Splice> splices;
     for (const auto& [name, value] : overrides) {
         if (name.find('.') == std::string::npos) continue;
-        const auto [block, key] = keyBlock(file, name);
-        if (block == nullptr) continue;
+        const std::optional<KeyTarget> target = findKeyTarget(file, name);
+        if (!target) continue;
+        const ast::Block* block = target->block;
+        const std::string& key = target->key;
         if (const ast::Assignment* a = findAssignment(*block, key)) {
             if (a->value.scalar && a->value.loc.line > 0)
                 splices.push_back({offsetOf(lineStarts, a->value.loc), a->value.loc.length, formatNumber(value)});

@@ -2,6 +2,9 @@
 
 #include "Suggest.h"
 
+#include "voxc/check/KeyRanges.h"
+#include "voxc/core/Errors.h"
+
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -165,6 +168,14 @@ std::optional<int64_t> readInteger(Context& context, const ast::Assignment& a, i
 std::optional<std::array<double, 3>> readNumberVec3(Context& context, const ast::Assignment& a, double min,
                                                     double max) {
     return vec3(context, a, a.value, false, min, max);
+}
+
+std::optional<double> readKey(Context& context, const ast::Assignment& a, std::string_view block) {
+    const std::optional<KeyRange> range = blockKeyRange(block, a.key);
+    VOXC_ASSERT(range.has_value());
+    if (!range->integer) return readNumber(context, a, range->min, range->max);
+    const std::optional<int64_t> v = readInteger(context, a, int64_t(range->min), int64_t(range->max));
+    return v ? std::optional<double>(double(*v)) : std::nullopt;
 }
 
 std::optional<int64_t> readIntegerElement(Context& context, const ast::Assignment& a, const ast::Value& element,

@@ -65,6 +65,9 @@ std::optional<int64_t> readInteger(Context& context, const ast::Assignment& a, i
 std::optional<std::array<double, 3>> readNumberVec3(Context& context, const ast::Assignment& a, double min,
                                                     double max);
 std::optional<glm::ivec3> readIntegerVec3(Context& context, const ast::Assignment& a, int64_t min, int64_t max);
+// A key of voxc/check/KeyRanges.h's blockKeys(block) within its range: an integer when the range
+// says so (readInteger's errors), else a number (readNumber's).
+std::optional<double> readKey(Context& context, const ast::Assignment& a, std::string_view block);
 // One element of a's list value as an integer in [min, max] (E0010, E0007 at the element).
 std::optional<int64_t> readIntegerElement(Context& context, const ast::Assignment& a, const ast::Value& element,
                                           int64_t min, int64_t max);

@@ -87,6 +87,36 @@ Parameter constantParameter(const std::string& name, double written, const std::
     return p;
 }
 
+// Sliders for the number keys of curves, terrain and lsystem blocks and of the blocks nested in them
+// (voxc/check/KeyRanges.h's blockKeys), named as findKeyTarget reads them: a nested block by its
+// label, by its kind when it is the only unlabelled one of that kind, else as KIND[I].
+void addBlockKeys(const ast::File& file, const ast::Block& block, const std::string& name,
+                  const std::map<std::string, double>& overrides, std::vector<Parameter>& parameters) {
+    for (const BlockKey& k : blockKeys(block.kind)) {
+        const ast::Assignment* a = findAssignment(block, k.key);
+        const std::optional<double> written = a ? literalNumber(a->value.scalar.get()) : k.range.absent;
+        if (!written) continue;
+        Parameter p{Parameter::Kind::BlockKey, fmt::format("{}.{}", name, k.key), *written, k.range.min, k.range.max,
+                    k.range.integer};
+        // Only a name that leads back to this block (a name two blocks share is offered for neither).
+        const std::optional<KeyTarget> target = findKeyTarget(file, p.name);
+        if (!target || target->block != &block) continue;
+        if (auto it = overrides.find(p.name); it != overrides.end()) p.value = it->second, p.overridden = true;
+        setSliderSpan(p);
+        parameters.push_back(p);
+    }
+    std::map<std::string, size_t> seen, unlabelled;
+    for (const ast::Block& member : block.blocks)
+        if (!member.label) ++unlabelled[member.kind];
+    for (const ast::Block& member : block.blocks) {
+        const size_t index = seen[member.kind]++;
+        const std::string segment = member.label                   ? *member.label
+                                    : unlabelled[member.kind] == 1 ? member.kind
+                                                                   : fmt::format("{}[{}]", member.kind, index);
+        addBlockKeys(file, member, fmt::format("{}.{}", name, segment), overrides, parameters);
+    }
+}
+
 } // namespace
 
 struct Session::Loaded {
@@ -128,6 +158,7 @@ void Session::listParameters(const ast::File& file) {
     // The declared range of a key a constant is the value of: a grammar's, a rule's or a feature's.
     const auto rangeOf = [&](std::string_view blockKind, std::string_view key) -> std::optional<KeyRange> {
         if (std::optional<KeyRange> range = grammarKeyRange(blockKind, key)) return range;
+        if (std::optional<KeyRange> range = blockKeyRange(blockKind, key)) return range;
         if (const dey::GeneratorInfo* info = dey::findGenerator(blockKind))
             for (const dey::GeneratorKey& k : info->keys)
                 if (k.name == key && k.type != dey::GeneratorKeyType::Vec3)
@@ -184,6 +215,9 @@ void Session::listParameters(const ast::File& file) {
             addKey(rule, "rule", "weight", 1.0, prefix + "weight");
         }
     }
+    for (const ast::Block& block : file.blocks)
+        if (block.label && !blockKeys(block.kind).empty())
+            addBlockKeys(file, block, *block.label, keyOverrides_, parameters);
     parameters_ = std::move(parameters);
 }
 
@@ -287,7 +321,8 @@ bool Session::setParameter(const std::string& name, double value) {
         break;
     case Parameter::Kind::Constant: constOverrides_[name] = value; break;
     case Parameter::Kind::FeatureKey:
-    case Parameter::Kind::GrammarKey: keyOverrides_[name] = value; break;
+    case Parameter::Kind::GrammarKey:
+    case Parameter::Kind::BlockKey: keyOverrides_[name] = value; break;
     }
     return reload();
 }

@@ -417,13 +417,15 @@ void App::panel() {
         ImGui::TextUnformatted(session_.warnings().c_str());
     }
     if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
-        // Constants and the seed first, then one folded node per feature and per grammar with its keys.
+        // Constants and the seed first, then one folded node per feature, grammar, curves, terrain and
+        // lsystem block with its keys.
         std::optional<std::pair<std::string, double>> released;
         std::string feature;
         bool featureOpen = false;
         for (const Parameter& p : session_.parameters()) {
             std::string label = p.name;
-            if (p.kind == Parameter::Kind::FeatureKey || p.kind == Parameter::Kind::GrammarKey) {
+            if (p.kind == Parameter::Kind::FeatureKey || p.kind == Parameter::Kind::GrammarKey ||
+                p.kind == Parameter::Kind::BlockKey) {
                 const size_t dot = p.name.find('.');
                 if (p.name.compare(0, dot, feature) != 0 || feature.size() != dot) {
                     if (featureOpen) ImGui::TreePop();

@@ -7,6 +7,7 @@
 #include "voxc/syntax/Ast.h"
 
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -15,10 +16,22 @@ namespace voxc {
 // The key's assignment in `block`, or null when the block does not write it.
 const ast::Assignment* findAssignment(const ast::Block& block, std::string_view key);
 
-// `text` (which parsed to `file`) with each "feature.key" of `overrides` written as its value in
-// the feature block of that name; likewise "grammar.key" and "grammar.rule.key" in grammar and
-// rule blocks (the viewer's grammar sliders). Names of blocks the file does not have change
-// nothing; featureOverrideErrors finds those of features.
+// The block a key's name points into, and the key: "OWNER.KEY" or "OWNER.MEMBER. ... .KEY", where
+// OWNER is a feature or a labelled top-level block (grammar, curves, terrain, lsystem, ...) and
+// each MEMBER a block nested in the one before: by its label ("grammar.rule.probability",
+// "valley.river.rain"), by its kind when it is the only unlabelled block of that kind there
+// ("valley.noise.amplitude"), or as KIND[I], the I-th block of that kind counted from 0
+// ("cliffs.face.constraint[1].amplitude", "cliffs.curve[0].constraint[0].roughness"). Nothing when
+// the file has no such block.
+struct KeyTarget {
+    const ast::Block* block;
+    std::string key;
+};
+std::optional<KeyTarget> findKeyTarget(const ast::File& file, std::string_view name);
+
+// `text` (which parsed to `file`) with each key of `overrides` (named as findKeyTarget reads them)
+// written as its value in its block, or added to the block when the file leaves it out. Names of
+// blocks the file does not have change nothing; featureOverrideErrors finds those of features.
 std::string overrideFeatureKeys(const std::string& text, const ast::File& file, const std::map<std::string, double>& overrides);
 
 // One message per name of `overrides` that is not "feature.key" of a feature `file` declares.

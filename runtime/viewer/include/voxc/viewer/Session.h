@@ -5,8 +5,10 @@
 // the last good world when the file (or a slider) no longer checks. docs/viewer.md.
 //
 // Parameters: every `const` written as a plain number, the world's seed, every number or integer
-// key of a feature (Dey's generators), and each grammar's `iterations` and each rule's
-// `probability`, `priority` and `weight`, each within the range the language declares for its key
+// key of a feature (Dey's generators), each grammar's `iterations` and each rule's `probability`,
+// `priority` and `weight`, and the number keys of curves, terrain and lsystem blocks (constraint
+// points' amplitude and roughness, a terrain spline's radius and rain, an lsystem's expansions,
+// ...: voxc/check/KeyRanges.h's blockKeys), each within the range the language declares for its key
 // (a constant: the ranges of the keys it is the value of, or without one, 0 to twice its value).
 // A constant is overridden through CheckOptions::constOverrides; a key by rewriting its value in
 // the text given to the checker (the file on disk is never written), so both are checked exactly
@@ -31,10 +33,12 @@ struct File;
 namespace voxc::viewer {
 
 struct Parameter {
-    enum class Kind : uint8_t { Constant, FeatureKey, GrammarKey, Seed };
+    enum class Kind : uint8_t { Constant, FeatureKey, GrammarKey, BlockKey, Seed };
     Kind kind = Kind::Constant;
     // The constant's name, "feature.key", "grammar.key" (iterations), "grammar.rule.key"
-    // (probability, priority, weight) or "seed".
+    // (probability, priority, weight), a curves, terrain or lsystem block's key as findKeyTarget
+    // (voxc/check/FeatureOverrides.h) reads it ("cliffs.face.constraint[1].amplitude",
+    // "valley.river.rain", "net.expansions"), or "seed".
     std::string name = {};
     double value = 0.0;
     double min = 0.0, max = 1.0; // what `set` accepts: the key's declared range
@@ -96,7 +100,7 @@ public:
     uint64_t generation() const { return generation_; }
 
     const std::vector<Parameter>& parameters() const { return parameters_; }
-    // Sets a parameter by name (constant, "feature.key" or "seed") and reloads. UserError for an
+    // Sets a parameter by name (Parameter::name) and reloads. UserError for an
     // unknown name or a value outside the parameter's range; false when the reload failed.
     bool setParameter(const std::string& name, double value);
     // Drops every slider override and reloads.
@@ -120,7 +124,7 @@ private:
     VulkanContext& context_;
     SessionOptions options_;
     std::map<std::string, double> constOverrides_;
-    std::map<std::string, double> keyOverrides_; // "feature.key", "grammar.key", "grammar.rule.key" -> value
+    std::map<std::string, double> keyOverrides_; // a key's name (Parameter::name) -> value
     std::optional<uint32_t> seedOverride_;
     std::vector<Parameter> parameters_;
     std::vector<Brush> edits_, redo_;
