@@ -6,8 +6,6 @@
 #include "voxc/generators/curves/Grid.h"
 
 #include <algorithm>
-#include <atomic>
-#include <thread>
 
 namespace voxc::curves {
 
@@ -41,20 +39,26 @@ inline bool setBefore(const std::vector<int32_t>& layer, size_t k, int32_t l) {
     return v >= 0 && v < l;
 }
 
-// Layers of at least this many cells are valued by two threads, in chunks of kLayerChunk cells.
-inline constexpr uint32_t kMinFrontForThreads = 8192, kLayerChunk = 1024;
+// The fronts value the cells in bands of this many slices (growLayers).
+inline constexpr int32_t kBandSlices = 8;
 
-// Grows BFS layers from the cells of layer 0 (layer[i] == 0; every other cell -1) and calls `value(j, p, layer)` once for every other cell j (p its coordinates) to compute and
-// store its result. `value` must read only cells of earlier layers (0 <= layer[k] < the layer it
-// is given) and write only cell j: then no cell's result depends on the order a layer's cells are
-// visited or on the threads. The box has no obstacles, so a cell's BFS layer is its city-block
-// distance to the nearest cell of layer 0: three separable passes (along x, y, z, each forwards
-// then backwards) give every layer at once, a counting sort lists each layer's cells in index
-// order, and the values run layer by layer over those lists, slice by slice through the box (a
-// front grown by claiming neighbours, in the order they were claimed, read its cells nearly at
-// random and paid an atomic exchange per cell). Returns the number of layers after 0.
+// Grows BFS layers from the cells of layer 0 (layer[i] == 0; every other cell -1) and calls
+// `value(j, p, layer)` once for every other cell j (p its coordinates) to compute and store its
+// result. `value` must read only cells of earlier layers (0 <= layer[k] < the layer it is given)
+// and write only cell j: then no cell's result depends on the order of the calls as long as every
+// neighbour of an earlier layer comes first. The box has no obstacles, so a cell's BFS layer is
+// its city-block distance to the nearest cell of layer 0 (three separable passes along x, y and z,
+// each forwards then backwards, give every layer at once), and a face neighbour's layer differs
+// from the cell's by at most 1: a cell of layer l in slice z reads cells of layer l - 1 in slices
+// z - 1 .. z + 1, whose s = z + l - 1 + (-1, 0 or 1) is at most the cell's s = z + l. So the cells are valued in bands of
+// kBandSlices values of s, within a band layer by layer, within a layer slice by slice in index
+// order (a counting sort lists each (layer, slice) pair's cells): the cells of consecutive layers
+// a band visits lie next to each other, so the fronts read what the layer before left in cache
+// (valuing each whole layer in turn read its cells' neighbours from memory, as a layer spans the
+// box). `order` (one entry per cell) is sized by the caller. Single-threaded: the host runs its
+// two fronts side by side (Fronts.h). Returns the number of layers after 0.
 template <typename Value>
-int32_t growLayers(const Box& b, std::vector<int32_t>& layer, Value&& value) {
+int32_t growLayers(const Box& b, std::vector<int32_t>& layer, std::vector<uint32_t>& order, Value&& value) {
     if (std::find(layer.begin(), layer.end(), 0) == layer.end()) return 0; // no cell to grow from
     const int32_t nx = b.size.x, ny = b.size.y, nz = b.size.z;
     const size_t row = size_t(nx), slice = row * size_t(ny);
@@ -87,83 +91,29 @@ int32_t growLayers(const Box& b, std::vector<int32_t>& layer, Value&& value) {
             }
         }
     });
-    // Each layer's cells in index order: start[l] .. start[l + 1] of `order`.
+    // The cells of layer l in slice group g (groupSlices slices each: 1 unless the (layer, slice)
+    // pairs outnumber the cells, as in a long thin box), in index order: start[k] .. start[k + 1]
+    // of `order`, k = l * groups + g. A face neighbour's group differs by at most 1 too.
     int32_t layers = 0;
     for (int32_t v : layer) layers = std::max(layers, v);
-    std::vector<uint32_t> start(size_t(layers) + 2, 0);
-    for (int32_t v : layer) ++start[size_t(v) + 1];
-    for (size_t l = 1; l < start.size(); ++l) start[l] += start[l - 1];
-    std::vector<uint32_t> order(layer.size()), fill(start.begin(), start.end() - 1);
-    for (size_t i = 0; i < layer.size(); ++i) order[fill[size_t(layer[i])]++] = uint32_t(i);
-    auto run = [&](const uint32_t* first, const uint32_t* last, int32_t l) {
-        for (const uint32_t* c = first; c != last; ++c) value(size_t(*c), coordinates(b, *c), l);
-    };
-    // A large layer's cells are taken in chunks from a shared counter by this thread and a helper
-    // that lives as long as the growth, whichever comes first: a thread without a core (a loaded
-    // machine) then holds a layer up by at most the chunk it took. (Halving every layer between
-    // two threads, each started for its layer, made the fronts slower on two loaded cores than on
-    // one.) The layer's description is written before its generation is published in `claim`
-    // (generation << 32 | the next cell to take); a take is a compare-exchange on that word, so
-    // it succeeds only while the layer it read is the current one and unfinished.
-    std::atomic<uint64_t> claim{0};
-    std::atomic<uint32_t> done{0}, count{0};
-    std::atomic<const uint32_t*> cells{nullptr};
-    std::atomic<int32_t> current{0};
-    std::atomic<bool> stop{false};
-    auto help = [&](uint32_t generation) {
-        uint64_t word = claim.load(std::memory_order_acquire);
-        while (uint32_t(word >> 32) == generation) {
-            const uint32_t next = uint32_t(word), n = count.load(std::memory_order_relaxed);
-            if (next >= n) return;
-            const uint32_t* layerCells = cells.load(std::memory_order_relaxed);
-            const int32_t l = current.load(std::memory_order_relaxed);
-            const uint32_t taken = std::min(next + kLayerChunk, n);
-            if (!claim.compare_exchange_weak(word, (word & ~uint64_t(0xffffffffu)) | taken, std::memory_order_acq_rel,
-                                             std::memory_order_acquire))
-                continue;
-            run(layerCells + next, layerCells + taken, l);
-            done.fetch_add(taken - next, std::memory_order_release);
-            done.notify_one();
-        }
-    };
-    std::thread helper;
-    uint32_t generation = 0;
-    for (int32_t l = 1; l <= layers; ++l) {
-        const uint32_t* first = order.data() + start[size_t(l)];
-        const uint32_t n = start[size_t(l) + 1] - start[size_t(l)];
-        if (n < kMinFrontForThreads) {
-            run(first, first + n, l);
-            continue;
-        }
-        if (!helper.joinable())
-            helper = std::thread([&] {
-                for (uint32_t seen = 0;;) {
-                    uint64_t word = claim.load(std::memory_order_acquire);
-                    while (uint32_t(word >> 32) == seen) {
-                        claim.wait(word, std::memory_order_acquire);
-                        word = claim.load(std::memory_order_acquire);
-                    }
-                    if (stop.load(std::memory_order_acquire)) return;
-                    seen = uint32_t(word >> 32);
-                    help(seen);
-                }
-            });
-        count.store(n, std::memory_order_relaxed);
-        cells.store(first, std::memory_order_relaxed);
-        current.store(l, std::memory_order_relaxed);
-        done.store(0, std::memory_order_relaxed);
-        claim.store(uint64_t(++generation) << 32, std::memory_order_release);
-        claim.notify_one();
-        help(generation);
-        for (uint32_t d = done.load(std::memory_order_acquire); d < n; d = done.load(std::memory_order_acquire))
-            done.wait(d, std::memory_order_acquire);
-    }
-    if (helper.joinable()) {
-        stop.store(true, std::memory_order_release);
-        claim.store(uint64_t(++generation) << 32, std::memory_order_release);
-        claim.notify_one();
-        helper.join();
-    }
+    const uint64_t pairs = uint64_t(layers + 1) * uint64_t(nz);
+    const int32_t groupSlices = int32_t(std::max<uint64_t>(1, (pairs + b.cellCount() - 1) / b.cellCount()));
+    const int32_t groups = (nz + groupSlices - 1) / groupSlices;
+    std::vector<uint32_t> start(size_t(layers + 1) * size_t(groups) + 1, 0);
+    auto bucket = [&](size_t i, int32_t z) { return size_t(layer[i]) * size_t(groups) + size_t(z / groupSlices); };
+    for (int32_t z = 0; z < nz; ++z)
+        for (size_t i = size_t(z) * slice, end = i + slice; i < end; ++i) ++start[bucket(i, z) + 1];
+    for (size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
+    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+    for (int32_t z = 0; z < nz; ++z)
+        for (size_t i = size_t(z) * slice, end = i + slice; i < end; ++i) order[fill[bucket(i, z)]++] = uint32_t(i);
+    // Bands of s = g + l over the layers after 0 (s from 1 to layers + groups - 1).
+    for (int32_t s0 = 1; s0 < layers + groups; s0 += kBandSlices)
+        for (int32_t l = std::max(1, s0 - groups + 1); l <= layers && l < s0 + kBandSlices; ++l)
+            for (int32_t g = std::max(0, s0 - l), g1 = std::min(groups, s0 + kBandSlices - l); g < g1; ++g) {
+                const size_t k = size_t(l) * size_t(groups) + size_t(g);
+                for (uint32_t c = start[k]; c != start[k + 1]; ++c) value(size_t(order[c]), coordinates(b, order[c]), l);
+            }
     return layers;
 }
 

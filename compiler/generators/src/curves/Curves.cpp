@@ -1,9 +1,13 @@
 #include "voxc/generators/curves/Curves.h"
 
+#include "Fronts.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <optional>
+#include <thread>
 
 namespace voxc::curves {
 
@@ -23,6 +27,27 @@ void timed(std::vector<std::pair<std::string, double>>& phases, const char* name
 // 4 of the cells change side, each within 0.01 voxel of the surface), while two V-cycles of
 // eight are saved (docs/curves.md).
 constexpr float kSolveTolerance = 1e-4f;
+
+// Runs `first` on a second thread and `second` on this one; rethrows what either threw.
+template <typename First, typename Second>
+void bothOf(First&& first, Second&& second) {
+    std::exception_ptr failed;
+    std::thread other([&] {
+        try {
+            first();
+        } catch (...) {
+            failed = std::current_exception();
+        }
+    });
+    try {
+        second();
+    } catch (...) {
+        other.join();
+        throw;
+    }
+    other.join();
+    if (failed) std::rethrow_exception(failed);
+}
 
 } // namespace
 
@@ -63,11 +88,24 @@ Result solveCurves(const Constraints& cs, const Options& options, const Limits& 
     timed(r.phaseMs, "parameters", [&] {
         r.solves.push_back(linear("parameters", fixedR, {&r.amplitude, &r.roughness}, kSolveTolerance * maxAmplitude, limits));
     });
-    timed(r.phaseMs, "material", [&] { r.material = (solvers.material ? solvers.material : propagateMaterial)(cs); });
-    timed(r.phaseMs, "surface", [&] {
-        r.surface = (solvers.surface ? solvers.surface : SurfacePropagator(propagateSurface))(cs, r.normalX, r.normalY,
-                                                                                            r.normalZ, options.propagate);
-    });
+    if (!solvers.material && !solvers.surface) {
+        // The host's fronts are independent and single-threaded (growLayers): one per core,
+        // their fields allocated here (Fronts.h).
+        timed(r.phaseMs, "fronts", [&] {
+            MaterialFront material = prepareMaterial(cs);
+            SurfaceFront surface = prepareSurface(cs);
+            bothOf([&] { growMaterial(cs, material); },
+                   [&] { growSurface(cs, r.normalX, r.normalY, r.normalZ, options.propagate, surface); });
+            r.material = std::move(material.field);
+            r.surface = std::move(surface.field);
+        });
+    } else {
+        timed(r.phaseMs, "material", [&] { r.material = (solvers.material ? solvers.material : propagateMaterial)(cs); });
+        timed(r.phaseMs, "surface", [&] {
+            r.surface = (solvers.surface ? solvers.surface : SurfacePropagator(propagateSurface))(
+                cs, r.normalX, r.normalY, r.normalZ, options.propagate);
+        });
+    }
     timed(r.phaseMs, "smoothing", [&] {
         r.smoothed = (solvers.smoothing ? solvers.smoothing : Smoother(smoothBinomial))(r.surface.distance, options.smoothPasses);
     });

@@ -1,6 +1,7 @@
 #include "voxc/generators/curves/Diffuse.h"
 
 #include "Bfs.h"
+#include "Fronts.h"
 
 #include <algorithm>
 #include <cmath>
@@ -104,17 +105,32 @@ void peronaMalikSweeps(const Constraints& cs, NormalField& n, float k, uint32_t 
     }
 }
 
-MaterialField propagateMaterial(const Constraints& cs) {
+MaterialFront prepareMaterial(const Constraints& cs) {
     const Box& b = cs.box;
-    MaterialField out{std::vector<uint16_t>(b.cellCount(), 0), Field3(b), std::vector<uint8_t>(b.cellCount(), 0), 0};
-    std::vector<int32_t> layer(b.cellCount(), -1);
+    MaterialFront front{{std::vector<uint16_t>(b.cellCount(), 0), Field3(b), std::vector<uint8_t>(b.cellCount(), 0), 0},
+                        std::vector<int32_t>(b.cellCount(), -1),
+                        std::vector<uint32_t>(b.cellCount())};
+    MaterialField& out = front.field;
     for (size_t i = 0; i < out.assigned.size(); ++i)
         if (cs.flags[i] & kInParams) {
             out.assigned[i] = 1, out.material[i] = cs.material[i], out.confidence.values[i] = 1.0f;
-            layer[i] = 0;
+            front.layer[i] = 0;
         }
+    return front;
+}
+
+MaterialField propagateMaterial(const Constraints& cs) {
+    MaterialFront front = prepareMaterial(cs);
+    growMaterial(cs, front);
+    return std::move(front.field);
+}
+
+void growMaterial(const Constraints& cs, MaterialFront& front) {
+    const Box& b = cs.box;
+    MaterialField& out = front.field;
+    const std::vector<int32_t>& layer = front.layer;
     const size_t row = size_t(b.size.x), slice = row * size_t(b.size.y);
-    out.layers = growLayers(b, layer, [&](size_t p, glm::ivec3 q, int32_t l) {
+    out.layers = growLayers(b, front.layer, front.order, [&](size_t p, glm::ivec3 q, int32_t l) {
         const bool inside[6] = {q.x > 0, q.x + 1 < b.size.x, q.y > 0, q.y + 1 < b.size.y, q.z > 0, q.z + 1 < b.size.z};
         const size_t neighbour[6] = {p - 1, p + 1, p - row, p + row, p - slice, p + slice};
         uint16_t ids[6];
@@ -138,7 +154,6 @@ MaterialField propagateMaterial(const Constraints& cs) {
         out.material[p] = ids[best];
         out.confidence.values[p] = weights[best] / total;
     });
-    return out;
 }
 
 } // namespace voxc::curves

@@ -1,6 +1,7 @@
 #include "voxc/generators/curves/Propagate.h"
 
 #include "Bfs.h"
+#include "Fronts.h"
 
 #include <cmath>
 #include <limits>
@@ -12,17 +13,32 @@ float propagationCandidate(float fromValue, float normalP, float normalX, int32_
     return fromValue + (sign > 0 ? step : -step);
 }
 
-SurfaceField propagateSurface(const Constraints& cs, const Field3& nx, const Field3& ny, const Field3& nz,
-                              PropagateRule rule) {
+SurfaceFront prepareSurface(const Constraints& cs) {
     const Box& b = cs.box;
-    SurfaceField out{Field3(b, std::numeric_limits<float>::infinity()), std::vector<int32_t>(b.cellCount(), -1), 0};
+    SurfaceFront front{{Field3(b, std::numeric_limits<float>::infinity()), std::vector<int32_t>(b.cellCount(), -1), 0},
+                       std::vector<uint32_t>(b.cellCount())};
+    SurfaceField& out = front.field;
     for (size_t i = 0; i < out.layer.size(); ++i)
         if (cs.flags[i] & kInSurface) {
             out.layer[i] = 0, out.distance.values[i] = cs.surface.values[i];
         }
+    return front;
+}
+
+SurfaceField propagateSurface(const Constraints& cs, const Field3& nx, const Field3& ny, const Field3& nz,
+                              PropagateRule rule) {
+    SurfaceFront front = prepareSurface(cs);
+    growSurface(cs, nx, ny, nz, rule, front);
+    return std::move(front.field);
+}
+
+void growSurface(const Constraints& cs, const Field3& nx, const Field3& ny, const Field3& nz, PropagateRule rule,
+                 SurfaceFront& front) {
+    const Box& b = cs.box;
+    SurfaceField& out = front.field;
     const Field3* normal[3] = {&nx, &ny, &nz};
     const size_t row = size_t(b.size.x), slice = row * size_t(b.size.y);
-    out.layers = growLayers(b, out.layer, [&](size_t p, glm::ivec3 q, int32_t layer) {
+    out.layers = growLayers(b, out.layer, front.order, [&](size_t p, glm::ivec3 q, int32_t layer) {
         // Candidates from the neighbours set in earlier layers, in neighbour order.
         const bool inside[6] = {q.x > 0, q.x + 1 < b.size.x, q.y > 0, q.y + 1 < b.size.y, q.z > 0, q.z + 1 < b.size.z};
         const size_t neighbour[6] = {p - 1, p + 1, p - row, p + row, p - slice, p + slice};
@@ -43,7 +59,6 @@ SurfaceField propagateSurface(const Constraints& cs, const Field3& nx, const Fie
         }
         out.distance.values[p] = best;
     });
-    return out;
 }
 
 Field3 smoothBinomial(const Field3& field, int32_t passes) {

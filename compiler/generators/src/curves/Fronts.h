@@ -1,0 +1,29 @@
+#pragma once
+// The host's two fronts (material, surface) in two steps: prepare allocates a front's fields and
+// scratch and sets its layer 0, grow values every other cell (growLayers, single-threaded). The
+// host runs the two grows side by side on two threads (solveCurves); preparing both on the
+// calling thread first keeps their fields in its heap, which the solve reuses and backs with huge
+// pages (HeapReuse.h): a field a new thread allocates comes from that thread's own malloc arena,
+// fresh memory in small pages.
+#include "voxc/generators/curves/Diffuse.h"
+#include "voxc/generators/curves/Propagate.h"
+
+namespace voxc::curves {
+
+struct MaterialFront {
+    MaterialField field;
+    std::vector<int32_t> layer;  // 0 on Omega_R, then the BFS layer
+    std::vector<uint32_t> order; // growLayers' scratch
+};
+MaterialFront prepareMaterial(const Constraints& constraints);
+void growMaterial(const Constraints& constraints, MaterialFront& front);
+
+struct SurfaceFront {
+    SurfaceField field;
+    std::vector<uint32_t> order; // growLayers' scratch
+};
+SurfaceFront prepareSurface(const Constraints& constraints);
+void growSurface(const Constraints& constraints, const Field3& nx, const Field3& ny, const Field3& nz, PropagateRule rule,
+                 SurfaceFront& front);
+
+} // namespace voxc::curves
