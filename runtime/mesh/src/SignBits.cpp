@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdint>
+#include <vector>
 
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
@@ -80,9 +82,21 @@ SignBits classifySamples(const ChunkedGrid& grid, float iso, glm::ivec3 first, g
     constexpr int tileSide = 1 << TileRanges::kShift;
     std::atomic<size_t> samplesRead{0};
 
+    // Rows of one band (the rows of a tile, or of a chunk without tile ranges) read the same tiles
+    // in the same chunks: the band's solid tiles are a template of bits and its mixed tiles a list
+    // of contiguous runs (within one chunk's row) to classify, made once per band and slice.
+    const int bandShift = ranges ? std::min(TileRanges::kShift, layout.chunkShift) : layout.chunkShift;
+    struct Run {
+        int gx, count;
+        size_t address; // of sample (gx, band's first row, gz)
+    };
+
     forEachChunk(size_t(extent.z), [&](size_t slice) {
         const int z = int(slice), gz = first.z + z;
         size_t read = 0;
+        std::vector<uint64_t> solidTemplate(signs.words);
+        std::vector<Run> runs;
+        int bandFirstY = 0, band = INT32_MIN;
         for (int y = 0; y < extent.y; ++y) {
             const int gy = first.y + y;
             uint64_t* row = signs.row(y, z);
@@ -93,28 +107,43 @@ SignBits classifySamples(const ChunkedGrid& grid, float iso, glm::ivec3 first, g
                     if (!rowInside || first.x + x < inBegin || first.x + x >= inEnd) row[x >> 6] |= uint64_t(1) << (x & 63);
             }
             if (!rowInside) continue;
-            // Along x a chunk's row is contiguous: classify it one chunk segment at a time, and
-            // with tile ranges one tile's segment at a time.
             const int worldY = layout.gridOrigin.y + gy, worldZ = layout.gridOrigin.z + gz;
-            for (int gx = inBegin; gx < inEnd;) {
-                const int worldX = layout.gridOrigin.x + gx;
-                int count = std::min(layout.chunkSize - (worldX & chunkMask), inEnd - gx);
-                if (ranges) {
-                    count = std::min(count, tileSide - (worldX & (tileSide - 1)));
-                    const TileRanges::Range& range = ranges->at(glm::ivec3(worldX, worldY, worldZ) >> TileRanges::kShift);
-                    if (range.low > iso) {
-                        putBits(row, gx - first.x, (uint64_t(1) << count) - 1, count);
-                        gx += count;
-                        continue;
+            if ((worldY >> bandShift) != band) {
+                band = worldY >> bandShift;
+                bandFirstY = gy;
+                std::fill(solidTemplate.begin(), solidTemplate.end(), uint64_t(0));
+                runs.clear();
+                // Along x a chunk's row is contiguous: a run never crosses a chunk, and with tile
+                // ranges each tile's segment is solid, air or classified.
+                for (int gx = inBegin; gx < inEnd;) {
+                    const int worldX = layout.gridOrigin.x + gx;
+                    int count = std::min(layout.chunkSize - (worldX & chunkMask), inEnd - gx);
+                    if (ranges) {
+                        count = std::min(count, tileSide - (worldX & (tileSide - 1)));
+                        const TileRanges::Range& range = ranges->at(glm::ivec3(worldX, worldY, worldZ) >> TileRanges::kShift);
+                        if (range.low > iso) {
+                            putBits(solidTemplate.data(), gx - first.x, (uint64_t(1) << count) - 1, count);
+                            gx += count;
+                            continue;
+                        }
+                        if (range.high <= iso) {
+                            gx += count;
+                            continue;
+                        }
                     }
-                    if (range.high <= iso) {
-                        gx += count;
-                        continue;
-                    }
+                    if (!runs.empty() && runs.back().gx + runs.back().count == gx && (worldX & chunkMask) != 0)
+                        runs.back().count += count;
+                    else
+                        runs.push_back({gx, count, layout.address({gx, gy, gz})});
+                    gx += count;
                 }
-                classify(data + layout.address({gx, gy, gz}), count, iso, row, gx - first.x);
-                read += size_t(count);
-                gx += count;
+            }
+            for (size_t w = 0; w < signs.words; ++w) row[w] |= solidTemplate[w];
+            // Inside a chunk the next row along y is chunkSize samples on.
+            const size_t rowOffset = size_t(gy - bandFirstY) * size_t(layout.chunkSize);
+            for (const Run& run : runs) {
+                classify(data + run.address + rowOffset, run.count, iso, row, run.gx - first.x);
+                read += size_t(run.count);
             }
         }
         samplesRead += read;
