@@ -413,6 +413,7 @@ private:
         // Vertex index of edge (x, y, axis) of the slices z (slot z & 1); entries are written for
         // crossed edges only, and only those are read.
         std::unique_ptr<uint32_t[]> indices(new uint32_t[2 * sliceSize]);
+        adviseHugePages(indices.get(), 2 * sliceSize * sizeof(uint32_t));
         for (int z = begin; z <= end && z < extent_.z; ++z) {
             indexSlice(z, indices.get() + size_t(z & 1) * sliceSize, z < end ? &mesh : nullptr);
             if (z > begin && z - 1 < extent_.z - 1) emitCells(z - 1, indices.get(), sliceSize, mesh);
