@@ -10,37 +10,32 @@
 
 layout(local_size_x = 64) in;
 
-layout(std430, set = 0, binding = 4) buffer CellInfo {
+layout(std430, set = 0, binding = 4) writeonly buffer CellInfo {
     uint info[]; // per cell slot, as mc_count.glsl writes it; then its owned edges | first vertex << 3
 } cells;
-layout(std430, set = 0, binding = 5) readonly buffer Scan {
-    uvec4 value[];
-} scan;
+// Read as mc_count.glsl wrote them (binding 4), rewritten here for cells owning vertices.
+layout(set = 0, binding = 14) uniform usamplerBuffer cellInfoTexels;
+layout(set = 0, binding = 15) uniform usamplerBuffer scanTexels; // mc_scan.glsl's levels
 layout(std430, set = 0, binding = 8) writeonly buffer ActiveCells {
     uvec4 cell[]; // slot, first vertex, first triangle, the count's word
 } activeCells;
 layout(std430, set = 0, binding = 13) writeonly buffer VertexEdges {
     uint edge[]; // per vertex: its owner cell's slot | axis << 30 (slots are below 2^30)
 } vertexEdges;
-layout(std430, set = 0, binding = 11) readonly buffer ActiveTiles {
-    uint tile[];
-} activeTiles;
-layout(std430, set = 0, binding = 12) readonly buffer Segments {
-    uint slot[];
-} segments;
 
 void main() {
     const uint index = invocationIndex(64u);
     if (index >= push.pass.z) return;
     uvec3 place = uvec3(0u);
-    for (uint level = 0u; level < push.pass.y; ++level) place += scan.value[push.levelOffset[level] + (index >> (10u * level))].xyz;
-    const uint segment = segments.slot[index];
-    const ivec3 world = segmentWorldCell(activeTiles.tile[segment >> 6], segment);
+    for (uint level = 0u; level < push.pass.y; ++level)
+        place += texelFetch(scanTexels, int(push.levelOffset[level] + (index >> (10u * level)))).xyz;
+    const uint segment = segmentSlot(index);
+    const ivec3 world = segmentWorldCell(activeTile(segment >> 6), segment);
     const ivec2 range = segmentCells(world);
     const uint firstSlot = segment * kTileSide - uint(world.x - push.gridOrigin.x);
     for (int x = range.x; x < range.y; ++x) {
         const uint slot = firstSlot + uint(x);
-        const uint info = cells.info[slot];
+        const uint info = texelFetch(cellInfoTexels, int(slot)).x;
         if ((info & 0x7fu) == 0u) continue;
         const uint firstVertex = place.x + ((info >> 7) & 31u);
         activeCells.cell[place.z++] = uvec4(slot, firstVertex, place.y + ((info >> 12) & 127u), info);

@@ -9,10 +9,6 @@
 
 layout(local_size_x = 64) in;
 
-// Per case 10 words: the triangle count, then 36 edge indices, four bytes to a word.
-layout(std430, set = 0, binding = 2) readonly buffer CaseTable {
-    uint word[];
-} cases;
 // Per cell slot. Bits 0-2: owned crossed edges by axis; bits 3-6: triangle count; bits 7-11: the
 // segment's vertices before the cell; bits 12-18: its triangles before the cell (at most 3 * 7
 // and 12 * 7); bits 19-26: its case.
@@ -22,12 +18,6 @@ layout(std430, set = 0, binding = 4) writeonly buffer CellInfo {
 layout(std430, set = 0, binding = 5) writeonly buffer Scan {
     uvec4 value[]; // levels at push.levelOffset[level]: vertices, triangles, active cells
 } scan;
-layout(std430, set = 0, binding = 11) readonly buffer ActiveTiles {
-    uint tile[]; // by rank: the tile's index among the tiles of cells (x fastest)
-} activeTiles;
-layout(std430, set = 0, binding = 12) readonly buffer Segments {
-    uint slot[]; // in global key order
-} segments;
 
 // The four sample rows a row of cells reads, at (y, z), (y + 1, z), (y, z + 1), (y + 1, z + 1):
 // corners 0-1, 2-3, 4-5 and 6-7 of its cells.
@@ -40,7 +30,7 @@ uint rowBits(ivec3 row, ivec2 range, uint r) {
     if (range.x >= 0 && range.y - range.x == int(kTileSide) && first.y < push.gridSize.y && first.z < push.gridSize.z &&
         first.y >= 0 && first.z >= 0) {
         const uint at = voxelAddress(first) / 4u;
-        const bvec4 low = solidQuad(quads.density[at]), high = solidQuad(quads.density[at + 1u]);
+        const bvec4 low = solidQuad(quadTexel(at)), high = solidQuad(quadTexel(at + 1u));
         return (low.x ? 1u : 0u) | (low.y ? 2u : 0u) | (low.z ? 4u : 0u) | (low.w ? 8u : 0u) | (high.x ? 16u : 0u) |
                (high.y ? 32u : 0u) | (high.z ? 64u : 0u) | (high.w ? 128u : 0u) | (solidAt(first + ivec3(8, 0, 0)) ? 256u : 0u);
     }
@@ -53,8 +43,8 @@ uint rowBits(ivec3 row, ivec2 range, uint r) {
 void main() {
     const uint index = invocationIndex(64u);
     if (index >= push.pass.z) return;
-    const uint segment = segments.slot[index];
-    const ivec3 world = segmentWorldCell(activeTiles.tile[segment >> 6], segment);
+    const uint segment = segmentSlot(index);
+    const ivec3 world = segmentWorldCell(activeTile(segment >> 6), segment);
     const ivec2 range = segmentCells(world);
     const ivec3 row = world - push.gridOrigin.xyz;
     const uint firstSlot = segment * kTileSide - uint(row.x); // slot of grid-local x
@@ -68,7 +58,7 @@ void main() {
         uint info = 0u;
         for (uint axis = 0u; axis < 3u; ++axis)
             if (lowerSolid != (((mask >> (1u << axis)) & 1u) != 0u)) info |= 1u << axis;
-        info |= cases.word[mask * 10u] << 3;
+        info |= caseWord(mask * 10u) << 3;
         cells.info[firstSlot + uint(x)] = info | sum.x << 7 | sum.y << 12 | mask << 19;
         sum += uvec3(bitCount(info & 7u), info >> 3, info != 0u ? 1u : 0u);
     }

@@ -44,7 +44,7 @@ void main() {
         for (uint z = 0u; z < kTileSide; ++z)
             for (uint y = 0u; y < kTileSide; ++y) {
                 const uint row = base + (y + z * size) * (size / 4u);
-                const bvec4 low = solidQuad(quads.density[row]), high = solidQuad(quads.density[row + 1u]);
+                const bvec4 low = solidQuad(quadTexel(row)), high = solidQuad(quadTexel(row + 1u));
                 const uint regions = rowRegions(y, z);
                 if (any(low) || any(high)) solid |= regions;
                 if (!all(low) || !all(high)) air |= regions;

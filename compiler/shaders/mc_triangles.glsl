@@ -6,21 +6,12 @@
 
 layout(local_size_x = 64) in;
 
-layout(std430, set = 0, binding = 2) readonly buffer CaseTable {
-    uint word[];
-} cases;
-layout(std430, set = 0, binding = 4) readonly buffer CellInfo {
-    uint info[]; // per cell slot owning vertices: its owned edges | first vertex << 3 (mc_compact.glsl)
-} cells;
-layout(std430, set = 0, binding = 8) readonly buffer ActiveCells {
-    uvec4 cell[]; // slot, first vertex, first triangle, mc_count.glsl's word
-} activeCells;
-layout(std430, set = 0, binding = 10) readonly buffer TileRanks {
-    uint rank[]; // per tile of cells (x fastest): its rank among the active tiles, or none
-} tileRanks;
-layout(std430, set = 0, binding = 11) readonly buffer ActiveTiles {
-    uint tile[];
-} activeTiles;
+// Per cell slot owning vertices: its owned edges | first vertex << 3 (mc_compact.glsl).
+layout(set = 0, binding = 14) uniform usamplerBuffer cellInfoTexels;
+// Per active cell: slot, first vertex, first triangle, mc_count.glsl's word.
+layout(set = 0, binding = 16) uniform usamplerBuffer activeCellTexels;
+// Per tile of cells (x fastest): its rank among the active tiles, or none.
+layout(set = 0, binding = 10) uniform usamplerBuffer tileRankTexels;
 // Four words per triangle: three vertex indices, material.
 layout(std430, set = 0, binding = 7) writeonly buffer Triangles {
     uint word[];
@@ -32,7 +23,7 @@ uint slotOf(ivec3 cell) {
     const uvec3 tile = uvec3((world >> int(kTileShift)) - push.tileFirst.xyz);
     const uvec3 n = uvec3(push.tileCount.xyz);
     const uvec3 inTile = uvec3(world & int(kTileSide - 1u));
-    return tileRanks.rank[tile.x + n.x * (tile.y + n.y * tile.z)] * kTileSide * kTileSide * kTileSide + inTile.x +
+    return texelFetch(tileRankTexels, int(tile.x + n.x * (tile.y + n.y * tile.z))).x * kTileSide * kTileSide * kTileSide + inTile.x +
            kTileSide * (inTile.y + kTileSide * inTile.z);
 }
 
@@ -55,14 +46,14 @@ uint majorityMaterial(ivec3 cell, uint mask) {
     return best;
 }
 
-uint caseEdge(uint mask, uint i) { return (cases.word[mask * 10u + 1u + i / 4u] >> (8u * (i % 4u))) & 0xffu; }
+uint caseEdge(uint mask, uint i) { return (caseWord(mask * 10u + 1u + i / 4u) >> (8u * (i % 4u))) & 0xffu; }
 
 void main() {
     const uint index = invocationIndex(64u);
     if (index >= push.pass.z) return;
-    const uvec4 entry = activeCells.cell[index];
+    const uvec4 entry = texelFetch(activeCellTexels, int(index));
     const uint slot = entry.x, info = entry.w;
-    const ivec3 cell = cellOfSlot(activeTiles.tile[slot >> 9], slot);
+    const ivec3 cell = cellOfSlot(activeTile(slot >> 9), slot);
     const uint triangleCount = (info >> 3) & 15u;
     const uint mask = (info >> 19) & 0xffu;
     const uint material = majorityMaterial(cell, mask);
@@ -73,7 +64,7 @@ void main() {
             // the cell owning that corner is crossed, so its tile is active.
             const uint edge = caseEdge(mask, t * 3u + k);
             const uint axis = edge / 4u, along = edge % 4u, u = (axis + 1u) % 3u, v = (axis + 2u) % 3u;
-            const uint owner = cells.info[slotOf(cell + cornerOffset((along & 1u) << u | (along >> 1) << v))];
+            const uint owner = texelFetch(cellInfoTexels, int(slotOf(cell + cornerOffset((along & 1u) << u | (along >> 1) << v)))).x;
             triangles.word[base + k] = (owner >> 3) + bitCount(owner & ((1u << axis) - 1u));
         }
         triangles.word[base + 3u] = material;

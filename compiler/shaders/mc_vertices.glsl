@@ -8,12 +8,7 @@
 
 layout(local_size_x = 64) in;
 
-layout(std430, set = 0, binding = 11) readonly buffer ActiveTiles {
-    uint tile[];
-} activeTiles;
-layout(std430, set = 0, binding = 13) readonly buffer VertexEdges {
-    uint edge[]; // per vertex: its owner cell's slot | axis << 30
-} vertexEdges;
+layout(set = 0, binding = 17) uniform usamplerBuffer vertexEdgeTexels; // per vertex: its owner cell's slot | axis << 30
 // Seven words per vertex: position xyz and normal xyz (float bits), material.
 layout(std430, set = 0, binding = 6) writeonly buffer Vertices {
     uint word[];
@@ -39,7 +34,7 @@ float sampleAt(ivec3 p) {
     if (!windowInside) return densityAt(p);
     const int side = 1 << push.gridOrigin.w;
     const ivec3 d = p - windowOrigin;
-    const float v = voxels.density[uint(int(windowBase) + d.x + side * (d.y + side * d.z))];
+    const float v = densityTexel(uint(int(windowBase) + d.x + side * (d.y + side * d.z)));
     return isnan(v) || isinf(v) ? 0.0 : v;
 }
 
@@ -83,7 +78,7 @@ void writeVertex(uint index, ivec3 lower, int axis) {
 void main() {
     const uint index = invocationIndex(64u);
     if (index >= push.pass.z) return;
-    const uint edge = vertexEdges.edge[index];
+    const uint edge = texelFetch(vertexEdgeTexels, int(index)).x;
     const uint slot = edge & 0x3fffffffu;
-    writeVertex(index, cellOfSlot(activeTiles.tile[slot >> 9], slot), int(edge >> 30));
+    writeVertex(index, cellOfSlot(activeTile(slot >> 9), slot), int(edge >> 30));
 }

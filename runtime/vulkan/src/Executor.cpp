@@ -172,11 +172,13 @@ bool VulkanExecutor::Impl::firstStageFillsBuffer() const {
 void VulkanExecutor::Impl::createBuffers() {
     const VkDeviceSize voxelBytes = VkDeviceSize(layout.chunkTotal()) * layout.chunkVoxels() * sizeof(float);
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-    voxels = staged ? createBuffer(ctx, voxelBytes, storage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Device)
-                    : createBuffer(ctx, voxelBytes, storage, MemoryUse::HostAccess);
+    // The device mesher also reads the densities and materials as uniform texel buffers (GpuMesher.cpp).
+    const VkBufferUsageFlags voxelUsage = storage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
+    voxels = staged ? createBuffer(ctx, voxelBytes, voxelUsage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Device)
+                    : createBuffer(ctx, voxelBytes, voxelUsage, MemoryUse::HostAccess);
     const VkDeviceSize materialBytes = package.usesMaterials ? voxelBytes : sizeof(uint32_t);
-    materials = staged ? createBuffer(ctx, materialBytes, storage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Device)
-                       : createBuffer(ctx, materialBytes, storage, MemoryUse::HostAccess);
+    materials = staged ? createBuffer(ctx, materialBytes, voxelUsage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Device)
+                       : createBuffer(ctx, materialBytes, voxelUsage, MemoryUse::HostAccess);
     if (staged)
         readback = createBuffer(ctx, voxelBytes + (package.usesMaterials ? materialBytes : 0),
                                 VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostAccess);

@@ -187,6 +187,8 @@ struct GpuMarchingCubes::Impl {
     // (tileRanks, activeTiles, segments), and `results` (the totals, then the mesh).
     DeviceBuffer caseTable, tileStates, tileRanks, activeTiles, segments, cellInfo, scanLevels, activeCells,
         vertexEdges, vertices, triangles, results;
+    // At the texel bindings: views of the executor's buffers and of these (bindAll).
+    std::array<VkBufferView, kMcBindingCount> texelViews{};
     VkCommandPool commandPool = VK_NULL_HANDLE;
     VkCommandBuffer cmd = VK_NULL_HANDLE;
     VkFence fence = VK_NULL_HANDLE;
@@ -198,13 +200,14 @@ struct GpuMarchingCubes::Impl {
 
     void checkLimits() const;
     void createBuffers();
-    // A buffer of at least `bytes` (storage and transfer source/destination), replaced when
+    void destroyTexelViews();
+    // A buffer of at least `bytes` (storage, texels, transfer source/destination), replaced when
     // smaller; true when replaced (a new buffer may reuse the old handle's value, so callers
     // cannot compare handles to know whether descriptors need an update).
     bool ensureBuffer(DeviceBuffer& buffer, VkDeviceSize bytes, MemoryUse use);
     // Copies `words` into the host-visible `buffer` for the device; true when the buffer was replaced.
     bool upload(DeviceBuffer& buffer, const std::vector<uint32_t>& words);
-    // Points every binding at its buffer.
+    // Points every binding at its buffer, through new texel views where it is read as texels.
     void bindAll();
     McPush push(const MeshOptions& options) const;
     // Records `groups` workgroups of `pass`, split over x and y where x alone is not enough.
@@ -217,6 +220,7 @@ GpuMarchingCubes::Impl::~Impl() {
     if (ctx.device) ctx.api.vkDeviceWaitIdle(ctx.device);
     if (fence) ctx.api.vkDestroyFence(ctx.device, fence, nullptr);
     if (commandPool) ctx.api.vkDestroyCommandPool(ctx.device, commandPool, nullptr);
+    destroyTexelViews();
     for (DeviceBuffer* b : {&results, &triangles, &vertices, &vertexEdges, &activeCells, &scanLevels, &cellInfo, &segments,
                             &activeTiles, &tileRanks, &tileStates, &caseTable})
         destroyBuffer(ctx, *b);
@@ -229,6 +233,14 @@ void GpuMarchingCubes::Impl::checkLimits() const {
                                     "(edge crossings are computed in double, as on the CPU); mesh on the host instead "
                                     "(voxc run --mesh-on host)",
                                     ctx.info.name));
+    // The passes fetch the voxels, and the cells' words, as texels (mc_common.glsl).
+    const uint64_t voxels = uint64_t(layout.chunkTotal()) * layout.chunkVoxels();
+    const uint64_t maxTexels = ctx.properties.limits.maxTexelBufferElements;
+    if (std::max<uint64_t>(voxels, uint64_t(tiles) * kTileCells) > maxTexels)
+        throw UserError(fmt::format("marching cubes on the device reads the {} voxels of the {}x{}x{} grid's chunks and a "
+                                    "word per cell of its tiles as texels, more than the Vulkan device '{}' can address "
+                                    "({}); mesh on the host instead (voxc run --mesh-on host) or use a smaller grid",
+                                    voxels, layout.gridSize.x, layout.gridSize.y, layout.gridSize.z, ctx.info.name, maxTexels));
     const uint64_t maxRange = ctx.properties.limits.maxStorageBufferRange;
     // The largest buffer holds a uint per cell of every tile when all are active (cellInfo);
     // triangle places are 32-bit sums of up to 12 triangles per cell.
@@ -245,8 +257,8 @@ void GpuMarchingCubes::Impl::checkLimits() const {
 bool GpuMarchingCubes::Impl::ensureBuffer(DeviceBuffer& buffer, VkDeviceSize bytes, MemoryUse use) {
     if (buffer.buffer && buffer.size >= bytes) return false;
     destroyBuffer(ctx, buffer);
-    const VkBufferUsageFlags usage =
-        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT |
+                                     VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     buffer = createBuffer(ctx, std::max<VkDeviceSize>(bytes, 16), usage, use);
     return true;
 }
@@ -273,21 +285,46 @@ void GpuMarchingCubes::Impl::createBuffers() {
 
 void GpuMarchingCubes::Impl::bindAll() {
     std::array<VkBuffer, kMcBindingCount> buffers{};
-    buffers[kMcVoxels] = source.voxels;
-    buffers[kMcMaterials] = source.materials;
-    buffers[kMcCaseTable] = caseTable.buffer;
     buffers[kMcTileStates] = tileStates.buffer;
     buffers[kMcCellInfo] = cellInfo.buffer;
     buffers[kMcScanLevels] = scanLevels.buffer;
     buffers[kMcVertices] = vertices.buffer;
     buffers[kMcTriangles] = triangles.buffer;
     buffers[kMcActiveCells] = activeCells.buffer;
-    buffers[kMcVoxelQuads] = source.voxels;
-    buffers[kMcTileRanks] = tileRanks.buffer;
-    buffers[kMcActiveTiles] = activeTiles.buffer;
-    buffers[kMcSegments] = segments.buffer;
     buffers[kMcVertexEdges] = vertexEdges.buffer;
-    bindMcBuffers(ctx, pipelines, buffers);
+    struct View {
+        McBinding binding;
+        VkBuffer buffer;
+        VkFormat format;
+    };
+    const View views[] = {{kMcDensityTexels, source.voxels, VK_FORMAT_R32_SFLOAT},
+                          {kMcQuadTexels, source.voxels, VK_FORMAT_R32G32B32A32_SFLOAT},
+                          {kMcMaterialTexels, source.materials, VK_FORMAT_R32_UINT},
+                          {kMcCaseTexels, caseTable.buffer, VK_FORMAT_R32_UINT},
+                          {kMcTileRankTexels, tileRanks.buffer, VK_FORMAT_R32_UINT},
+                          {kMcActiveTileTexels, activeTiles.buffer, VK_FORMAT_R32_UINT},
+                          {kMcSegmentTexels, segments.buffer, VK_FORMAT_R32_UINT},
+                          {kMcCellInfoTexels, cellInfo.buffer, VK_FORMAT_R32_UINT},
+                          {kMcScanTexels, scanLevels.buffer, VK_FORMAT_R32G32B32A32_UINT},
+                          {kMcActiveCellTexels, activeCells.buffer, VK_FORMAT_R32G32B32A32_UINT},
+                          {kMcVertexEdgeTexels, vertexEdges.buffer, VK_FORMAT_R32_UINT}};
+    destroyTexelViews();
+    for (const View& view : views) {
+        VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+        info.buffer = view.buffer;
+        info.format = view.format;
+        info.offset = 0;
+        info.range = VK_WHOLE_SIZE;
+        check(ctx.api.vkCreateBufferView(ctx.device, &info, nullptr, &texelViews[view.binding]), "vkCreateBufferView");
+    }
+    bindMcSet(ctx, pipelines, buffers, texelViews);
+}
+
+void GpuMarchingCubes::Impl::destroyTexelViews() {
+    for (VkBufferView& view : texelViews) {
+        if (view) ctx.api.vkDestroyBufferView(ctx.device, view, nullptr);
+        view = VK_NULL_HANDLE;
+    }
 }
 
 McPush GpuMarchingCubes::Impl::push(const MeshOptions& options) const {

@@ -20,23 +20,74 @@ std::string passSource(const char* file) {
     return pass.substr(0, firstLine) + std::string(shaderSource("mc_common.glsl")) + pass.substr(firstLine);
 }
 
+VkDescriptorType descriptorType(uint32_t binding) {
+    return isMcTexelBinding(binding) ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+}
+
+// Set 0 (McBinding) and the pipeline layout with the push block.
+void createMcSet(VulkanContext::Impl& ctx, McPipelines& out) {
+    std::vector<VkDescriptorSetLayoutBinding> layoutBindings(kMcBindingCount);
+    uint32_t texels = 0;
+    for (uint32_t b = 0; b < kMcBindingCount; ++b) {
+        layoutBindings[b].binding = b;
+        layoutBindings[b].descriptorType = descriptorType(b);
+        texels += isMcTexelBinding(b) ? 1 : 0;
+        layoutBindings[b].descriptorCount = 1;
+        layoutBindings[b].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
+    }
+    VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    setInfo.bindingCount = uint32_t(layoutBindings.size());
+    setInfo.pBindings = layoutBindings.data();
+    check(ctx.api.vkCreateDescriptorSetLayout(ctx.device, &setInfo, nullptr, &out.setLayout), "vkCreateDescriptorSetLayout");
+    const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(McPush)};
+    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    layoutInfo.setLayoutCount = 1;
+    layoutInfo.pSetLayouts = &out.setLayout;
+    layoutInfo.pushConstantRangeCount = 1;
+    layoutInfo.pPushConstantRanges = &push;
+    check(ctx.api.vkCreatePipelineLayout(ctx.device, &layoutInfo, nullptr, &out.layout), "vkCreatePipelineLayout");
+    const VkDescriptorPoolSize poolSizes[2] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kMcBindingCount - texels},
+                                               {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, texels}};
+    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    poolInfo.maxSets = 1;
+    poolInfo.poolSizeCount = 2;
+    poolInfo.pPoolSizes = poolSizes;
+    check(ctx.api.vkCreateDescriptorPool(ctx.device, &poolInfo, nullptr, &out.pool), "vkCreateDescriptorPool");
+    VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    allocate.descriptorPool = out.pool;
+    allocate.descriptorSetCount = 1;
+    allocate.pSetLayouts = &out.setLayout;
+    check(ctx.api.vkAllocateDescriptorSets(ctx.device, &allocate, &out.set), "vkAllocateDescriptorSets");
+}
+
 } // namespace
 
 void createMcPipelines(VulkanContext::Impl& ctx, McPipelines& out) {
-    std::array<uint32_t, kMcBindingCount> bindings;
-    for (uint32_t b = 0; b < kMcBindingCount; ++b) bindings[b] = b;
-    createStorageSet(ctx, bindings, sizeof(McPush), out);
+    createMcSet(ctx, out);
     for (uint32_t pass = 0; pass < kMcPassCount; ++pass) {
         const std::vector<uint32_t> spirv = codegen::compileComputeShader(kPassFiles[pass], passSource(kPassFiles[pass]));
         out.pipelines[pass] = createComputePipeline(ctx, out.layout, spirv, kPassFiles[pass]);
     }
 }
 
-void bindMcBuffers(VulkanContext::Impl& ctx, const McPipelines& pipelines, const std::array<VkBuffer, kMcBindingCount>& buffers,
-                   uint32_t first, uint32_t last) {
-    std::vector<uint32_t> bindings;
-    for (uint32_t b = first; b < last; ++b) bindings.push_back(b);
-    writeStorageBindings(ctx, pipelines.set, bindings, std::span(buffers).subspan(first, last - first));
+void bindMcSet(VulkanContext::Impl& ctx, const McPipelines& pipelines, const std::array<VkBuffer, kMcBindingCount>& buffers,
+               const std::array<VkBufferView, kMcBindingCount>& views) {
+    std::array<VkDescriptorBufferInfo, kMcBindingCount> infos{};
+    std::array<VkWriteDescriptorSet, kMcBindingCount> writes{};
+    for (uint32_t b = 0; b < kMcBindingCount; ++b) {
+        writes[b] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        writes[b].dstSet = pipelines.set;
+        writes[b].dstBinding = b;
+        writes[b].descriptorCount = 1;
+        writes[b].descriptorType = descriptorType(b);
+        if (isMcTexelBinding(b)) {
+            writes[b].pTexelBufferView = &views[b];
+        } else {
+            infos[b] = {buffers[b], 0, VK_WHOLE_SIZE};
+            writes[b].pBufferInfo = &infos[b];
+        }
+    }
+    ctx.api.vkUpdateDescriptorSets(ctx.device, kMcBindingCount, writes.data(), 0, nullptr);
 }
 
 void destroyMcPipelines(VulkanContext::Impl& ctx, McPipelines& pipelines) {

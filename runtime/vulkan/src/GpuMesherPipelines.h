@@ -23,24 +23,35 @@ static_assert(sizeof(McPush) == 128, "must match mc_common.glsl; 128 bytes is ev
 
 enum McPass : uint32_t { kMcTiles, kMcCount, kMcScan, kMcCompact, kMcEmitVertices, kMcEmitTriangles, kMcPassCount };
 
-// Descriptor set 0 of the passes (the buffers' meaning is in the shaders).
+// Descriptor set 0 of the passes (the buffers' meaning is in the shaders). A pass writes through
+// storage buffers and reads through uniform texel buffers (lavapipe fetches texels as vector
+// gathers, where it reads a storage buffer one lane at a time behind a branch per lane), so a
+// buffer one pass writes and a later one reads is bound twice.
 enum McBinding : uint32_t {
-    kMcVoxels,
-    kMcMaterials,
-    kMcCaseTable,
+    kMcDensityTexels,  // the executor's densities, a float per voxel
+    kMcMaterialTexels, // its material ids, a uint per voxel
+    kMcCaseTexels,
     kMcTileStates,
     kMcCellInfo,
     kMcScanLevels,
     kMcVertices,
     kMcTriangles,
     kMcActiveCells,
-    kMcVoxelQuads, // the voxel buffer again, as vec4
-    kMcTileRanks,
-    kMcActiveTiles,
-    kMcSegments,
+    kMcQuadTexels, // the densities again, four to a texel
+    kMcTileRankTexels,
+    kMcActiveTileTexels,
+    kMcSegmentTexels,
     kMcVertexEdges,
+    kMcCellInfoTexels,
+    kMcScanTexels,
+    kMcActiveCellTexels,
+    kMcVertexEdgeTexels,
     kMcBindingCount
 };
+constexpr bool isMcTexelBinding(uint32_t binding) {
+    return binding == kMcDensityTexels || binding == kMcMaterialTexels || binding == kMcCaseTexels || binding == kMcQuadTexels ||
+           binding >= kMcTileRankTexels && binding <= kMcSegmentTexels || binding >= kMcCellInfoTexels;
+}
 
 struct McPipelines : StorageSet {
     std::array<VkPipeline, kMcPassCount> pipelines{};
@@ -49,9 +60,9 @@ struct McPipelines : StorageSet {
 // Compiles the passes (glslang) and builds their pipelines; fills `out` step by step, so
 // destroyMcPipelines cleans up after a failure part way.
 void createMcPipelines(VulkanContext::Impl& ctx, McPipelines& out);
-// Points binding b at buffers[b] for every b in [first, last).
-void bindMcBuffers(VulkanContext::Impl& ctx, const McPipelines& pipelines, const std::array<VkBuffer, kMcBindingCount>& buffers,
-                   uint32_t first = 0, uint32_t last = kMcBindingCount);
+// Points every storage binding b at buffers[b] and every texel binding b at views[b].
+void bindMcSet(VulkanContext::Impl& ctx, const McPipelines& pipelines, const std::array<VkBuffer, kMcBindingCount>& buffers,
+               const std::array<VkBufferView, kMcBindingCount>& views);
 void destroyMcPipelines(VulkanContext::Impl& ctx, McPipelines& pipelines);
 
 } // namespace voxc::vulkan_detail

@@ -1,6 +1,7 @@
 #pragma once
-// What every group of voxc compute pipelines shares: one descriptor set of storage buffers and
-// a push-constant block (the package's kernels, the marching-cubes passes).
+// What every group of voxc compute pipelines shares: one descriptor set and a push-constant
+// block; the package's kernels bind storage buffers alone (createStorageSet), the marching-cubes
+// passes texel buffers as well (GpuMesherPipelines.cpp).
 #include "ContextImpl.h"
 
 #include <cstdint>

@@ -34,6 +34,8 @@ namespace voxc::vulkan_detail {
     X(vkQueueSubmit)                             \
     X(vkCreateBuffer)                            \
     X(vkDestroyBuffer)                           \
+    X(vkCreateBufferView)                        \
+    X(vkDestroyBufferView)                       \
     X(vkGetBufferMemoryRequirements)             \
     X(vkAllocateMemory)                          \
     X(vkFreeMemory)                              \
