@@ -1,11 +1,13 @@
-// Shared by the GPU marching-cubes passes (runtime/vulkan/src/GpuMesher.cpp inserts it after each
-// pass's #version line): the push block (McPush there, field for field), the executor's voxel and
+// Shared by the GPU marching-cubes passes (runtime/vulkan/src/GpuMesherPipelines.cpp inserts it
+// after each pass's #version line, behind kHasMaterials: whether the executor's material buffer
+// has a uint per voxel, a constant so that a grid without materials compiles their reads away):
+// the push block (McPush there, field for field), the executor's voxel and
 // material buffers, and reads of samples, cells and chunks exactly as the CPU mesher makes them
 // (runtime/mesh/src/MarchingCubes.cpp: outside the grid and non-finite read 0, solid is > iso).
 
 layout(push_constant, std430) uniform McPush {
     ivec4 gridOrigin;     // xyz: world coordinate of grid voxel (0,0,0); w: log2 chunk size
-    ivec4 gridSize;       // xyz: voxels per axis; w: 1 when the material buffer has a uint per voxel
+    ivec4 gridSize;       // xyz: voxels per axis; w: unused
     ivec4 chunkBase;      // xyz: world chunk of voxel-buffer slot 0; w: slots along x
     ivec4 tileFirst;      // xyz: first world 8^3 tile holding cells; w: voxel-buffer slots along y
     ivec4 tileCount;      // xyz: such tiles per axis (the voxel tiles: one more per axis); w: unused
@@ -74,7 +76,7 @@ bvec4 solidQuad(vec4 d) {
 }
 
 uint materialAt(ivec3 p) {
-    if (push.gridSize.w == 0 || !insideGrid(p)) return 0u;
+    if (!kHasMaterials || !insideGrid(p)) return 0u;
     return texelFetch(materialTexels, int(voxelAddress(p))).x & 0xffu;
 }
 

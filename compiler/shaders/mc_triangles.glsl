@@ -12,10 +12,8 @@ layout(set = 0, binding = 14) uniform usamplerBuffer cellInfoTexels;
 layout(set = 0, binding = 16) uniform usamplerBuffer activeCellTexels;
 // Per tile of cells (x fastest): its rank among the active tiles, or none.
 layout(set = 0, binding = 10) uniform usamplerBuffer tileRankTexels;
-// Four words per triangle: three vertex indices, material.
-layout(std430, set = 0, binding = 7) writeonly buffer Triangles {
-    uint word[];
-} triangles;
+// A texel per triangle: three vertex indices, material.
+layout(set = 0, binding = 7, rgba32ui) uniform writeonly uimageBuffer triangles;
 
 // The slot of a grid-local cell of an active tile.
 uint slotOf(ivec3 cell) {
@@ -27,21 +25,28 @@ uint slotOf(ivec3 cell) {
            kTileSide * (inTile.y + kTileSide * inTile.z);
 }
 
-// The most common material among the solid corners; ties go to the lowest id. Indexed by corner
-// alone, so that the compiler keeps the ids in registers (lavapipe spills an array indexed by a
-// running count to memory, one lane at a time).
+// The most common material among the solid corners; ties go to the lowest id. Each round takes
+// the id of the lowest solid corner not yet counted and counts the corners with it, so there are
+// as many rounds as distinct ids (lavapipe runs a loop until its last lane is done: mostly one
+// round, where counting every corner's votes took 64 steps). Indexed by corner alone, so that
+// the compiler keeps the ids in registers (lavapipe spills an array indexed by a running count
+// to memory, one lane at a time).
 uint majorityMaterial(ivec3 cell, uint mask) {
+    if (!kHasMaterials) return 0u;
     uint ids[8];
     for (uint c = 0u; c < 8u; ++c) ids[c] = ((mask >> c) & 1u) != 0u ? materialAt(cell + cornerOffset(c)) : 0u;
     uint best = 0u, bestVotes = 0u;
-    for (uint i = 0u; i < 8u; ++i) {
-        if (((mask >> i) & 1u) == 0u) continue;
-        uint votes = 0u;
-        for (uint j = 0u; j < 8u; ++j) votes += ((mask >> j) & 1u) != 0u && ids[j] == ids[i] ? 1u : 0u;
-        if (votes > bestVotes || (votes == bestVotes && ids[i] < best)) {
-            best = ids[i];
+    for (uint uncounted = mask & 0xffu; uncounted != 0u;) {
+        uint id = 0u;
+        for (int c = 7; c >= 0; --c) id = ((uncounted >> c) & 1u) != 0u ? ids[c] : id; // the lowest one's
+        uint same = 0u;
+        for (uint c = 0u; c < 8u; ++c) same |= ((uncounted >> c) & 1u) != 0u && ids[c] == id ? 1u << c : 0u;
+        const uint votes = uint(bitCount(same));
+        if (votes > bestVotes || (votes == bestVotes && id < best)) {
+            best = id;
             bestVotes = votes;
         }
+        uncounted &= ~same;
     }
     return best;
 }
@@ -58,15 +63,15 @@ void main() {
     const uint mask = (info >> 19) & 0xffu;
     const uint material = majorityMaterial(cell, mask);
     for (uint t = 0u; t < triangleCount; ++t) {
-        const uint base = (entry.z + t) * 4u;
+        uvec4 triangle = uvec4(0u, 0u, 0u, material);
         for (uint k = 0u; k < 3u; ++k) {
             // Edge e runs along axis e/4 from its lower corner (voxc::marching_cubes::edgeCorners);
             // the cell owning that corner is crossed, so its tile is active.
             const uint edge = caseEdge(mask, t * 3u + k);
             const uint axis = edge / 4u, along = edge % 4u, u = (axis + 1u) % 3u, v = (axis + 2u) % 3u;
             const uint owner = texelFetch(cellInfoTexels, int(slotOf(cell + cornerOffset((along & 1u) << u | (along >> 1) << v)))).x;
-            triangles.word[base + k] = (owner >> 3) + bitCount(owner & ((1u << axis) - 1u));
+            triangle[k] = (owner >> 3) + bitCount(owner & ((1u << axis) - 1u));
         }
-        triangles.word[base + 3u] = material;
+        imageStore(triangles, int(entry.z + t), triangle);
     }
 }

@@ -258,7 +258,8 @@ bool GpuMarchingCubes::Impl::ensureBuffer(DeviceBuffer& buffer, VkDeviceSize byt
     if (buffer.buffer && buffer.size >= bytes) return false;
     destroyBuffer(ctx, buffer);
     const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT |
-                                     VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+                                     VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                                     VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     buffer = createBuffer(ctx, std::max<VkDeviceSize>(bytes, 16), usage, use);
     return true;
 }
@@ -289,7 +290,6 @@ void GpuMarchingCubes::Impl::bindAll() {
     buffers[kMcCellInfo] = cellInfo.buffer;
     buffers[kMcScanLevels] = scanLevels.buffer;
     buffers[kMcVertices] = vertices.buffer;
-    buffers[kMcTriangles] = triangles.buffer;
     buffers[kMcActiveCells] = activeCells.buffer;
     buffers[kMcVertexEdges] = vertexEdges.buffer;
     struct View {
@@ -307,7 +307,8 @@ void GpuMarchingCubes::Impl::bindAll() {
                           {kMcCellInfoTexels, cellInfo.buffer, VK_FORMAT_R32_UINT},
                           {kMcScanTexels, scanLevels.buffer, VK_FORMAT_R32G32B32A32_UINT},
                           {kMcActiveCellTexels, activeCells.buffer, VK_FORMAT_R32G32B32A32_UINT},
-                          {kMcVertexEdgeTexels, vertexEdges.buffer, VK_FORMAT_R32_UINT}};
+                          {kMcVertexEdgeTexels, vertexEdges.buffer, VK_FORMAT_R32_UINT},
+                          {kMcTriangles, triangles.buffer, mcStorageTexelFormat(kMcTriangles)}};
     destroyTexelViews();
     for (const View& view : views) {
         VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
@@ -337,7 +338,6 @@ McPush GpuMarchingCubes::Impl::push(const MeshOptions& options) const {
         p.tileCount[a] = tileCount[a];
     }
     p.gridOrigin[3] = layout.chunkShift;
-    p.gridSize[3] = source.hasMaterials ? 1 : 0;
     p.chunkBase[3] = layout.chunkCount.x;
     p.tileFirst[3] = layout.chunkCount.y;
     const float margin = marching_cubes::crossingMargin(layout);
@@ -386,7 +386,7 @@ GpuMarchingCubes::GpuMarchingCubes(VulkanExecutor& executor) : impl_(std::make_u
     s.tiles = uint32_t(s.tileCount.x) * uint32_t(s.tileCount.y) * uint32_t(s.tileCount.z);
     s.voxelTiles = uint32_t(s.tileCount.x + 1) * uint32_t(s.tileCount.y + 1) * uint32_t(s.tileCount.z + 1);
     s.checkLimits();
-    createMcPipelines(s.ctx, s.pipelines);
+    createMcPipelines(s.ctx, s.source.hasMaterials, s.pipelines);
     s.createBuffers();
     s.bindAll();
     const CommandSlot slot = createCommandSlot(s.ctx);

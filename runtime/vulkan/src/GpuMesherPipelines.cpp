@@ -13,25 +13,29 @@ namespace {
 constexpr const char* kPassFiles[kMcPassCount] = {"mc_tiles.glsl", "mc_count.glsl", "mc_scan.glsl", "mc_compact.glsl",
                                                    "mc_vertices.glsl", "mc_triangles.glsl"};
 
-// The pass's #version line, then the shared declarations, then the rest of the pass.
-std::string passSource(const char* file) {
+// The pass's #version line, kHasMaterials, the shared declarations, then the rest of the pass.
+std::string passSource(const char* file, bool hasMaterials) {
     const std::string pass(shaderSource(file));
     const size_t firstLine = pass.find('\n') + 1;
-    return pass.substr(0, firstLine) + std::string(shaderSource("mc_common.glsl")) + pass.substr(firstLine);
+    return pass.substr(0, firstLine) + "const bool kHasMaterials = " + (hasMaterials ? "true" : "false") + ";\n" +
+           std::string(shaderSource("mc_common.glsl")) + pass.substr(firstLine);
 }
 
 VkDescriptorType descriptorType(uint32_t binding) {
-    return isMcTexelBinding(binding) ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    return isMcTexelBinding(binding)          ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER
+           : isMcStorageTexelBinding(binding) ? VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER
+                                              : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 }
 
 // Set 0 (McBinding) and the pipeline layout with the push block.
 void createMcSet(VulkanContext::Impl& ctx, McPipelines& out) {
     std::vector<VkDescriptorSetLayoutBinding> layoutBindings(kMcBindingCount);
-    uint32_t texels = 0;
+    uint32_t texels = 0, storageTexels = 0;
     for (uint32_t b = 0; b < kMcBindingCount; ++b) {
         layoutBindings[b].binding = b;
         layoutBindings[b].descriptorType = descriptorType(b);
         texels += isMcTexelBinding(b) ? 1 : 0;
+        storageTexels += isMcStorageTexelBinding(b) ? 1 : 0;
         layoutBindings[b].descriptorCount = 1;
         layoutBindings[b].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
     }
@@ -46,11 +50,12 @@ void createMcSet(VulkanContext::Impl& ctx, McPipelines& out) {
     layoutInfo.pushConstantRangeCount = 1;
     layoutInfo.pPushConstantRanges = &push;
     check(ctx.api.vkCreatePipelineLayout(ctx.device, &layoutInfo, nullptr, &out.layout), "vkCreatePipelineLayout");
-    const VkDescriptorPoolSize poolSizes[2] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kMcBindingCount - texels},
-                                               {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, texels}};
+    const VkDescriptorPoolSize poolSizes[3] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kMcBindingCount - texels - storageTexels},
+                                               {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, texels},
+                                               {VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, storageTexels}};
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     poolInfo.maxSets = 1;
-    poolInfo.poolSizeCount = 2;
+    poolInfo.poolSizeCount = 3;
     poolInfo.pPoolSizes = poolSizes;
     check(ctx.api.vkCreateDescriptorPool(ctx.device, &poolInfo, nullptr, &out.pool), "vkCreateDescriptorPool");
     VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
@@ -62,10 +67,10 @@ void createMcSet(VulkanContext::Impl& ctx, McPipelines& out) {
 
 } // namespace
 
-void createMcPipelines(VulkanContext::Impl& ctx, McPipelines& out) {
+void createMcPipelines(VulkanContext::Impl& ctx, bool hasMaterials, McPipelines& out) {
     createMcSet(ctx, out);
     for (uint32_t pass = 0; pass < kMcPassCount; ++pass) {
-        const std::vector<uint32_t> spirv = codegen::compileComputeShader(kPassFiles[pass], passSource(kPassFiles[pass]));
+        const std::vector<uint32_t> spirv = codegen::compileComputeShader(kPassFiles[pass], passSource(kPassFiles[pass], hasMaterials));
         out.pipelines[pass] = createComputePipeline(ctx, out.layout, spirv, kPassFiles[pass]);
     }
 }
@@ -80,7 +85,7 @@ void bindMcSet(VulkanContext::Impl& ctx, const McPipelines& pipelines, const std
         writes[b].dstBinding = b;
         writes[b].descriptorCount = 1;
         writes[b].descriptorType = descriptorType(b);
-        if (isMcTexelBinding(b)) {
+        if (isMcTexelBinding(b) || isMcStorageTexelBinding(b)) {
             writes[b].pTexelBufferView = &views[b];
         } else {
             infos[b] = {buffers[b], 0, VK_WHOLE_SIZE};

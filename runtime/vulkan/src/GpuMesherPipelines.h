@@ -11,7 +11,7 @@ namespace voxc::vulkan_detail {
 // The push block of compiler/shaders/mc_common.glsl, field for field (std430).
 struct McPush {
     int32_t gridOrigin[4];     // w: log2 chunk size
-    int32_t gridSize[4];       // w: 1 when the material buffer has a uint per voxel
+    int32_t gridSize[4];       // w unused
     int32_t chunkBase[4];      // w: voxel-buffer slots along x
     int32_t tileFirst[4];      // first 8^3 tile of cells; w: voxel-buffer slots along y
     int32_t tileCount[4];      // tiles of cells per axis; w unused
@@ -50,8 +50,11 @@ enum McBinding : uint32_t {
 };
 constexpr bool isMcTexelBinding(uint32_t binding) {
     return binding == kMcDensityTexels || binding == kMcMaterialTexels || binding == kMcCaseTexels || binding == kMcQuadTexels ||
-           binding >= kMcTileRankTexels && binding <= kMcSegmentTexels || binding >= kMcCellInfoTexels;
+           (binding >= kMcTileRankTexels && binding <= kMcSegmentTexels) || binding >= kMcCellInfoTexels;
 }
+// Written as texels (imageStore): lavapipe stores a texel's four words in one pass over the lanes.
+constexpr bool isMcStorageTexelBinding(uint32_t binding) { return binding == kMcTriangles; }
+constexpr VkFormat mcStorageTexelFormat(uint32_t) { return VK_FORMAT_R32G32B32A32_UINT; }
 
 struct McPipelines : StorageSet {
     std::array<VkPipeline, kMcPassCount> pipelines{};
@@ -59,7 +62,8 @@ struct McPipelines : StorageSet {
 
 // Compiles the passes (glslang) and builds their pipelines; fills `out` step by step, so
 // destroyMcPipelines cleans up after a failure part way.
-void createMcPipelines(VulkanContext::Impl& ctx, McPipelines& out);
+// `hasMaterials`: the executor's material buffer has a uint per voxel (else every id reads 0).
+void createMcPipelines(VulkanContext::Impl& ctx, bool hasMaterials, McPipelines& out);
 // Points every storage binding b at buffers[b] and every texel binding b at views[b].
 void bindMcSet(VulkanContext::Impl& ctx, const McPipelines& pipelines, const std::array<VkBuffer, kMcBindingCount>& buffers,
                const std::array<VkBufferView, kMcBindingCount>& views);
