@@ -16,12 +16,12 @@ TEST(ScriptTest, ParsesEveryAction) {
                                               "camera 1,2,3:4,5,6\n"
                                               "  carve 10 20.5   # at a pixel\n"
                                               "add-ray 1,2,3 0,-1,0\n"
-                                              "set bridge.peak 4\n"
+                                              "set cliffs.face.constraint[1].amplitude 4\n"
                                               "undo\nredo\nreload\nsave-edits out.json\nwait 0.5\nwait-change 30\n"
-                                              "screenshot out.png\n",
+                                              "screenshot out.png\nwait-refined 60\n",
                                               diagnostics);
     ASSERT_FALSE(diagnostics.hasErrors());
-    ASSERT_EQ(actions.size(), 11u);
+    ASSERT_EQ(actions.size(), 12u);
     EXPECT_EQ(actions[0].kind, Action::Kind::Camera);
     EXPECT_EQ(actions[0].text, "1,2,3:4,5,6");
     EXPECT_EQ(actions[1].kind, Action::Kind::Carve);
@@ -32,17 +32,19 @@ TEST(ScriptTest, ParsesEveryAction) {
     EXPECT_EQ(actions[2].kind, Action::Kind::Add);
     EXPECT_TRUE(actions[2].alongRay);
     EXPECT_EQ(actions[2].direction, glm::vec3(0.0f, -1.0f, 0.0f));
-    EXPECT_EQ(actions[3].text, "bridge.peak");
+    EXPECT_EQ(actions[3].text, "cliffs.face.constraint[1].amplitude");
     EXPECT_EQ(actions[3].value, 4.0);
     EXPECT_EQ(actions[9].kind, Action::Kind::WaitChange);
     EXPECT_EQ(actions[10].text, "out.png");
+    EXPECT_EQ(actions[11].kind, Action::Kind::WaitRefined);
+    EXPECT_EQ(actions[11].value, 60.0);
 }
 
 TEST(ScriptTest, MalformedLinesAreLocatedErrors) {
     Diagnostics diagnostics;
-    parse("zoom 2\ncarve 1\ncarve x 2\nadd-ray 1,2 0,0,1\nwait -1\n", diagnostics);
+    parse("zoom 2\ncarve 1\ncarve x 2\nadd-ray 1,2 0,0,1\nwait -1\nwait-refined 4000\n", diagnostics);
     const std::vector<Diagnostic>& all = diagnostics.all();
-    ASSERT_EQ(all.size(), 5u);
+    ASSERT_EQ(all.size(), 6u);
     EXPECT_EQ(all[0].code, "E0008");
     EXPECT_EQ(all[0].loc.line, 1u);
     EXPECT_EQ(all[1].code, "E0006");
@@ -50,6 +52,8 @@ TEST(ScriptTest, MalformedLinesAreLocatedErrors) {
     EXPECT_EQ(all[2].loc.column, 7u);
     EXPECT_EQ(all[3].code, "E0010");
     EXPECT_EQ(all[4].code, "E0007");
+    EXPECT_EQ(all[5].code, "E0007");
+    EXPECT_EQ(all[5].loc.line, 6u);
 }
 
 } // namespace

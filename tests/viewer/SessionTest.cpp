@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <thread>
 
 namespace voxc::viewer {
 namespace {
@@ -387,6 +388,69 @@ TEST_F(SessionTest, CurvesTerrainAndLsystemSlidersRerunAsIfTheFileSaidSo) {
         for (const char* listed : {"cliffs.face.constraint[1].amplitude", "valley.river.rain", "net.expansions", "seed"})
             EXPECT_NE(message.find(listed), std::string::npos) << listed << " in " << message;
     }
+}
+
+// Waits for the background solve to replace the preview.
+std::optional<bool> waitForRefine(Session& session) {
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (std::chrono::steady_clock::now() < until) {
+        if (std::optional<bool> refined = session.poll()) return refined;
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    return std::nullopt;
+}
+
+TEST_F(SessionTest, ALargeSolveIsPreviewedCoarseThenRefinedToThePlainRunsWorld) {
+    const std::optional<std::filesystem::path> cache = codegen::compileCacheDirectory();
+    codegen::setCompileCacheDirectory(directory_ / "cache");
+    struct Restore {
+        std::optional<std::filesystem::path> cache;
+        ~Restore() { codegen::setCompileCacheDirectory(cache); }
+    } restore{cache};
+    write(kBlocksProgram);
+    // Sizes that make this small file's curves box (32x24x16) and terrain (level 5) previewed:
+    // the curves on a 16x12x8 box, the terrain to level 4.
+    const PreviewOptions preview{.curvesCells = 2048, .terrainLevel = 4};
+    Session session(context(), {.path = path(), .preview = preview});
+    ASSERT_TRUE(session.hasWorld()) << session.lastError();
+    EXPECT_TRUE(session.refining());
+    EXPECT_TRUE(session.stats().preview);
+    const std::vector<glm::vec3> coarse = session.world().mesh().positions;
+    const uint64_t shown = session.generation();
+    ASSERT_EQ(waitForRefine(session), std::optional<bool>(true)) << session.lastError();
+    EXPECT_FALSE(session.refining());
+    EXPECT_FALSE(session.stats().preview);
+    EXPECT_EQ(session.generation(), shown + 1);
+    EXPECT_TRUE(session.world().mesh().positions != coarse);
+    EXPECT_EQ(session.poll(), std::nullopt); // nothing more to show
+
+    // The refined world is the one a session without previews and without the cache solves.
+    codegen::setCompileCacheDirectory(std::nullopt);
+    Session plain(context(), {.path = path(), .preview = {.curvesCells = 0}});
+    codegen::setCompileCacheDirectory(directory_ / "cache");
+    ASSERT_TRUE(plain.hasWorld()) << plain.lastError();
+    EXPECT_FALSE(plain.refining());
+    EXPECT_TRUE(plain.world().mesh().positions == session.world().mesh().positions);
+    // Both blocks are cached now, so the same file with previews on shows its full world at once.
+    Session again(context(), {.path = path(), .preview = preview});
+    EXPECT_FALSE(again.refining());
+    EXPECT_TRUE(again.world().mesh().positions == session.world().mesh().positions);
+
+    // Two slider moves in a row: the first one's refine is superseded, never shown.
+    ASSERT_TRUE(session.setParameter("cliffs.face.constraint[1].amplitude", 2)) << session.lastError();
+    EXPECT_TRUE(session.refining());
+    ASSERT_TRUE(session.setParameter("cliffs.face.constraint[1].amplitude", 4)) << session.lastError();
+    EXPECT_TRUE(session.refining());
+    const uint64_t second = session.generation();
+    ASSERT_EQ(waitForRefine(session), std::optional<bool>(true)) << session.lastError();
+    EXPECT_EQ(session.generation(), second + 1);
+    std::string text = kBlocksProgram;
+    const std::string secondPoint = "constraint { t = 1; material = sand; }";
+    text.replace(text.find(secondPoint), secondPoint.size(), "constraint { t = 1; material = sand; amplitude = 4; }");
+    write(text);
+    Session written(context(), {.path = path(), .preview = {.curvesCells = 0}});
+    ASSERT_TRUE(written.hasWorld()) << written.lastError();
+    EXPECT_TRUE(written.world().mesh().positions == session.world().mesh().positions);
 }
 
 } // namespace

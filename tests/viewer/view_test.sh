@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Usage: view_test.sh VOXC SOURCE_DIR. `voxc view` under Xvfb on lavapipe, driven by a script as a
 # user would drive it: load scene.vox, carve two holes and add a bump by clicking, save the edits, reload after the
-# file changes, keep the last world after a typo and show its diagnostics in the panel. Its screenshots must equal `voxc render` of the
+# file changes, keep the last world after a typo and show its diagnostics in the panel; a large curves block previewed
+# coarse, then refined after a slider move. Its screenshots must equal `voxc render` of the
 # replayed edits with the same camera (max channel difference <= 2, docs/viewer.md). Fails, never
 # skips, when xvfb-run is missing. Prints "N passed, N failed" last.
 set -u
@@ -111,4 +112,28 @@ expect opened_edits_equal_render 0 "max [0-2], " -- $compare "$work/opened.png" 
 printf '[{"op": "carve"}\n' >"$work/broken_edits.json"
 expect broken_edits_refused 1 "broken_edits\.json:2:1: error E0001" -- xvfb-run -a -s "-screen 0 1024x768x24" \
     "$voxc" view "$work/original.vox" --device lavapipe --edits "$work/broken_edits.json" --script "$work/open.txt"
+# Progressive preview: a curves block of 442,368 cells, not in the (fresh) solve cache, is shown
+# solved on a box twice as coarse, then replaced by the full solve; a slider move previews again.
+# The refined picture is `voxc render`'s of the file with the slider's value written in.
+export VOXC_CACHE_DIR="$work/progressive_cache"
+cp "$src/tests/viewer/progressive_cliff.vox" "$work/cliff.vox"
+sed 's/material = sandstone; amplitude = 1.5; }/material = sandstone; amplitude = 4; }/' "$work/cliff.vox" >"$work/cliff4.vox"
+cliff_camera=150,100,170:48,20,48
+cat >"$work/progressive.txt" <<ACTIONS
+camera $cliff_camera
+set cliffs.face.constraint[1].amplitude 4
+screenshot $work/cliff_coarse.png
+wait-refined 300
+screenshot $work/cliff_refined.png
+ACTIONS
+xvfb-run -a -s "-screen 0 1024x768x24" "$voxc" view "$work/cliff.vox" --device lavapipe --size $size \
+    --script "$work/progressive.txt" >"$work/progressive_log" 2>&1
+expect progressive_ran 0 "wrote .*cliff_refined\.png" -- cat "$work/progressive_log"
+expect preview_shown 0 "\(cliffs\.face\.constraint\[1\]\.amplitude = 4; a coarse preview while the full solve runs; " -- \
+    cat "$work/progressive_log"
+expect preview_refined 0 "\(the full solve replaced the preview; " -- cat "$work/progressive_log"
+"$voxc" render "$work/cliff4.vox" -o "$work/render_cliff4.png" --camera $cliff_camera --size $size \
+    --device lavapipe --no-ao --no-shadows >/dev/null 2>&1
+expect refined_equals_render 0 "max [0-2], " -- $compare "$work/cliff_refined.png" "$work/render_cliff4.png"
+expect coarse_differs 0 "differing [1-9]" -- $compare "$work/cliff_coarse.png" "$work/cliff_refined.png"
 finish

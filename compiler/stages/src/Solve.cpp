@@ -20,14 +20,6 @@ UserError solveError(const Program& program, const CurvesBlock& block, const cha
                                  block.loc.column, what, block.name, why));
 }
 
-// Every field node that samples the terrain `name` reads `map` from now on.
-void replaceMap(Program& program, const std::string& name, const std::shared_ptr<const SampledMap>& map) {
-    for (Field& field : program.fields)
-        for (FieldNode& node : field.nodes)
-            if (node.kind == FieldNode::Kind::Map && node.map->name == name && node.map->source == "terrain")
-                node.map = map;
-}
-
 // The block's table over its whole box: from the solve cache when it holds it, else solved (and
 // kept there). Channels are never kept, so a run that asks for them solves.
 SolveTable solveWhole(const Program& program, const CurvesBlock& block, const SolveOptions& options) {
@@ -63,12 +55,19 @@ SolveTable solveWhole(const Program& program, const CurvesBlock& block, const So
 
 } // namespace
 
+void replaceTerrainMap(Program& program, const std::string& name, const std::shared_ptr<const SampledMap>& map) {
+    for (Field& field : program.fields)
+        for (FieldNode& node : field.nodes)
+            if (node.kind == FieldNode::Kind::Map && node.map->name == name && node.map->source == "terrain")
+                node.map = map;
+}
+
 void solveBlocks(Program& program, const SolveOptions& options) {
     const GridBox grid{program.world.localBase, program.world.localBase + program.world.size};
     for (CurvesBlock& block : program.curves) {
         if (block.table || (!block.scene && !block.terrain)) continue;
         SolveTable table = solveWhole(program, block, options);
-        if (block.terrain) replaceMap(program, block.name, terrain::solvedMap(*block.terrain, *table.terrainMaps));
+        if (block.terrain) replaceTerrainMap(program, block.name, terrain::solvedMap(*block.terrain, *table.terrainMaps));
         const bool inside = glm::all(glm::lessThanEqual(grid.min, table.min)) &&
                             glm::all(glm::lessThanEqual(table.min + table.size, grid.max));
         if (inside) {

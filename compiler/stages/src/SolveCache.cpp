@@ -246,6 +246,11 @@ std::filesystem::path entryPath(const std::filesystem::path& directory, const st
 
 } // namespace
 
+bool hasSolve(const std::filesystem::path& directory, const std::string& key) {
+    std::error_code ignored;
+    return std::filesystem::is_regular_file(entryPath(directory, key), ignored);
+}
+
 SolveCacheCounts solveCacheCounts() {
     const std::lock_guard lock(countState().mutex);
     return countState().counts;

@@ -65,6 +65,7 @@ constexpr Spec kSpecs[] = {
     {"undo", Action::Kind::Undo, 0},            {"redo", Action::Kind::Redo, 0},
     {"reload", Action::Kind::Reload, 0},        {"save-edits", Action::Kind::SaveEdits, 1},
     {"wait", Action::Kind::Wait, 1},            {"wait-change", Action::Kind::WaitChange, 1},
+    {"wait-refined", Action::Kind::WaitRefined, 1},
     {"screenshot", Action::Kind::Screenshot, 1}, {"screenshot-window", Action::Kind::ScreenshotWindow, 1},
 };
 
@@ -110,6 +111,7 @@ std::vector<Action> parseScript(const SourceFile& source, Diagnostics& diagnosti
             break;
         case Action::Kind::Wait:
         case Action::Kind::WaitChange:
+        case Action::Kind::WaitRefined:
             ok = needNumber(words[1], action.value);
             if (ok && !(action.value >= 0 && action.value <= kMaxScriptWaitSeconds)) {
                 diagnostics.error("E0007", words[1].loc,

@@ -8,11 +8,15 @@
 #include "voxc/core/Suggest.h"
 #include "voxc/generators/dey/Generators.h"
 #include "voxc/stages/Pipeline.h"
+#include "voxc/stages/Solve.h"
 #include "voxc/syntax/Parser.h"
 #include "voxc/vulkan/Executor.h"
 
 #include <algorithm>
 #include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
 #include <cmath>
 #include <fmt/format.h>
 #include <functional>
@@ -221,11 +225,94 @@ void Session::listParameters(const ast::File& file) {
     parameters_ = std::move(parameters);
 }
 
+// Solves programs in the background, one at a time, newest first: a request made while one is
+// solving replaces any request still waiting, and only the newest ticket's outcome is kept, so a
+// newer slider move supersedes an older refine (a solve already running is not interrupted; its
+// table still reaches the solve cache).
+class Session::Refiner {
+public:
+    struct Outcome {
+        uint64_t ticket = 0;
+        std::optional<Program> program; // solved; nothing when the solve failed
+        std::string error;
+        double ms = 0.0;
+    };
+
+    Refiner() : thread_([this] { work(); }) {}
+    ~Refiner() {
+        {
+            const std::lock_guard lock(mutex_);
+            stop_ = true;
+        }
+        wake_.notify_one();
+        thread_.join(); // waits for a solve in progress: the thread reads nothing the session owns
+    }
+
+    void submit(uint64_t ticket, Program program) {
+        {
+            const std::lock_guard lock(mutex_);
+            latest_ = ticket;
+            pending_.emplace(ticket, std::move(program));
+            done_.reset();
+        }
+        wake_.notify_one();
+    }
+    // Drops what is waiting and whatever the running solve will give: `ticket` is newer.
+    void supersede(uint64_t ticket) {
+        const std::lock_guard lock(mutex_);
+        latest_ = ticket;
+        pending_.reset();
+        done_.reset();
+    }
+    std::optional<Outcome> take() {
+        const std::lock_guard lock(mutex_);
+        std::optional<Outcome> out = std::move(done_);
+        done_.reset();
+        return out;
+    }
+
+private:
+    void work() {
+        std::unique_lock lock(mutex_);
+        while (true) {
+            wake_.wait(lock, [&] { return stop_ || pending_.has_value(); });
+            if (stop_) return;
+            auto [ticket, program] = std::move(*pending_);
+            pending_.reset();
+            lock.unlock();
+            Outcome outcome;
+            outcome.ticket = ticket;
+            const auto start = std::chrono::steady_clock::now();
+            try {
+                stages::solveBlocks(program); // what compileProgram would solve: the same tables
+                outcome.program = std::move(program);
+            } catch (const std::exception& e) {
+                outcome.error = e.what();
+            }
+            outcome.ms = millisecondsSince(start);
+            lock.lock();
+            if (ticket == latest_) done_ = std::move(outcome);
+        }
+    }
+
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    bool stop_ = false;
+    uint64_t latest_ = 0;
+    std::optional<std::pair<uint64_t, Program>> pending_;
+    std::optional<Outcome> done_;
+    std::thread thread_; // last: started once the rest is built
+};
+
 bool Session::reload() {
     Diagnostics readErrors;
     std::optional<SourceFile> source = loadSourceFile(options_.path, readErrors);
     std::error_code ignored;
     loadedTime_ = std::filesystem::last_write_time(options_.path, ignored);
+    // Whatever happens below, a refine of an older version must not replace it.
+    ++ticket_;
+    refining_ = false;
+    if (refiner_) refiner_->supersede(ticket_);
     if (!source) {
         loadedText_.clear();
         error_ = renderAll(readErrors.all(), SourceFile(options_.path, ""));
@@ -235,7 +322,6 @@ bool Session::reload() {
     // The file as written, for the slider splices and the parameter list; the checker reports its errors.
     Diagnostics parseErrors;
     const ast::File file = parse(*source, parseErrors);
-    bool readingEdits = false;
     try {
         auto start = std::chrono::steady_clock::now();
         CheckOptions checkOptions;
@@ -257,39 +343,85 @@ bool Session::reload() {
             program.world.chunkSize = c;
         }
         start = std::chrono::steady_clock::now();
-        // Constants are folded into the kernels' text, so a changed constant is a changed kernel;
-        // unchanged kernels come from the SPIR-V cache (docs/architecture.md, "voxc_viewer").
-        const KernelPackage package = compileProgram(program, {});
-        stats.compileMs = millisecondsSince(start);
-        start = std::chrono::steady_clock::now();
-        VulkanExecutor executor(context_, package);
-        RunResult result = executor.run();
-        stats.runMs = millisecondsSince(start);
-        stats.dispatches = result.dispatches;
-        const ChunkLayout& layout = result.grid.layout();
-        stats.size = layout.gridSize;
-        stats.chunkSize = layout.chunkSize;
-        stats.chunkCount = layout.chunkCount;
-        if (options_.readEdits) {
-            readingEdits = true;
-            edits_ = options_.readEdits(program);
-            readingEdits = false;
-            options_.readEdits = nullptr;
+        std::optional<Program> preview;
+        if (needsPreview(program, options_.preview)) {
+            try {
+                preview = previewProgram(program, options_.preview);
+            } catch (const std::exception&) {
+                // A coarse box the solve refuses (too thin, say): no preview, the full solve below.
+            }
         }
-        loaded_ = std::make_unique<Loaded>(Loaded{std::move(program), std::move(result.grid), std::nullopt});
-        start = std::chrono::steady_clock::now();
-        rebuildWorld();
-        stats.meshMs = millisecondsSince(start);
-        stats.triangles = loaded_->world->mesh().triangles.size() / 3;
-        stats_ = stats;
+        if (preview) {
+            stats.preview = true;
+            stats.solveMs = millisecondsSince(start);
+            show(std::move(*preview), stats);
+            if (!refiner_) refiner_ = std::make_unique<Refiner>();
+            refiner_->submit(ticket_, std::move(program));
+            refining_ = true;
+        } else {
+            stages::solveBlocks(program); // on the host, through the solve cache, as compileProgram would
+            stats.solveMs = millisecondsSince(start);
+            show(std::move(program), stats);
+        }
     } catch (const UserError& e) {
-        if (readingEdits) throw; // the edits file is not watched: waiting for a save cannot mend it
+        if (readingEdits_) throw; // the edits file is not watched: waiting for a save cannot mend it
         error_ = fmt::format("{}: {}\n", options_.path, e.what());
         return false;
     }
     listParameters(file);
     error_.clear();
+    return true;
+}
+
+void Session::show(Program program, WorldStats stats) {
+    auto start = std::chrono::steady_clock::now();
+    // Constants are folded into the kernels' text, so a changed constant is a changed kernel;
+    // unchanged kernels come from the SPIR-V cache (docs/architecture.md, "voxc_viewer").
+    const KernelPackage package = compileProgram(program, {});
+    stats.compileMs = millisecondsSince(start);
+    start = std::chrono::steady_clock::now();
+    VulkanExecutor executor(context_, package);
+    RunResult result = executor.run();
+    stats.runMs = millisecondsSince(start);
+    stats.dispatches = result.dispatches;
+    const ChunkLayout& layout = result.grid.layout();
+    stats.size = layout.gridSize;
+    stats.chunkSize = layout.chunkSize;
+    stats.chunkCount = layout.chunkCount;
+    if (options_.readEdits) {
+        readingEdits_ = true;
+        edits_ = options_.readEdits(program);
+        readingEdits_ = false;
+        options_.readEdits = nullptr;
+    }
+    loaded_ = std::make_unique<Loaded>(Loaded{std::move(program), std::move(result.grid), std::nullopt});
+    start = std::chrono::steady_clock::now();
+    rebuildWorld();
+    stats.meshMs = millisecondsSince(start);
+    stats.triangles = loaded_->world->mesh().triangles.size() / 3;
+    stats_ = stats;
     ++generation_;
+}
+
+std::optional<bool> Session::poll() {
+    if (!refining_ || !refiner_) return std::nullopt;
+    std::optional<Refiner::Outcome> outcome = refiner_->take();
+    if (!outcome || outcome->ticket != ticket_) return std::nullopt;
+    refining_ = false;
+    if (!outcome->program) {
+        error_ = fmt::format("{}: {}\n", options_.path, outcome->error);
+        return false;
+    }
+    WorldStats stats = stats_;
+    stats.preview = false;
+    stats.solveMs = outcome->ms;
+    try {
+        show(std::move(*outcome->program), stats);
+    } catch (const UserError& e) {
+        error_ = fmt::format("{}: {}\n", options_.path, e.what());
+        return false;
+    }
+    error_.clear();
     return true;
 }
 

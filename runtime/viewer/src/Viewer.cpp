@@ -84,6 +84,7 @@ public:
         while (!glfwWindowShouldClose(window_.handle)) {
             glfwWaitEventsTimeout(kWatchIntervalSeconds); // idle without spinning; the watch needs a timeout
             watchFile();
+            pollRefine();
             frame();
         }
         if (!options_.screenshot.empty()) screenshot(options_.screenshot);
@@ -135,6 +136,7 @@ private:
             while (Clock::now() < until) {
                 glfwPollEvents();
                 watchFile();
+                pollRefine();
                 frame();
                 std::this_thread::sleep_for(std::chrono::milliseconds(20));
             }
@@ -146,10 +148,22 @@ private:
             while (!session_.fileChanged()) {
                 if (Clock::now() >= until) fail(action, fmt::format("{} did not change within {} s", session_.path(), action.value));
                 glfwPollEvents();
+                pollRefine();
                 frame();
                 std::this_thread::sleep_for(std::chrono::milliseconds(50));
             }
             reload();
+            break;
+        }
+        case Action::Kind::WaitRefined: {
+            const auto until = Clock::now() + std::chrono::duration<double>(action.value);
+            while (session_.refining()) {
+                if (Clock::now() >= until) fail(action, fmt::format("the full solve did not finish within {} s", action.value));
+                glfwPollEvents();
+                pollRefine();
+                frame();
+                std::this_thread::sleep_for(std::chrono::milliseconds(20));
+            }
             break;
         }
         case Action::Kind::Screenshot: screenshot(action.text); break;
@@ -175,12 +189,18 @@ private:
         if (reloaded) {
             if (!framed_) setCamera(options_.camera); // the first world after a start with a broken file
             const WorldStats& s = session_.stats();
-            log(fmt::format("reloaded {} ({}; {} triangles; check {:.0f} ms, compile {:.0f} ms, run {:.0f} ms, mesh {:.0f} ms)",
-                            session_.path(), why, s.triangles, s.checkMs, s.compileMs, s.runMs, s.meshMs));
+            log(fmt::format("reloaded {} ({}; {}{} triangles; check {:.0f} ms, solve {:.0f} ms, compile {:.0f} ms, run {:.0f} ms, mesh {:.0f} ms)",
+                            session_.path(), why, s.preview ? "a coarse preview while the full solve runs; " : "",
+                            s.triangles, s.checkMs, s.solveMs, s.compileMs, s.runMs, s.meshMs));
         } else {
             log(fmt::format("{} does not check ({}); keeping the last good world:\n{}", session_.path(), why, session_.lastError()));
         }
         sceneChanged();
+    }
+
+    // Puts the background solve's world on screen once it is done.
+    void pollRefine() {
+        if (const std::optional<bool> refined = session_.poll()) reported(*refined, "the full solve replaced the preview");
     }
 
     void watchFile() {
@@ -492,7 +512,9 @@ void App::panel() {
         ImGui::Text("grid %dx%dx%d, chunk %d: %d chunks", s.size.x, s.size.y, s.size.z, s.chunkSize,
                     s.chunkCount.x * s.chunkCount.y * s.chunkCount.z);
         ImGui::Text("%zu triangles, %llu dispatches", s.triangles, (unsigned long long)s.dispatches);
-        ImGui::Text("check %.0f ms, compile %.0f ms, run %.0f ms, mesh %.0f ms", s.checkMs, s.compileMs, s.runMs, s.meshMs);
+        ImGui::Text("check %.0f ms, solve %.0f ms, compile %.0f ms, run %.0f ms, mesh %.0f ms", s.checkMs, s.solveMs,
+                    s.compileMs, s.runMs, s.meshMs);
+        if (session_.refining()) ImGui::TextUnformatted("a coarse preview: the full solve is running");
         if (lastEdit_)
             ImGui::Text("last edit: %zu chunks re-meshed in %.1f ms", lastEdit_->chunksRemeshed, lastEdit_->ms);
         ImGui::Text("draw %.1f ms", drawMs_);

@@ -27,6 +27,10 @@ struct SolveOptions {
 // multigrid past its cycle cap, a terrain past its work limits) is a UserError located at its block.
 void solveBlocks(Program& program, const SolveOptions& options = {});
 
+// Every field node of `program` that samples the terrain `name` reads `map` from now on (solveBlocks
+// gives them the solved map; the viewer's preview a coarse one).
+void replaceTerrainMap(Program& program, const std::string& name, const std::shared_ptr<const SampledMap>& map);
+
 // `program` when every block has its table; otherwise `scratch`, a copy whose blocks are solved
 // here on the host. compileProgram and interpret start with it, so a caller that has no solvers to
 // pass need not call solveBlocks; one that reports or dumps the tables calls it first.

@@ -33,6 +33,9 @@ std::string solveKey(const CurvesBlock& block, bool onDevice);
 // The table kept under `key` in `directory`'s solves/, or nothing (no entry; `corrupted` says
 // whether one was there but failed its check).
 std::optional<SolveTable> readSolve(const std::filesystem::path& directory, const std::string& key, bool& corrupted);
+// Whether `directory`'s solves/ has an entry under `key` (unread, so not yet checked): the viewer
+// shows a coarse preview only of blocks a run would solve rather than read.
+bool hasSolve(const std::filesystem::path& directory, const std::string& key);
 // Keeps `table` (its channels and phase times are not kept); a directory that cannot be written
 // costs the next run a solve, never this one.
 void writeSolve(const std::filesystem::path& directory, const std::string& key, const SolveTable& table);

@@ -15,6 +15,7 @@
 // as if the file said so.
 #include "voxc/edit/EditableWorld.h"
 #include "voxc/program/Program.h"
+#include "voxc/viewer/Preview.h"
 #include "voxc/vulkan/Context.h"
 
 #include <cstdint>
@@ -56,6 +57,9 @@ struct SessionOptions {
     // its materials (and its grid bounds their work); a UserError it throws leaves reload() (the
     // edits file is not watched).
     std::function<std::vector<Brush>(const Program&)> readEdits = {};
+    // Which curves and terrain blocks are shown coarse first while their full solve runs in the
+    // background (Preview.h; docs/viewer.md, "Progressive preview").
+    PreviewOptions preview = {};
 };
 
 // What the last successful run made, for the panel's statistics.
@@ -65,7 +69,10 @@ struct WorldStats {
     glm::ivec3 chunkCount{0};
     uint64_t dispatches = 0;
     size_t triangles = 0;
-    double checkMs = 0.0, compileMs = 0.0, runMs = 0.0, meshMs = 0.0;
+    // solveMs: the curves and terrain solves (a preview's coarse ones; after a refine, the
+    // background's full ones); compileMs is then lowering and kernels only.
+    double checkMs = 0.0, solveMs = 0.0, compileMs = 0.0, runMs = 0.0, meshMs = 0.0;
+    bool preview = false; // the world is a coarse preview; the full solve is running
 };
 
 struct EditStats {
@@ -83,8 +90,17 @@ public:
 
     // Re-reads, re-checks and re-runs the file with the current parameters, then replays the
     // edits. On errors (diagnostics, or a run the device refuses) keeps the last good world and
-    // returns false; lastError() holds the rendered diagnostics.
+    // returns false; lastError() holds the rendered diagnostics. When a large curves or terrain
+    // block must be solved (SessionOptions::preview), the world is a coarse preview and the full
+    // solve runs in the background (refining()); a later reload supersedes it.
     bool reload();
+    // Whether a background solve will replace the preview on screen.
+    bool refining() const { return refining_; }
+    // Shows the background solve's world once it is done: nothing while it runs (or when there is
+    // none), true when the world was replaced (the one a reload without a preview makes), false
+    // when the solve or the run failed (lastError(); the preview stays). Call it from the thread
+    // that drives the session, as often as convenient.
+    std::optional<bool> poll();
     // True when the file's modification time, size or text differ from what was last loaded.
     bool fileChanged() const;
 
@@ -117,6 +133,9 @@ public:
 
 private:
     struct Loaded;
+    class Refiner;
+    // Compiles and runs a solved (or previewed) program, replays the edits and makes it the world.
+    void show(Program program, WorldStats stats);
     std::string textWithOverrides(const std::string& text, const ast::File& file) const;
     void rebuildWorld();
     void listParameters(const ast::File& file);
@@ -135,6 +154,10 @@ private:
     // What the file looked like when last read, for fileChanged().
     std::filesystem::file_time_type loadedTime_{};
     std::string loadedText_;
+    bool readingEdits_ = false;
+    uint64_t ticket_ = 0;     // counts reload() calls: a refine of an older one is dropped
+    bool refining_ = false;
+    std::unique_ptr<Refiner> refiner_; // started by the first preview
 };
 
 // The edits as the JSON array `voxc run --edits` reads (docs/cli.md, "Edits files"): floats are
