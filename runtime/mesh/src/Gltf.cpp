@@ -3,11 +3,14 @@
 #include "ChunkWorkers.h"
 #include "MaterialLook.h"
 #include "voxc/core/Errors.h"
+#include "voxc/core/HugePages.h"
 #include "voxc/mesh/Export.h"
 
 #include <array>
 #include <bit>
+#include <algorithm>
 #include <cstring>
+#include <functional>
 #include <fmt/format.h>
 #include <glm/common.hpp>
 #include <map>
@@ -27,23 +30,32 @@ constexpr uint32_t kGlbMagic = 0x46546C67, kGlbVersion = 2, kJsonChunk = 0x4E4F5
 constexpr int kFloat = 5126, kUnsignedShort = 5123, kUnsignedInt = 5125;
 constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
 
+// The BIN chunk as planned pieces: each view's offset and length are fixed when it is added (so
+// the JSON can name them), and its bytes are written once, straight into the file's buffer.
 class BinaryBuffer {
 public:
-    // Appends `bytes` as a buffer view of its own, starting 4-byte aligned; returns its index.
-    // Room for `size` more bytes and their padding, so that appending copies each byte once.
-    void reserve(size_t size) { data_.reserve(size); }
-    size_t addView(const void* bytes, size_t size, int target, Json& views) {
-        data_.resize((data_.size() + 3) & ~size_t(3), 0);
-        const size_t offset = data_.size();
-        data_.append(static_cast<const char*>(bytes), size);
+    using Writer = std::function<void(char*)>;
+    // A view of `size` bytes that `write` fills, starting 4-byte aligned; returns its index.
+    size_t addView(size_t size, int target, Json& views, Writer write) {
+        const size_t offset = (size_ + 3) & ~size_t(3);
+        size_ = offset + size;
+        pieces_.push_back({offset, std::move(write)});
         views.push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", size}, {"target", target}});
         return views.size() - 1;
     }
-    const std::string& data() const { return data_; }
-    std::string take() && { return std::move(data_); }
+    size_t size() const { return size_; }
+    // Writes every view into `out` (size() bytes, zeroed: the padding stays 0).
+    void writeTo(char* out) const {
+        for (const Piece& piece : pieces_) piece.write(out + piece.offset);
+    }
 
 private:
-    std::string data_;
+    struct Piece {
+        size_t offset;
+        Writer write;
+    };
+    std::vector<Piece> pieces_;
+    size_t size_ = 0;
 };
 
 void appendUint32(std::string& out, uint32_t value) {
@@ -58,7 +70,10 @@ std::map<uint8_t, std::vector<uint32_t>> trianglesByMaterial(const Mesh& mesh) {
     std::array<size_t, 256> counts{};
     for (size_t t = 0; t < triangleCount; ++t) ++counts[mesh_export::triangleMaterial(mesh, t)];
     std::array<std::vector<uint32_t>, 256> lists;
-    for (size_t id = 0; id < 256; ++id) lists[id].reserve(counts[id] * 3);
+    for (size_t id = 0; id < 256; ++id) {
+        lists[id].reserve(counts[id] * 3);
+        adviseHugePages(lists[id].data(), counts[id] * 3 * sizeof(uint32_t));
+    }
     for (size_t t = 0; t < triangleCount; ++t) {
         std::vector<uint32_t>& indices = lists[mesh_export::triangleMaterial(mesh, t)];
         indices.insert(indices.end(), mesh.triangles.begin() + std::ptrdiff_t(3 * t), mesh.triangles.begin() + std::ptrdiff_t(3 * t + 3));
@@ -69,9 +84,11 @@ std::map<uint8_t, std::vector<uint32_t>> trianglesByMaterial(const Mesh& mesh) {
     return groups;
 }
 
-// The vertex streams a .glb carries, in the order written.
-struct VertexStreams {
-    std::vector<glm::vec3> positions, normals;
+// The order of the vertices in the file: the new index of each of the mesh's vertices (~0u for
+// one that no triangle uses, left out), and how many are written.
+struct VertexOrder {
+    std::vector<uint32_t> remap;
+    size_t used = 0;
 };
 
 // Triangles per block of the vertex-cache reordering. The mesher's triangles come in cell order,
@@ -86,10 +103,14 @@ void optimizeVertexCache(std::vector<uint32_t>& indices, size_t vertexCount) {
     const size_t blockIndices = kCacheBlockTriangles * 3;
     const size_t blocks = (indices.size() + blockIndices - 1) / blockIndices;
     const size_t workers = std::min<size_t>(blocks, std::max(1u, std::thread::hardware_concurrency()));
-    std::vector<uint32_t> ordered(indices.size());
+    std::vector<uint32_t> ordered;
+    resizeOnHugePages(ordered, indices.size());
     forEachChunk(workers, [&](size_t worker) {
         // Block-local number of each vertex while its block is reordered, else none.
-        std::vector<uint32_t> localOf(vertexCount, UINT32_MAX);
+        std::vector<uint32_t> localOf;
+        localOf.reserve(vertexCount);
+        adviseHugePages(localOf.data(), vertexCount * sizeof(uint32_t));
+        localOf.assign(vertexCount, UINT32_MAX);
         std::vector<uint32_t> globalOf, local;
         for (size_t b = worker; b < blocks; b += workers) {
             const size_t first = b * blockIndices, count = std::min(blockIndices, indices.size() - first);
@@ -114,29 +135,37 @@ void optimizeVertexCache(std::vector<uint32_t>& indices, size_t vertexCount) {
 }
 
 // Reorders for a GPU (meshoptimizer): each primitive's triangles for the post-transform vertex
-// cache (windings kept), then the shared vertices in the order the primitives first use them.
-VertexStreams optimizeForRendering(const Mesh& mesh, std::map<uint8_t, std::vector<uint32_t>>& groups) {
+// cache (windings kept), then the shared vertices in the order the primitives first use them;
+// the primitives' indices are renumbered to that order.
+VertexOrder optimizeForRendering(const Mesh& mesh, std::map<uint8_t, std::vector<uint32_t>>& groups) {
     const size_t vertexCount = mesh.positions.size();
     std::vector<uint32_t> all;
     all.reserve(mesh.triangles.size());
+    adviseHugePages(all.data(), mesh.triangles.size() * sizeof(uint32_t));
     for (auto& [id, indices] : groups) {
         optimizeVertexCache(indices, vertexCount);
         all.insert(all.end(), indices.begin(), indices.end());
     }
-    std::vector<uint32_t> remap(vertexCount);
-    const size_t used = meshopt_optimizeVertexFetchRemap(remap.data(), all.data(), all.size(), vertexCount);
-    VertexStreams streams{std::vector<glm::vec3>(used), std::vector<glm::vec3>(used)};
-    for (size_t v = 0; v < vertexCount; ++v) {
-        if (remap[v] == ~0u) continue; // used by no triangle: left out
-        streams.positions[remap[v]] = mesh.positions[v];
-        streams.normals[remap[v]] = mesh.normals[v];
-    }
+    VertexOrder order;
+    resizeOnHugePages(order.remap, vertexCount);
+    order.used = meshopt_optimizeVertexFetchRemap(order.remap.data(), all.data(), all.size(), vertexCount);
     for (auto& [id, indices] : groups)
-        for (uint32_t& i : indices) i = remap[i];
-    return streams;
+        for (uint32_t& i : indices) i = order.remap[i];
+    return order;
 }
 
-Json gltfDocument(const Mesh& mesh, std::span<const Material> materials, BinaryBuffer& bin) {
+// A vertex stream in the file's order: each used vertex's value at its new index.
+BinaryBuffer::Writer vertexStream(const std::vector<glm::vec3>& values, const std::vector<uint32_t>& remap) {
+    return [&values, &remap](char* out) {
+        for (size_t v = 0; v < values.size(); ++v)
+            if (remap[v] != ~0u) std::memcpy(out + size_t(remap[v]) * sizeof(glm::vec3), &values[v], sizeof(glm::vec3));
+    };
+}
+
+// The pieces of the BIN chunk (`order` and `groups`, which its views read when written) are kept
+// by the caller until the views are written.
+Json gltfDocument(const Mesh& mesh, std::span<const Material> materials, BinaryBuffer& bin, VertexOrder& order,
+                  std::map<uint8_t, std::vector<uint32_t>>& groups) {
     Json doc;
     doc["asset"] = {{"version", "2.0"}, {"generator", "voxc"}};
     doc["scene"] = 0;
@@ -145,22 +174,24 @@ Json gltfDocument(const Mesh& mesh, std::span<const Material> materials, BinaryB
         return doc;
     }
     VOXC_ASSERT(mesh.normals.size() == mesh.positions.size());
-    std::map<uint8_t, std::vector<uint32_t>> groups = trianglesByMaterial(mesh);
-    const VertexStreams streams = optimizeForRendering(mesh, groups);
-    const size_t vertexCount = streams.positions.size();
+    groups = trianglesByMaterial(mesh);
+    order = optimizeForRendering(mesh, groups);
+    const size_t vertexCount = order.used;
     Json views = Json::array(), accessors = Json::array();
-    bin.reserve(vertexCount * 24 + mesh.triangles.size() * 4 + 4 * (groups.size() + 2));
 
-    glm::vec3 lo = streams.positions[0], hi = streams.positions[0];
-    for (const glm::vec3& p : streams.positions) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
+    // From the file's first vertex on, as a reader scanning the stream would.
+    const size_t firstWritten = size_t(std::find(order.remap.begin(), order.remap.end(), 0u) - order.remap.begin());
+    glm::vec3 lo = mesh.positions[firstWritten], hi = lo;
+    for (size_t v = 0; v < mesh.positions.size(); ++v)
+        if (order.remap[v] != ~0u) {
+            lo = glm::min(lo, mesh.positions[v]);
+            hi = glm::max(hi, mesh.positions[v]);
+        }
     // The bounds are the float extrema exactly: validators compare them with the data.
     auto bound = [](glm::vec3 v) { return Json::array({double(v.x), double(v.y), double(v.z)}); };
-    accessors.push_back({{"bufferView", bin.addView(streams.positions.data(), vertexCount * 12, kArrayBuffer, views)},
+    accessors.push_back({{"bufferView", bin.addView(vertexCount * 12, kArrayBuffer, views, vertexStream(mesh.positions, order.remap))},
                          {"componentType", kFloat}, {"count", vertexCount}, {"type", "VEC3"}, {"min", bound(lo)}, {"max", bound(hi)}});
-    accessors.push_back({{"bufferView", bin.addView(streams.normals.data(), vertexCount * 12, kArrayBuffer, views)},
+    accessors.push_back({{"bufferView", bin.addView(vertexCount * 12, kArrayBuffer, views, vertexStream(mesh.normals, order.remap))},
                          {"componentType", kFloat}, {"count", vertexCount}, {"type", "VEC3"}});
     // 16-bit indices while every index fits below the primitive-restart value 65535.
     const bool shortIndices = vertexCount <= 65535;
@@ -168,10 +199,15 @@ Json gltfDocument(const Mesh& mesh, std::span<const Material> materials, BinaryB
     for (const auto& [id, indices] : groups) {
         size_t view;
         if (shortIndices) {
-            const std::vector<uint16_t> narrow(indices.begin(), indices.end());
-            view = bin.addView(narrow.data(), narrow.size() * 2, kElementArrayBuffer, views);
+            view = bin.addView(indices.size() * 2, kElementArrayBuffer, views, [&indices = indices](char* out) {
+                for (size_t i = 0; i < indices.size(); ++i) {
+                    const uint16_t narrow = uint16_t(indices[i]);
+                    std::memcpy(out + 2 * i, &narrow, 2);
+                }
+            });
         } else {
-            view = bin.addView(indices.data(), indices.size() * 4, kElementArrayBuffer, views);
+            view = bin.addView(indices.size() * 4, kElementArrayBuffer, views,
+                               [&indices = indices](char* out) { std::memcpy(out, indices.data(), indices.size() * 4); });
         }
         accessors.push_back({{"bufferView", view}, {"componentType", shortIndices ? kUnsignedShort : kUnsignedInt},
                              {"count", indices.size()}, {"type", "SCALAR"}});
@@ -191,7 +227,7 @@ Json gltfDocument(const Mesh& mesh, std::span<const Material> materials, BinaryB
     doc["materials"] = gltfMaterials;
     doc["accessors"] = accessors;
     doc["bufferViews"] = views;
-    doc["buffers"] = Json::array({{{"byteLength", bin.data().size()}}});
+    doc["buffers"] = Json::array({{{"byteLength", bin.size()}}});
     return doc;
 }
 
@@ -199,25 +235,29 @@ Json gltfDocument(const Mesh& mesh, std::span<const Material> materials, BinaryB
 
 std::string encodeGlb(const Mesh& mesh, std::span<const Material> materials) {
     BinaryBuffer bin;
-    std::string json = gltfDocument(mesh, materials, bin).dump();
+    VertexOrder order;
+    std::map<uint8_t, std::vector<uint32_t>> groups;
+    std::string json = gltfDocument(mesh, materials, bin, order, groups).dump();
     json.resize((json.size() + 3) & ~size_t(3), ' ');
-    std::string binary = std::move(bin).take();
-    binary.resize((binary.size() + 3) & ~size_t(3), '\0');
+    const size_t binarySize = (bin.size() + 3) & ~size_t(3);
 
-    const size_t total = 12 + 8 + json.size() + (binary.empty() ? 0 : 8 + binary.size());
+    const size_t total = 12 + 8 + json.size() + (binarySize == 0 ? 0 : 8 + binarySize);
     if (total > UINT32_MAX) throw UserError(fmt::format("the mesh is too large for a .glb file ({} bytes; the limit is 4 GiB)", total));
     std::string out;
     out.reserve(total);
+    adviseHugePages(out.data(), total);
     appendUint32(out, kGlbMagic);
     appendUint32(out, kGlbVersion);
     appendUint32(out, uint32_t(total));
     appendUint32(out, uint32_t(json.size()));
     appendUint32(out, kJsonChunk);
     out += json;
-    if (!binary.empty()) { // the spec asks to omit an empty BIN chunk
-        appendUint32(out, uint32_t(binary.size()));
+    if (binarySize != 0) { // the spec asks to omit an empty BIN chunk
+        appendUint32(out, uint32_t(binarySize));
         appendUint32(out, kBinChunk);
-        out += binary;
+        const size_t at = out.size();
+        out.resize(total, '\0');
+        bin.writeTo(out.data() + at);
     }
     return out;
 }
