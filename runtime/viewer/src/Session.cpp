@@ -16,7 +16,10 @@
 #include <chrono>
 #include <condition_variable>
 #include <mutex>
+#include <sys/resource.h>
+#include <sys/syscall.h>
 #include <thread>
+#include <unistd.h>
 #include <cmath>
 #include <fmt/format.h>
 #include <functional>
@@ -230,6 +233,8 @@ void Session::listParameters(const ast::File& file) {
 // newer slider move supersedes an older refine (a solve already running is not interrupted; its
 // table still reaches the solve cache).
 class Session::Refiner {
+    static constexpr int kRefineNice = 10;
+
 public:
     struct Outcome {
         uint64_t ticket = 0;
@@ -273,6 +278,9 @@ public:
 
 private:
     void work() {
+        // Below the window's thread (Linux nice values are per thread and inherited by the threads
+        // the solve starts), so a superseded solve still running slows a new preview less.
+        setpriority(PRIO_PROCESS, pid_t(syscall(SYS_gettid)), kRefineNice);
         std::unique_lock lock(mutex_);
         while (true) {
             wake_.wait(lock, [&] { return stop_ || pending_.has_value(); });
