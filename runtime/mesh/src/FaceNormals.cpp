@@ -1,6 +1,9 @@
 #include "voxc/mesh/Mesh.h"
 
+#include "ChunkWorkers.h"
+
 #include <algorithm>
+#include <atomic>
 #include <glm/geometric.hpp>
 
 namespace voxc {
@@ -10,6 +13,10 @@ namespace {
 // The least cosine a re-derived normal keeps to each of its triangles where it can: far enough
 // above zero that rounding the normal to float cannot turn a triangle away from it.
 constexpr double kMinCosine = 1e-3;
+
+// Triangles per block of the search for vertices to re-derive: a small mesh is one block, on the
+// calling thread.
+constexpr size_t kTrianglesPerBlock = size_t(1) << 16;
 
 double leastCosine(const glm::dvec3& n, const std::vector<glm::dvec3>& faces) {
     double least = 2.0;
@@ -66,14 +73,21 @@ size_t orientNormalsToFaces(Mesh& mesh) {
     std::vector<uint32_t> incident(vertexCount + 1, 0); // per vertex to re-derive: its triangle count, then offsets
     std::vector<uint8_t> against(vertexCount, 0);
     for (size_t v = 0; v < vertexCount; ++v) against[v] = mesh.normals[v] == glm::vec3(0.0f);
-    for (size_t t = 0; t < triangleCount; ++t) {
-        const glm::dvec3 f = triangleNormal(mesh, t);
-        if (f == glm::dvec3(0.0)) continue;
-        for (int k = 0; k < 3; ++k) {
-            const uint32_t v = mesh.triangles[t * 3 + size_t(k)];
-            if (glm::dot(glm::dvec3(mesh.normals[v]), f) < 0.0) against[v] = 1;
+    // Large meshes on the mesh workers, in blocks of triangles; a flag is only ever set to 1, so
+    // the result does not depend on the threads.
+    const size_t blocks = (triangleCount + kTrianglesPerBlock - 1) / kTrianglesPerBlock;
+    forEachChunk(blocks, [&](size_t block) {
+        const size_t end = std::min(triangleCount, (block + 1) * kTrianglesPerBlock);
+        for (size_t t = block * kTrianglesPerBlock; t < end; ++t) {
+            const glm::dvec3 f = triangleNormal(mesh, t);
+            if (f == glm::dvec3(0.0)) continue;
+            for (int k = 0; k < 3; ++k) {
+                const uint32_t v = mesh.triangles[t * 3 + size_t(k)];
+                if (glm::dot(glm::dvec3(mesh.normals[v]), f) < 0.0) std::atomic_ref<uint8_t>(against[v]).store(1, std::memory_order_relaxed);
+            }
         }
-    }
+        return true;
+    });
     size_t changed = 0;
     for (size_t v = 0; v < vertexCount; ++v) changed += against[v];
     if (changed == 0) return 0;

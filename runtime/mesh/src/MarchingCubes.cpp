@@ -96,6 +96,8 @@ template <class SampleSource> uint8_t majorityMaterial(const SampleSource& sampl
     int count = 0;
     for (int c = 0; c < 8; ++c)
         if ((solid >> c) & 1u) materials[count++] = samples.materialAt(cell + cornerOffset(c));
+    // Most cells lie inside one material: then it is the answer, without the vote.
+    if (count > 0 && std::count(materials, materials + count, materials[0]) == count) return materials[0];
     uint8_t best = kMaterialNone;
     int bestVotes = 0;
     for (int i = 0; i < count; ++i) {
@@ -386,7 +388,8 @@ private:
             uint64_t vertices = 0, triangles = 0;
             for (size_t w = 0; w < usedWords(); ++w) {
                 const RowEdges e = rowEdges(y, z, w);
-                vertices += uint64_t(std::popcount(e.x) + std::popcount(e.y) + std::popcount(e.z));
+                // Most words cross nothing (std::popcount may be a library call on a baseline x86-64 build).
+                if ((e.x | e.y | e.z) != 0) vertices += uint64_t(std::popcount(e.x) + std::popcount(e.y) + std::popcount(e.z));
                 if (y + 1 >= extent_.y || z + 1 >= extent_.z) continue;
                 const CellRowWord c = cellRowWord(y, z, w);
                 for (uint64_t bits = c.crossed; bits != 0; bits &= bits - 1) {
