@@ -451,6 +451,20 @@ TEST_F(SessionTest, ALargeSolveIsPreviewedCoarseThenRefinedToThePlainRunsWorld) 
     Session written(context(), {.path = path(), .preview = {.curvesCells = 0}});
     ASSERT_TRUE(written.hasWorld()) << written.lastError();
     EXPECT_TRUE(written.world().mesh().positions == session.world().mesh().positions);
+
+    // A file that stops checking while a preview is on screen keeps it, and its refine still
+    // comes: the last good world, solved fully.
+    ASSERT_TRUE(session.setParameter("cliffs.face.constraint[1].amplitude", 5)) << session.lastError();
+    ASSERT_TRUE(session.refining());
+    write(std::string(kBlocksProgram) + "oops");
+    EXPECT_FALSE(session.reload());
+    EXPECT_TRUE(session.refining());
+    ASSERT_EQ(waitForRefine(session), std::optional<bool>(true)) << session.lastError();
+    text.replace(text.find("amplitude = 4; }"), 16, "amplitude = 5; }");
+    write(text);
+    Session five(context(), {.path = path(), .preview = {.curvesCells = 0}});
+    ASSERT_TRUE(five.hasWorld()) << five.lastError();
+    EXPECT_TRUE(five.world().mesh().positions == session.world().mesh().positions);
 }
 
 } // namespace

@@ -317,10 +317,6 @@ bool Session::reload() {
     std::optional<SourceFile> source = loadSourceFile(options_.path, readErrors);
     std::error_code ignored;
     loadedTime_ = std::filesystem::last_write_time(options_.path, ignored);
-    // Whatever happens below, a refine of an older version must not replace it.
-    ++ticket_;
-    refining_ = false;
-    if (refiner_) refiner_->supersede(ticket_);
     if (!source) {
         loadedText_.clear();
         error_ = renderAll(readErrors.all(), SourceFile(options_.path, ""));
@@ -362,6 +358,7 @@ bool Session::reload() {
         if (preview) {
             stats.preview = true;
             stats.solveMs = millisecondsSince(start);
+            supersedeRefine();
             show(std::move(*preview), stats);
             if (!refiner_) refiner_ = std::make_unique<Refiner>();
             refiner_->submit(ticket_, std::move(program));
@@ -369,6 +366,7 @@ bool Session::reload() {
         } else {
             stages::solveBlocks(program); // on the host, through the solve cache, as compileProgram would
             stats.solveMs = millisecondsSince(start);
+            supersedeRefine();
             show(std::move(program), stats);
         }
     } catch (const UserError& e) {
@@ -379,6 +377,14 @@ bool Session::reload() {
     listParameters(file);
     error_.clear();
     return true;
+}
+
+// A new world replaces the one on screen: a refine of the older one must not replace it in turn.
+// (A reload that fails keeps the last world and lets its refine finish.)
+void Session::supersedeRefine() {
+    ++ticket_;
+    refining_ = false;
+    if (refiner_) refiner_->supersede(ticket_);
 }
 
 void Session::show(Program program, WorldStats stats) {

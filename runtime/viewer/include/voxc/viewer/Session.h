@@ -92,7 +92,8 @@ public:
     // edits. On errors (diagnostics, or a run the device refuses) keeps the last good world and
     // returns false; lastError() holds the rendered diagnostics. When a large curves or terrain
     // block must be solved (SessionOptions::preview), the world is a coarse preview and the full
-    // solve runs in the background (refining()); a later reload supersedes it.
+    // solve runs in the background (refining()); a later reload that makes a world supersedes it
+    // (one that fails keeps the preview and lets its refine finish).
     bool reload();
     // Whether a background solve will replace the preview on screen.
     bool refining() const { return refining_; }
@@ -136,6 +137,7 @@ private:
     class Refiner;
     // Compiles and runs a solved (or previewed) program, replays the edits and makes it the world.
     void show(Program program, WorldStats stats);
+    void supersedeRefine();
     std::string textWithOverrides(const std::string& text, const ast::File& file) const;
     void rebuildWorld();
     void listParameters(const ast::File& file);
@@ -155,7 +157,7 @@ private:
     std::filesystem::file_time_type loadedTime_{};
     std::string loadedText_;
     bool readingEdits_ = false;
-    uint64_t ticket_ = 0;     // counts reload() calls: a refine of an older one is dropped
+    uint64_t ticket_ = 0;     // counts the worlds reload() made: a refine of an older one is dropped
     bool refining_ = false;
     std::unique_ptr<Refiner> refiner_; // started by the first preview
 };
