@@ -61,6 +61,20 @@ uint voxelAddress(ivec3 local) {
     return slot * size * size * size + inside.x + size * (inside.y + size * inside.z);
 }
 
+// voxelAddress is a sum of one part per axis: the part grid-local coordinate `local` along
+// axis 0, 1 or 2 (a constant) adds, so that a pass reading many samples around one place computes
+// each axis's few parts once. `inside`: the coordinate lies in the grid along that axis.
+uint axisPart(const int axis, int local, out bool inside) {
+    const int shift = push.gridOrigin.w;
+    const uint size = 1u << uint(shift);
+    const int world = push.gridOrigin[axis] + local;
+    const uint entry = uint((world >> shift) - push.chunkBase[axis]), within = uint(world & int(size - 1u));
+    inside = local >= 0 && local < push.gridSize[axis];
+    const uint slotStride = axis == 0 ? 1u : axis == 1 ? uint(push.chunkBase.w) : uint(push.chunkBase.w) * uint(push.tileFirst.w);
+    const uint voxelStride = axis == 0 ? 1u : axis == 1 ? size : size * size;
+    return entry * slotStride * size * size * size + within * voxelStride;
+}
+
 float densityAt(ivec3 p) {
     if (!insideGrid(p)) return 0.0;
     const float d = densityTexel(voxelAddress(p));
@@ -107,6 +121,12 @@ ivec3 cellOfSlot(uint tile, uint slot) {
 ivec2 segmentCells(ivec3 worldFirst) {
     const int x = worldFirst.x - push.gridOrigin.x;
     return ivec2(max(x, -1), min(x + int(kTileSide), push.gridSize.x));
+}
+
+// The crossed edges a cell of case `mask` owns, those leaving its minimum corner: bit a for axis a.
+uint ownedEdges(uint mask) {
+    const uint lower = mask & 1u;
+    return (lower ^ ((mask >> 1) & 1u)) | (lower ^ ((mask >> 2) & 1u)) << 1 | (lower ^ ((mask >> 4) & 1u)) << 2;
 }
 
 // Corner c of a cell is at offset (c&1, (c>>1)&1, (c>>2)&1); bit c of a case is corner c solid.

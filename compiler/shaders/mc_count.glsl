@@ -1,20 +1,18 @@
 #version 450
 // GPU marching cubes, pass 1: one invocation per segment of an active tile (mc_common.glsl), in
-// global key order. Per cell: the crossed edges it owns (those leaving its minimum corner, one
-// vertex each) and its triangle count from the case table, with the vertices and triangles of
-// the segment's cells before it; then the segment's totals of (vertices, triangles, active
-// cells), level 0 of the scan (mc_scan.glsl). The segment's cells read four rows of 9 samples,
-// read first into bits, inside the grid four samples to a read (lavapipe reads a storage buffer
-// one lane at a time, so reads are the cost).
+// global key order: the case of each of its cells (bit c: corner c solid), eight bytes in two
+// words, and the segment's totals of (vertices, triangles, active cells), level 0 of the scan
+// (mc_scan.glsl). A cell has a vertex per crossed edge it owns (those leaving its minimum corner)
+// and the case table's triangles; mc_compact.glsl derives the same from the cases. The segment's
+// cells read four rows of 9 samples, read first into bits, inside the grid four samples to a
+// fetch. Two words a segment, where a word per cell was written before: lavapipe stores to a
+// storage buffer one lane at a time, so stores are the cost.
 
 layout(local_size_x = 64) in;
 
-// Per cell slot. Bits 0-2: owned crossed edges by axis; bits 3-6: triangle count; bits 7-11: the
-// segment's vertices before the cell; bits 12-18: its triangles before the cell (at most 3 * 7
-// and 12 * 7); bits 19-26: its case.
-layout(std430, set = 0, binding = 4) writeonly buffer CellInfo {
-    uint info[];
-} cells;
+layout(std430, set = 0, binding = 18) writeonly buffer SegmentCases {
+    uvec2 cases[]; // per segment, in global key order: byte i the case of the segment's cell i
+} segmentCases;
 layout(std430, set = 0, binding = 5) writeonly buffer Scan {
     uvec4 value[]; // levels at push.levelOffset[level]: vertices, triangles, active cells
 } scan;
@@ -47,20 +45,20 @@ void main() {
     const ivec3 world = segmentWorldCell(activeTile(segment >> 6), segment);
     const ivec2 range = segmentCells(world);
     const ivec3 row = world - push.gridOrigin.xyz;
-    const uint firstSlot = segment * kTileSide - uint(row.x); // slot of grid-local x
     const uint rows[4] = uint[4](rowBits(row, range, 0u), rowBits(row, range, 1u), rowBits(row, range, 2u), rowBits(row, range, 3u));
     uvec3 sum = uvec3(0u);
+    uvec2 cases = uvec2(0u);
     for (int x = range.x; x < range.y; ++x) {
         const uint i = uint(x - range.x);
         uint mask = 0u;
         for (uint r = 0u; r < 4u; ++r) mask |= ((rows[r] >> i) & 3u) << (2u * r);
-        const bool lowerSolid = (mask & 1u) != 0u;
-        uint info = 0u;
-        for (uint axis = 0u; axis < 3u; ++axis)
-            if (lowerSolid != (((mask >> (1u << axis)) & 1u) != 0u)) info |= 1u << axis;
-        info |= caseWord(mask * 10u) << 3;
-        cells.info[firstSlot + uint(x)] = info | sum.x << 7 | sum.y << 12 | mask << 19;
-        sum += uvec3(bitCount(info & 7u), info >> 3, info != 0u ? 1u : 0u);
+        const uint edges = ownedEdges(mask), triangles = caseWord(mask * 10u);
+        sum += uvec3(bitCount(edges), triangles, edges != 0u || triangles != 0u ? 1u : 0u);
+        if (i < 4u)
+            cases.x |= mask << (8u * i);
+        else
+            cases.y |= mask << (8u * (i - 4u));
     }
+    segmentCases.cases[index] = cases;
     scan.value[push.levelOffset[0] + index] = uvec4(sum, 0u);
 }

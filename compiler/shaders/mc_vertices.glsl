@@ -14,34 +14,42 @@ layout(std430, set = 0, binding = 6) writeonly buffer Vertices {
     uint word[];
 } vertices;
 
-// The samples a vertex reads (its edge's lower sample - 1 to its upper sample + 1) are read
-// from one base address where they all lie in the grid and in the lower sample's chunk, as most
-// do, and otherwise through densityAt, which finds each one's chunk: the same values.
-bool windowInside = false;
-uint windowBase = 0u;
-ivec3 windowOrigin = ivec3(0);
+// The samples a vertex reads lie from its edge's lower sample - 1 to its upper sample + 1 along
+// each axis: per axis the address parts (mc_common.glsl, axisPart) of offsets -1 to 2 from the
+// lower sample, so that a sample costs two additions (densityAt computes a whole address, and a
+// fast path beside it would cost as much again: lavapipe runs both sides of a branch).
+uint parts[3][4];
+bool partInside[3][4];
+bvec3 upperStep = bvec3(false); // the edge's axis
 
-void openWindow(ivec3 lower, ivec3 upper) {
-    const int side = 1 << push.gridOrigin.w;
-    const ivec3 inChunk = (push.gridOrigin.xyz + lower) & (side - 1);
-    windowInside = all(greaterThanEqual(lower, ivec3(1))) && all(lessThan(upper + 1, push.gridSize.xyz)) &&
-                   all(greaterThanEqual(inChunk, ivec3(1))) && all(lessThan(inChunk + (upper - lower) + 1, ivec3(side)));
-    windowBase = voxelAddress(lower);
-    windowOrigin = lower;
+void openSamples(ivec3 lower, int axis) {
+    for (int o = 0; o < 4; ++o) {
+        parts[0][o] = axisPart(0, lower.x + o - 1, partInside[0][o]);
+        parts[1][o] = axisPart(1, lower.y + o - 1, partInside[1][o]);
+        parts[2][o] = axisPart(2, lower.z + o - 1, partInside[2][o]);
+    }
+    upperStep = equal(ivec3(axis), ivec3(0, 1, 2));
 }
 
-float sampleAt(ivec3 p) {
-    if (!windowInside) return densityAt(p);
-    const int side = 1 << push.gridOrigin.w;
-    const ivec3 d = p - windowOrigin;
-    const float v = densityTexel(uint(int(windowBase) + d.x + side * (d.y + side * d.z)));
-    return isnan(v) || isinf(v) ? 0.0 : v;
+// The sample at offset d (each -1 to 1) from the lower sample, or from the upper one where
+// `fromUpper`: as densityAt reads it.
+float sampleNear(const ivec3 d, bool fromUpper) {
+    const bvec3 shifted = bvec3(fromUpper && upperStep.x, fromUpper && upperStep.y, fromUpper && upperStep.z);
+    uint address = 0u;
+    bool inside = true;
+    for (int a = 0; a < 3; ++a) {
+        const int o = d[a] + 1;
+        address += shifted[a] ? parts[a][o + 1] : parts[a][o];
+        inside = inside && (shifted[a] ? partInside[a][o + 1] : partInside[a][o]);
+    }
+    const float v = densityTexel(inside ? address : 0u);
+    return !inside || isnan(v) || isinf(v) ? 0.0 : v;
 }
 
-vec3 gradientAt(ivec3 p) {
-    precise vec3 g = 0.5 * vec3(sampleAt(p + ivec3(1, 0, 0)) - sampleAt(p - ivec3(1, 0, 0)),
-                                sampleAt(p + ivec3(0, 1, 0)) - sampleAt(p - ivec3(0, 1, 0)),
-                                sampleAt(p + ivec3(0, 0, 1)) - sampleAt(p - ivec3(0, 0, 1)));
+vec3 gradientNear(bool fromUpper) {
+    precise vec3 g = 0.5 * vec3(sampleNear(ivec3(1, 0, 0), fromUpper) - sampleNear(ivec3(-1, 0, 0), fromUpper),
+                                sampleNear(ivec3(0, 1, 0), fromUpper) - sampleNear(ivec3(0, -1, 0), fromUpper),
+                                sampleNear(ivec3(0, 0, 1), fromUpper) - sampleNear(ivec3(0, 0, -1), fromUpper));
     return g;
 }
 
@@ -50,13 +58,13 @@ void writeVertex(uint index, ivec3 lower, int axis) {
     step[axis] = 1;
     const ivec3 upper = lower + step;
     const float iso = push.surface.x;
-    openWindow(lower, upper);
-    const float d0 = sampleAt(lower), d1 = sampleAt(upper);
+    openSamples(lower, axis);
+    const float d0 = sampleNear(ivec3(0), false), d1 = sampleNear(ivec3(0), true);
     // In double, as voxc::marching_cubes::crossing: iso lies between the samples.
     const float t = clamp(float((double(iso) - double(d0)) / (double(d1) - double(d0))), push.surface.y, push.surface.z);
     precise vec3 position = vec3(push.gridOrigin.xyz + lower);
     position[axis] += t;
-    precise vec3 gradient = (1.0 - t) * gradientAt(lower) + t * gradientAt(upper);
+    precise vec3 gradient = (1.0 - t) * gradientNear(false) + t * gradientNear(true);
     precise float magnitude = sqrt((gradient.x * gradient.x + gradient.y * gradient.y) + gradient.z * gradient.z);
     precise vec3 normal;
     if (magnitude > 0.0 && !isinf(magnitude)) {

@@ -185,7 +185,7 @@ struct GpuMarchingCubes::Impl {
     McPipelines pipelines;
     // Host-visible: tileStates (written by mc_tiles), the lists the host makes from them
     // (tileRanks, activeTiles, segments), and `results` (the totals, then the mesh).
-    DeviceBuffer caseTable, tileStates, tileRanks, activeTiles, segments, cellInfo, scanLevels, activeCells,
+    DeviceBuffer caseTable, tileStates, tileRanks, activeTiles, segments, segmentCases, cellInfo, scanLevels, activeCells,
         vertexEdges, vertices, triangles, results;
     // At the texel bindings: views of the executor's buffers and of these (bindAll).
     std::array<VkBufferView, kMcBindingCount> texelViews{};
@@ -221,7 +221,7 @@ GpuMarchingCubes::Impl::~Impl() {
     if (fence) ctx.api.vkDestroyFence(ctx.device, fence, nullptr);
     if (commandPool) ctx.api.vkDestroyCommandPool(ctx.device, commandPool, nullptr);
     destroyTexelViews();
-    for (DeviceBuffer* b : {&results, &triangles, &vertices, &vertexEdges, &activeCells, &scanLevels, &cellInfo, &segments,
+    for (DeviceBuffer* b : {&results, &triangles, &vertices, &vertexEdges, &activeCells, &scanLevels, &cellInfo, &segmentCases, &segments,
                             &activeTiles, &tileRanks, &tileStates, &caseTable})
         destroyBuffer(ctx, *b);
     destroyMcPipelines(ctx, pipelines);
@@ -280,7 +280,8 @@ void GpuMarchingCubes::Impl::createBuffers() {
     ensureBuffer(tileRanks, VkDeviceSize(tiles) * sizeof(uint32_t), MemoryUse::HostAccess);
     // Placeholders until a mesh has active tiles and triangles: every binding of the set must name a buffer.
     for (DeviceBuffer* b : {&activeTiles, &segments}) ensureBuffer(*b, 16, MemoryUse::HostAccess);
-    for (DeviceBuffer* b : {&cellInfo, &scanLevels, &activeCells, &vertexEdges, &vertices, &triangles}) ensureBuffer(*b, 16, MemoryUse::Device);
+    for (DeviceBuffer* b : {&segmentCases, &cellInfo, &scanLevels, &activeCells, &vertexEdges, &vertices, &triangles})
+        ensureBuffer(*b, 16, MemoryUse::Device);
     ensureBuffer(results, kTotalsBytes, MemoryUse::HostAccess);
 }
 
@@ -288,6 +289,7 @@ void GpuMarchingCubes::Impl::bindAll() {
     std::array<VkBuffer, kMcBindingCount> buffers{};
     buffers[kMcTileStates] = tileStates.buffer;
     buffers[kMcCellInfo] = cellInfo.buffer;
+    buffers[kMcSegmentCases] = segmentCases.buffer;
     buffers[kMcScanLevels] = scanLevels.buffer;
     buffers[kMcVertices] = vertices.buffer;
     buffers[kMcActiveCells] = activeCells.buffer;
@@ -308,6 +310,7 @@ void GpuMarchingCubes::Impl::bindAll() {
                           {kMcScanTexels, scanLevels.buffer, VK_FORMAT_R32G32B32A32_UINT},
                           {kMcActiveCellTexels, activeCells.buffer, VK_FORMAT_R32G32B32A32_UINT},
                           {kMcVertexEdgeTexels, vertexEdges.buffer, VK_FORMAT_R32_UINT},
+                          {kMcSegmentCaseTexels, segmentCases.buffer, VK_FORMAT_R32G32_UINT},
                           {kMcTriangles, triangles.buffer, mcStorageTexelFormat(kMcTriangles)}};
     destroyTexelViews();
     for (const View& view : views) {
@@ -443,6 +446,7 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     s.upload(s.tileRanks, lists.ranks);
     bool rebind = s.upload(s.activeTiles, lists.activeTiles);
     rebind |= s.upload(s.segments, lists.segments);
+    rebind |= s.ensureBuffer(s.segmentCases, VkDeviceSize(segmentCount) * 2 * sizeof(uint32_t), MemoryUse::Device);
     rebind |= s.ensureBuffer(s.cellInfo, VkDeviceSize(lists.activeTiles.size()) * kTileCells * sizeof(uint32_t), MemoryUse::Device);
     rebind |= s.ensureBuffer(s.scanLevels, VkDeviceSize(scanElements) * kTotalsBytes, MemoryUse::Device);
     if (rebind) s.bindAll();

@@ -46,11 +46,14 @@ enum McBinding : uint32_t {
     kMcScanTexels,
     kMcActiveCellTexels,
     kMcVertexEdgeTexels,
+    kMcSegmentCases,
+    kMcSegmentCaseTexels,
     kMcBindingCount
 };
 constexpr bool isMcTexelBinding(uint32_t binding) {
     return binding == kMcDensityTexels || binding == kMcMaterialTexels || binding == kMcCaseTexels || binding == kMcQuadTexels ||
-           (binding >= kMcTileRankTexels && binding <= kMcSegmentTexels) || binding >= kMcCellInfoTexels;
+           (binding >= kMcTileRankTexels && binding <= kMcSegmentTexels) ||
+           (binding >= kMcCellInfoTexels && binding <= kMcVertexEdgeTexels) || binding == kMcSegmentCaseTexels;
 }
 // Written as texels (imageStore): lavapipe stores a texel's four words in one pass over the lanes.
 constexpr bool isMcStorageTexelBinding(uint32_t binding) { return binding == kMcTriangles; }
