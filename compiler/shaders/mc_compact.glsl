@@ -15,10 +15,9 @@ layout(std430, set = 0, binding = 4) writeonly buffer CellInfo {
 } cells;
 layout(set = 0, binding = 19) uniform usamplerBuffer segmentCaseTexels; // mc_count.glsl's cases
 layout(set = 0, binding = 15) uniform usamplerBuffer scanTexels; // mc_scan.glsl's levels
-layout(std430, set = 0, binding = 8) writeonly buffer ActiveCells {
-    // Slot, first vertex, first triangle, and owned edges | triangle count << 3 | case << 19.
-    uvec4 cell[];
-} activeCells;
+// A texel per active cell: slot, first vertex, first triangle, and owned edges | triangle count
+// << 3 | case << 19.
+layout(set = 0, binding = 8, rgba32ui) uniform writeonly uimageBuffer activeCells;
 layout(std430, set = 0, binding = 13) writeonly buffer VertexEdges {
     uint edge[]; // per vertex: its owner cell's slot | axis << 30 (slots are below 2^30)
 } vertexEdges;
@@ -34,17 +33,23 @@ void main() {
     const ivec3 world = segmentWorldCell(activeTile(segment >> 6), segment);
     const ivec2 range = segmentCells(world);
     const uint firstSlot = segment * kTileSide - uint(world.x - push.gridOrigin.x);
+    // Bit i: the segment's cell i is active. The stores then run over the active cells and owned
+    // edges alone: lavapipe runs a loop until its last lane is done, and a masked store still
+    // walks every lane.
+    uint activeBits = 0u;
     for (int x = range.x; x < range.y; ++x) {
         const uint i = uint(x - range.x);
         const uint mask = ((i < 4u ? cases.x : cases.y) >> (8u * (i & 3u))) & 0xffu;
+        activeBits |= ownedEdges(mask) != 0u || caseWord(mask * 10u) != 0u ? 1u << i : 0u;
+    }
+    for (; activeBits != 0u; activeBits &= activeBits - 1u) {
+        const uint i = uint(findLSB(activeBits));
+        const uint mask = ((i < 4u ? cases.x : cases.y) >> (8u * (i & 3u))) & 0xffu;
         const uint edges = ownedEdges(mask), triangles = caseWord(mask * 10u);
-        if (edges == 0u && triangles == 0u) continue;
-        const uint slot = firstSlot + uint(x);
-        activeCells.cell[place.z++] = uvec4(slot, place.x, place.y, edges | triangles << 3 | mask << 19);
+        const uint slot = firstSlot + uint(range.x) + i;
+        imageStore(activeCells, int(place.z++), uvec4(slot, place.x, place.y, edges | triangles << 3 | mask << 19));
         place.y += triangles;
-        if (edges == 0u) continue;
-        cells.info[slot] = edges | place.x << 3;
-        for (uint axis = 0u; axis < 3u; ++axis)
-            if (((edges >> axis) & 1u) != 0u) vertexEdges.edge[place.x++] = slot | axis << 30;
+        if (edges != 0u) cells.info[slot] = edges | place.x << 3;
+        for (uint left = edges; left != 0u; left &= left - 1u) vertexEdges.edge[place.x++] = slot | uint(findLSB(left)) << 30;
     }
 }

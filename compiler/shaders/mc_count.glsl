@@ -4,9 +4,8 @@
 // words, and the segment's totals of (vertices, triangles, active cells), level 0 of the scan
 // (mc_scan.glsl). A cell has a vertex per crossed edge it owns (those leaving its minimum corner)
 // and the case table's triangles; mc_compact.glsl derives the same from the cases. The segment's
-// cells read four rows of 9 samples, read first into bits, inside the grid four samples to a
-// fetch. Two words a segment, where a word per cell was written before: lavapipe stores to a
-// storage buffer one lane at a time, so stores are the cost.
+// cells read four rows of 9 samples, read first into bits. Two words a segment, where a word
+// per cell was written before: lavapipe stores to a storage buffer one lane at a time.
 
 layout(local_size_x = 64) in;
 
@@ -17,25 +16,29 @@ layout(std430, set = 0, binding = 5) writeonly buffer Scan {
     uvec4 value[]; // levels at push.levelOffset[level]: vertices, triangles, active cells
 } scan;
 
-// The four sample rows a row of cells reads, at (y, z), (y + 1, z), (y, z + 1), (y + 1, z + 1):
-// corners 0-1, 2-3, 4-5 and 6-7 of its cells.
-const ivec2 kRowOffset[4] = ivec2[4](ivec2(0, 0), ivec2(1, 0), ivec2(0, 1), ivec2(1, 1));
-
-// Row r of the segment's samples, x from range.x to range.y: bit i is the solid bit at range.x + i.
-uint rowBits(ivec3 row, ivec2 range, uint r) {
-    const ivec3 first = ivec3(range.x, row.yz + kRowOffset[r]);
-    // A tile of the grid's inside: its 8 samples are two reads, the ninth is the next tile's.
-    if (range.x >= 0 && range.y - range.x == int(kTileSide) && first.y < push.gridSize.y && first.z < push.gridSize.z &&
-        first.y >= 0 && first.z >= 0) {
-        const uint at = voxelAddress(first) / 4u;
-        const bvec4 low = solidQuad(quadTexel(at)), high = solidQuad(quadTexel(at + 1u));
-        return (low.x ? 1u : 0u) | (low.y ? 2u : 0u) | (low.z ? 4u : 0u) | (low.w ? 8u : 0u) | (high.x ? 16u : 0u) |
-               (high.y ? 32u : 0u) | (high.z ? 64u : 0u) | (high.w ? 128u : 0u) | (solidAt(first + ivec3(8, 0, 0)) ? 256u : 0u);
+// The segment's samples: x from range.x to range.x + 8 (those past range.y are not used) in the
+// four rows at (y, z), (y + 1, z), (y, z + 1), (y + 1, z + 1), corners 0-1, 2-3, 4-5 and 6-7 of
+// its cells; bit i of row r is the solid bit at range.x + i. Each sample adds per-axis address
+// parts (axisPart) instead of computing its address, with no branch (lavapipe runs both sides).
+void readRows(ivec3 row, ivec2 range, out uint rows[4]) {
+    uint xParts[9], yParts[2], zParts[2];
+    bool xInside[9], yInside[2], zInside[2];
+    for (int i = 0; i < 9; ++i) xParts[i] = axisPart(0, range.x + i, xInside[i]);
+    for (int o = 0; o < 2; ++o) {
+        yParts[o] = axisPart(1, row.y + o, yInside[o]);
+        zParts[o] = axisPart(2, row.z + o, zInside[o]);
     }
-    uint bits = 0u;
-    for (int x = range.x; x <= range.y; ++x)
-        if (solidAt(ivec3(x, first.yz))) bits |= 1u << uint(x - range.x);
-    return bits;
+    for (int r = 0; r < 4; ++r) {
+        const int y = r & 1, z = r >> 1;
+        uint bits = 0u;
+        for (int i = 0; i < 9; ++i) {
+            const bool inside = xInside[i] && yInside[y] && zInside[z];
+            const float d = densityTexel(inside ? xParts[i] + yParts[y] + zParts[z] : 0u);
+            // As solidAt: outside the grid and not finite read 0.
+            bits |= (inside && !isnan(d) && !isinf(d) ? d : 0.0) > push.surface.x ? 1u << i : 0u;
+        }
+        rows[r] = bits;
+    }
 }
 
 void main() {
@@ -45,7 +48,8 @@ void main() {
     const ivec3 world = segmentWorldCell(activeTile(segment >> 6), segment);
     const ivec2 range = segmentCells(world);
     const ivec3 row = world - push.gridOrigin.xyz;
-    const uint rows[4] = uint[4](rowBits(row, range, 0u), rowBits(row, range, 1u), rowBits(row, range, 2u), rowBits(row, range, 3u));
+    uint rows[4];
+    readRows(row, range, rows);
     uvec3 sum = uvec3(0u);
     uvec2 cases = uvec2(0u);
     for (int x = range.x; x < range.y; ++x) {

@@ -292,7 +292,6 @@ void GpuMarchingCubes::Impl::bindAll() {
     buffers[kMcSegmentCases] = segmentCases.buffer;
     buffers[kMcScanLevels] = scanLevels.buffer;
     buffers[kMcVertices] = vertices.buffer;
-    buffers[kMcActiveCells] = activeCells.buffer;
     buffers[kMcVertexEdges] = vertexEdges.buffer;
     struct View {
         McBinding binding;
@@ -311,7 +310,8 @@ void GpuMarchingCubes::Impl::bindAll() {
                           {kMcActiveCellTexels, activeCells.buffer, VK_FORMAT_R32G32B32A32_UINT},
                           {kMcVertexEdgeTexels, vertexEdges.buffer, VK_FORMAT_R32_UINT},
                           {kMcSegmentCaseTexels, segmentCases.buffer, VK_FORMAT_R32G32_UINT},
-                          {kMcTriangles, triangles.buffer, mcStorageTexelFormat(kMcTriangles)}};
+                          {kMcTriangles, triangles.buffer, mcStorageTexelFormat(kMcTriangles)},
+                          {kMcActiveCells, activeCells.buffer, mcStorageTexelFormat(kMcActiveCells)}};
     destroyTexelViews();
     for (const View& view : views) {
         VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};

@@ -56,7 +56,7 @@ constexpr bool isMcTexelBinding(uint32_t binding) {
            (binding >= kMcCellInfoTexels && binding <= kMcVertexEdgeTexels) || binding == kMcSegmentCaseTexels;
 }
 // Written as texels (imageStore): lavapipe stores a texel's four words in one pass over the lanes.
-constexpr bool isMcStorageTexelBinding(uint32_t binding) { return binding == kMcTriangles; }
+constexpr bool isMcStorageTexelBinding(uint32_t binding) { return binding == kMcTriangles || binding == kMcActiveCells; }
 constexpr VkFormat mcStorageTexelFormat(uint32_t) { return VK_FORMAT_R32G32B32A32_UINT; }
 
 struct McPipelines : StorageSet {
