@@ -416,6 +416,7 @@ TEST_F(SessionTest, ALargeSolveIsPreviewedCoarseThenRefinedToThePlainRunsWorld) 
     EXPECT_TRUE(session.refining());
     EXPECT_TRUE(session.stats().preview);
     const std::vector<glm::vec3> coarse = session.world().mesh().positions;
+    const ChunkedGrid coarseGrid = session.world().grid();
     const uint64_t shown = session.generation();
     ASSERT_EQ(waitForRefine(session), std::optional<bool>(true)) << session.lastError();
     EXPECT_FALSE(session.refining());
@@ -423,6 +424,15 @@ TEST_F(SessionTest, ALargeSolveIsPreviewedCoarseThenRefinedToThePlainRunsWorld) 
     EXPECT_EQ(session.generation(), shown + 1);
     EXPECT_TRUE(session.world().mesh().positions != coarse);
     EXPECT_EQ(session.poll(), std::nullopt); // nothing more to show
+    // A preview of the same world: solid and air agree in all but a few percent of the voxels.
+    size_t cells = 0, differing = 0;
+    const glm::ivec3 size = session.stats().size;
+    for (int32_t z = 0; z < size.z; ++z)
+        for (int32_t y = 0; y < size.y; ++y)
+            for (int32_t x = 0; x < size.x; ++x, ++cells)
+                differing += (coarseGrid.at({x, y, z}) >= 0.5f) != (session.world().grid().at({x, y, z}) >= 0.5f);
+    EXPECT_GT(differing, 0u);
+    EXPECT_LT(differing, cells / 20) << differing << " of " << cells;
 
     // The refined world is the one a session without previews and without the cache solves.
     codegen::setCompileCacheDirectory(std::nullopt);
