@@ -58,20 +58,22 @@ Result solveCurves(const Constraints& cs, const Options& options, const Limits& 
     if (options.smoothPasses < 0 || options.smoothPasses > limits.maxSmoothPasses)
         throw ParameterError("smooth_passes", options.smoothPasses, "must lie in [0, " + std::to_string(limits.maxSmoothPasses) + "]");
     const Box& b = cs.box;
-    Result r{Field3(b), Field3(b), Field3(b), cs.amplitude, cs.roughness, {}, {}, Field3(b), {}, {}};
+    // Every field is allocated where it is first needed and fields are normalised in place: the
+    // solve's fresh memory (its peak heap) is most of its page faults (HeapReuse.h).
+    Result r{{}, {}, {}, cs.amplitude, cs.roughness, {}, {}, {}, {}, {}};
 
-    std::vector<uint8_t> fixedN(b.cellCount()), fixedR(b.cellCount());
-    float maxAmplitude = 1.0f;
-    for (size_t i = 0; i < fixedN.size(); ++i) {
-        fixedN[i] = (cs.flags[i] & kInNormals) ? 1 : 0;
-        fixedR[i] = (cs.flags[i] & kInParams) ? 1 : 0;
-        if (fixedR[i]) maxAmplitude = std::max(maxAmplitude, cs.amplitude.values[i]);
-    }
+    // A solve's Dirichlet mask.
+    auto maskOf = [&](uint8_t flag) {
+        std::vector<uint8_t> fixed(b.cellCount());
+        for (size_t i = 0; i < fixed.size(); ++i) fixed[i] = (cs.flags[i] & flag) ? 1 : 0;
+        return fixed;
+    };
     if (options.normals == NormalMode::Laplace) {
         timed(r.phaseMs, "normals", [&] {
             Field3 x = cs.normalX, y = cs.normalY, z = cs.normalZ;
-            r.solves.push_back(linear("normals", fixedN, {&x, &y, &z}, kSolveTolerance, limits));
-            normalizeField(x, y, z, r.normalX, r.normalY, r.normalZ);
+            r.solves.push_back(linear("normals", maskOf(kInNormals), {&x, &y, &z}, kSolveTolerance, limits));
+            normalizeField(x, y, z, x, y, z);
+            r.normalX = std::move(x), r.normalY = std::move(y), r.normalZ = std::move(z);
         });
     } else {
         const uint32_t sweeps = options.sweeps != 0 ? options.sweeps : uint32_t(std::max({b.size.x, b.size.y, b.size.z}));
@@ -82,11 +84,16 @@ Result solveCurves(const Constraints& cs, const Options& options, const Limits& 
             NormalField n = peronaMalikFill(cs);
             if (solvers.peronaMalik) solvers.peronaMalik(cs, n, options.k, sweeps);
             else peronaMalikSweeps(cs, n, options.k, sweeps);
-            normalizeField(n.x, n.y, n.z, r.normalX, r.normalY, r.normalZ);
+            normalizeField(n.x, n.y, n.z, n.x, n.y, n.z);
+            r.normalX = std::move(n.x), r.normalY = std::move(n.y), r.normalZ = std::move(n.z);
         });
     }
     timed(r.phaseMs, "parameters", [&] {
-        r.solves.push_back(linear("parameters", fixedR, {&r.amplitude, &r.roughness}, kSolveTolerance * maxAmplitude, limits));
+        const std::vector<uint8_t> fixed = maskOf(kInParams);
+        float maxAmplitude = 1.0f;
+        for (size_t i = 0; i < fixed.size(); ++i)
+            if (fixed[i]) maxAmplitude = std::max(maxAmplitude, cs.amplitude.values[i]);
+        r.solves.push_back(linear("parameters", fixed, {&r.amplitude, &r.roughness}, kSolveTolerance * maxAmplitude, limits));
     });
     if (!solvers.material && !solvers.surface) {
         // The host's fronts are independent and single-threaded (growLayers): one per core,

@@ -2,7 +2,9 @@
 
 #include "Bfs.h"
 #include "Fronts.h"
+#include "Parallel.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -61,23 +63,61 @@ void growSurface(const Constraints& cs, const Field3& nx, const Field3& ny, cons
     });
 }
 
+namespace {
+
+// ((a + 2 b) + c) / 4 of three rows into out: the filter's expression, elementwise.
+void filterRows(const float* a, const float* b, const float* c, size_t n, float* out) {
+    for (size_t x = 0; x < n; ++x) out[x] = ((a[x] + 2.0f * b[x]) + c[x]) * 0.25f;
+}
+
+// One [1,2,1]/4 pass along axis 1 (y) or 2 (z) over `count` lines of `n` floats `stride` apart
+// (clamped at the ends), in place: each line's new values go to a scratch line and replace it
+// once the line after it has read it; `previous` keeps the line before as it was.
+void filterLines(float* first, size_t n, size_t stride, int32_t count, std::vector<float>& previous,
+                 std::vector<float>& next) {
+    std::copy(first, first + n, previous.begin());
+    for (int32_t k = 0; k < count; ++k) {
+        float* line = first + size_t(k) * stride;
+        const float* after = k + 1 < count ? line + stride : line;
+        filterRows(previous.data(), line, after, n, next.data());
+        std::copy(line, line + n, previous.begin());
+        std::copy(next.begin(), next.end(), line);
+    }
+}
+
+} // namespace
+
 Field3 smoothBinomial(const Field3& field, int32_t passes) {
+    // In place on one copy of the field, line by line with a scratch line (the values each cell
+    // reads are those of the axis pass before, as with a second field to ping-pong); slices (x, y
+    // passes) or rows (z pass) split between two threads, each cell written once per pass.
     const Box& b = field.box;
-    Field3 current = field, next = field;
-    for (int32_t pass = 0; pass < passes; ++pass)
-        for (int32_t axis = 0; axis < 3; ++axis) {
-            for (int32_t z = 0; z < b.size.z; ++z)
-                for (int32_t y = 0; y < b.size.y; ++y)
-                    for (int32_t x = 0; x < b.size.x; ++x) {
-                        glm::ivec3 lo(x, y, z), hi(x, y, z);
-                        lo[axis] = std::max(lo[axis] - 1, 0);
-                        hi[axis] = std::min(hi[axis] + 1, b.size[axis] - 1);
-                        const float a = current.at(lo.x, lo.y, lo.z), c = current.at(hi.x, hi.y, hi.z);
-                        next.at(x, y, z) = ((a + 2.0f * current.at(x, y, z)) + c) * 0.25f;
+    Field3 out = field;
+    const size_t nx = size_t(b.size.x), slice = nx * size_t(b.size.y);
+    for (int32_t pass = 0; pass < passes; ++pass) {
+        forTwoSlabs(b.size.z, 2, [&](int32_t z0, int32_t z1) {
+            std::vector<float> previous(nx), next(nx);
+            for (int32_t z = z0; z < z1; ++z) {
+                float* s = out.values.data() + size_t(z) * slice;
+                for (int32_t y = 0; y < b.size.y; ++y) {
+                    float* r = s + size_t(y) * nx;
+                    float before = r[0];
+                    for (size_t x = 0; x < nx; ++x) {
+                        const float centre = r[x], after = r[std::min(x + 1, nx - 1)];
+                        r[x] = ((before + 2.0f * centre) + after) * 0.25f;
+                        before = centre;
                     }
-            std::swap(current, next);
-        }
-    return current;
+                }
+                filterLines(s, nx, nx, b.size.y, previous, next);
+            }
+        });
+        forTwoSlabs(b.size.y, 2, [&](int32_t y0, int32_t y1) {
+            const size_t n = size_t(y1 - y0) * nx;
+            std::vector<float> previous(n), next(n);
+            filterLines(out.values.data() + size_t(y0) * nx, n, slice, b.size.z, previous, next);
+        });
+    }
+    return out;
 }
 
 } // namespace voxc::curves

@@ -25,6 +25,7 @@ NormalField peronaMalikFill(const Constraints& constraints);
 void peronaMalikSweeps(const Constraints& constraints, NormalField& normals, float k, uint32_t sweeps);
 
 // n = N / |N|, |N| = sqrt((x*x + y*y) + z*z); 0 where |N| < 1e-6 (A3.4).
+// The outputs may be the inputs themselves (normalised in place).
 void normalizeField(const Field3& x, const Field3& y, const Field3& z, Field3& outX, Field3& outY, Field3& outZ);
 
 struct MaterialField {
