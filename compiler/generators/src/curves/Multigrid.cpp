@@ -142,15 +142,20 @@ void relaxColourRow(Level& level, size_t c, int32_t colour, bool zeroRhs, int32_
     } else {
         storeRelaxed(relaxed, fixed, parity, n, u + i0);
     }
-    // The end cells, on the per-cell path (a missing x neighbour).
+    // The end cells (a missing x neighbour): the per-cell sums over the neighbours present, in
+    // neighbour order (forNeighbours' visits written out with the row's weights).
+    const size_t row = size_t(n), slice = row * size_t(b.size.y);
     auto endCell = [&](int32_t x) {
         if (((x + parity) & 1) || fixed[x]) return;
+        const size_t i = i0 + size_t(x);
         float sum = 0.0f, total = 0.0f;
-        forNeighbours(b, x, y, z, [&](size_t j, int32_t axis) {
-            sum += level.weight[axis] * u[j];
-            total += level.weight[axis];
-        });
-        if (total > 0.0f) u[i0 + size_t(x)] = overRelaxed(u[i0 + size_t(x)], (sum - rhs[x]) / total, omega);
+        if (x > 0) sum += wx * u[i - 1], total += wx;
+        if (x + 1 < n) sum += wx * u[i + 1], total += wx;
+        if (y > 0) sum += wy * u[i - row], total += wy;
+        if (y + 1 < b.size.y) sum += wy * u[i + row], total += wy;
+        if (z > 0) sum += wz * u[i - slice], total += wz;
+        if (z + 1 < b.size.z) sum += wz * u[i + slice], total += wz;
+        if (total > 0.0f) u[i] = overRelaxed(u[i], (sum - rhs[x]) / total, omega);
     };
     endCell(0);
     if (n > 1) endCell(n - 1);
