@@ -8,9 +8,12 @@
 
 layout(local_size_x = 256) in;
 
-layout(std430, set = 0, binding = 5) buffer Scan {
+layout(std430, set = 0, binding = 5) writeonly buffer Scan {
     uvec4 value[]; // level l at push.levelOffset[l]
 } scan;
+// The same levels, read as texels (each element is read before the one invocation that writes it
+// writes it).
+layout(set = 0, binding = 15) uniform usamplerBuffer scanTexels;
 
 shared uvec4 partial[256];
 
@@ -24,7 +27,7 @@ void main() {
     uvec4 own[4];
     uvec4 sum = uvec4(0u);
     for (uint k = 0u; k < 4u; ++k) {
-        const uvec4 v = first + k < count ? scan.value[base + first + k] : uvec4(0u);
+        const uvec4 v = first + k < count ? texelFetch(scanTexels, int(base + first + k)) : uvec4(0u);
         own[k] = sum;
         sum += v;
     }

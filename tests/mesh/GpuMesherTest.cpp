@@ -110,25 +110,31 @@ TEST(mesh_GpuMarchingCubes, MatchesTheCpuMesherBitForBit) {
 
 // A surface inside one world-aligned 8^3 tile (the host test mesh_MarchingCubes.
 // surfaceInOneTileVisitsOnlyThatTile's ball): the device counts the 512 cells of that tile alone,
-// no other, and meshes them as the host does.
+// no other (its count, scan and emit passes run over the segments of the active tiles), and
+// meshes them as the host does; with the executor's tile ranges and without them (no read-back,
+// as `voxc run --mesh-on device` runs), where the tiles pass reads every tile's voxels.
 TEST(mesh_GpuMarchingCubes, ASurfaceInOneTileIsCountedInThatTileAlone) {
     VulkanContext& context = validatedLavapipe();
     const std::string text = "world {\n  size = [64, 64, 64];\n  seed = 1;\n}\n"
                              "field ball = max(0.0, 1.0 - length(wp - vec3(11.5, 11.5, 11.5)) / 3.6);\n"
                              "pipeline {\n  start;\n  set ball;\n}\n";
-    for (const glm::ivec3 origin : {glm::ivec3(0), glm::ivec3(-40, 8, 3)}) {
+    for (const glm::ivec3 origin : {glm::ivec3(0), glm::ivec3(-40, 8, 3)})
+    for (const bool readBack : {true, false}) {
         CheckResult checked = checkSource(SourceFile("ball.vox", text));
         ASSERT_TRUE(checked.program) << checked.rendered();
         Program program = std::move(*checked.program);
         program.world.chunkSize = 32;
         program.world.origin = origin;
-        VulkanExecutor executor(context, compileProgram(program, {}));
-        const RunResult result = executor.run();
+        // The host mesher's grid comes from an executor that reads it back.
+        VulkanExecutor host(context, compileProgram(program, {}));
+        const RunResult result = host.run();
+        VulkanExecutor executor(context, compileProgram(program, {}), {.readBack = readBack});
+        executor.run();
         GpuMarchingCubes gpu(executor);
         MeshStats cpuStats, gpuStats;
         const Mesh cpu = meshMarchingCubes(result.grid, {}, &cpuStats);
         const Mesh gpuMesh = gpu.mesh({}, &gpuStats);
-        const std::string what = fmt::format("origin {} {} {}", origin.x, origin.y, origin.z);
+        const std::string what = fmt::format("origin {} {} {} read back {}", origin.x, origin.y, origin.z, readBack);
         ASSERT_EQ(cpuStats.activeTiles, 1u) << what;
         expectSameMesh(cpu, gpuMesh, what);
         EXPECT_GT(gpuMesh.triangles.size(), 0u) << what;
