@@ -255,11 +255,19 @@ void run(const RunOptions& options) {
         });
         // Both meshers promise a closed mesh of finite vertices, marching cubes a manifold one too;
         // naive surface nets may join four faces at a saddle of the field (reported, not an error).
+        if (stats.normalsMs > 0.0) times.split("mesh", "normals", stats.normalsMs, "vertex normals oriented to their triangles");
         const MeshQuality quality = times.time("quality", [&] { return measureMeshQuality(mesh); });
         if (quality.boundaryEdges != 0 || quality.nonFiniteVertices != 0 || quality.misorientedEdges != 0 ||
             (marchingCubes && !quality.manifold()))
             throw InternalError("the " + options.mesher + " mesh is broken: " + describeMeshQuality(quality));
-        times.time("write", [&] { writeMesh(files, options.meshPath, mesh, program.materials); });
+        // A .glb is encoded whole (vertex-cache order, then the bytes) before it is written, so the
+        // two show apart; PLY and OBJ stream their text or records into the file as they go.
+        if (options.meshPath.ends_with(".glb")) { // requireExtension: the ending as written
+            const std::string glb = times.time("encode", [&] { return encodeGlb(mesh, program.materials); });
+            times.time("write", [&] { files.add(options.meshPath, glb); });
+        } else {
+            times.time("write", [&] { writeMesh(files, options.meshPath, mesh, program.materials); });
+        }
         if (mesh.triangles.empty())
             std::cerr << fmt::format("voxc: warning: the mesh is empty: every voxel is on the same side of --iso {}\n", options.iso);
         meshReport = fmt::format("wrote {} ({}): {}; {}; skipped {} of {} chunks with no surface\n", options.meshPath,

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <atomic>
 #include <bit>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <glm/geometric.hpp>
@@ -492,6 +493,7 @@ private:
         for (const auto& h : tileHit_) stats.activeTiles += h.load(std::memory_order_relaxed);
         stats.cellsVisited = cellsVisited_.load();
         stats.samplesRead = signs_.samplesRead;
+        stats.normalsMs = 0.0; // meshMarchingCubesCells adds the orientation's time
     }
 
     const ChunkedGrid& grid_;
@@ -552,12 +554,17 @@ Mesh meshMarchingCubesCells(const ChunkedGrid& grid, const CellBox& cells, float
     // them in the cells just outside the box: they are meshed too, and the box's vertices take
     // their normals from that larger mesh, so a tile's vertices carry the whole world's bits.
     const surface_nets::CellRange around{glm::max(share.begin - 1, glm::ivec3(-1)), glm::min(share.end + 1, grid.layout().gridSize)};
+    auto orient = [stats](Mesh& m) {
+        const auto start = std::chrono::steady_clock::now();
+        orientNormalsToFaces(m);
+        if (stats) stats->normalsMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    };
     if (around.begin == share.begin && around.end == share.end) {
-        orientNormalsToFaces(mesh);
+        orient(mesh);
         return mesh;
     }
     Mesh larger = marching_cubes::SparseExtraction(grid, around, options.iso, margin, options.skipUniformChunks).run(nullptr);
-    orientNormalsToFaces(larger);
+    orient(larger);
     // Both meshes list their vertices by global edge, the box's a subset of the larger's, and
     // no two edges share a position (the crossing margin), so one walk pairs them; the larger's
     // copies made for normals follow its edge vertices.

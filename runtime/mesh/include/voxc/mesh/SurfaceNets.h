@@ -47,6 +47,9 @@ struct MeshStats {
     // ranges (ChunkedGrid::tileRanges) only the tiles that straddle iso are read; without them,
     // or without skipping, every sample.
     size_t samplesRead = 0;
+    // Host marching cubes only: the wall time, within the call, of orienting the vertex normals
+    // to their triangles (orientNormalsToFaces), which `voxc run --timings` shows as `normals`.
+    double normalsMs = 0.0;
 };
 
 Mesh meshSurfaceNets(const ChunkedGrid& grid, const MeshOptions& options, MeshStats* stats = nullptr);
