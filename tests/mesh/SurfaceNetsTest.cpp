@@ -112,3 +112,36 @@ TEST(mesh_SurfaceNets, saddleFaceIsClosedButNotManifold) {
 
 } // namespace surface_nets_test
 } // namespace voxc
+
+namespace voxc {
+
+// With the grid's tile ranges the uniform-chunk test answers from them without reading voxels;
+// it never skips a chunk the samples would not: the same mesh, bit for bit, and the same chunks
+// skipped, with and without ranges, at tile-aligned and unaligned origins, chunks below and above
+// the tile's size, and an iso below 0 (the outside of the grid solid).
+TEST(mesh_SurfaceNets, tileRangesSkipTheSameChunksAndGiveTheSameMesh) {
+    struct Case {
+        glm::ivec3 origin;
+        int32_t chunk;
+        float iso;
+    };
+    for (const Case& c : {Case{{0, 0, 0}, 8, 0.5f}, Case{{-5, 3, -11}, 16, 0.5f}, Case{{4, -9, 2}, 4, 0.3f}, Case{{-5, 3, -11}, 16, -0.25f}}) {
+        const ChunkedGrid plain = test::makeGrid(c.origin, {45, 38, 41}, c.chunk, test::coneBall(glm::vec3(c.origin) + glm::vec3(20.3f, 17.6f, 19.1f), 26.0f));
+        ChunkedGrid ranged = plain;
+        ranged.recordTileRanges();
+        ASSERT_EQ(plain.tileRanges(), nullptr);
+        ASSERT_NE(ranged.tileRanges(), nullptr);
+        MeshStats plainStats, rangedStats;
+        const Mesh a = meshSurfaceNets(plain, MeshOptions{.iso = c.iso}, &plainStats);
+        const Mesh b = meshSurfaceNets(ranged, MeshOptions{.iso = c.iso}, &rangedStats);
+        EXPECT_TRUE(a.positions == b.positions && a.normals == b.normals) << "chunk " << c.chunk << " iso " << c.iso;
+        EXPECT_EQ(a.triangles, b.triangles);
+        EXPECT_EQ(a.vertexMaterials, b.vertexMaterials);
+        EXPECT_EQ(a.triangleMaterials, b.triangleMaterials);
+        EXPECT_EQ(plainStats.skippedChunks, rangedStats.skippedChunks);
+        EXPECT_GT(rangedStats.skippedChunks, 0u) << "chunk " << c.chunk << " iso " << c.iso;
+        if (c.iso >= 0.0f) EXPECT_FALSE(b.triangles.empty());
+    }
+}
+
+} // namespace voxc

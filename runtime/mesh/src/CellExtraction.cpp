@@ -1,6 +1,7 @@
 #include "CellExtraction.h"
 
 #include <cmath>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 namespace voxc::surface_nets {
@@ -117,7 +118,37 @@ CellRange chunkCells(const ChunkLayout& layout, glm::ivec3 worldChunk) {
     return {glm::max(chunkFirst, glm::ivec3(-1)), glm::min(chunkFirst + layout.chunkSize, layout.gridSize)};
 }
 
+namespace {
+
+// True when the grid's tile ranges show every sample of [first, last] (grid-local, inclusive; the
+// outside of the grid reads 0) on one side of iso; false when they do not or the grid has none.
+bool rangesShowUniform(const ChunkedGrid& grid, float iso, glm::ivec3 first, glm::ivec3 last) {
+    const TileRanges* ranges = grid.tileRanges();
+    if (!ranges) return false;
+    const ChunkLayout& layout = grid.layout();
+    const glm::ivec3 inFirst = glm::max(first, glm::ivec3(0)), inLast = glm::min(last, layout.gridSize - 1);
+    if (glm::any(glm::greaterThan(inFirst, inLast))) return false; // wholly outside: left to the samples
+    const bool outside = glm::any(glm::lessThan(first, inFirst)) || glm::any(glm::greaterThan(last, inLast));
+    int side = outside ? (0.0f > iso ? 1 : 0) : -1; // 1 solid, 0 air, -1 not yet known
+    const glm::ivec3 tileFirst = (layout.gridOrigin + inFirst) >> TileRanges::kShift;
+    const glm::ivec3 tileLast = (layout.gridOrigin + inLast) >> TileRanges::kShift;
+    for (int z = tileFirst.z; z <= tileLast.z; ++z)
+        for (int y = tileFirst.y; y <= tileLast.y; ++y)
+            for (int x = tileFirst.x; x <= tileLast.x; ++x) {
+                const TileRanges::Range& range = ranges->at({x, y, z});
+                const int tileSide = range.low > iso ? 1 : range.high <= iso ? 0 : -1;
+                if (tileSide < 0 || (side >= 0 && tileSide != side)) return false;
+                side = tileSide;
+            }
+    return true;
+}
+
+} // namespace
+
 bool cellsAreUniform(const ChunkedGrid& grid, float iso, const CellRange& cells) {
+    // The ranges, where the grid has them, answer most chunks without reading a voxel; they never
+    // call a chunk uniform that is not, so the answer is the samples' answer.
+    if (rangesShowUniform(grid, iso, cells.begin, cells.end)) return true;
     auto solidAt = [&](glm::ivec3 p) { return meshDensity(grid, p) > iso; }; // as SampleBlock reads it
     const bool first = solidAt(cells.begin);
     for (int z = cells.begin.z; z <= cells.end.z; ++z)
