@@ -10,11 +10,6 @@
 
 namespace voxc::curves {
 
-float propagationCandidate(float fromValue, float normalP, float normalX, int32_t sign) {
-    const float step = (normalP + normalX) * 0.5f;
-    return fromValue + (sign > 0 ? step : -step);
-}
-
 SurfaceFront prepareSurface(const Constraints& cs) {
     const Box& b = cs.box;
     SurfaceFront front{{Field3(b, std::numeric_limits<float>::infinity()), std::vector<int32_t>(b.cellCount(), -1), 0},

@@ -15,7 +15,11 @@ struct SurfaceField {
 
 // The candidate a cell p gets from its set neighbour x along axis `axis` (p = x + sign * e_axis):
 // S_x + sign * ((n_p[axis] + n_x[axis]) * 0.5).
-float propagationCandidate(float fromValue, float normalP, float normalX, int32_t sign);
+// Inline: the surface front calls it for every candidate of every cell.
+inline float propagationCandidate(float fromValue, float normalP, float normalX, int32_t sign) {
+    const float step = (normalP + normalX) * 0.5f;
+    return fromValue + (sign > 0 ? step : -step);
+}
 
 // n is the normalised normal field (normalizeField).
 SurfaceField propagateSurface(const Constraints& constraints, const Field3& nx, const Field3& ny, const Field3& nz,
