@@ -115,9 +115,9 @@ TEST(mesh_SurfaceNets, saddleFaceIsClosedButNotManifold) {
 
 namespace voxc {
 
-// With the grid's tile ranges the uniform-chunk test answers from them without reading voxels;
-// it never skips a chunk the samples would not: the same mesh, bit for bit, and the same chunks
-// skipped, with and without ranges, at tile-aligned and unaligned origins, chunks below and above
+// With the grid's tile ranges the uniform-chunk test answers from them without reading voxels,
+// and a chunk's uniform 8^3 tiles of cells are passed over; neither skips a cell the samples
+// would not: the same mesh, bit for bit, and the same chunks skipped, with and without ranges, at tile-aligned and unaligned origins, chunks below and above
 // the tile's size, and an iso below 0 (the outside of the grid solid).
 TEST(mesh_SurfaceNets, tileRangesSkipTheSameChunksAndGiveTheSameMesh) {
     struct Case {

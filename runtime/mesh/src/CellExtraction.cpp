@@ -158,18 +158,14 @@ bool cellsAreUniform(const ChunkedGrid& grid, float iso, const CellRange& cells)
     return true;
 }
 
-ChunkSurface extractChunk(const ChunkedGrid& grid, float iso, glm::ivec3 worldChunk) {
-    const ChunkLayout& layout = grid.layout();
-    const CellDomain domain{layout.gridSize};
-    const CellRange cells = chunkCells(layout, worldChunk);
-    const glm::ivec3 cellBegin = cells.begin, cellEnd = cells.end;
-    ChunkSurface surface;
-    if (cells.empty()) return surface;
-    const SampleBlock block(grid, cellBegin - 1, cellEnd - cellBegin + 3);
+namespace {
 
-    for (int z = cellBegin.z; z < cellEnd.z; ++z)
-        for (int y = cellBegin.y; y < cellEnd.y; ++y)
-            for (int x = cellBegin.x; x < cellEnd.x; ++x) {
+// Cells [lo, hi) of a chunk, read from its sample block.
+void extractCells(const SampleBlock& block, const CellDomain& domain, glm::ivec3 gridOrigin, glm::ivec3 lo, glm::ivec3 hi, float iso,
+                  ChunkSurface& surface) {
+    for (int z = lo.z; z < hi.z; ++z)
+        for (int y = lo.y; y < hi.y; ++y)
+            for (int x = lo.x; x < hi.x; ++x) {
                 const glm::ivec3 cell(x, y, z);
                 float density[8];
                 unsigned solid = 0;
@@ -178,7 +174,7 @@ ChunkSurface extractChunk(const ChunkedGrid& grid, float iso, glm::ivec3 worldCh
                     if (density[i] > iso) solid |= 1u << i;
                 }
                 if (solid == 0 || solid == 0xffu) continue;
-                CellVertex vertex = makeVertex(block, cell, layout.gridOrigin + cell, density, solid, iso);
+                CellVertex vertex = makeVertex(block, cell, gridOrigin + cell, density, solid, iso);
                 vertex.cell = domain.key(cell);
                 vertex.material = majorityMaterial(block, cell, solid);
                 surface.vertices.push_back(vertex);
@@ -201,6 +197,35 @@ ChunkSurface extractChunk(const ChunkedGrid& grid, float iso, glm::ivec3 worldCh
                     for (int k = 0; k < 4; ++k) quad.cells[k] = domain.key(ring[solidAtMin ? k : (4 - k) % 4]);
                     surface.quads.push_back(quad);
                 }
+            }
+}
+
+} // namespace
+
+ChunkSurface extractChunk(const ChunkedGrid& grid, float iso, glm::ivec3 worldChunk) {
+    const ChunkLayout& layout = grid.layout();
+    const CellDomain domain{layout.gridSize};
+    const CellRange cells = chunkCells(layout, worldChunk);
+    const glm::ivec3 cellBegin = cells.begin, cellEnd = cells.end;
+    ChunkSurface surface;
+    if (cells.empty()) return surface;
+    const SampleBlock block(grid, cellBegin - 1, cellEnd - cellBegin + 3);
+
+    // The cells go by world-aligned 8^3 tile; with the grid's tile ranges a tile of cells whose
+    // samples all lie on one side of iso has no crossed cell or edge and is passed over. The
+    // merge orders vertices by cell and quads by edge, so the order within a chunk is free.
+    const bool ranged = grid.tileRanges() != nullptr;
+    constexpr int tileSide = 1 << TileRanges::kShift;
+    const glm::ivec3 tileFirst = (layout.gridOrigin + cellBegin) >> TileRanges::kShift;
+    const glm::ivec3 tileLast = (layout.gridOrigin + cellEnd - 1) >> TileRanges::kShift;
+    for (int tz = tileFirst.z; tz <= tileLast.z; ++tz)
+        for (int ty = tileFirst.y; ty <= tileLast.y; ++ty)
+            for (int tx = tileFirst.x; tx <= tileLast.x; ++tx) {
+                const glm::ivec3 tileCells = glm::ivec3(tx, ty, tz) * tileSide - layout.gridOrigin;
+                const glm::ivec3 lo = glm::max(cellBegin, tileCells), hi = glm::min(cellEnd, tileCells + tileSide);
+                // Cells [lo, hi) read the samples [lo, hi] (their corners).
+                if (ranged && rangesShowUniform(grid, iso, lo, hi)) continue;
+                extractCells(block, domain, layout.gridOrigin, lo, hi, iso, surface);
             }
     return surface;
 }
