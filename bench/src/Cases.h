@@ -41,4 +41,8 @@ Program fbm5Program(int n);
 std::vector<float> libnoiseFbm5(int n);
 std::string libnoiseDescription();
 
+// CPU time of the whole process, every thread (lavapipe runs a dispatch on worker threads of its
+// own): on a shared machine the load stretches wall times, much less the CPU a run takes.
+double processCpuMs();
+
 } // namespace voxc::bench

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <libnoise/noise.h>
 #include <thread>
+#include <time.h>
 
 namespace voxc::bench {
 
@@ -17,6 +18,12 @@ Program fbm5Program(int n) {
     CheckResult result = checkSource(SourceFile("fbm5.vox", text));
     if (result.hasErrors() || !result.program) throw InternalError("the fbm5 bench program does not check:\n" + result.rendered());
     return std::move(*result.program);
+}
+
+double processCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) / 1e6;
 }
 
 std::vector<float> libnoiseFbm5(int n) {

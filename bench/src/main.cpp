@@ -51,14 +51,6 @@ struct BenchOptions {
     int repetitions = 3;
 };
 
-// CPU time of the whole process, every thread (lavapipe runs a dispatch on worker threads of its
-// own): on a shared machine the load stretches wall times, much less the CPU a run takes.
-double processCpuMs() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) / 1e6;
-}
-
 // readBack false: the result stays in the device's buffers, as `voxc run` leaves it when it meshes
 // there and writes no voxels (backend "vulkan_on_device").
 void registerVulkan(bench::JsonReporter& reporter, VulkanContext& context, const std::string& caseName, int n,
@@ -79,9 +71,9 @@ void registerVulkan(bench::JsonReporter& reporter, VulkanContext& context, const
         }
         double cpuMs = 0;
         for (auto _ : state) {
-            const double cpuStart = processCpuMs();
+            const double cpuStart = bench::processCpuMs();
             const RunTimings t = (*executor)->run().timings;
-            cpuMs += processCpuMs() - cpuStart;
+            cpuMs += bench::processCpuMs() - cpuStart;
             state.SetIterationTime((t.recordMs + t.executeMs + t.readbackMs) / 1000.0);
         }
         state.counters["cpu_ms"] = benchmark::Counter(cpuMs, benchmark::Counter::kAvgIterations);
@@ -98,9 +90,9 @@ void registerInterp(bench::JsonReporter& reporter, const std::string& caseName, 
         *warmedUp = true;
         double cpuMs = 0;
         for (auto _ : state) {
-            const double cpuStart = processCpuMs();
+            const double cpuStart = bench::processCpuMs();
             benchmark::DoNotOptimize(interpret(*program).data().data());
-            cpuMs += processCpuMs() - cpuStart;
+            cpuMs += bench::processCpuMs() - cpuStart;
         }
         state.counters["cpu_ms"] = benchmark::Counter(cpuMs, benchmark::Counter::kAvgIterations);
     })->Unit(benchmark::kMillisecond);

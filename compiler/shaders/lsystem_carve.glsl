@@ -23,17 +23,25 @@ layout(std430, set = 0, binding = 10) readonly buffer PointSets {
 
 float pointSetFloat(int at) { return intBitsToFloat(pointSets.words[at]); }
 
-// The list loops visit POINT_SET_BLOCK items per iteration, as straight-line steps, because
-// lavapipe (llvmpipe) caps the loop iterations of one invocation group at 65535 for all its loops
-// together and silently leaves every loop after that: a cell may list kMaxPointSetPerCell (8,192)
-// centres and as many segments, so a voxel takes at most 2 * 8192 / POINT_SET_BLOCK = 2,048
+// The list loops visit POINT_SET_BLOCK items per iteration (1 or 8), as straight-line steps,
+// because lavapipe (llvmpipe) caps the loop iterations of one invocation group at 65535 for all its
+// loops together and silently leaves every loop after that: a cell may list kMaxPointSetPerCell
+// (8,192) centres and as many segments, so a voxel takes at most 2 * 8192 / POINT_SET_BLOCK + 2
 // iterations here, and field kernels that read a point set walk at most kPointSetAnchorsAlongY
-// voxels per invocation (codegen/FieldKernel.cpp). A step reads item min(i, count - 1), always in
-// the list, and keeps its distance only while `live`: before the list's end and before the first
-// lower bound not below the nearest so far (every later one is not either), so the nearest is the
-// one a loop over the items one by one finds. No branch: the driver compiles it quickly and the
-// lanes of a group do not diverge.
-const int POINT_SET_BLOCK = 8;
+// voxels per invocation (codegen/FieldKernel.cpp). Every step of a block costs all its loads,
+// live or not, and most lookups end after a step or two, so field kernels whose lists are short
+// enough define POINT_SET_BLOCK 1 (codegen's fieldPointSetListBlock); stamp and speleothem
+// kernels, whose bounds the check counts in blocks of kPointSetListBlock, keep 8. A step reads
+// item min(i, count - 1), always in the list, and keeps its distance only while `live`: before
+// the list's end and before the first lower bound not below the nearest so far (every later one
+// is not either), so the nearest is the one a loop over the items one by one finds. No branch:
+// the driver compiles it quickly and the lanes of a group do not diverge.
+#ifndef POINT_SET_BLOCK
+#define POINT_SET_BLOCK 8
+#endif
+#if POINT_SET_BLOCK != 1 && POINT_SET_BLOCK != 8
+#error POINT_SET_BLOCK is 1 or 8
+#endif
 
 void pointSetCentreStep(vec3 p, int centres, int item, int i, int count, inout bool live, inout float nearest) {
     int j = min(i, count - 1);
@@ -83,8 +91,9 @@ vec2 pointSetDistances(int set, vec3 p) {
     float nearestCentre = 3.4028234663852886e38;
     bool live = true;
     for (int i = 0; live && i < centreCount; i += POINT_SET_BLOCK) {
-        // Eight steps written out (a constant loop here could stay a loop).
+        // The steps written out (a constant loop here could stay a loop).
         pointSetCentreStep(p, centres, centreItem, i, centreCount, live, nearestCentre);
+#if POINT_SET_BLOCK == 8
         pointSetCentreStep(p, centres, centreItem, i + 1, centreCount, live, nearestCentre);
         pointSetCentreStep(p, centres, centreItem, i + 2, centreCount, live, nearestCentre);
         pointSetCentreStep(p, centres, centreItem, i + 3, centreCount, live, nearestCentre);
@@ -92,6 +101,7 @@ vec2 pointSetDistances(int set, vec3 p) {
         pointSetCentreStep(p, centres, centreItem, i + 5, centreCount, live, nearestCentre);
         pointSetCentreStep(p, centres, centreItem, i + 6, centreCount, live, nearestCentre);
         pointSetCentreStep(p, centres, centreItem, i + 7, centreCount, live, nearestCentre);
+#endif
     }
 
     int segments = pointSets.words[header + 1];
@@ -101,6 +111,7 @@ vec2 pointSetDistances(int set, vec3 p) {
     live = true;
     for (int i = 0; live && i < segmentCount; i += POINT_SET_BLOCK) {
         pointSetSegmentStep(p, segments, segmentItem, i, segmentCount, live, nearestSegment);
+#if POINT_SET_BLOCK == 8
         pointSetSegmentStep(p, segments, segmentItem, i + 1, segmentCount, live, nearestSegment);
         pointSetSegmentStep(p, segments, segmentItem, i + 2, segmentCount, live, nearestSegment);
         pointSetSegmentStep(p, segments, segmentItem, i + 3, segmentCount, live, nearestSegment);
@@ -108,6 +119,7 @@ vec2 pointSetDistances(int set, vec3 p) {
         pointSetSegmentStep(p, segments, segmentItem, i + 5, segmentCount, live, nearestSegment);
         pointSetSegmentStep(p, segments, segmentItem, i + 6, segmentCount, live, nearestSegment);
         pointSetSegmentStep(p, segments, segmentItem, i + 7, segmentCount, live, nearestSegment);
+#endif
     }
     precise float centre = sqrt(nearestCentre);
     precise float segment = sqrt(nearestSegment);

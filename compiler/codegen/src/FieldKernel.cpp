@@ -11,6 +11,7 @@
 #include "voxc/codegen/SampledMaps.h"
 #include "voxc/core/Errors.h"
 #include "voxc/ir/passes/ClassifyFieldChunks.h"
+#include "voxc/program/PointSet.h"
 #include "voxc/program/Semantics.h"
 
 #include <fmt/format.h>
@@ -412,6 +413,16 @@ std::vector<std::shared_ptr<const PointSet>> pointSetsOf(const ir::IrModule& mod
     return sets;
 }
 
+uint32_t fieldPointSetListBlock(const ir::IrField& field) {
+    // One point set's iterations per voxel at its limit in blocks of kPointSetListBlock.
+    constexpr uint64_t kLimitIterations = 2 * ((kMaxPointSetPerCell + kPointSetListBlock - 1) / kPointSetListBlock + 1);
+    uint64_t iterations = 0;
+    for (const FieldNode& node : field.nodes)
+        if (node.kind == FieldNode::Kind::PointSet && node.pointSet)
+            iterations += pointSetLookupIterations(node.pointSet->bins, 1);
+    return iterations <= kLimitIterations ? 1 : kPointSetListBlock;
+}
+
 DispatchShape fieldDispatchShape(const ir::IrModule& module, const ir::IrField& field) {
     DispatchShape shape = startDispatchShape(module);
     const bool readsPointSet = std::any_of(field.nodes.begin(), field.nodes.end(),
@@ -528,6 +539,8 @@ std::string fieldKernelSource(const ir::IrModule& module, const ir::IrField& fie
                               stage.loc.column);
     header += ".\n";
     std::string libraries;
+    if (std::ranges::find(code.libraries, kPointSetLibrary) != code.libraries.end())
+        libraries += fmt::format("#define POINT_SET_BLOCK {}\n", fieldPointSetListBlock(field));
     for (std::string_view library : code.libraries) libraries += fmt::format("#include \"{}\"\n", library);
     if (libraries.empty()) libraries = "// No function library needed.\n";
     return instantiateTemplate(

@@ -334,14 +334,13 @@ std::vector<int32_t> pointSetWords(std::span<const std::shared_ptr<const PointSe
     return words;
 }
 
-uint64_t pointSetLookupIterations(const PointBins& bins) {
+uint64_t pointSetLookupIterations(const PointBins& bins, uint32_t block) {
     uint64_t centres = 0, segments = 0;
     for (size_t cell = 0; cell + 1 < bins.centreStart.size(); ++cell)
         centres = std::max<uint64_t>(centres, bins.centreStart[cell + 1] - bins.centreStart[cell]);
     for (size_t cell = 0; cell + 1 < bins.segmentStart.size(); ++cell)
         segments = std::max<uint64_t>(segments, bins.segmentStart[cell + 1] - bins.segmentStart[cell]);
-    return (centres + kPointSetListBlock - 1) / kPointSetListBlock + 1 +
-           (segments + kPointSetListBlock - 1) / kPointSetListBlock + 1;
+    return (centres + block - 1) / block + 1 + (segments + block - 1) / block + 1;
 }
 
 } // namespace voxc

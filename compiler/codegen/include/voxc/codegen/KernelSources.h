@@ -63,9 +63,15 @@ struct FieldStageBoxes {
 FieldStageBoxes fieldBoxes(const ir::IrModule& module, const ir::IrField& field, FieldMode mode,
                            std::optional<uint8_t> material, std::optional<DensityBounds> before);
 // Voxels one invocation of a field kernel walks along its column: the whole column, or at most
-// kPointSetAnchorsAlongY where the field reads a point set (lsystem_carve.glsl: up to 2,048 list
-// loop iterations per voxel, under lavapipe's 65,535 per invocation group for every loop together).
+// kPointSetAnchorsAlongY where the field reads a point set (lsystem_carve.glsl: up to 2,050 list
+// loop iterations per voxel in blocks of 8 items, under lavapipe's 65,535 per invocation group
+// for every loop together).
 constexpr uint32_t kPointSetAnchorsAlongY = 8;
+// The list items a field kernel's lookup visits per loop iteration (lsystem_carve.glsl's
+// POINT_SET_BLOCK): 1 where the field's lists are short enough that its voxels loop no more often
+// than one point set's could in blocks of 8 at kMaxPointSetPerCell, else 8. Every step of a block
+// costs all its loads, live or not, and most lookups end after a step or two.
+uint32_t fieldPointSetListBlock(const ir::IrField& field);
 DispatchShape fieldDispatchShape(const ir::IrModule& module, const ir::IrField& field);
 // `material`: the stages' material (Stage::material), written as voxc::combineField does.
 std::string fieldKernelSource(const ir::IrModule& module, const ir::IrField& field, FieldMode mode,

@@ -88,10 +88,11 @@ struct PointSetLimitError {
 };
 
 // The list entries one loop iteration of a kernel's lookup visits (lsystem_carve.glsl's
-// POINT_SET_BLOCK), and the loop iterations a lookup in `bins` takes at most: both lists of its
-// fullest cells, a block per iteration, plus the test that ends each loop.
+// POINT_SET_BLOCK: 8, or 1 in field kernels whose lists allow it, codegen's
+// fieldPointSetListBlock), and the loop iterations a lookup in `bins` takes at most: both lists
+// of its fullest cells, a block per iteration, plus the test that ends each loop.
 constexpr uint32_t kPointSetListBlock = 8;
-uint64_t pointSetLookupIterations(const PointBins& bins);
+uint64_t pointSetLookupIterations(const PointBins& bins, uint32_t block = kPointSetListBlock);
 
 // The node's value at p from `bins` (a position outside the bins' cells: from every point).
 glm::vec2 pointSetDistances(const PointSet& set, const PointBins& bins, glm::vec3 p);
