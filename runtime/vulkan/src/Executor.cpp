@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <functional>
 #include <optional>
 #include <span>
 #include <utility>
@@ -110,6 +111,9 @@ struct VulkanExecutor::Impl {
     void createBuffers();
     // A read-only int buffer with `values`, ready for every kernel.
     DeviceBuffer createTable(const std::vector<int32_t>& values);
+    // The same with `words` words that `fill` writes, straight into the mapped memory (no copy
+    // of a large table on the host).
+    DeviceBuffer createTable(size_t words, const std::function<void(std::span<int32_t>)>& fill);
     // The words of kBindingPointSets (a UserError naming the bound when the lists outgrow it).
     std::vector<int32_t> pointSetTable() const;
     void createFrames();
@@ -187,7 +191,8 @@ void VulkanExecutor::Impl::createBuffers() {
     const std::span<const int, 256> permutation = perlinPermutation();
     noiseTables = createTable(std::vector<int32_t>(permutation.begin(), permutation.end()));
     pointSets = createTable(pointSetTable());
-    solveTables = createTable(solveTableWords(package.solveTables));
+    solveTables = createTable(solveTableWordCount(package.solveTables),
+                              [&](std::span<int32_t> out) { writeSolveTableWords(package.solveTables, out); });
     uint64_t scratchWords = 1;
     for (const StagePlan& stage : package.stages) scratchWords = std::max(scratchWords, stage.scratchWords);
     scratch = createBuffer(ctx, VkDeviceSize(scratchWords) * sizeof(uint32_t), storage,
@@ -232,11 +237,15 @@ void VulkanExecutor::Impl::recordTileReset(VkCommandBuffer cmd) {
 }
 
 DeviceBuffer VulkanExecutor::Impl::createTable(const std::vector<int32_t>& values) {
-    const VkDeviceSize bytes = values.size() * sizeof(int32_t);
+    return createTable(values.size(), [&](std::span<int32_t> out) { std::copy(values.begin(), values.end(), out.begin()); });
+}
+
+DeviceBuffer VulkanExecutor::Impl::createTable(size_t words, const std::function<void(std::span<int32_t>)>& fill) {
+    const VkDeviceSize bytes = words * sizeof(int32_t);
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     if (!staged) {
         DeviceBuffer table = createBuffer(ctx, bytes, storage, MemoryUse::HostAccess);
-        std::memcpy(table.mapped, values.data(), bytes);
+        fill({static_cast<int32_t*>(table.mapped), words});
         flushForDevice(ctx, table); // the queue submit then makes the host write visible
         return table;
     }
@@ -244,7 +253,7 @@ DeviceBuffer VulkanExecutor::Impl::createTable(const std::vector<int32_t>& value
     DeviceBuffer upload{};
     try {
         upload = createBuffer(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::HostAccess);
-        std::memcpy(upload.mapped, values.data(), bytes);
+        fill({static_cast<int32_t*>(upload.mapped), words});
         flushForDevice(ctx, upload);
         Frame& frame = frames[0];
         VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <memory>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -95,5 +96,9 @@ struct CurvesBlock {
 // word; a table is min (3 ints), size (3 ints), then its densities (float bits), then its
 // materials (one word each, only when it has materials).
 std::vector<int32_t> solveTableWords(const std::vector<std::shared_ptr<const SolveTable>>& tables);
+// How many words solveTableWords makes, and the same words written into `out` (that many): an
+// executor fills its mapped buffer directly (a 256x128x256 table with materials is 64 MiB).
+size_t solveTableWordCount(const std::vector<std::shared_ptr<const SolveTable>>& tables);
+void writeSolveTableWords(const std::vector<std::shared_ptr<const SolveTable>>& tables, std::span<int32_t> out);
 
 } // namespace voxc
