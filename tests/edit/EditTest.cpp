@@ -4,6 +4,7 @@
 // `voxc run` and `voxc interp` (Brush.h), so D1's device half is the CLI test's run == interp.
 #include "voxc/builtins/Functions.h"
 #include "voxc/edit/EditableWorld.h"
+#include "voxc/mesh/Lod.h"
 #include "voxc/mesh/MarchingCubes.h"
 #include "voxc/mesh/Mesh.h"
 
@@ -17,6 +18,7 @@
 #include <gtest/gtest.h>
 #include <random>
 #include <set>
+#include <utility>
 
 namespace voxc {
 namespace {
@@ -254,6 +256,33 @@ TEST(edit_World, incrementalMeshEqualsMeshFromScratch) {
     }
     EXPECT_GT(remeshed, 0u);
     EXPECT_LT(noOps, 50u);
+}
+
+// A world is built meshed whole (meshMarchingCubes, skipping uniform tiles on the grid's tile
+// ranges) and gets its chunks' shares on its first edit: the built mesh is the chunk-by-chunk one
+// byte for byte (a sphere: most chunks and tiles uniform, and noise: none), and so is every mesh
+// after edits.
+TEST(edit_World, builtWholeEqualsChunkByChunk) {
+    const ChunkedGrid sphere = makeGrid({-20, -9, 3}, {72, 40, 56}, 16,
+                                        ramp([](glm::vec3 p) { return glm::length(p - glm::vec3(10, 8, 30)) - 14.0f; }, 2.0f));
+    for (const ChunkedGrid& source : {sphere, noiseGrid({-37, -5, -70}, {40, 32, 36}, 16, 5)}) {
+        ChunkedGrid grid(source.layout());
+        grid.loadDensities(source.data().data()); // records the tile ranges, as a run's read-back does
+        ASSERT_NE(std::as_const(grid).tileRanges(), nullptr);
+        const LodPyramid pyramid(grid, 0);
+        const Mesh chunkByChunk = meshLod(pyramid, LodLayout::uniform(grid.layout(), 0), MeshOptions{});
+        EditableWorld world(grid);
+        ASSERT_GT(chunkByChunk.triangles.size(), 0u);
+        EXPECT_TRUE(identical(world.mesh(), chunkByChunk));
+        const glm::vec3 centre = glm::vec3(grid.layout().gridOrigin) + glm::vec3(grid.layout().gridSize) * 0.5f;
+        for (const Brush& brush : {carve(centre, 6.0f), add(centre + glm::vec3(9, 0, 0), 4.0f, 2.0f)}) {
+            const EditResult result = world.edit(brush);
+            ASSERT_TRUE(result.changed.has_value());
+            EXPECT_FALSE(result.chunksRemeshed.empty());
+            const LodPyramid edited(world.grid(), 0);
+            EXPECT_TRUE(identical(world.mesh(), meshLod(edited, LodLayout::uniform(world.grid().layout(), 0), MeshOptions{})));
+        }
+    }
 }
 
 // D7: a carve across a chunk corner: closed and manifold, and the same edits give the same bytes

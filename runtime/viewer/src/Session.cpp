@@ -128,7 +128,9 @@ void addBlockKeys(const ast::File& file, const ast::Block& block, const std::str
 
 struct Session::Loaded {
     Program program;
-    ChunkedGrid base; // as generated, before the edits
+    // The grid as generated, before the edits: apart from the world's grid only while the world
+    // has edits (a world without any holds it, uncopied).
+    std::optional<ChunkedGrid> base;
     std::optional<EditableWorld> world;
 };
 
@@ -440,9 +442,14 @@ std::optional<bool> Session::poll() {
 }
 
 void Session::rebuildWorld() {
-    ChunkedGrid grid = loaded_->base;
+    ChunkedGrid grid = edits_.empty() ? std::move(*loaded_->base) : *loaded_->base;
+    if (edits_.empty()) loaded_->base.reset();
     for (const Brush& brush : edits_) applyBrush(grid, brush);
     loaded_->world.emplace(std::move(grid), MeshOptions{.iso = options_.iso});
+}
+
+void Session::keepBase() {
+    if (!loaded_->base) loaded_->base = loaded_->world->grid();
 }
 
 bool Session::setParameter(const std::string& name, double value) {
@@ -483,6 +490,7 @@ bool Session::resetParameters() {
 EditStats Session::edit(const Brush& brush) {
     VOXC_ASSERT(hasWorld());
     const auto start = std::chrono::steady_clock::now();
+    keepBase();
     const EditResult result = loaded_->world->edit(brush);
     EditStats stats{result.chunksRemeshed.size(), 0, millisecondsSince(start)};
     if (result.changed) {
@@ -507,6 +515,7 @@ bool Session::redo() {
     if (redo_.empty() || !hasWorld()) return false;
     const Brush brush = redo_.back();
     redo_.pop_back();
+    keepBase();
     loaded_->world->edit(brush);
     edits_.push_back(brush);
     return true;

@@ -2,6 +2,12 @@
 // A generated grid with its marching-cubes mesh kept per chunk, edited by brushes (voxc/edit/Brush.h)
 // and picked by rays (voxc/edit/Pick.h): the C++ API of deformation, without a viewer.
 //
+// Built, the world is meshed whole (meshMarchingCubes: uniform tiles skipped on the grid's tile
+// ranges, both cores), several times faster than chunk by chunk and byte for byte the same mesh;
+// the chunks' shares (LodMesher) are made on the first edit that changes a voxel, so a world that
+// is only looked at never pays for them. mesh() is kept: welded from the shares when asked after
+// edits, once.
+//
 // An edit diffs the densities it writes; V is the box of voxels whose bits changed. The chunks
 // re-meshed are exactly those owning a cell in [Vmin - 2, Vmax + 1] (meshing spec §2.5 R2): a cell
 // reads its 8 corners, and its vertices' normals (central differences) one sample beyond them.
@@ -37,8 +43,8 @@ public:
     const ChunkedGrid& grid() const;
     EditResult edit(const Brush& brush);
     std::optional<PickHit> pick(glm::vec3 origin, glm::vec3 direction, float maxDistance = 1e30f) const;
-    // The welded mesh of every chunk as it now stands.
-    Mesh mesh() const;
+    // The welded mesh of every chunk as it now stands (valid until the next edit).
+    const Mesh& mesh() const;
 
 private:
     struct State;

@@ -140,6 +140,8 @@ private:
     void supersedeRefine();
     std::string textWithOverrides(const std::string& text, const ast::File& file) const;
     void rebuildWorld();
+    // Copies the world's grid aside as the base before its first edit (the base of an unedited world is its grid).
+    void keepBase();
     void listParameters(const ast::File& file);
 
     VulkanContext& context_;
