@@ -62,20 +62,24 @@ void replaceTerrainMap(Program& program, const std::string& name, const std::sha
                 node.map = map;
 }
 
+void keepTable(const World& world, CurvesBlock& block, SolveTable table) {
+    const GridBox grid{world.localBase, world.localBase + world.size};
+    const bool inside = glm::all(glm::lessThanEqual(grid.min, table.min)) &&
+                        glm::all(glm::lessThanEqual(table.min + table.size, grid.max));
+    if (inside) {
+        table.min -= grid.min;
+        block.table = std::make_shared<const SolveTable>(std::move(table));
+    } else {
+        block.table = regionTable(table, grid);
+    }
+}
+
 void solveBlocks(Program& program, const SolveOptions& options) {
-    const GridBox grid{program.world.localBase, program.world.localBase + program.world.size};
     for (CurvesBlock& block : program.curves) {
         if (block.table || (!block.scene && !block.terrain)) continue;
         SolveTable table = solveWhole(program, block, options);
         if (block.terrain) replaceTerrainMap(program, block.name, terrain::solvedMap(*block.terrain, *table.terrainMaps));
-        const bool inside = glm::all(glm::lessThanEqual(grid.min, table.min)) &&
-                            glm::all(glm::lessThanEqual(table.min + table.size, grid.max));
-        if (inside) {
-            table.min -= grid.min;
-            block.table = std::make_shared<const SolveTable>(std::move(table));
-        } else {
-            block.table = regionTable(table, grid);
-        }
+        keepTable(program.world, block, std::move(table));
     }
 }
 

@@ -3,7 +3,6 @@
 #include "voxc/codegen/CompileCache.h"
 #include "voxc/generators/curves/Scene.h"
 #include "voxc/generators/terrain/Block.h"
-#include "voxc/stages/Region.h"
 #include "voxc/stages/Solve.h"
 #include "voxc/stages/SolveCache.h"
 
@@ -12,7 +11,6 @@
 #include <fmt/format.h>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
-#include <glm/vector_relational.hpp>
 
 namespace voxc::viewer {
 
@@ -163,7 +161,6 @@ bool needsPreview(const Program& program, const PreviewOptions& options) {
 
 Program previewProgram(const Program& program, const PreviewOptions& options) {
     Program preview = program;
-    const stages::GridBox grid{preview.world.localBase, preview.world.localBase + preview.world.size};
     for (CurvesBlock& block : preview.curves) {
         if (!previewed(block, options)) continue;
         SolveTable table;
@@ -176,15 +173,7 @@ Program previewProgram(const Program& program, const PreviewOptions& options) {
             stages::replaceTerrainMap(preview, block.name, terrain::solvedMap(coarse, *table.terrainMaps));
             table.notes = fmt::format("a preview to level {}", coarse.map.domain.maxLevel);
         }
-        // As solveBlocks keeps it: the cells inside the program's grid.
-        const bool inside = glm::all(glm::lessThanEqual(grid.min, table.min)) &&
-                            glm::all(glm::lessThanEqual(table.min + table.size, grid.max));
-        if (inside) {
-            table.min -= grid.min;
-            block.table = std::make_shared<const SolveTable>(std::move(table));
-        } else {
-            block.table = stages::regionTable(table, grid);
-        }
+        stages::keepTable(preview.world, block, std::move(table));
     }
     stages::solveBlocks(preview); // the small and the cached blocks, as a run solves them
     return preview;

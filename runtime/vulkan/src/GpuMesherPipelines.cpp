@@ -30,39 +30,13 @@ VkDescriptorType descriptorType(uint32_t binding) {
 // Set 0 (McBinding) and the pipeline layout with the push block.
 void createMcSet(VulkanContext::Impl& ctx, McPipelines& out) {
     std::vector<VkDescriptorSetLayoutBinding> layoutBindings(kMcBindingCount);
-    uint32_t texels = 0, storageTexels = 0;
     for (uint32_t b = 0; b < kMcBindingCount; ++b) {
         layoutBindings[b].binding = b;
         layoutBindings[b].descriptorType = descriptorType(b);
-        texels += isMcTexelBinding(b) ? 1 : 0;
-        storageTexels += isMcStorageTexelBinding(b) ? 1 : 0;
         layoutBindings[b].descriptorCount = 1;
         layoutBindings[b].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
     }
-    VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    setInfo.bindingCount = uint32_t(layoutBindings.size());
-    setInfo.pBindings = layoutBindings.data();
-    check(ctx.api.vkCreateDescriptorSetLayout(ctx.device, &setInfo, nullptr, &out.setLayout), "vkCreateDescriptorSetLayout");
-    const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(McPush)};
-    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layoutInfo.setLayoutCount = 1;
-    layoutInfo.pSetLayouts = &out.setLayout;
-    layoutInfo.pushConstantRangeCount = 1;
-    layoutInfo.pPushConstantRanges = &push;
-    check(ctx.api.vkCreatePipelineLayout(ctx.device, &layoutInfo, nullptr, &out.layout), "vkCreatePipelineLayout");
-    const VkDescriptorPoolSize poolSizes[3] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kMcBindingCount - texels - storageTexels},
-                                               {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, texels},
-                                               {VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, storageTexels}};
-    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    poolInfo.maxSets = 1;
-    poolInfo.poolSizeCount = 3;
-    poolInfo.pPoolSizes = poolSizes;
-    check(ctx.api.vkCreateDescriptorPool(ctx.device, &poolInfo, nullptr, &out.pool), "vkCreateDescriptorPool");
-    VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    allocate.descriptorPool = out.pool;
-    allocate.descriptorSetCount = 1;
-    allocate.pSetLayouts = &out.setLayout;
-    check(ctx.api.vkAllocateDescriptorSets(ctx.device, &allocate, &out.set), "vkAllocateDescriptorSets");
+    createDescriptorSet(ctx, layoutBindings, sizeof(McPush), out);
 }
 
 } // namespace

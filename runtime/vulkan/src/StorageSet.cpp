@@ -4,12 +4,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace voxc::vulkan_detail {
 
-void createStorageLayout(VulkanContext::Impl& ctx, std::span<const uint32_t> bindings, uint32_t pushBytes,
-                         VkDescriptorSetLayout& setLayout, VkPipelineLayout& layout) {
+namespace {
+
+std::vector<VkDescriptorSetLayoutBinding> storageBindings(std::span<const uint32_t> bindings) {
     std::vector<VkDescriptorSetLayoutBinding> layoutBindings(bindings.size());
     for (size_t i = 0; i < bindings.size(); ++i) {
         layoutBindings[i].binding = bindings[i];
@@ -17,9 +19,14 @@ void createStorageLayout(VulkanContext::Impl& ctx, std::span<const uint32_t> bin
         layoutBindings[i].descriptorCount = 1;
         layoutBindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
     }
+    return layoutBindings;
+}
+
+void createLayouts(VulkanContext::Impl& ctx, std::span<const VkDescriptorSetLayoutBinding> bindings, uint32_t pushBytes,
+                   VkDescriptorSetLayout& setLayout, VkPipelineLayout& layout) {
     VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    setInfo.bindingCount = uint32_t(layoutBindings.size());
-    setInfo.pBindings = layoutBindings.data();
+    setInfo.bindingCount = uint32_t(bindings.size());
+    setInfo.pBindings = bindings.data();
     check(ctx.api.vkCreateDescriptorSetLayout(ctx.device, &setInfo, nullptr, &setLayout), "vkCreateDescriptorSetLayout");
 
     const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes};
@@ -31,21 +38,40 @@ void createStorageLayout(VulkanContext::Impl& ctx, std::span<const uint32_t> bin
     check(ctx.api.vkCreatePipelineLayout(ctx.device, &layoutInfo, nullptr, &layout), "vkCreatePipelineLayout");
 }
 
-void createStorageSet(VulkanContext::Impl& ctx, std::span<const uint32_t> bindings, uint32_t pushBytes,
-                      StorageSet& out) {
-    createStorageLayout(ctx, bindings, pushBytes, out.setLayout, out.layout);
+} // namespace
 
-    const VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, uint32_t(bindings.size())};
+void createStorageLayout(VulkanContext::Impl& ctx, std::span<const uint32_t> bindings, uint32_t pushBytes,
+                         VkDescriptorSetLayout& setLayout, VkPipelineLayout& layout) {
+    createLayouts(ctx, storageBindings(bindings), pushBytes, setLayout, layout);
+}
+
+void createDescriptorSet(VulkanContext::Impl& ctx, std::span<const VkDescriptorSetLayoutBinding> bindings,
+                         uint32_t pushBytes, StorageSet& out) {
+    createLayouts(ctx, bindings, pushBytes, out.setLayout, out.layout);
+
+    // One pool size per descriptor type the bindings use.
+    std::vector<VkDescriptorPoolSize> poolSizes;
+    for (const VkDescriptorSetLayoutBinding& binding : bindings) {
+        auto it = std::find_if(poolSizes.begin(), poolSizes.end(),
+                               [&](const VkDescriptorPoolSize& size) { return size.type == binding.descriptorType; });
+        if (it == poolSizes.end()) it = poolSizes.insert(poolSizes.end(), {binding.descriptorType, 0});
+        it->descriptorCount += binding.descriptorCount;
+    }
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     poolInfo.maxSets = 1;
-    poolInfo.poolSizeCount = 1;
-    poolInfo.pPoolSizes = &poolSize;
+    poolInfo.poolSizeCount = uint32_t(poolSizes.size());
+    poolInfo.pPoolSizes = poolSizes.data();
     check(ctx.api.vkCreateDescriptorPool(ctx.device, &poolInfo, nullptr, &out.pool), "vkCreateDescriptorPool");
     VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     allocate.descriptorPool = out.pool;
     allocate.descriptorSetCount = 1;
     allocate.pSetLayouts = &out.setLayout;
     check(ctx.api.vkAllocateDescriptorSets(ctx.device, &allocate, &out.set), "vkAllocateDescriptorSets");
+}
+
+void createStorageSet(VulkanContext::Impl& ctx, std::span<const uint32_t> bindings, uint32_t pushBytes,
+                      StorageSet& out) {
+    createDescriptorSet(ctx, storageBindings(bindings), pushBytes, out);
 }
 
 VkPipeline createComputePipeline(VulkanContext::Impl& ctx, VkPipelineLayout layout, std::span<const uint32_t> spirv,

@@ -21,7 +21,10 @@ struct StorageSet {
 // `out` step by step, so destroyStorageSet cleans up after a failure part way.
 void createStorageSet(VulkanContext::Impl& ctx, std::span<const uint32_t> bindings, uint32_t pushBytes,
                       StorageSet& out);
-// Only the layouts of such a set (no pool, no set), `setLayout` first.
+// The same for bindings of any descriptor types (one descriptor each, compute stage).
+void createDescriptorSet(VulkanContext::Impl& ctx, std::span<const VkDescriptorSetLayoutBinding> bindings,
+                         uint32_t pushBytes, StorageSet& out);
+// Only the layouts of a storage set (no pool, no set), `setLayout` first.
 void createStorageLayout(VulkanContext::Impl& ctx, std::span<const uint32_t> bindings, uint32_t pushBytes,
                          VkDescriptorSetLayout& setLayout, VkPipelineLayout& layout);
 // A compute pipeline of `spirv` over `layout`; InternalError naming `what` when the driver rejects it.

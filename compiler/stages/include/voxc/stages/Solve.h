@@ -27,6 +27,10 @@ struct SolveOptions {
 // multigrid past its cycle cap, a terrain past its work limits) is a UserError located at its block.
 void solveBlocks(Program& program, const SolveOptions& options = {});
 
+// Keeps `table`, solved over `block`'s whole box, as the block's table for `world`'s grid: its
+// cells inside the grid (a region program's: World::localBase), in grid-local coordinates.
+void keepTable(const World& world, CurvesBlock& block, SolveTable table);
+
 // Every field node of `program` that samples the terrain `name` reads `map` from now on (solveBlocks
 // gives them the solved map; the viewer's preview a coarse one).
 void replaceTerrainMap(Program& program, const std::string& name, const std::shared_ptr<const SampledMap>& map);
