@@ -52,6 +52,14 @@ protected:
         static VulkanContext context(ContextOptions{.device = "lavapipe"});
         return context;
     }
+    // `session`'s world is the world of a file that says `text` (written over the session's file
+    // and opened without a preview).
+    void expectWorldOfFile(const Session& session, const std::string& text) {
+        write(text);
+        Session written(context(), {.path = path(), .preview = {.curvesCells = 0}});
+        ASSERT_TRUE(written.hasWorld()) << written.lastError();
+        EXPECT_TRUE(written.world().mesh().positions == session.world().mesh().positions);
+    }
     const Parameter& parameter(const Session& session, const std::string& name) {
         const auto& all = session.parameters();
         const auto it = std::find_if(all.begin(), all.end(), [&](const Parameter& p) { return p.name == name; });
@@ -150,10 +158,7 @@ TEST_F(SessionTest, GrammarKeysAreParametersWithTheLanguagesRanges) {
     std::string text = kGrammarProgram;
     text.replace(text.find("CHIP = 0.35"), 11, "CHIP = 0.9");
     text.replace(text.find("iterations = 2"), 14, "iterations = 4");
-    write(text);
-    Session written(context(), {path()});
-    ASSERT_TRUE(written.hasWorld()) << written.lastError();
-    EXPECT_TRUE(written.world().mesh().positions == session.world().mesh().positions);
+    expectWorldOfFile(session, text);
 
     try {
         session.setParameter("weather.iteratons", 3);
@@ -375,10 +380,7 @@ TEST_F(SessionTest, CurvesTerrainAndLsystemSlidersRerunAsIfTheFileSaidSo) {
     text.replace(text.find(secondPoint), secondPoint.size(), "constraint { t = 1; material = sand; amplitude = 3; }");
     text.replace(text.find("rain = 0.5"), 10, "rain = 2");
     text.replace(text.find("expansions = 2"), 14, "expansions = 3");
-    write(text);
-    Session written(context(), {path()});
-    ASSERT_TRUE(written.hasWorld()) << written.lastError();
-    EXPECT_TRUE(written.world().mesh().positions == session.world().mesh().positions);
+    expectWorldOfFile(session, text);
 
     try {
         session.setParameter("cliffs.face.constraint[3].amplitude", 1);
@@ -457,10 +459,7 @@ TEST_F(SessionTest, ALargeSolveIsPreviewedCoarseThenRefinedToThePlainRunsWorld) 
     std::string text = kBlocksProgram;
     const std::string secondPoint = "constraint { t = 1; material = sand; }";
     text.replace(text.find(secondPoint), secondPoint.size(), "constraint { t = 1; material = sand; amplitude = 4; }");
-    write(text);
-    Session written(context(), {.path = path(), .preview = {.curvesCells = 0}});
-    ASSERT_TRUE(written.hasWorld()) << written.lastError();
-    EXPECT_TRUE(written.world().mesh().positions == session.world().mesh().positions);
+    expectWorldOfFile(session, text);
 
     // A file that stops checking while a preview is on screen keeps it, and its refine still
     // comes: the last good world, solved fully.
