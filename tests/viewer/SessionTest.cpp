@@ -33,6 +33,21 @@ feature bridge = arch {
 pipeline { start; union bridge; }
 )";
 
+// A compile and solve cache of the test's own until destroyed, so what a test solves does not
+// depend on earlier runs.
+class OwnCache {
+public:
+    explicit OwnCache(const std::filesystem::path& directory) : previous_(codegen::compileCacheDirectory()) {
+        codegen::setCompileCacheDirectory(directory);
+    }
+    ~OwnCache() { codegen::setCompileCacheDirectory(previous_); }
+    OwnCache(const OwnCache&) = delete;
+    OwnCache& operator=(const OwnCache&) = delete;
+
+private:
+    std::optional<std::filesystem::path> previous_;
+};
+
 class SessionTest : public ::testing::Test {
 protected:
     void SetUp() override {
@@ -352,13 +367,7 @@ TEST_F(SessionTest, CurvesTerrainAndLsystemKeysAreParametersWithTheCheckersRange
 }
 
 TEST_F(SessionTest, CurvesTerrainAndLsystemSlidersRerunAsIfTheFileSaidSo) {
-    // A solve cache of this test's own, so what solves below does not depend on earlier runs.
-    const std::optional<std::filesystem::path> cache = codegen::compileCacheDirectory();
-    codegen::setCompileCacheDirectory(directory_ / "cache");
-    struct Restore {
-        std::optional<std::filesystem::path> cache;
-        ~Restore() { codegen::setCompileCacheDirectory(cache); }
-    } restore{cache};
+    const OwnCache cache(directory_ / "cache");
     write(kBlocksProgram);
     Session session(context(), {path()});
     ASSERT_TRUE(session.hasWorld()) << session.lastError();
@@ -403,12 +412,7 @@ std::optional<bool> waitForRefine(Session& session) {
 }
 
 TEST_F(SessionTest, ALargeSolveIsPreviewedCoarseThenRefinedToThePlainRunsWorld) {
-    const std::optional<std::filesystem::path> cache = codegen::compileCacheDirectory();
-    codegen::setCompileCacheDirectory(directory_ / "cache");
-    struct Restore {
-        std::optional<std::filesystem::path> cache;
-        ~Restore() { codegen::setCompileCacheDirectory(cache); }
-    } restore{cache};
+    const OwnCache cache(directory_ / "cache");
     write(kBlocksProgram);
     // Sizes that make this small file's curves box (32x24x16) and terrain (level 5) previewed:
     // the curves on a 16x12x8 box, the terrain to level 4.
