@@ -30,7 +30,7 @@ const curves::Limits kCurvesLimits{};
 const lsystem::Limits kLsystemLimits{};
 
 // Per kind, in docs/language.md's order. A meta point's keys default to its spline's, so they have
-// no `absent` value. The lsystem's turtle ranges are lsystem::checkDefinition's.
+// no `absent` value. The lsystem's turtle ranges are those lsystem::checkDefinition holds them to.
 const BlockKey kBlockKeys[] = {
     {"curves", "smoothing", {0, double(kCurvesLimits.maxSmoothPasses), true, 1}},
     {"curves", "noise_frequency", {0, 16, false, 0.0625}},
@@ -65,12 +65,12 @@ const BlockKey kBlockKeys[] = {
     {"meta", "capacity", {0, kMeta, false}},
     {"lsystem", "expansions", {0, double(kLsystemLimits.maxExpansions), true, 1}},
     {"lsystem", "seed", {0, kSeedMax, true, 0}},
-    {"lsystem", "angle", {0, 180, false, 45}},
-    {"lsystem", "step", {0, 1e4, false, 4}},
-    {"lsystem", "angle_delta", {0, 180, false, 5}},
-    {"lsystem", "step_delta", {0, 1e4, false, 1}},
-    {"lsystem", "angle_deviation", {0, 180, false, 0}},
-    {"lsystem", "pitch_limit", {0, 90, false, 0}},
+    {"lsystem", "angle", {0, lsystem::kMaxTurtleAngle, false, 45}},
+    {"lsystem", "step", {0, lsystem::kMaxTurtleStep, false, 4}},
+    {"lsystem", "angle_delta", {0, lsystem::kMaxTurtleAngle, false, 5}},
+    {"lsystem", "step_delta", {0, lsystem::kMaxTurtleStep, false, 1}},
+    {"lsystem", "angle_deviation", {0, lsystem::kMaxTurtleAngle, false, 0}},
+    {"lsystem", "pitch_limit", {0, lsystem::kMaxTurtlePitch, false, 0}},
 };
 
 } // namespace

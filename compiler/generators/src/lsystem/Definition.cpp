@@ -72,7 +72,6 @@ void checkRange(std::vector<DefinitionProblem>& problems, const char* key, doubl
 
 // Coordinates beyond this are rejected so positions stay far from overflow after 2^24 steps.
 constexpr double kMaxCoordinate = 1e7;
-constexpr double kMaxStep = 1e4;
 
 void checkAlternatives(std::vector<DefinitionProblem>& problems, const Definition& definition, char symbol,
                        const std::vector<Alternative>& alternatives, StringRole role) {
@@ -125,12 +124,12 @@ std::optional<StringProblem> checkString(const Definition& definition, std::stri
 std::vector<DefinitionProblem> checkDefinition(const Definition& definition) {
     std::vector<DefinitionProblem> problems;
     const TurtleParams& p = definition.params;
-    checkRange(problems, "angle", p.angle, 0, 180);
-    checkRange(problems, "step", p.step, 0, kMaxStep);
-    checkRange(problems, "angle_delta", p.angleDelta, 0, 180);
-    checkRange(problems, "step_delta", p.stepDelta, 0, kMaxStep);
-    checkRange(problems, "angle_deviation", p.angleDeviation, 0, 180);
-    checkRange(problems, "pitch_limit", p.pitchLimit, 0, 90);
+    checkRange(problems, "angle", p.angle, 0, kMaxTurtleAngle);
+    checkRange(problems, "step", p.step, 0, kMaxTurtleStep);
+    checkRange(problems, "angle_delta", p.angleDelta, 0, kMaxTurtleAngle);
+    checkRange(problems, "step_delta", p.stepDelta, 0, kMaxTurtleStep);
+    checkRange(problems, "angle_deviation", p.angleDeviation, 0, kMaxTurtleAngle);
+    checkRange(problems, "pitch_limit", p.pitchLimit, 0, kMaxTurtlePitch);
     checkRange(problems, "yaw", p.yaw, -360, 360);
     checkRange(problems, "pitch", p.pitch, -360, 360);
     for (int axis = 0; axis < 3; ++axis) checkRange(problems, "start", p.start[axis], -kMaxCoordinate, kMaxCoordinate);

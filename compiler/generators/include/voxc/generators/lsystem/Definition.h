@@ -131,6 +131,12 @@ struct DefinitionProblem {
     std::string message;
 };
 
+// The turtle's parameter ranges checkDefinition holds them to (the viewer's sliders take them too):
+// angles in degrees, steps in voxels.
+constexpr double kMaxTurtleAngle = 180;   // angle, angle_delta, angle_deviation
+constexpr double kMaxTurtlePitch = 90;    // pitch_limit
+constexpr double kMaxTurtleStep = 1e4;    // step, step_delta
+
 // Every problem of the definition: parameters out of range (E0007), empty or malformed strings,
 // productions for brackets or macros (E0003), weights that are not finite (E0007), too many
 // alternatives or expansions (E0012). Empty when the definition can be expanded.
