@@ -60,7 +60,7 @@ Result solveCurves(const Constraints& cs, const Options& options, const Limits& 
     const Box& b = cs.box;
     // Every field is allocated where it is first needed and fields are normalised in place: the
     // solve's fresh memory (its peak heap) is most of its page faults (HeapReuse.h).
-    Result r{{}, {}, {}, cs.amplitude, cs.roughness, {}, {}, {}, {}, {}};
+    Result r;
 
     // A solve's Dirichlet mask.
     auto maskOf = [&](uint8_t flag) {
@@ -88,13 +88,6 @@ Result solveCurves(const Constraints& cs, const Options& options, const Limits& 
             r.normalX = std::move(n.x), r.normalY = std::move(n.y), r.normalZ = std::move(n.z);
         });
     }
-    timed(r.phaseMs, "parameters", [&] {
-        const std::vector<uint8_t> fixed = maskOf(kInParams);
-        float maxAmplitude = 1.0f;
-        for (size_t i = 0; i < fixed.size(); ++i)
-            if (fixed[i]) maxAmplitude = std::max(maxAmplitude, cs.amplitude.values[i]);
-        r.solves.push_back(linear("parameters", fixed, {&r.amplitude, &r.roughness}, kSolveTolerance * maxAmplitude, limits));
-    });
     if (!solvers.material && !solvers.surface) {
         // The host's fronts are independent and single-threaded (growLayers): one per core,
         // their fields allocated here (Fronts.h).
@@ -113,6 +106,17 @@ Result solveCurves(const Constraints& cs, const Options& options, const Limits& 
                 cs, r.normalX, r.normalY, r.normalZ, options.propagate);
         });
     }
+    // The parameters after the fronts, which do not read them: the fronts' scratch is free again
+    // by then and holds the parameters' fields and solve, so the solve's peak heap (the fronts
+    // beside the normals) is two fields smaller.
+    timed(r.phaseMs, "parameters", [&] {
+        const std::vector<uint8_t> fixed = maskOf(kInParams);
+        float maxAmplitude = 1.0f;
+        for (size_t i = 0; i < fixed.size(); ++i)
+            if (fixed[i]) maxAmplitude = std::max(maxAmplitude, cs.amplitude.values[i]);
+        r.amplitude = cs.amplitude, r.roughness = cs.roughness;
+        r.solves.push_back(linear("parameters", fixed, {&r.amplitude, &r.roughness}, kSolveTolerance * maxAmplitude, limits));
+    });
     timed(r.phaseMs, "smoothing", [&] {
         r.smoothed = (solvers.smoothing ? solvers.smoothing : Smoother(smoothBinomial))(r.surface.distance, options.smoothPasses);
     });

@@ -81,6 +81,13 @@ SolveTable solveScene(const Scene& scene, const Limits& limits, const Solvers& s
                                                scene.inputOptions),
                                       scene.options, limits, solvers);
     const auto densityStart = std::chrono::steady_clock::now();
+    if (!keepChannels) {
+        // What the density does not read goes back to the heap before the table is allocated, so
+        // the table takes its memory instead of fresh pages (HeapReuse.h).
+        solved.normalX = {}, solved.normalY = {}, solved.normalZ = {};
+        solved.surface = {};
+        solved.material.confidence = {}, solved.material.assigned = {};
+    }
     const Box& box = scene.box;
     const DisplacementBand band(box, scene.noiseFrequency, scene.noiseSeed);
     SolveTable table;

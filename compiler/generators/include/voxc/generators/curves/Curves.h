@@ -27,9 +27,9 @@ struct Result {
     SurfaceField surface;               // raw S
     Field3 smoothed;                    // S after smoothPasses
     std::vector<SolveReport> solves;    // normals (laplace mode), parameters
-    // Wall time of each part in order ("voxelize", "normals", "parameters", then "fronts" (the
-    // host's material and surface fronts, run side by side) or "material" and "surface" (either
-    // on a device), "smoothing"), for reports and benchmarks only: nothing computed depends on it.
+    // Wall time of each part in order ("voxelize", "normals", then "fronts" (the host's material
+    // and surface fronts, run side by side) or "material" and "surface" (either on a device),
+    // "parameters", "smoothing"), for reports and benchmarks only: nothing computed depends on it.
     std::vector<std::pair<std::string, double>> phaseMs;
 };
 
