@@ -112,6 +112,11 @@ ivec3 segmentWorldCell(uint activeTile, uint segmentSlot) {
     return (tile << kTileShift) + ivec3(0, segmentSlot & 7u, (segmentSlot >> 3) & 7u);
 }
 
+// mc_count.glsl and mc_compact.glsl take a block of kBlockSegments consecutive segments (in
+// global key order) to an invocation, and a block is an element of the scan's level 0: the scan,
+// and the compaction's reads of it, are eight times shorter than with a segment to an element.
+const uint kBlockSegments = 8u;
+
 // The grid-local cell of a slot of the tile with index `tile`.
 ivec3 cellOfSlot(uint tile, uint slot) {
     return segmentWorldCell(tile, slot >> 3) - push.gridOrigin.xyz + ivec3(slot & 7u, 0, 0);

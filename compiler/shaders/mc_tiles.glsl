@@ -1,15 +1,16 @@
 #version 450
 // GPU marching cubes, pass 0: one invocation per world-aligned 8^3 tile of voxels (the tiles of
-// cells and one more per axis) records on which sides of iso the voxels of eight regions of the
-// tile lie: the whole tile, its low x, y and z faces, the three edges where two of those faces
+// cells and one more per axis) that the host left unknown records on which sides of iso the
+// voxels of eight regions of the tile lie: the whole tile, its low x, y and z faces, the three edges where two of those faces
 // meet, and its low corner. The cells of a tile read its voxels and the low faces, edges and
 // corner of the tiles after it, so the host decides from these bits alone, exactly, which tiles
 // of cells the surface crosses (GpuMesher.cpp), and the later passes visit only those. Tiles
 // lie inside one chunk (chunks are at least 8 wide and aligned to their size), so a tile inside
 // the grid is read four samples at a time along its rows; a tile wholly outside reads as the
 // outside (density 0) without a read. The host fills the states in first: where the grid's tile
-// ranges put a tile on one side of iso it writes that tile's state, and kUnknownState elsewhere;
-// only the unknown tiles are read here.
+// ranges put a tile on one side of iso it writes that tile's state, and lists the others, which
+// alone are read here: an invocation per listed tile, so that no lane waits on a neighbour's
+// reads (lavapipe runs a pass's every branch under a lane mask).
 
 layout(local_size_x = 64) in;
 
@@ -18,7 +19,8 @@ layout(std430, set = 0, binding = 3) buffer TileStates {
     uint state[];
 } tiles;
 
-const uint kUnknownState = 0xffffffffu; // GpuMesher.cpp, kUnknownTileState
+// The indices of the tiles to read, as the host listed them.
+layout(set = 0, binding = 20) uniform usamplerBuffer unknownTileTexels;
 
 const uint kWhole = 1u, kLowX = 2u, kLowY = 4u, kLowZ = 8u, kEdgeXY = 16u, kEdgeXZ = 32u, kEdgeYZ = 64u, kCorner = 128u;
 
@@ -31,8 +33,9 @@ uint firstVoxelRegions(uint y, uint z) {
 }
 
 void main() {
-    const uint index = invocationIndex(64u);
-    if (index >= push.pass.z || tiles.state[index] != kUnknownState) return;
+    const uint item = invocationIndex(64u);
+    if (item >= push.pass.z) return;
+    const uint index = texelFetch(unknownTileTexels, int(item)).x;
     const uvec3 n = uvec3(push.tileCount.xyz) + 1u;
     const ivec3 tile = push.tileFirst.xyz + ivec3(index % n.x, (index / n.x) % n.y, index / (n.x * n.y));
     const ivec3 first = (tile << kTileShift) - push.gridOrigin.xyz; // grid-local voxel

@@ -9,10 +9,9 @@
 layout(local_size_x = 64) in;
 
 layout(set = 0, binding = 17) uniform usamplerBuffer vertexEdgeTexels; // per vertex: its owner cell's slot | axis << 30
-// Seven words per vertex: position xyz and normal xyz (float bits), material.
-layout(std430, set = 0, binding = 6) writeonly buffer Vertices {
-    uint word[];
-} vertices;
+// Two texels per vertex: position xyz and normal x, then normal yz and material (float bits);
+// two texel stores, where seven words of a storage buffer were seven passes over the lanes.
+layout(set = 0, binding = 6, rgba32ui) uniform writeonly uimageBuffer vertices;
 
 // The samples a vertex reads lie from its edge's lower sample - 1 to its upper sample + 1 along
 // each axis: per axis the address parts (mc_common.glsl, axisPart) of offsets -1 to 2 from the
@@ -73,14 +72,8 @@ void writeVertex(uint index, ivec3 lower, int axis) {
         normal = vec3(0.0);
         normal[axis] = d0 > iso ? 1.0 : -1.0;
     }
-    const uint base = index * 7u;
-    vertices.word[base] = floatBitsToUint(position.x);
-    vertices.word[base + 1u] = floatBitsToUint(position.y);
-    vertices.word[base + 2u] = floatBitsToUint(position.z);
-    vertices.word[base + 3u] = floatBitsToUint(normal.x);
-    vertices.word[base + 4u] = floatBitsToUint(normal.y);
-    vertices.word[base + 5u] = floatBitsToUint(normal.z);
-    vertices.word[base + 6u] = materialAt(d0 > iso ? lower : upper);
+    imageStore(vertices, int(2u * index), floatBitsToUint(vec4(position, normal.x)));
+    imageStore(vertices, int(2u * index + 1u), uvec4(floatBitsToUint(normal.yz), materialAt(d0 > iso ? lower : upper), 0u));
 }
 
 void main() {

@@ -163,9 +163,10 @@ TEST(mesh_GpuMarchingCubes, IsTheSameForEveryChunkSizeAndRepeatedCall) {
     expectNoValidationMessages(context);
 }
 
-// The scan runs over the active tiles' rows of cells, one level per factor of 1024 rows: a grid
-// of fewer than 1024 cells has one block and one scan dispatch; a 110 x 99 x 110 grid meshed
-// without skipping has 15 x 13 x 15 tiles and 100 x 111 rows of them, 166,500 rows: three levels.
+// The scan runs over blocks of eight of the active tiles' rows of cells, one level per factor of
+// 1024 blocks: a grid of fewer than 1024 cells has one scan workgroup and one scan dispatch; a
+// 110 x 99 x 110 grid meshed without skipping has 15 x 13 x 15 tiles and 100 x 111 rows of them,
+// 166,500 rows in 20,813 blocks: three levels.
 TEST(mesh_GpuMarchingCubes, MatchesTheCpuMesherFromOneScanBlockToThreeLevels) {
     VulkanContext& context = validatedLavapipe();
     for (const glm::ivec3 size : {glm::ivec3(9, 8, 7), glm::ivec3(110, 99, 110)}) {

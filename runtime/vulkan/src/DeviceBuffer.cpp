@@ -6,11 +6,11 @@
 
 namespace voxc::vulkan_detail {
 
-namespace {
-
 bool unifiedMemory(const VulkanContext::Impl& ctx) {
     return ctx.info.type == DeviceType::Integrated || ctx.info.type == DeviceType::Cpu;
 }
+
+namespace {
 
 // Highest-scoring allowed memory type with every required flag, or -1.
 int chooseMemoryType(const VulkanContext::Impl& ctx, uint32_t allowedTypes, MemoryUse use) {

@@ -17,6 +17,9 @@ struct DeviceBuffer {
     bool coherent = false;
 };
 
+// The device's memory is the host's (an integrated GPU or a CPU device such as lavapipe): its
+// device-local memory is as fast to map and read as any.
+bool unifiedMemory(const VulkanContext::Impl& ctx);
 // Memory-type choice: `use` decides required and preferred property flags; throws UserError
 // when no memory type fits or the allocation is refused for lack of memory.
 DeviceBuffer createBuffer(VulkanContext::Impl& ctx, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUse use);

@@ -22,13 +22,14 @@ namespace {
 
 constexpr uint32_t kGroupSize = 64;        // local size of the tiles, count, compact and emit passes
 constexpr uint32_t kScanBlock = 1024;      // elements per scan workgroup (mc_scan.glsl)
+constexpr uint32_t kBlockSegments = 8;     // segments per count and compaction invocation, a scan element (mc_common.glsl)
 constexpr int kTileShift = 3;              // tiles of 8^3 cells (mc_common.glsl)
 constexpr uint32_t kTileSide = 1u << kTileShift;
 constexpr uint32_t kTileCells = kTileSide * kTileSide * kTileSide;
 constexpr uint32_t kTileSegments = kTileSide * kTileSide; // rows of a tile's cells along x
 constexpr uint32_t kNoRank = UINT32_MAX;
 constexpr uint32_t kCaseWords = 10;        // per case: triangle count, 36 edge bytes
-constexpr uint32_t kVertexWords = 7;       // position, normal, material
+constexpr uint32_t kVertexWords = 8;       // position, normal, material, padding: two texels (mc_vertices.glsl)
 constexpr uint32_t kTriangleWords = 4;     // three indices, material
 constexpr VkDeviceSize kTotalsBytes = 4 * sizeof(uint32_t); // a scan element: vertices, triangles, active cells
 constexpr VkDeviceSize kActiveCellBytes = 4 * sizeof(uint32_t); // slot, first vertex, first triangle, counts
@@ -66,21 +67,21 @@ std::string mib(uint64_t bytes) { return fmt::format("{:.1f} MiB", double(bytes)
 
 uint32_t groupsOf(uint64_t items, uint32_t perGroup) { return uint32_t((items + perGroup - 1) / perGroup); }
 
-// A tile state mc_tiles.glsl never writes (it sets bits 0-15 only): the tile's voxels are to be read.
-constexpr uint32_t kUnknownTileState = UINT32_MAX;
 constexpr uint32_t kSolidTileState = 0xffu, kAirTileState = 0xffu << 8; // all eight regions solid, all air
 
 // The states of the voxel tiles (`n` per axis from world tile `tileFirst`) that the grid's tile
-// ranges put on one side of iso, as mc_tiles.glsl would record them, and kUnknownTileState for
-// the others (all of them without ranges). A tile's voxels outside the grid read 0, as there.
+// ranges put on one side of iso, as mc_tiles.glsl would record them; the indices of the others
+// (all of them without ranges), which mc_tiles.glsl reads, go to `unknown`. A tile's voxels
+// outside the grid read 0, as there.
 void knownTileStates(const TileRanges* ranges, float iso, glm::ivec3 tileFirst, glm::ivec3 n, const ChunkLayout& layout,
-                     uint32_t* states) {
-    size_t i = 0;
+                     uint32_t* states, std::vector<uint32_t>& unknown) {
+    unknown.clear();
+    uint32_t i = 0;
     for (int z = 0; z < n.z; ++z)
         for (int y = 0; y < n.y; ++y)
             for (int x = 0; x < n.x; ++x, ++i) {
                 if (!ranges) {
-                    states[i] = kUnknownTileState;
+                    unknown.push_back(i);
                     continue;
                 }
                 const glm::ivec3 tile = tileFirst + glm::ivec3(x, y, z);
@@ -95,7 +96,12 @@ void knownTileStates(const TileRanges* ranges, float iso, glm::ivec3 tileFirst, 
                         high = std::max(high, 0.0f);
                     }
                 }
-                states[i] = low > iso ? kSolidTileState : high <= iso ? kAirTileState : kUnknownTileState;
+                if (low > iso)
+                    states[i] = kSolidTileState;
+                else if (high <= iso)
+                    states[i] = kAirTileState;
+                else
+                    unknown.push_back(i);
             }
 }
 
@@ -183,9 +189,10 @@ struct GpuMarchingCubes::Impl {
     uint32_t tiles = 0;                    // of cells; the voxel tiles are one more per axis
     uint32_t voxelTiles = 0;
     McPipelines pipelines;
-    // Host-visible: tileStates (written by mc_tiles), the lists the host makes from them
-    // (tileRanks, activeTiles, segments), and `results` (the totals, then the mesh).
-    DeviceBuffer caseTable, tileStates, tileRanks, activeTiles, segments, segmentCases, cellInfo, scanLevels, activeCells,
+    // Host-visible: tileStates (written by mc_tiles), the tiles it reads (unknownTiles), the lists
+    // the host makes from their states (tileRanks, activeTiles, segments), and `results` (the
+    // totals, then the mesh where it is copied).
+    DeviceBuffer caseTable, tileStates, unknownTiles, tileRanks, activeTiles, segments, segmentCases, cellInfo, scanLevels, activeCells,
         vertexEdges, vertices, triangles, results;
     // At the texel bindings: views of the executor's buffers and of these (bindAll).
     std::array<VkBufferView, kMcBindingCount> texelViews{};
@@ -205,6 +212,10 @@ struct GpuMarchingCubes::Impl {
     // smaller; true when replaced (a new buffer may reuse the old handle's value, so callers
     // cannot compare handles to know whether descriptors need an update).
     bool ensureBuffer(DeviceBuffer& buffer, VkDeviceSize bytes, MemoryUse use);
+    // Where the device's memory is the host's (a CPU device such as lavapipe, an integrated GPU),
+    // the passes write the mesh into mapped memory that the host reads in place (HostAccess);
+    // elsewhere into device memory, copied to a mapped buffer after the passes.
+    MemoryUse meshUse() const { return unifiedMemory(ctx) ? MemoryUse::HostAccess : MemoryUse::Device; }
     // Copies `words` into the host-visible `buffer` for the device; true when the buffer was replaced.
     bool upload(DeviceBuffer& buffer, const std::vector<uint32_t>& words);
     // Points every binding at its buffer, through new texel views where it is read as texels.
@@ -222,7 +233,7 @@ GpuMarchingCubes::Impl::~Impl() {
     if (commandPool) ctx.api.vkDestroyCommandPool(ctx.device, commandPool, nullptr);
     destroyTexelViews();
     for (DeviceBuffer* b : {&results, &triangles, &vertices, &vertexEdges, &activeCells, &scanLevels, &cellInfo, &segmentCases, &segments,
-                            &activeTiles, &tileRanks, &tileStates, &caseTable})
+                            &activeTiles, &tileRanks, &unknownTiles, &tileStates, &caseTable})
         destroyBuffer(ctx, *b);
     destroyMcPipelines(ctx, pipelines);
 }
@@ -279,20 +290,17 @@ void GpuMarchingCubes::Impl::createBuffers() {
     ensureBuffer(tileStates, VkDeviceSize(voxelTiles) * sizeof(uint32_t), MemoryUse::HostAccess);
     ensureBuffer(tileRanks, VkDeviceSize(tiles) * sizeof(uint32_t), MemoryUse::HostAccess);
     // Placeholders until a mesh has active tiles and triangles: every binding of the set must name a buffer.
-    for (DeviceBuffer* b : {&activeTiles, &segments}) ensureBuffer(*b, 16, MemoryUse::HostAccess);
-    for (DeviceBuffer* b : {&segmentCases, &cellInfo, &scanLevels, &activeCells, &vertexEdges, &vertices, &triangles})
-        ensureBuffer(*b, 16, MemoryUse::Device);
+    for (DeviceBuffer* b : {&unknownTiles, &activeTiles, &segments}) ensureBuffer(*b, 16, MemoryUse::HostAccess);
+    for (DeviceBuffer* b : {&segmentCases, &cellInfo, &scanLevels, &activeCells, &vertexEdges}) ensureBuffer(*b, 16, MemoryUse::Device);
+    for (DeviceBuffer* b : {&vertices, &triangles}) ensureBuffer(*b, 16, meshUse());
     ensureBuffer(results, kTotalsBytes, MemoryUse::HostAccess);
 }
 
 void GpuMarchingCubes::Impl::bindAll() {
     std::array<VkBuffer, kMcBindingCount> buffers{};
     buffers[kMcTileStates] = tileStates.buffer;
-    buffers[kMcCellInfo] = cellInfo.buffer;
     buffers[kMcSegmentCases] = segmentCases.buffer;
     buffers[kMcScanLevels] = scanLevels.buffer;
-    buffers[kMcVertices] = vertices.buffer;
-    buffers[kMcVertexEdges] = vertexEdges.buffer;
     struct View {
         McBinding binding;
         VkBuffer buffer;
@@ -303,6 +311,7 @@ void GpuMarchingCubes::Impl::bindAll() {
                           {kMcMaterialTexels, source.materials, VK_FORMAT_R32_UINT},
                           {kMcCaseTexels, caseTable.buffer, VK_FORMAT_R32_UINT},
                           {kMcTileRankTexels, tileRanks.buffer, VK_FORMAT_R32_UINT},
+                          {kMcUnknownTileTexels, unknownTiles.buffer, VK_FORMAT_R32_UINT},
                           {kMcActiveTileTexels, activeTiles.buffer, VK_FORMAT_R32_UINT},
                           {kMcSegmentTexels, segments.buffer, VK_FORMAT_R32_UINT},
                           {kMcCellInfoTexels, cellInfo.buffer, VK_FORMAT_R32_UINT},
@@ -311,7 +320,10 @@ void GpuMarchingCubes::Impl::bindAll() {
                           {kMcVertexEdgeTexels, vertexEdges.buffer, VK_FORMAT_R32_UINT},
                           {kMcSegmentCaseTexels, segmentCases.buffer, VK_FORMAT_R32G32_UINT},
                           {kMcTriangles, triangles.buffer, mcStorageTexelFormat(kMcTriangles)},
-                          {kMcActiveCells, activeCells.buffer, mcStorageTexelFormat(kMcActiveCells)}};
+                          {kMcActiveCells, activeCells.buffer, mcStorageTexelFormat(kMcActiveCells)},
+                          {kMcCellInfo, cellInfo.buffer, mcStorageTexelFormat(kMcCellInfo)},
+                          {kMcVertices, vertices.buffer, mcStorageTexelFormat(kMcVertices)},
+                          {kMcVertexEdges, vertexEdges.buffer, mcStorageTexelFormat(kMcVertexEdges)}};
     destroyTexelViews();
     for (const View& view : views) {
         VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
@@ -410,13 +422,17 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     // from its voxels), then on the host the tiles of cells the surface crosses (all of them when
     // uniform regions are not skipped) and their segments.
     const std::optional<TileRanges>& ranges = *s.source.tileRanges;
+    std::vector<uint32_t> unknown;
     knownTileStates(ranges && options.skipUniformChunks ? &*ranges : nullptr, options.iso, s.tileFirst, s.tileCount + 1, s.layout,
-                    static_cast<uint32_t*>(s.tileStates.mapped));
+                    static_cast<uint32_t*>(s.tileStates.mapped), unknown);
     flushForDevice(s.ctx, s.tileStates); // the queue submit makes it visible to the device
-    s.begin();
-    s.dispatch(kMcTiles, push, groupsOf(s.voxelTiles, kGroupSize), s.voxelTiles);
-    memoryBarrier(api, s.cmd, kCompute, kHostRead);
-    s.submitAndWait();
+    if (!unknown.empty()) {
+        if (s.upload(s.unknownTiles, unknown)) s.bindAll();
+        s.begin();
+        s.dispatch(kMcTiles, push, groupsOf(unknown.size(), kGroupSize), uint32_t(unknown.size()));
+        memoryBarrier(api, s.cmd, kCompute, kHostRead);
+        s.submitAndWait();
+    }
     invalidateForHost(s.ctx, s.tileStates);
     TileLists lists = listTiles(static_cast<const uint32_t*>(s.tileStates.mapped), s.tileFirst, s.tileCount, s.layout,
                                 options.skipUniformChunks);
@@ -432,8 +448,9 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     const uint32_t segmentCount = uint32_t(lists.segments.size());
     if (segmentCount == 0) return mesh;
 
-    // The scan's levels: the segments, then one element per 1024 of the level below, down to one.
-    std::vector<uint32_t> levelSize = {segmentCount};
+    // The scan's levels: the blocks of segments, then one element per 1024 of the level below, down to one.
+    const uint32_t blockCount = groupsOf(segmentCount, kBlockSegments);
+    std::vector<uint32_t> levelSize = {blockCount};
     do levelSize.push_back(groupsOf(levelSize.back(), kScanBlock));
     while (levelSize.back() > 1);
     VOXC_ASSERT(levelSize.size() <= 4); // McPush::levelOffset
@@ -453,7 +470,7 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
 
     // Count and scan, then the totals to the host.
     s.begin();
-    s.dispatch(kMcCount, push, groupsOf(segmentCount, kGroupSize), segmentCount);
+    s.dispatch(kMcCount, push, groupsOf(blockCount, kGroupSize), segmentCount);
     for (uint32_t level = 0; level + 1 < levelSize.size(); ++level) {
         memoryBarrier(api, s.cmd, kCompute, kCompute);
         push.pass[3] = level;
@@ -470,42 +487,56 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     const uint32_t vertexCount = counts[0], triangleCount = counts[1], activeCount = counts[2];
     if (triangleCount == 0) return mesh;
 
-    // Emit into buffers of the counted size; words per element times the count stays below 2^32
-    // because the byte size is at most maxStorageBufferRange.
+    // Emit into buffers of the counted size, written as texels (two a vertex, one a triangle).
     const uint64_t vertexBytes = uint64_t(vertexCount) * kVertexWords * sizeof(uint32_t);
     const uint64_t triangleBytes = uint64_t(triangleCount) * kTriangleWords * sizeof(uint32_t);
-    const uint64_t maxRange = s.ctx.properties.limits.maxStorageBufferRange;
-    if (std::max(vertexBytes, triangleBytes) > maxRange)
-        throw UserError(fmt::format("the mesh has {} vertices and {} triangles, a {} and a {} buffer on the device, more than "
-                                    "the Vulkan device '{}' can bind ({}); mesh on the host instead (voxc run --mesh-on host)",
-                                    vertexCount, triangleCount, mib(vertexBytes), mib(triangleBytes), s.ctx.info.name, mib(maxRange)));
-    VOXC_ASSERT(vertexCount < (1u << 29)); // mc_compact.glsl keeps a first vertex above 3 bits: 28 bytes each fit 2^32
-    bool replaced = s.ensureBuffer(s.vertices, vertexBytes, MemoryUse::Device);
-    replaced |= s.ensureBuffer(s.triangles, triangleBytes, MemoryUse::Device);
+    // At most maxTexelBufferElements texels a buffer, and below 2^29 vertices: mc_compact.glsl
+    // keeps a first vertex above 3 bits of a word.
+    const uint64_t maxTriangles = s.ctx.properties.limits.maxTexelBufferElements;
+    const uint64_t maxVertices = std::min<uint64_t>(maxTriangles / 2, (uint64_t(1) << 29) - 1);
+    if (vertexCount > maxVertices || triangleCount > maxTriangles)
+        throw UserError(fmt::format("the mesh has {} vertices and {} triangles, more than marching cubes on the Vulkan device "
+                                    "'{}' can write ({} vertices, {} triangles); mesh on the host instead (voxc run --mesh-on host)",
+                                    vertexCount, triangleCount, s.ctx.info.name, maxVertices, maxTriangles));
+    const bool inPlace = s.meshUse() == MemoryUse::HostAccess;
+    bool replaced = s.ensureBuffer(s.vertices, vertexBytes, s.meshUse());
+    replaced |= s.ensureBuffer(s.triangles, triangleBytes, s.meshUse());
     replaced |= s.ensureBuffer(s.activeCells, VkDeviceSize(activeCount) * kActiveCellBytes, MemoryUse::Device);
     replaced |= s.ensureBuffer(s.vertexEdges, VkDeviceSize(vertexCount) * sizeof(uint32_t), MemoryUse::Device);
-    s.ensureBuffer(s.results, vertexBytes + triangleBytes, MemoryUse::HostAccess);
+    if (!inPlace) s.ensureBuffer(s.results, vertexBytes + triangleBytes, MemoryUse::HostAccess);
     if (replaced) s.bindAll();
     // The active cells and the vertices in key order, then the vertices and the triangles
     // (independent of each other) over those lists alone.
     s.begin();
-    s.dispatch(kMcCompact, push, groupsOf(segmentCount, kGroupSize), segmentCount);
+    s.dispatch(kMcCompact, push, groupsOf(blockCount, kGroupSize), segmentCount);
     memoryBarrier(api, s.cmd, kCompute, kCompute);
     s.dispatch(kMcEmitVertices, push, groupsOf(vertexCount, kGroupSize), vertexCount);
     s.dispatch(kMcEmitTriangles, push, groupsOf(activeCount, kGroupSize), activeCount);
-    memoryBarrier(api, s.cmd, kCompute, kTransfer);
-    const VkBufferCopy vertexCopy{0, 0, vertexBytes};
-    api.vkCmdCopyBuffer(s.cmd, s.vertices.buffer, s.results.buffer, 1, &vertexCopy);
-    const VkBufferCopy triangleCopy{0, vertexBytes, triangleBytes};
-    api.vkCmdCopyBuffer(s.cmd, s.triangles.buffer, s.results.buffer, 1, &triangleCopy);
-    memoryBarrier(api, s.cmd, kTransfer, kHostRead);
-    s.submitAndWait();
-    invalidateForHost(s.ctx, s.results);
+    const uint32_t* vertexWords = nullptr;
+    const uint32_t* triangleWords = nullptr;
+    if (inPlace) {
+        memoryBarrier(api, s.cmd, kCompute, kHostRead);
+        s.submitAndWait();
+        invalidateForHost(s.ctx, s.vertices);
+        invalidateForHost(s.ctx, s.triangles);
+        vertexWords = static_cast<const uint32_t*>(s.vertices.mapped);
+        triangleWords = static_cast<const uint32_t*>(s.triangles.mapped);
+    } else {
+        memoryBarrier(api, s.cmd, kCompute, kTransfer);
+        const VkBufferCopy vertexCopy{0, 0, vertexBytes};
+        api.vkCmdCopyBuffer(s.cmd, s.vertices.buffer, s.results.buffer, 1, &vertexCopy);
+        const VkBufferCopy triangleCopy{0, vertexBytes, triangleBytes};
+        api.vkCmdCopyBuffer(s.cmd, s.triangles.buffer, s.results.buffer, 1, &triangleCopy);
+        memoryBarrier(api, s.cmd, kTransfer, kHostRead);
+        s.submitAndWait();
+        invalidateForHost(s.ctx, s.results);
+        vertexWords = static_cast<const uint32_t*>(s.results.mapped);
+        triangleWords = vertexWords + vertexBytes / sizeof(uint32_t);
+    }
 
-    const auto* words = static_cast<const uint32_t*>(s.results.mapped);
     auto floatAt = [&](size_t i) {
         float f;
-        std::memcpy(&f, &words[i], sizeof f);
+        std::memcpy(&f, &vertexWords[i], sizeof f);
         return f;
     };
     mesh.positions.resize(vertexCount);
@@ -515,9 +546,8 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
         const size_t w = v * kVertexWords;
         mesh.positions[v] = {floatAt(w), floatAt(w + 1), floatAt(w + 2)};
         mesh.normals[v] = {floatAt(w + 3), floatAt(w + 4), floatAt(w + 5)};
-        mesh.vertexMaterials[v] = uint8_t(words[w + 6]);
+        mesh.vertexMaterials[v] = uint8_t(vertexWords[w + 6]);
     }
-    const uint32_t* triangleWords = words + vertexBytes / sizeof(uint32_t);
     mesh.triangles.resize(size_t(triangleCount) * 3);
     mesh.triangleMaterials.resize(triangleCount);
     for (size_t t = 0; t < triangleCount; ++t) {

@@ -48,16 +48,23 @@ enum McBinding : uint32_t {
     kMcVertexEdgeTexels,
     kMcSegmentCases,
     kMcSegmentCaseTexels,
+    kMcUnknownTileTexels, // the tiles mc_tiles.glsl reads
     kMcBindingCount
 };
 constexpr bool isMcTexelBinding(uint32_t binding) {
     return binding == kMcDensityTexels || binding == kMcMaterialTexels || binding == kMcCaseTexels || binding == kMcQuadTexels ||
            (binding >= kMcTileRankTexels && binding <= kMcSegmentTexels) ||
-           (binding >= kMcCellInfoTexels && binding <= kMcVertexEdgeTexels) || binding == kMcSegmentCaseTexels;
+           (binding >= kMcCellInfoTexels && binding <= kMcVertexEdgeTexels) || binding == kMcSegmentCaseTexels ||
+           binding == kMcUnknownTileTexels;
 }
-// Written as texels (imageStore): lavapipe stores a texel's four words in one pass over the lanes.
-constexpr bool isMcStorageTexelBinding(uint32_t binding) { return binding == kMcTriangles || binding == kMcActiveCells; }
-constexpr VkFormat mcStorageTexelFormat(uint32_t) { return VK_FORMAT_R32G32B32A32_UINT; }
+// Written as texels (imageStore): lavapipe stores a texel's words in one pass over the lanes.
+constexpr bool isMcStorageTexelBinding(uint32_t binding) {
+    return binding == kMcTriangles || binding == kMcActiveCells || binding == kMcVertices || binding == kMcCellInfo ||
+           binding == kMcVertexEdges;
+}
+constexpr VkFormat mcStorageTexelFormat(uint32_t binding) {
+    return binding == kMcCellInfo || binding == kMcVertexEdges ? VK_FORMAT_R32_UINT : VK_FORMAT_R32G32B32A32_UINT;
+}
 
 struct McPipelines : StorageSet {
     std::array<VkPipeline, kMcPassCount> pipelines{};
