@@ -11,7 +11,8 @@
 // Where the field's value is not finite the combine uses 0 instead (finiteDensity, counted);
 // a constant box's value is finite (interval analysis proves no NaN or infinity exact).
 // Noise calls the column shares work for (noise_column.glsl) fill noiseColumnValues a block of
-// COLUMN_BLOCK voxels at a time, before the voxels of the block read them.
+// COLUMN_BLOCK voxels at a time, before the voxels of the block read them; point-set lookups along
+// the column (point_set_column.glsl) fill pointSetColumnValues the same way.
 
 #include "common.glsl"
 #include "nonfinite.glsl"
@@ -19,6 +20,7 @@
 
 const int COLUMN_BLOCK = 256;
 // <<COLUMN_NOISE>>
+// <<COLUMN_POINT_SETS>>
 // <<LIBRARIES>>
 
 // <<DISPATCH_SHAPE>>

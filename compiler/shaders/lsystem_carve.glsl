@@ -35,7 +35,9 @@ float pointSetFloat(int at) { return intBitsToFloat(pointSets.words[at]); }
 // item min(i, count - 1), always in the list, and keeps its distance only while `live`: before
 // the list's end and before the first lower bound not below the nearest so far (every later one
 // is not either), so the nearest is the one a loop over the items one by one finds. No branch:
-// the driver compiles it quickly and the lanes of a group do not diverge.
+// the driver compiles it quickly and the lanes of a group do not diverge. A field kernel whose
+// point is its column's (x and z fixed, y along the walk) takes these steps through
+// point_set_column.glsl instead, once per cell for the voxels of its walk in that cell.
 #ifndef POINT_SET_BLOCK
 #define POINT_SET_BLOCK 8
 #endif

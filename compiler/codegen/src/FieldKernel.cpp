@@ -124,9 +124,11 @@ struct FieldCode {
     std::vector<std::string> names;
     std::string column, voxel; // statements before and inside the y loop
     std::vector<std::string_view> libraries;
-    // Noise calls the column shares work for (noise_column.glsl): the kernel's declarations, and
-    // the fills at the start of each block of the column.
-    std::string columnNoise, block;
+    // Noise calls and point-set lookups the column shares work for (noise_column.glsl,
+    // point_set_column.glsl): the kernel's declarations, and the fills at the start of each block
+    // of the column.
+    std::string columnNoise, columnPointSets, block;
+    std::string columnPointSetArgY; // pointSetColumnArgY's cases
 };
 
 // Whether componentGlsl's expression for node `i`'s component `axis` is built from constants alone.
@@ -183,6 +185,32 @@ std::optional<std::string> componentGlsl(const ir::IrField& field, const std::ve
     return fmt::format("({} {} {})", literals ? "driverFolded(" + *a + ")" : *a, op, *b);
 }
 
+// The y of a column walk's point as a function of worldY (the voxel's world y), when the point's
+// y depends on y alone and its x and z are the same along the column (nullopt otherwise), with
+// the column's x and z in `x` and `z`.
+std::optional<std::string> columnPointY(const ir::IrModule& module, const ir::IrField& field,
+                                        const std::vector<bool>& opaque, uint32_t point, const FieldCode& code,
+                                        std::string& x, std::string& z) {
+    const auto columnLeaf = [&](uint32_t n, int axis) -> std::optional<std::string> {
+        if (!field.perColumn.at(n)) return std::nullopt;
+        if (field.nodes[n].type == Type::Vec3) return fmt::format("{}.{}", code.names[n], "xyz"[axis]);
+        return code.names[n];
+    };
+    const auto alongYLeaf = [&](uint32_t n, int) -> std::optional<std::string> {
+        const FieldNode& leaf = field.nodes[n];
+        if (leaf.kind != FieldNode::Kind::Input || int(leaf.input) % 3 != 1) return std::nullopt;
+        if (leaf.input == FieldInput::WorldY) return "float(worldY)";
+        return fmt::format("float({})", fileLocalGlsl(module.world, 1, "worldY"));
+    };
+    const std::optional<std::string> columnX = componentGlsl(field, opaque, point, 0, columnLeaf);
+    const std::optional<std::string> y = componentGlsl(field, opaque, point, 1, alongYLeaf);
+    const std::optional<std::string> columnZ = componentGlsl(field, opaque, point, 2, columnLeaf);
+    if (!columnX || !y || !columnZ) return std::nullopt;
+    x = *columnX;
+    z = *columnZ;
+    return y;
+}
+
 // Each column noise call holds a block of COLUMN_BLOCK floats per invocation (1 KiB); past this
 // many in one kernel the calls are evaluated per voxel, so private memory stays small on a GPU.
 constexpr int kMaxColumnNoiseSites = 4;
@@ -198,30 +226,39 @@ bool emitColumnNoise(const ir::IrModule& module, const ir::IrField& field, const
     if ((!fractal && name != "perlin3") || site >= kMaxColumnNoiseSites) return false;
     for (size_t k = 1; k < node.operands.size(); ++k)
         if (!field.perColumn.at(node.operands[k])) return false;
-    const auto columnLeaf = [&](uint32_t n, int axis) -> std::optional<std::string> {
-        if (!field.perColumn.at(n)) return std::nullopt;
-        if (field.nodes[n].type == Type::Vec3) return fmt::format("{}.{}", code.names[n], "xyz"[axis]);
-        return code.names[n];
-    };
-    const auto alongYLeaf = [&](uint32_t n, int) -> std::optional<std::string> {
-        const FieldNode& leaf = field.nodes[n];
-        if (leaf.kind != FieldNode::Kind::Input || int(leaf.input) % 3 != 1) return std::nullopt;
-        if (leaf.input == FieldInput::WorldY) return "float(worldY)";
-        return fmt::format("float({})", fileLocalGlsl(module.world, 1, "worldY"));
-    };
-    const uint32_t point = node.operands[0];
-    const std::optional<std::string> x = componentGlsl(field, opaque, point, 0, columnLeaf);
-    const std::optional<std::string> y = componentGlsl(field, opaque, point, 1, alongYLeaf);
-    const std::optional<std::string> z = componentGlsl(field, opaque, point, 2, columnLeaf);
-    if (!x || !y || !z) return false;
+    std::string x, z;
+    const std::optional<std::string> y = columnPointY(module, field, opaque, node.operands[0], code, x, z);
+    if (!y) return false;
     const std::vector<uint32_t>& a = node.operands;
     const std::string arguments =
         fractal ? fmt::format("{}, {}, {}, uint({}), {}", code.names[a[1]], code.names[a[2]], code.names[a[3]],
                               code.names[a[4]], name == "fbm" ? 0 : 1)
                 : fmt::format("1, 1.0, 1.0, uint({}), 0", code.names[a[1]]); // one fbm octave is perlin3, bit for bit
-    code.column += fmt::format("precise float noiseColumnX{0} = {1};\nprecise float noiseColumnZ{0} = {2};\n", site, *x, *z);
+    code.column += fmt::format("precise float noiseColumnX{0} = {1};\nprecise float noiseColumnZ{0} = {2};\n", site, x, z);
     code.block += fmt::format("noiseColumnFill({0}, blockY, blockEnd, noiseColumnX{0}, noiseColumnZ{0}, {1});\n", site, arguments);
     code.columnNoise += fmt::format("    case {}: {{ precise float r = {}; return r; }}\n", site, *y);
+    return true;
+}
+
+// Point-set lookups along the column hold kPointSetAnchorsAlongY vec2 per invocation; past this
+// many in one kernel they are made per voxel.
+constexpr int kMaxColumnPointSetSites = 4;
+static_assert(kPointSetAnchorsAlongY == 8, "pointSetColumnFill (point_set_column.glsl) fills 8 voxels");
+
+// Emits point-set node `i` (of set `set`) through point_set_column.glsl when its point's x and z
+// are the same along the column and its y depends on y alone: the block's fill looks the voxels
+// up together; false otherwise (the lookup is then emitted per voxel).
+bool emitColumnPointSet(const ir::IrModule& module, const ir::IrField& field, const std::vector<bool>& opaque,
+                        uint32_t i, ptrdiff_t set, int site, FieldCode& code) {
+    if (site >= kMaxColumnPointSetSites) return false;
+    std::string x, z;
+    const std::optional<std::string> y = columnPointY(module, field, opaque, field.nodes[i].operands[0], code, x, z);
+    if (!y) return false;
+    code.column += fmt::format("precise float pointSetColumnX{0} = {1};\nprecise float pointSetColumnZ{0} = {2};\n", site, x, z);
+    code.block += fmt::format("pointSetColumnFill({0}, {1}, pointSetColumnX{0}, pointSetColumnZ{0}, blockY, blockEnd, "
+                              "pointSetColumnValues{0});\n", site, set);
+    code.columnPointSets += fmt::format("vec2 pointSetColumnValues{}[{}];\n", site, kPointSetAnchorsAlongY);
+    code.columnPointSetArgY += fmt::format("    case {}: {{ precise float r = {}; return r; }}\n", site, *y);
     return true;
 }
 
@@ -242,7 +279,7 @@ FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::s
     const std::vector<bool> opaque = opaqueConstants(field);
     const std::vector<bool> asVariable = constantCallOperands(field);
     std::set<std::string_view> seenLibraries;
-    int columnNoiseSites = 0;
+    int columnNoiseSites = 0, columnPointSetSites = 0;
     for (size_t i = 0; i < field.nodes.size(); ++i) {
         const FieldNode& node = field.nodes[i];
         if (node.kind == FieldNode::Kind::Constant) {
@@ -269,6 +306,11 @@ FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::s
             value = fmt::format("pointSetDistances({}, {})", it - pointSets.begin(), code.names[node.operands[0]]);
             what = "point set distances";
             if (seenLibraries.insert(kPointSetLibrary).second) code.libraries.push_back(kPointSetLibrary);
+            if (!stampFrame && !field.perColumn.at(i) &&
+                emitColumnPointSet(module, field, opaque, uint32_t(i), it - pointSets.begin(), columnPointSetSites, code)) {
+                value = fmt::format("pointSetColumnValues{}[y - blockY]", columnPointSetSites++);
+                what += " along the column";
+            }
             break;
         }
         case FieldNode::Kind::Map: {
@@ -327,6 +369,15 @@ FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::s
                                        "    int worldY = push.gridOrigin.y + localY;\n"
                                        "    switch (site) {{\n{}    }}\n    return 0.0;\n}}\n",
                                        columnNoiseSites, code.columnNoise);
+    }
+    if (columnPointSetSites > 0) {
+        code.libraries.push_back("point_set_column.glsl");
+        code.columnPointSets += fmt::format("// Each column point-set lookup's point: its y at the column's voxel y.\n"
+                                            "float pointSetColumnArgY(int site, int y) {{\n"
+                                            "    int localY = push.anchorStart.y + y * push.anchorStep.y;\n"
+                                            "    int worldY = push.gridOrigin.y + localY;\n"
+                                            "    switch (site) {{\n{}    }}\n    return 0.0;\n}}\n",
+                                            code.columnPointSetArgY);
     }
     return code;
 }
@@ -549,6 +600,8 @@ std::string fieldKernelSource(const ir::IrModule& module, const ir::IrField& fie
          {"LIBRARIES", libraries},
          {"DISPATCH_SHAPE", dispatchShapeGlsl(fieldDispatchShape(module, field))},
          {"COLUMN_NOISE", code.columnNoise.empty() ? "// No noise call shares work along the column.\n" : code.columnNoise},
+         {"COLUMN_POINT_SETS",
+          code.columnPointSets.empty() ? "// No point-set lookup shares work along the column.\n" : code.columnPointSets},
          {"COLUMN_VALUES", code.column.empty() ? "// No value is the same along the column.\n" : code.column},
          {"BLOCK_VALUES", code.block.empty() ? "// Nothing to fill per block.\n" : code.block},
          {"VOXEL_VALUES", code.voxel.empty() ? "// Every value is the same along the column.\n" : code.voxel},

@@ -13,7 +13,8 @@
 // Where the field's value is not finite the combine uses 0 instead (finiteDensity, counted);
 // a constant box's value is finite (interval analysis proves no NaN or infinity exact).
 // Noise calls the column shares work for (noise_column.glsl) fill noiseColumnValues a block of
-// COLUMN_BLOCK voxels at a time, before the voxels of the block read them.
+// COLUMN_BLOCK voxels at a time, before the voxels of the block read them; point-set lookups along
+// the column (point_set_column.glsl) fill pointSetColumnValues the same way.
 
 // ---- begin common.glsl ----
 // Declarations every voxc kernel shares: the push block (voxc::PushBlock in
@@ -127,6 +128,7 @@ float driverFolded(float c) { return c; }
 
 const int COLUMN_BLOCK = 256;
 // No noise call shares work along the column.
+// No point-set lookup shares work along the column.
 // No function library needed.
 
 layout(local_size_x = 8, local_size_y = 1, local_size_z = 8) in;
