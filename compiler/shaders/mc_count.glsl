@@ -2,8 +2,8 @@
 // GPU marching cubes, pass 1: one invocation per block of segments of the active tiles
 // (mc_common.glsl), in global key order: the case of each of their cells (bit c: corner c solid),
 // a segment's eight bytes in two words, and the block's totals of (vertices, triangles, active
-// cells), level 0 of the scan (mc_scan.glsl). A cell has a vertex per crossed edge it owns (those leaving its minimum corner)
-// and the case table's triangles; mc_compact.glsl derives the same from the cases. The segment's
+// cells), level 0 of the scan (mc_scan.glsl). A cell has a vertex per crossed edge it owns (those
+// leaving its minimum corner) and the case table's triangles; mc_compact.glsl derives the same from the cases. The segment's
 // cells read four rows of 9 samples, read first into bits. Two words a segment, where a word
 // per cell was written before: lavapipe stores to a storage buffer one lane at a time.
 
@@ -18,26 +18,38 @@ layout(std430, set = 0, binding = 5) writeonly buffer Scan {
 
 // The segment's samples: x from range.x to range.x + 8 (those past range.y are not used) in the
 // four rows at (y, z), (y + 1, z), (y, z + 1), (y + 1, z + 1), corners 0-1, 2-3, 4-5 and 6-7 of
-// its cells; bit i of row r is the solid bit at range.x + i. Each sample adds per-axis address
-// parts (axisPart) instead of computing its address, with no branch (lavapipe runs both sides).
+// its cells; bit i of row r is the solid bit at range.x + i. A row is read from its tile's low x
+// (row.x, a multiple of 8 in the world, so inside one chunk and a multiple of 4 in the buffer) as
+// two texels of four samples and the next tile's first sample, three fetches where nine were
+// made, and shifted to range.x. Each fetch adds per-axis address parts (axisPart), with no branch
+// (lavapipe runs both sides): a fetch with no sample in the grid reads texel 0, and a four-sample
+// fetch with any sample in the grid reads within that sample's chunk.
 void readRows(ivec3 row, ivec2 range, out uint rows[4]) {
-    uint xParts[9], yParts[2], zParts[2];
-    bool xInside[9], yInside[2], zInside[2];
-    for (int i = 0; i < 9; ++i) xParts[i] = axisPart(0, range.x + i, xInside[i]);
+    bool xInside[9], yInside[2], zInside[2], unused;
+    for (int i = 0; i < 9; ++i) xInside[i] = row.x + i >= 0 && row.x + i < push.gridSize.x;
+    const uint xParts[3] = uint[3](axisPart(0, row.x, unused), axisPart(0, row.x + 4, unused), axisPart(0, row.x + 8, unused));
+    uint yParts[2], zParts[2];
     for (int o = 0; o < 2; ++o) {
         yParts[o] = axisPart(1, row.y + o, yInside[o]);
         zParts[o] = axisPart(2, row.z + o, zInside[o]);
     }
+    const uint shift = uint(range.x - row.x);
     for (int r = 0; r < 4; ++r) {
         const int y = r & 1, z = r >> 1;
-        uint bits = 0u;
-        for (int i = 0; i < 9; ++i) {
-            const bool inside = xInside[i] && yInside[y] && zInside[z];
-            const float d = densityTexel(inside ? xParts[i] + yParts[y] + zParts[z] : 0u);
-            // As solidAt: outside the grid and not finite read 0.
-            bits |= (inside && !isnan(d) && !isinf(d) ? d : 0.0) > push.surface.x ? 1u << i : 0u;
-        }
-        rows[r] = bits;
+        const bool rowInside = yInside[y] && zInside[z];
+        const uint yz = yParts[y] + zParts[z];
+        const bvec4 low = bvec4(rowInside && xInside[0], rowInside && xInside[1], rowInside && xInside[2], rowInside && xInside[3]);
+        const bvec4 high = bvec4(rowInside && xInside[4], rowInside && xInside[5], rowInside && xInside[6], rowInside && xInside[7]);
+        const bool last = rowInside && xInside[8];
+        // As solidAt: outside the grid and not finite read 0.
+        const bvec4 lowSolid = solidQuad(mix(vec4(0.0), quadTexel(any(low) ? (xParts[0] + yz) >> 2 : 0u), low));
+        const bvec4 highSolid = solidQuad(mix(vec4(0.0), quadTexel(any(high) ? (xParts[1] + yz) >> 2 : 0u), high));
+        const float d = densityTexel(last ? xParts[2] + yz : 0u);
+        const bool lastSolid = (last && !isnan(d) && !isinf(d) ? d : 0.0) > push.surface.x;
+        const uvec4 lowBits = uvec4(lowSolid) << uvec4(0u, 1u, 2u, 3u), highBits = uvec4(highSolid) << uvec4(4u, 5u, 6u, 7u);
+        const uint bits = lowBits.x | lowBits.y | lowBits.z | lowBits.w | highBits.x | highBits.y | highBits.z | highBits.w |
+                          (lastSolid ? 1u << 8 : 0u);
+        rows[r] = bits >> shift;
     }
 }
 
