@@ -33,14 +33,15 @@ void main() {
         const ivec3 world = segmentWorldCell(activeTile(segment >> 6), segment);
         const ivec2 range = segmentCells(world);
         const uint firstSlot = segment * kTileSide - uint(world.x - push.gridOrigin.x);
-        // Bit i: the segment's cell i is active. The stores then run over the active cells and
-        // owned edges alone: lavapipe runs a loop until its last lane is done, and a masked store
-        // still walks every lane.
+        // Bit i: the segment's cell i is active, that is neither all air nor all solid (every
+        // other case has a triangle; GpuMesher.cpp checks the table), so no table read. The
+        // stores then run over the active cells and owned edges alone: lavapipe runs a loop until
+        // its last lane is done, and a masked store still walks every lane.
         uint activeBits = 0u;
         for (int x = range.x; x < range.y; ++x) {
             const uint i = uint(x - range.x);
             const uint mask = ((i < 4u ? cases.x : cases.y) >> (8u * (i & 3u))) & 0xffu;
-            activeBits |= ownedEdges(mask) != 0u || caseWord(mask * 10u) != 0u ? 1u << i : 0u;
+            activeBits |= mask != 0u && mask != 0xffu ? 1u << i : 0u;
         }
         for (; activeBits != 0u; activeBits &= activeBits - 1u) {
             const uint i = uint(findLSB(activeBits));

@@ -56,6 +56,8 @@ std::vector<uint32_t> packedCaseTable() {
     std::vector<uint32_t> words(256 * kCaseWords, 0);
     const auto& table = marching_cubes::caseTable();
     for (size_t mask = 0; mask < 256; ++mask) {
+        // mc_compact.glsl takes a cell to be active when its case is neither all air nor all solid.
+        VOXC_ASSERT((table[mask].triangleCount > 0) == (mask != 0 && mask != 255));
         words[mask * kCaseWords] = table[mask].triangleCount;
         for (size_t i = 0; i < table[mask].edges.size(); ++i)
             words[mask * kCaseWords + 1 + i / 4] |= uint32_t(table[mask].edges[i]) << (8 * (i % 4));
