@@ -439,10 +439,8 @@ bool checkSolveWork(Context& context, const ast::Block& block, const curves::Sce
 // surface reaches none and the table is air in every cell: a curve drawn outside the box, most
 // often. (A box whose seeds the noise displacement pushes out of every cell is air too; only the
 // solve can tell, so that is not warned about.)
-void warnAllAir(Context& context, const ast::Block& block, const curves::Constraints& constraints) {
-    if (std::any_of(constraints.flags.begin(), constraints.flags.end(),
-                    [](uint8_t f) { return (f & curves::kInSurface) != 0; }))
-        return;
+void warnAllAir(Context& context, const ast::Block& block, const curves::GatheredConstraints& gathered) {
+    if (gathered.anySurface()) return;
     context.diagnostics.warning("W0210", block.loc,
                                 fmt::format("curves '{}' solves to air in every cell of its box: no seed curve's "
                                             "ribbon pins a surface inside it; move the curves into the box "
@@ -469,10 +467,10 @@ std::vector<CurvesBlock> checkCurves(Context& context, const ast::File& file, co
         std::optional<curves::Scene> scene = readScene(context, file, block, world, cellBudget, limits);
         if (scene && checkSolveWork(context, block, *scene, limits)) {
             try {
-                scene->constraints = std::make_shared<const curves::Constraints>(
-                    curves::voxelize(scene->curves, scene->box, scene->options.seedValue, limits, scene->inputs,
-                                     scene->inputOptions));
-                warnAllAir(context, block, *scene->constraints);
+                scene->gathered = std::make_shared<const curves::GatheredConstraints>(
+                    curves::gatherConstraints(scene->curves, scene->box, scene->options.seedValue, limits, scene->inputs,
+                                              scene->inputOptions));
+                warnAllAir(context, block, *scene->gathered);
                 out.min = scene->box.min;
                 out.size = scene->box.size;
                 for (const curves::FeatureCurve& curve : scene->curves)

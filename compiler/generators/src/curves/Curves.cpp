@@ -1,6 +1,7 @@
 #include "voxc/generators/curves/Curves.h"
 
 #include "Fronts.h"
+#include "Parallel.h"
 
 #include <algorithm>
 #include <chrono>
@@ -27,27 +28,6 @@ void timed(std::vector<std::pair<std::string, double>>& phases, const char* name
 // 4 of the cells change side, each within 0.01 voxel of the surface), while two V-cycles of
 // eight are saved (docs/curves.md).
 constexpr float kSolveTolerance = 1e-4f;
-
-// Runs `first` on a second thread and `second` on this one; rethrows what either threw.
-template <typename First, typename Second>
-void bothOf(First&& first, Second&& second) {
-    std::exception_ptr failed;
-    std::thread other([&] {
-        try {
-            first();
-        } catch (...) {
-            failed = std::current_exception();
-        }
-    });
-    try {
-        second();
-    } catch (...) {
-        other.join();
-        throw;
-    }
-    other.join();
-    if (failed) std::rethrow_exception(failed);
-}
 
 } // namespace
 

@@ -1,7 +1,7 @@
 #pragma once
 // Splits the z slices of a box between two threads for passes whose per-cell results do not
 // depend on the order cells are visited (pointwise maps, one red-black colour), so the result is
-// the same bits as one thread's loop.
+// the same bits as one thread's loop; and runs two independent parts side by side.
 #include <cstdint>
 #include <exception>
 #include <thread>
@@ -24,6 +24,27 @@ void forTwoSlabs(int32_t count, int32_t minimum, Slab&& slab) {
     });
     try {
         slab(mid, count);
+    } catch (...) {
+        other.join();
+        throw;
+    }
+    other.join();
+    if (failed) std::rethrow_exception(failed);
+}
+
+// Runs `first` on a second thread and `second` on this one; rethrows what either threw.
+template <typename First, typename Second>
+void bothOf(First&& first, Second&& second) {
+    std::exception_ptr failed;
+    std::thread other([&] {
+        try {
+            first();
+        } catch (...) {
+            failed = std::current_exception();
+        }
+    });
+    try {
+        second();
     } catch (...) {
         other.join();
         throw;

@@ -74,7 +74,7 @@ private:
 
 SolveTable solveScene(const Scene& scene, const Limits& limits, const Solvers& solvers, bool keepChannels) {
     const FieldHeapReuse reuse(scene.box.cellCount()); // the solve's freed fields serve its next ones (HeapReuse.h)
-    Result solved = scene.constraints ? solveCurves(*scene.constraints, scene.options, limits, solvers)
+    Result solved = scene.gathered ? solveCurves(Constraints(*scene.gathered), scene.options, limits, solvers)
                     : scene.inputs.empty()
                         ? runCurves(scene.curves, scene.box, scene.options, limits, solvers)
                         : solveCurves(voxelize(scene.curves, scene.box, scene.options.seedValue, limits, scene.inputs,

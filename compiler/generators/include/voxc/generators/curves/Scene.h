@@ -19,9 +19,9 @@ struct Scene {
     // Heightmaps and meshes voxelised after the curves, with the dead zone (Voxelize.h).
     std::vector<std::shared_ptr<const InputSurface>> inputs;
     InputOptions inputOptions;
-    // The curves and inputs voxelised into the box (voxelize with options.seedValue) by whoever made the
-    // scene and reported voxelize's errors (the checker); null: solveScene voxelises them.
-    std::shared_ptr<const Constraints> constraints;
+    // The curves and inputs voxelised into the box (gatherConstraints with options.seedValue) by
+    // whoever made the scene and reported its errors (the checker); null: solveScene voxelises them.
+    std::shared_ptr<const GatheredConstraints> gathered;
 };
 
 // density(S' - D, 2) = clamp(0.5 - (S' - D) / 2, 0, 1) per cell (0 where S' is +infinity: no

@@ -19,6 +19,23 @@ glm::dvec3 closestBarycentric(const std::array<glm::dvec3, 3>& triangle, const g
 
 enum CellFlags : uint8_t { kInNormals = 1, kInParams = 2, kInSurface = 4 }; // Omega_N, Omega_R, Omega_S
 
+// The cells a voxelisation constrains, each with its gathered values (what Constraints holds
+// there; every other cell of the box is 0): a few bytes per cell near a curve rather than 27 per
+// box cell, so the checker keeps this and the solve builds the dense fields.
+struct GatheredConstraints {
+    struct Cell {
+        uint64_t index = 0; // Box::index
+        uint8_t flags = 0;  // CellFlags, never 0
+        uint16_t material = 0;
+        glm::vec3 normal{0.0f};
+        float amplitude = 0.0f, roughness = 0.0f, surface = 0.0f;
+    };
+    Box box;
+    std::vector<Cell> cells; // each cell once, in no particular order
+
+    bool anySurface() const; // Omega_S is not empty
+};
+
 struct Constraints {
     Box box;
     std::vector<uint8_t> flags;           // CellFlags per cell
@@ -27,7 +44,8 @@ struct Constraints {
     std::vector<uint16_t> material;       // m0 on Omega_R
     Field3 surface;                       // S0 on Omega_S
 
-    explicit Constraints(const Box& box_);
+    explicit Constraints(const Box& box_); // every cell unconstrained
+    explicit Constraints(const GatheredConstraints& gathered);
 };
 
 enum class SeedValue { PlaneDistance, Zero }; // A2.5: the default keeps the surface on the curve
@@ -58,7 +76,14 @@ struct InputOptions {
 };
 
 // Validates the box and curves (LimitError, ParameterError) and gathers every curve's triangles,
-// then the meshes' where no curve is near, then the heightmaps' where neither is.
+// then the meshes' where no curve is near, then the heightmaps' where neither is. Each cell sums
+// its triangles' values in the order given (curves, then inputs); the box's two halves in z are
+// gathered on two threads, which changes no bit.
+GatheredConstraints gatherConstraints(const std::vector<FeatureCurve>& curves, const Box& box, SeedValue seedValue,
+                                      const Limits& limits,
+                                      const std::vector<std::shared_ptr<const InputSurface>>& inputs = {},
+                                      const InputOptions& inputOptions = {});
+// Constraints(gatherConstraints(...)).
 Constraints voxelize(const std::vector<FeatureCurve>& curves, const Box& box, SeedValue seedValue, const Limits& limits,
                      const std::vector<std::shared_ptr<const InputSurface>>& inputs = {},
                      const InputOptions& inputOptions = {});
