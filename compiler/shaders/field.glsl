@@ -18,7 +18,7 @@
 #include "nonfinite.glsl"
 #include "opaque_constants.glsl"
 
-const int COLUMN_BLOCK = 256;
+// <<COLUMN_BLOCK>>
 // <<COLUMN_NOISE>>
 // <<COLUMN_POINT_SETS>>
 // <<LIBRARIES>>

@@ -37,7 +37,8 @@ float pointSetFloat(int at) { return intBitsToFloat(pointSets.words[at]); }
 // is not either), so the nearest is the one a loop over the items one by one finds. No branch:
 // the driver compiles it quickly and the lanes of a group do not diverge. A field kernel whose
 // point is its column's (x and z fixed, y along the walk) takes these steps through
-// point_set_column.glsl instead, once per cell for the voxels of its walk in that cell.
+// point_set_column.glsl instead, once per cell for the voxels of a block of 8 in that cell (at
+// most 2 cells: 4 * (8192 / POINT_SET_BLOCK + 1) iterations a block), and walks 32 voxels.
 #ifndef POINT_SET_BLOCK
 #define POINT_SET_BLOCK 8
 #endif

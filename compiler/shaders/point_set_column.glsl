@@ -1,7 +1,7 @@
 // Point-set lookups along a field kernel's column: pointSetDistances(set, vec3(px, y, pz)) bit for
-// bit at the up to 8 voxels of a block (a field kernel that reads a point set walks at most
-// kPointSetAnchorsAlongY = 8 voxels along y per invocation, codegen's fieldDispatchShape), with
-// the work of the voxels that share a list cell done once for all of them.
+// bit at the up to 8 voxels of a block (a kernel that fills along the column has COLUMN_BLOCK 8,
+// codegen's kPointSetColumnBlock, and walks 32 voxels per invocation), with the work of the voxels
+// that share a list cell done once for all of them.
 // Why: on llvmpipe a lookup is mostly its loads (a gather each): per list step an item, its lower
 // bound and the point's 4 or 7 floats. Here the voxels of one cell take every step together, so a
 // step loads these once for up to 8 voxels, and only the distances are per voxel (x and z are the

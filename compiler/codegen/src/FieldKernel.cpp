@@ -189,12 +189,12 @@ std::optional<std::string> componentGlsl(const ir::IrField& field, const std::ve
 // y depends on y alone and its x and z are the same along the column (nullopt otherwise), with
 // the column's x and z in `x` and `z`.
 std::optional<std::string> columnPointY(const ir::IrModule& module, const ir::IrField& field,
-                                        const std::vector<bool>& opaque, uint32_t point, const FieldCode& code,
-                                        std::string& x, std::string& z) {
+                                        const std::vector<bool>& opaque, uint32_t point,
+                                        const std::vector<std::string>& names, std::string& x, std::string& z) {
     const auto columnLeaf = [&](uint32_t n, int axis) -> std::optional<std::string> {
         if (!field.perColumn.at(n)) return std::nullopt;
-        if (field.nodes[n].type == Type::Vec3) return fmt::format("{}.{}", code.names[n], "xyz"[axis]);
-        return code.names[n];
+        if (field.nodes[n].type == Type::Vec3) return fmt::format("{}.{}", names[n], "xyz"[axis]);
+        return names[n];
     };
     const auto alongYLeaf = [&](uint32_t n, int) -> std::optional<std::string> {
         const FieldNode& leaf = field.nodes[n];
@@ -210,6 +210,10 @@ std::optional<std::string> columnPointY(const ir::IrModule& module, const ir::Ir
     z = *columnZ;
     return y;
 }
+
+// Voxels of a column one fill of the column noise covers (field.glsl's COLUMN_BLOCK), or
+// kPointSetColumnBlock in a kernel with point-set lookups along the column.
+constexpr int kColumnBlock = 256;
 
 // Each column noise call holds a block of COLUMN_BLOCK floats per invocation (1 KiB); past this
 // many in one kernel the calls are evaluated per voxel, so private memory stays small on a GPU.
@@ -227,7 +231,7 @@ bool emitColumnNoise(const ir::IrModule& module, const ir::IrField& field, const
     for (size_t k = 1; k < node.operands.size(); ++k)
         if (!field.perColumn.at(node.operands[k])) return false;
     std::string x, z;
-    const std::optional<std::string> y = columnPointY(module, field, opaque, node.operands[0], code, x, z);
+    const std::optional<std::string> y = columnPointY(module, field, opaque, node.operands[0], code.names, x, z);
     if (!y) return false;
     const std::vector<uint32_t>& a = node.operands;
     const std::string arguments =
@@ -240,10 +244,15 @@ bool emitColumnNoise(const ir::IrModule& module, const ir::IrField& field, const
     return true;
 }
 
-// Point-set lookups along the column hold kPointSetAnchorsAlongY vec2 per invocation; past this
-// many in one kernel they are made per voxel.
+// Point-set lookups along the column hold 8 vec2 per invocation (pointSetColumnFill fills a
+// block of 8 voxels); past this many in one kernel they are made per voxel.
 constexpr int kMaxColumnPointSetSites = 4;
-static_assert(kPointSetAnchorsAlongY == 8, "pointSetColumnFill (point_set_column.glsl) fills 8 voxels");
+constexpr int kPointSetColumnBlock = 8;
+// Voxels one invocation walks along y where every point-set lookup of the field is shared along
+// the column (instead of kPointSetAnchorsAlongY): a block of 8 loops at most 2 cells x 2 lists x
+// (8192 / 8 + 1) times, so 4 blocks stay far under lavapipe's 65,535 iterations, and a longer walk
+// pays an invocation's own costs (its column values, the lists' headers) for more voxels.
+constexpr uint32_t kPointSetColumnAnchorsAlongY = 32;
 
 // Emits point-set node `i` (of set `set`) through point_set_column.glsl when its point's x and z
 // are the same along the column and its y depends on y alone: the block's fill looks the voxels
@@ -252,13 +261,29 @@ bool emitColumnPointSet(const ir::IrModule& module, const ir::IrField& field, co
                         uint32_t i, ptrdiff_t set, int site, FieldCode& code) {
     if (site >= kMaxColumnPointSetSites) return false;
     std::string x, z;
-    const std::optional<std::string> y = columnPointY(module, field, opaque, field.nodes[i].operands[0], code, x, z);
+    const std::optional<std::string> y = columnPointY(module, field, opaque, field.nodes[i].operands[0], code.names, x, z);
     if (!y) return false;
     code.column += fmt::format("precise float pointSetColumnX{0} = {1};\nprecise float pointSetColumnZ{0} = {2};\n", site, x, z);
     code.block += fmt::format("pointSetColumnFill({0}, {1}, pointSetColumnX{0}, pointSetColumnZ{0}, blockY, blockEnd, "
                               "pointSetColumnValues{0});\n", site, set);
-    code.columnPointSets += fmt::format("vec2 pointSetColumnValues{}[{}];\n", site, kPointSetAnchorsAlongY);
+    code.columnPointSets += fmt::format("vec2 pointSetColumnValues{}[{}];\n", site, kPointSetColumnBlock);
     code.columnPointSetArgY += fmt::format("    case {}: {{ precise float r = {}; return r; }}\n", site, *y);
+    return true;
+}
+
+// Whether every lookup of a point set in `field` that depends on y is emitted along the column
+// (emitField's emitColumnPointSet), so none is made per voxel.
+bool pointSetLookupsAlongColumn(const ir::IrModule& module, const ir::IrField& field) {
+    const std::vector<bool> opaque = opaqueConstants(field);
+    const std::vector<std::string> names(field.nodes.size());
+    int sites = 0;
+    for (size_t i = 0; i < field.nodes.size(); ++i) {
+        const FieldNode& node = field.nodes[i];
+        if (node.kind != FieldNode::Kind::PointSet || field.perColumn.at(i)) continue;
+        std::string x, z;
+        if (++sites > kMaxColumnPointSetSites || !columnPointY(module, field, opaque, node.operands[0], names, x, z))
+            return false;
+    }
     return true;
 }
 
@@ -478,7 +503,10 @@ DispatchShape fieldDispatchShape(const ir::IrModule& module, const ir::IrField& 
     DispatchShape shape = startDispatchShape(module);
     const bool readsPointSet = std::any_of(field.nodes.begin(), field.nodes.end(),
                                            [](const FieldNode& node) { return node.kind == FieldNode::Kind::PointSet; });
-    if (readsPointSet) shape.anchorsPerInvocation[1] = std::min(shape.anchorsPerInvocation[1], kPointSetAnchorsAlongY);
+    if (readsPointSet)
+        shape.anchorsPerInvocation[1] =
+            std::min(shape.anchorsPerInvocation[1],
+                     pointSetLookupsAlongColumn(module, field) ? kPointSetColumnAnchorsAlongY : kPointSetAnchorsAlongY);
     return shape;
 }
 
@@ -599,6 +627,8 @@ std::string fieldKernelSource(const ir::IrModule& module, const ir::IrField& fie
         {{"HEADER", prefixLines(header, "// ")},
          {"LIBRARIES", libraries},
          {"DISPATCH_SHAPE", dispatchShapeGlsl(fieldDispatchShape(module, field))},
+         {"COLUMN_BLOCK", fmt::format("const int COLUMN_BLOCK = {};\n",
+                                      code.columnPointSets.empty() ? kColumnBlock : kPointSetColumnBlock)},
          {"COLUMN_NOISE", code.columnNoise.empty() ? "// No noise call shares work along the column.\n" : code.columnNoise},
          {"COLUMN_POINT_SETS",
           code.columnPointSets.empty() ? "// No point-set lookup shares work along the column.\n" : code.columnPointSets},

@@ -63,9 +63,10 @@ struct FieldStageBoxes {
 FieldStageBoxes fieldBoxes(const ir::IrModule& module, const ir::IrField& field, FieldMode mode,
                            std::optional<uint8_t> material, std::optional<DensityBounds> before);
 // Voxels one invocation of a field kernel walks along its column: the whole column, or at most
-// kPointSetAnchorsAlongY where the field reads a point set (lsystem_carve.glsl: up to 2,050 list
-// loop iterations per voxel in blocks of 8 items, under lavapipe's 65,535 per invocation group
-// for every loop together).
+// kPointSetAnchorsAlongY where the field reads a point set per voxel (lsystem_carve.glsl: up to
+// 2,050 list loop iterations per voxel in blocks of 8 items, under lavapipe's 65,535 per
+// invocation group for every loop together); at most 32 where every lookup is shared along the
+// column (FieldKernel.cpp's kPointSetColumnAnchorsAlongY, point_set_column.glsl).
 constexpr uint32_t kPointSetAnchorsAlongY = 8;
 // The list items a field kernel's lookup visits per loop iteration (lsystem_carve.glsl's
 // POINT_SET_BLOCK): 1 where the field's lists are short enough that its voxels loop no more often
