@@ -636,7 +636,7 @@ std::string fieldKernelSource(const ir::IrModule& module, const ir::IrField& fie
          {"BLOCK_VALUES", code.block.empty() ? "// Nothing to fill per block.\n" : code.block},
          {"VOXEL_VALUES", code.voxel.empty() ? "// Every value is the same along the column.\n" : code.voxel},
          {"CONSTANT_COMBINE", combineGlsl(mode, material, "constantValue")},
-         {"COMBINE", fmt::format("float fieldValue = finiteDensity({}, local);\n", code.names.at(field.root)) +
+         {"COMBINE", fmt::format("float fieldValue = fieldDensity({}, local);\n", code.names.at(field.root)) +
                          combineGlsl(mode, material, "fieldValue")}});
 }
 

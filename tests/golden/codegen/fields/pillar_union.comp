@@ -9,7 +9,7 @@
 // The runtime dispatches it per box of chunks (KernelPackage StagePlan::fieldBoxes); in a box
 // where interval analysis proved the field one exact float (anchorCount.w == 1, the float's
 // bits in anchorStart.w) only the combine runs, in a loop of its own so no DAG code is near it.
-// Where the field's value is not finite the combine uses 0 instead (finiteDensity, counted);
+// Where the field's value is not finite the combine uses 0 instead (fieldDensity, counted);
 // a constant box's value is finite (interval analysis proves no NaN or infinity exact).
 // Noise calls the column shares work for (noise_column.glsl) fill noiseColumnValues a block of
 // COLUMN_BLOCK voxels at a time, before the voxels of the block read them; point-set lookups along
@@ -126,6 +126,28 @@ float driverFolded(float c) { return c; }
 // ---- end opaque_constants.glsl ----
 
 const int COLUMN_BLOCK = 256;
+
+// The invocation's non-finite values, added to the stage's count once at the end of main
+// (flushNonFiniteTally) rather than by finiteDensity's atomics at each voxel: the same count and
+// lowest index. Why: llvmpipe runs an atomic as a loop over the lanes even when no lane takes the
+// branch, so three such loops per voxel were a twentieth of a noise field's kernel.
+uint nonFiniteTally = 0u;
+uint nonFiniteTallyFirst = 0xFFFFFFFFu;
+
+// `value` when finite; otherwise 0, tallied at grid-local voxel `local`.
+float fieldDensity(float value, ivec3 local) {
+    if (isFiniteFloat(value)) return value;
+    nonFiniteTally += 1u;
+    nonFiniteTallyFirst = min(nonFiniteTallyFirst, uint(local.x + push.gridSize.x * (local.y + push.gridSize.y * local.z)));
+    return 0.0;
+}
+
+// The tally into the stage's 64-bit count (a carry out of countLow goes to countHigh) and lowest index.
+void flushNonFiniteTally() {
+    if (nonFiniteTally == 0u) return;
+    if (atomicAdd(nonFinite.countLow, nonFiniteTally) > 0xFFFFFFFFu - nonFiniteTally) atomicAdd(nonFinite.countHigh, 1u);
+    atomicMin(nonFinite.firstIndex, nonFiniteTallyFirst);
+}
 // No noise call shares work along the column.
 // No point-set lookup shares work along the column.
 // ---- begin math_functions.glsl ----
@@ -257,7 +279,7 @@ void main() {
                         precise float n19 = (n7 - n18); // sub (fields.vox:19:54)
                         precise float n21 = mathMin(mathMax(n19, opaqueConstant(0.0)), opaqueConstant(1.0)); // clamp (fields.vox:19:48)
                         precise float n22 = (n9 ? n21 : opaqueConstant(0.0)); // select (fields.vox:37:3)
-                        float fieldValue = finiteDensity(n22, local);
+                        float fieldValue = fieldDensity(n22, local);
                         // union: d = max(d, f)
                         float density = voxels.density[address];
                         voxels.density[address] = density < fieldValue ? fieldValue : density;
@@ -266,4 +288,5 @@ void main() {
             }
         }
     }
+    flushNonFiniteTally();
 }
