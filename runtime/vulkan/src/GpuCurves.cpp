@@ -192,9 +192,9 @@ curves::SurfaceField vulkanPropagateSurface(VulkanContext& context, const curves
     }
     const FrontRun f = runFront(context, "curves_front_surface.glsl", b, rule == curves::PropagateRule::SignedMin ? 1 : 0,
                                 seeds, {distance, normals}, {cells, 0});
-    curves::SurfaceField out{Field3(b), std::vector<int32_t>(cells), f.lastLayer};
+    curves::SurfaceField out{Field3(b), std::vector<curves::FrontLayer>(cells), f.lastLayer};
     for (size_t i = 0; i < cells; ++i) {
-        out.layer[i] = int32_t(f.run.buffers.at(0)[i]);
+        out.layer[i] = curves::FrontLayer(int32_t(f.run.buffers.at(0)[i]));
         out.distance.values[i] = value(f.run.buffers.at(3)[i]);
     }
     return out;

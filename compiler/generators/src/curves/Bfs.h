@@ -4,6 +4,9 @@
 #include "Parallel.h"
 
 #include "voxc/generators/curves/Grid.h"
+#include "voxc/generators/curves/Propagate.h"
+
+#include "voxc/core/Errors.h"
 
 #include <algorithm>
 
@@ -34,7 +37,7 @@ inline std::vector<size_t> nextLayer(const Box& b, const std::vector<size_t>& fr
 
 // Whether cell k was set in a layer before `l` (layer[k] in [0, l)); growLayers sets every
 // cell's layer before it values any, so the threads only read them.
-inline bool setBefore(const std::vector<int32_t>& layer, size_t k, int32_t l) {
+inline bool setBefore(const std::vector<FrontLayer>& layer, size_t k, int32_t l) {
     const int32_t v = layer[k];
     return v >= 0 && v < l;
 }
@@ -58,36 +61,40 @@ inline constexpr int32_t kBandSlices = 8;
 // box). `order` (one entry per cell) is sized by the caller. Single-threaded: the host runs its
 // two fronts side by side (Fronts.h). Returns the number of layers after 0.
 template <typename Value>
-int32_t growLayers(const Box& b, std::vector<int32_t>& layer, std::vector<uint32_t>& order, Value&& value) {
-    if (std::find(layer.begin(), layer.end(), 0) == layer.end()) return 0; // no cell to grow from
+int32_t growLayers(const Box& b, std::vector<FrontLayer>& layer, std::vector<uint32_t>& order, Value&& value) {
+    if (std::find(layer.begin(), layer.end(), FrontLayer(0)) == layer.end()) return 0; // no cell to grow from
     const int32_t nx = b.size.x, ny = b.size.y, nz = b.size.z;
     const size_t row = size_t(nx), slice = row * size_t(ny);
-    // Past every city-block distance in a box (axes < 2^20 cells each), and far from overflow.
-    constexpr int32_t kFar = 1 << 29;
-    for (int32_t& v : layer) v = v == 0 ? 0 : kFar;
+    // Past every city-block distance in the box (at most nx + ny + nz - 3), and kFar + 1 still a
+    // FrontLayer; Limits' 4096 cells per axis keep every box far inside it.
+    constexpr int32_t kFar = 1 << 14;
+    if (int64_t(nx) + ny + nz - 3 >= kFar) throw InternalError("curves: a front's layers past 16 bits");
+    for (FrontLayer& v : layer) v = v == 0 ? FrontLayer(0) : FrontLayer(kFar);
+    // min(own, neighbour + 1) in 16 bits (the sum is at most kFar + 1).
+    auto closer = [](FrontLayer own, FrontLayer neighbour) { return FrontLayer(std::min<int32_t>(own, neighbour + 1)); };
     forTwoSlabs(nz, 2, [&](int32_t z0, int32_t z1) {
         for (int32_t z = z0; z < z1; ++z) {
-            int32_t* s = layer.data() + size_t(z) * slice;
+            FrontLayer* s = layer.data() + size_t(z) * slice;
             for (int32_t y = 0; y < ny; ++y) {
-                int32_t* r = s + size_t(y) * row;
-                for (int32_t x = 1; x < nx; ++x) r[x] = std::min(r[x], r[x - 1] + 1);
-                for (int32_t x = nx - 1; x-- > 0;) r[x] = std::min(r[x], r[x + 1] + 1);
+                FrontLayer* r = s + size_t(y) * row;
+                for (int32_t x = 1; x < nx; ++x) r[x] = closer(r[x], r[x - 1]);
+                for (int32_t x = nx - 1; x-- > 0;) r[x] = closer(r[x], r[x + 1]);
             }
             for (int32_t y = 1; y < ny; ++y)
-                for (size_t x = 0; x < row; ++x) s[size_t(y) * row + x] = std::min(s[size_t(y) * row + x], s[size_t(y - 1) * row + x] + 1);
+                for (size_t x = 0; x < row; ++x) s[size_t(y) * row + x] = closer(s[size_t(y) * row + x], s[size_t(y - 1) * row + x]);
             for (int32_t y = ny - 1; y-- > 0;)
-                for (size_t x = 0; x < row; ++x) s[size_t(y) * row + x] = std::min(s[size_t(y) * row + x], s[size_t(y + 1) * row + x] + 1);
+                for (size_t x = 0; x < row; ++x) s[size_t(y) * row + x] = closer(s[size_t(y) * row + x], s[size_t(y + 1) * row + x]);
         }
     });
     forTwoSlabs(ny, 2, [&](int32_t y0, int32_t y1) {
         for (int32_t y = y0; y < y1; ++y) {
             for (int32_t z = 1; z < nz; ++z) {
-                int32_t* r = layer.data() + size_t(z) * slice + size_t(y) * row;
-                for (size_t x = 0; x < row; ++x) r[x] = std::min(r[x], r[x - slice] + 1);
+                FrontLayer* r = layer.data() + size_t(z) * slice + size_t(y) * row;
+                for (size_t x = 0; x < row; ++x) r[x] = closer(r[x], r[x - slice]);
             }
             for (int32_t z = nz - 1; z-- > 0;) {
-                int32_t* r = layer.data() + size_t(z) * slice + size_t(y) * row;
-                for (size_t x = 0; x < row; ++x) r[x] = std::min(r[x], r[x + slice] + 1);
+                FrontLayer* r = layer.data() + size_t(z) * slice + size_t(y) * row;
+                for (size_t x = 0; x < row; ++x) r[x] = closer(r[x], r[x + slice]);
             }
         }
     });
@@ -95,7 +102,7 @@ int32_t growLayers(const Box& b, std::vector<int32_t>& layer, std::vector<uint32
     // pairs outnumber the cells, as in a long thin box), in index order: start[k] .. start[k + 1]
     // of `order`, k = l * groups + g. A face neighbour's group differs by at most 1 too.
     int32_t layers = 0;
-    for (int32_t v : layer) layers = std::max(layers, v);
+    for (FrontLayer v : layer) layers = std::max<int32_t>(layers, v);
     const uint64_t pairs = uint64_t(layers + 1) * uint64_t(nz);
     const int32_t groupSlices = int32_t(std::max<uint64_t>(1, (pairs + b.cellCount() - 1) / b.cellCount()));
     const int32_t groups = (nz + groupSlices - 1) / groupSlices;

@@ -108,7 +108,7 @@ void peronaMalikSweeps(const Constraints& cs, NormalField& n, float k, uint32_t 
 MaterialFront prepareMaterial(const Constraints& cs) {
     const Box& b = cs.box;
     MaterialFront front{{std::vector<uint16_t>(b.cellCount(), 0), Field3(b), std::vector<uint8_t>(b.cellCount(), 0), 0},
-                        std::vector<int32_t>(b.cellCount(), -1),
+                        std::vector<FrontLayer>(b.cellCount(), -1),
                         std::vector<uint32_t>(b.cellCount())};
     MaterialField& out = front.field;
     for (size_t i = 0; i < out.assigned.size(); ++i)
@@ -128,7 +128,7 @@ MaterialField propagateMaterial(const Constraints& cs) {
 void growMaterial(const Constraints& cs, MaterialFront& front) {
     const Box& b = cs.box;
     MaterialField& out = front.field;
-    const std::vector<int32_t>& layer = front.layer;
+    const std::vector<FrontLayer>& layer = front.layer;
     const size_t row = size_t(b.size.x), slice = row * size_t(b.size.y);
     out.layers = growLayers(b, front.layer, front.order, [&](size_t p, glm::ivec3 q, int32_t l) {
         const bool inside[6] = {q.x > 0, q.x + 1 < b.size.x, q.y > 0, q.y + 1 < b.size.y, q.z > 0, q.z + 1 < b.size.z};

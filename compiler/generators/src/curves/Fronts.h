@@ -12,7 +12,7 @@ namespace voxc::curves {
 
 struct MaterialFront {
     MaterialField field;
-    std::vector<int32_t> layer;  // 0 on Omega_R, then the BFS layer
+    std::vector<FrontLayer> layer; // 0 on Omega_R, then the BFS layer
     std::vector<uint32_t> order; // growLayers' scratch
 };
 MaterialFront prepareMaterial(const Constraints& constraints);

@@ -12,7 +12,7 @@ namespace voxc::curves {
 
 SurfaceFront prepareSurface(const Constraints& cs) {
     const Box& b = cs.box;
-    SurfaceFront front{{Field3(b, std::numeric_limits<float>::infinity()), std::vector<int32_t>(b.cellCount(), -1), 0},
+    SurfaceFront front{{Field3(b, std::numeric_limits<float>::infinity()), std::vector<FrontLayer>(b.cellCount(), -1), 0},
                        std::vector<uint32_t>(b.cellCount())};
     SurfaceField& out = front.field;
     for (size_t i = 0; i < out.layer.size(); ++i)

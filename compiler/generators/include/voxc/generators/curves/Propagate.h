@@ -7,9 +7,14 @@ namespace voxc::curves {
 
 enum class PropagateRule { SmallestMagnitude, SignedMin }; // SignedMin: the paper's printed min
 
+// A cell's BFS layer in the fronts: its city-block distance to the nearest seed cell, under
+// 3 * 4096 in any box Limits allows (growLayers checks), so 16 bits: half the memory and half
+// the traffic of the fronts' layer passes.
+using FrontLayer = int16_t;
+
 struct SurfaceField {
     Field3 distance;              // S; +infinity where no 6-path reaches Omega_S (air)
-    std::vector<int32_t> layer;   // BFS layer that set the cell: 0 on Omega_S, -1 never
+    std::vector<FrontLayer> layer; // BFS layer that set the cell: 0 on Omega_S, -1 never
     int32_t layers = 0;           // the largest layer
 };
 
