@@ -29,9 +29,10 @@ void timed(std::vector<std::pair<std::string, double>>& phases, const char* name
 // eight are saved (docs/curves.md).
 constexpr float kSolveTolerance = 1e-4f;
 
-} // namespace
-
-Result solveCurves(const Constraints& cs, const Options& options, const Limits& limits, const Solvers& solvers) {
+// solveCurves on `cs`; `owned` is cs itself where the caller gave it up (its N0, alpha0 and beta0
+// are moved into the unknowns), else null (they are copied).
+Result solve(const Constraints& cs, Constraints* owned, const Options& options, const Limits& limits,
+             const Solvers& solvers) {
     const LinearSolver& linear = solvers.linear ? solvers.linear : LinearSolver(solveLaplace);
     checkBox(cs.box, limits);
     if (!(std::isfinite(options.k) && options.k > 0.0f)) throw ParameterError("k", options.k, "must be finite and > 0");
@@ -50,7 +51,9 @@ Result solveCurves(const Constraints& cs, const Options& options, const Limits& 
     };
     if (options.normals == NormalMode::Laplace) {
         timed(r.phaseMs, "normals", [&] {
-            Field3 x = cs.normalX, y = cs.normalY, z = cs.normalZ;
+            Field3 x = owned ? std::move(owned->normalX) : cs.normalX;
+            Field3 y = owned ? std::move(owned->normalY) : cs.normalY;
+            Field3 z = owned ? std::move(owned->normalZ) : cs.normalZ;
             r.solves.push_back(linear("normals", maskOf(kInNormals), {&x, &y, &z}, kSolveTolerance, limits));
             normalizeField(x, y, z, x, y, z);
             r.normalX = std::move(x), r.normalY = std::move(y), r.normalZ = std::move(z);
@@ -94,7 +97,8 @@ Result solveCurves(const Constraints& cs, const Options& options, const Limits& 
         float maxAmplitude = 1.0f;
         for (size_t i = 0; i < fixed.size(); ++i)
             if (fixed[i]) maxAmplitude = std::max(maxAmplitude, cs.amplitude.values[i]);
-        r.amplitude = cs.amplitude, r.roughness = cs.roughness;
+        r.amplitude = owned ? std::move(owned->amplitude) : cs.amplitude;
+        r.roughness = owned ? std::move(owned->roughness) : cs.roughness;
         r.solves.push_back(linear("parameters", fixed, {&r.amplitude, &r.roughness}, kSolveTolerance * maxAmplitude, limits));
     });
     timed(r.phaseMs, "smoothing", [&] {
@@ -103,12 +107,22 @@ Result solveCurves(const Constraints& cs, const Options& options, const Limits& 
     return r;
 }
 
+} // namespace
+
+Result solveCurves(const Constraints& constraints, const Options& options, const Limits& limits, const Solvers& solvers) {
+    return solve(constraints, nullptr, options, limits, solvers);
+}
+
+Result solveCurves(Constraints&& constraints, const Options& options, const Limits& limits, const Solvers& solvers) {
+    return solve(constraints, &constraints, options, limits, solvers);
+}
+
 Result runCurves(const std::vector<FeatureCurve>& curves, const Box& box, const Options& options, const Limits& limits,
                  const Solvers& solvers) {
     std::vector<std::pair<std::string, double>> phases;
     std::optional<Constraints> constraints;
     timed(phases, "voxelize", [&] { constraints.emplace(voxelize(curves, box, options.seedValue, limits)); });
-    Result r = solveCurves(*constraints, options, limits, solvers);
+    Result r = solveCurves(std::move(*constraints), options, limits, solvers);
     r.phaseMs.insert(r.phaseMs.begin(), phases.front());
     return r;
 }

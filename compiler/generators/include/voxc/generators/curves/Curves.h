@@ -37,6 +37,10 @@ struct Result {
 // global pass through its member of `solvers` (empty: the host's loop).
 Result solveCurves(const Constraints& constraints, const Options& options, const Limits& limits,
                    const Solvers& solvers = {});
+// The same on constraints it may consume: N0, alpha0 and beta0 become the linear solves'
+// unknowns (moved, not copied: five fields of fresh memory fewer).
+Result solveCurves(Constraints&& constraints, const Options& options, const Limits& limits,
+                   const Solvers& solvers = {});
 
 // voxelize then solveCurves.
 Result runCurves(const std::vector<FeatureCurve>& curves, const Box& box, const Options& options, const Limits& limits,
