@@ -11,6 +11,8 @@
 #include "voxc/syntax/Parser.h"
 
 #include <algorithm>
+#include <condition_variable>
+#include <mutex>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
@@ -478,6 +480,57 @@ TEST_F(SessionTest, ALargeSolveIsPreviewedCoarseThenRefinedToThePlainRunsWorld) 
     Session five(context(), {.path = path(), .preview = {.curvesCells = 0}});
     ASSERT_TRUE(five.hasWorld()) << five.lastError();
     EXPECT_TRUE(five.world().mesh().positions == session.world().mesh().positions);
+}
+
+TEST_F(SessionTest, ASupersededRunningSolveStops) {
+    const OwnCache cache(directory_ / "cache");
+    write(kBlocksProgram);
+    // The full solve of the first slider move is held as it starts, until the second move has
+    // superseded it: then it runs with its stop asked for, as a solve that was running would.
+    std::mutex mutex;
+    std::condition_variable changed;
+    int started = 0;
+    bool release = false;
+    const PreviewOptions preview{.curvesCells = 2048, .terrainLevel = 4};
+    SessionOptions options{.path = path(), .preview = preview};
+    options.fullSolveStarting = [&] {
+        std::unique_lock lock(mutex);
+        ++started;
+        changed.notify_all();
+        if (started == 2) changed.wait(lock, [&] { return release; });
+    };
+    Session session(context(), options);
+    struct Release { // never leaves the solve held (the session's destructor waits for it)
+        std::mutex& mutex;
+        std::condition_variable& changed;
+        bool& release;
+        void operator()() {
+            const std::lock_guard lock(mutex);
+            release = true;
+            changed.notify_all();
+        }
+        ~Release() { (*this)(); }
+    } releaseSolve{mutex, changed, release};
+    ASSERT_TRUE(session.refining()) << session.lastError();
+    ASSERT_EQ(waitForRefine(session), std::optional<bool>(true)) << session.lastError();
+
+    ASSERT_TRUE(session.setParameter("cliffs.face.constraint[1].amplitude", 2)) << session.lastError();
+    {
+        std::unique_lock lock(mutex);
+        ASSERT_TRUE(changed.wait_for(lock, std::chrono::seconds(60), [&] { return started == 2; }));
+    }
+    ASSERT_TRUE(session.setParameter("cliffs.face.constraint[1].amplitude", 4)) << session.lastError();
+    releaseSolve();
+    ASSERT_EQ(waitForRefine(session), std::optional<bool>(true)) << session.lastError();
+    EXPECT_EQ(session.stoppedSolves(), 1u);
+    {
+        const std::lock_guard lock(mutex);
+        EXPECT_EQ(started, 3); // the opening's, the stopped one and the second move's
+    }
+    std::string text = kBlocksProgram;
+    const std::string secondPoint = "constraint { t = 1; material = sand; }";
+    text.replace(text.find(secondPoint), secondPoint.size(), "constraint { t = 1; material = sand; amplitude = 4; }");
+    expectWorldOfFile(session, text);
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 #include "voxc/stages/Solve.h"
 
 #include "voxc/core/Errors.h"
+#include "voxc/core/Stopped.h"
 #include "voxc/generators/curves/Scene.h"
 #include "voxc/generators/terrain/Block.h"
 #include "voxc/codegen/CompileCache.h"
@@ -20,6 +21,20 @@ UserError solveError(const Program& program, const CurvesBlock& block, const cha
                                  block.loc.column, what, block.name, why));
 }
 
+// The erosion runner of `options`, run in batches of kStopErosionSteps with a look at the stop
+// token before each when it can be asked to stop (the steps keep their numbers, so the same bits).
+terrain::ErosionRunner stoppable(const SolveOptions& options) {
+    if (!options.stop.stop_possible()) return options.erosionRunner;
+    const terrain::ErosionRunner inner = options.erosionRunner ? options.erosionRunner : terrain::ErosionRunner(terrain::runErosionSteps);
+    return [inner, stop = options.stop](terrain::ErosionGrid& grid, const terrain::ErosionParams& params, int32_t level,
+                                        uint32_t firstStep, uint32_t steps, bool drain) {
+        for (uint32_t done = 0; done < steps; done += kStopErosionSteps) {
+            throwIfStopped(stop);
+            inner(grid, params, level, firstStep + done, std::min(kStopErosionSteps, steps - done), drain);
+        }
+    };
+}
+
 // The block's table over its whole box: from the solve cache when it holds it, else solved (and
 // kept there). Channels are never kept, so a run that asks for them solves.
 SolveTable solveWhole(const Program& program, const CurvesBlock& block, const SolveOptions& options) {
@@ -37,13 +52,15 @@ SolveTable solveWhole(const Program& program, const CurvesBlock& block, const So
     SolveTable table;
     if (block.scene) {
         try {
-            table = curves::solveScene(*block.scene, curves::Limits{}, options.solvers, options.keepChannels);
+            curves::Solvers solvers = options.solvers;
+            solvers.stop = options.stop;
+            table = curves::solveScene(*block.scene, curves::Limits{}, solvers, options.keepChannels);
         } catch (const curves::ConvergenceError& e) {
             throw solveError(program, block, "curves", e.what());
         }
     } else {
         try {
-            table = terrain::solveTerrain(*block.terrain, options.erosionRunner).table;
+            table = terrain::solveTerrain(*block.terrain, stoppable(options)).table;
         } catch (const terrain::LimitError& e) {
             throw solveError(program, block, "terrain", e.what());
         }

@@ -5,6 +5,7 @@
 #include "voxc/check/KeyRanges.h"
 #include "voxc/core/AtomicWrite.h"
 #include "voxc/core/Errors.h"
+#include "voxc/core/Stopped.h"
 #include "voxc/core/Suggest.h"
 #include "voxc/generators/dey/Generators.h"
 #include "voxc/stages/Pipeline.h"
@@ -16,6 +17,8 @@
 #include <chrono>
 #include <condition_variable>
 #include <mutex>
+#include <optional>
+#include <stop_token>
 #include <sys/resource.h>
 #include <sys/syscall.h>
 #include <thread>
@@ -232,8 +235,9 @@ void Session::listParameters(const ast::File& file) {
 
 // Solves programs in the background, one at a time, newest first: a request made while one is
 // solving replaces any request still waiting, and only the newest ticket's outcome is kept, so a
-// newer slider move supersedes an older refine (a solve already running is not interrupted; its
-// table still reaches the solve cache).
+// newer slider move supersedes an older refine; a solve already running is asked to stop, and
+// stops at its next V-cycle, pass or batch of erosion steps, leaving nothing in the solve cache,
+// so the newer preview and solve have both cores.
 class Session::Refiner {
     static constexpr int kRefineNice = 10;
 
@@ -245,7 +249,7 @@ public:
         double ms = 0.0;
     };
 
-    Refiner() : thread_([this] { work(); }) {}
+    explicit Refiner(std::function<void()> starting) : starting_(std::move(starting)), thread_([this] { work(); }) {}
     ~Refiner() {
         {
             const std::lock_guard lock(mutex_);
@@ -270,6 +274,11 @@ public:
         latest_ = ticket;
         pending_.reset();
         done_.reset();
+        if (running_) running_->request_stop();
+    }
+    uint64_t stopped() const {
+        const std::lock_guard lock(mutex_);
+        return stopped_;
     }
     std::optional<Outcome> take() {
         const std::lock_guard lock(mutex_);
@@ -289,24 +298,36 @@ private:
             if (stop_) return;
             auto [ticket, program] = std::move(*pending_);
             pending_.reset();
+            running_.emplace();
+            const std::stop_token stop = running_->get_token();
             lock.unlock();
             Outcome outcome;
             outcome.ticket = ticket;
             const auto start = std::chrono::steady_clock::now();
+            bool stopped = false;
             try {
-                stages::solveBlocks(program); // what compileProgram would solve: the same tables
+                if (starting_) starting_();
+                // What compileProgram would solve: the same tables.
+                stages::solveBlocks(program, stages::SolveOptions{.stop = stop});
                 outcome.program = std::move(program);
+            } catch (const Stopped&) {
+                stopped = true;
             } catch (const std::exception& e) {
                 outcome.error = e.what();
             }
             outcome.ms = millisecondsSince(start);
             lock.lock();
-            if (ticket == latest_) done_ = std::move(outcome);
+            running_.reset();
+            stopped_ += stopped;
+            if (ticket == latest_ && !stopped) done_ = std::move(outcome);
         }
     }
 
-    std::mutex mutex_;
+    const std::function<void()> starting_;
+    mutable std::mutex mutex_;
     std::condition_variable wake_;
+    std::optional<std::stop_source> running_; // the solve in progress's
+    uint64_t stopped_ = 0;
     bool stop_ = false;
     uint64_t latest_ = 0;
     std::optional<std::pair<uint64_t, Program>> pending_;
@@ -362,7 +383,7 @@ bool Session::reload() {
             stats.solveMs = millisecondsSince(start);
             supersedeRefine();
             show(std::move(*preview), stats);
-            if (!refiner_) refiner_ = std::make_unique<Refiner>();
+            if (!refiner_) refiner_ = std::make_unique<Refiner>(options_.fullSolveStarting);
             refiner_->submit(ticket_, std::move(program));
             refining_ = true;
         } else {
@@ -418,6 +439,8 @@ void Session::show(Program program, WorldStats stats) {
     stats_ = stats;
     ++generation_;
 }
+
+uint64_t Session::stoppedSolves() const { return refiner_ ? refiner_->stopped() : 0; }
 
 std::optional<bool> Session::poll() {
     if (!refining_ || !refiner_) return std::nullopt;

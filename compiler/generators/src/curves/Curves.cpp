@@ -14,9 +14,11 @@ namespace voxc::curves {
 
 namespace {
 
-// Runs `part` and appends its wall time to `phases` under `name`.
+// Runs `part` and appends its wall time to `phases` under `name`; first throws Stopped when `stop` is requested.
 template <typename Part>
-void timed(std::vector<std::pair<std::string, double>>& phases, const char* name, Part&& part) {
+void timed(std::vector<std::pair<std::string, double>>& phases, const char* name, Part&& part,
+           const std::stop_token& stop = {}) {
+    throwIfStopped(stop);
     const auto start = std::chrono::steady_clock::now();
     part();
     phases.emplace_back(name, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
@@ -33,7 +35,12 @@ constexpr float kSolveTolerance = 1e-4f;
 // are moved into the unknowns), else null (they are copied).
 Result solve(const Constraints& cs, Constraints* owned, const Options& options, const Limits& limits,
              const Solvers& solvers) {
-    const LinearSolver& linear = solvers.linear ? solvers.linear : LinearSolver(solveLaplace);
+    const LinearSolver& linear =
+        solvers.linear ? solvers.linear
+                       : LinearSolver([&](const std::string& name, const std::vector<uint8_t>& fixed,
+                                          std::vector<Field3*> components, float tolerance, const Limits& l) {
+                             return solveLaplaceUntilStopped(name, fixed, std::move(components), tolerance, l, solvers.stop);
+                         });
     checkBox(cs.box, limits);
     if (!(std::isfinite(options.k) && options.k > 0.0f)) throw ParameterError("k", options.k, "must be finite and > 0");
     if (options.smoothPasses < 0 || options.smoothPasses > limits.maxSmoothPasses)
@@ -57,7 +64,7 @@ Result solve(const Constraints& cs, Constraints* owned, const Options& options, 
             r.solves.push_back(linear("normals", maskOf(kInNormals), {&x, &y, &z}, kSolveTolerance, limits));
             normalizeField(x, y, z, x, y, z);
             r.normalX = std::move(x), r.normalY = std::move(y), r.normalZ = std::move(z);
-        });
+        }, solvers.stop);
     } else {
         const uint32_t sweeps = options.sweeps != 0 ? options.sweeps : uint32_t(std::max({b.size.x, b.size.y, b.size.z}));
         if (sweeps > limits.maxSweeps) throw LimitError("Perona-Malik sweeps", sweeps, limits.maxSweeps);
@@ -69,7 +76,7 @@ Result solve(const Constraints& cs, Constraints* owned, const Options& options, 
             else peronaMalikSweeps(cs, n, options.k, sweeps);
             normalizeField(n.x, n.y, n.z, n.x, n.y, n.z);
             r.normalX = std::move(n.x), r.normalY = std::move(n.y), r.normalZ = std::move(n.z);
-        });
+        }, solvers.stop);
     }
     if (!solvers.material && !solvers.surface) {
         // The host's fronts are independent and single-threaded (growLayers): one per core,
@@ -81,13 +88,13 @@ Result solve(const Constraints& cs, Constraints* owned, const Options& options, 
                    [&] { growSurface(cs, r.normalX, r.normalY, r.normalZ, options.propagate, surface); });
             r.material = std::move(material.field);
             r.surface = std::move(surface.field);
-        });
+        }, solvers.stop);
     } else {
-        timed(r.phaseMs, "material", [&] { r.material = (solvers.material ? solvers.material : propagateMaterial)(cs); });
+        timed(r.phaseMs, "material", [&] { r.material = (solvers.material ? solvers.material : propagateMaterial)(cs); }, solvers.stop);
         timed(r.phaseMs, "surface", [&] {
             r.surface = (solvers.surface ? solvers.surface : SurfacePropagator(propagateSurface))(
                 cs, r.normalX, r.normalY, r.normalZ, options.propagate);
-        });
+        }, solvers.stop);
     }
     // The parameters after the fronts, which do not read them: the fronts' scratch is free again
     // by then and holds the parameters' fields and solve, so the solve's peak heap (the fronts
@@ -100,10 +107,10 @@ Result solve(const Constraints& cs, Constraints* owned, const Options& options, 
         r.amplitude = owned ? std::move(owned->amplitude) : cs.amplitude;
         r.roughness = owned ? std::move(owned->roughness) : cs.roughness;
         r.solves.push_back(linear("parameters", fixed, {&r.amplitude, &r.roughness}, kSolveTolerance * maxAmplitude, limits));
-    });
+    }, solvers.stop);
     timed(r.phaseMs, "smoothing", [&] {
         r.smoothed = (solvers.smoothing ? solvers.smoothing : Smoother(smoothBinomial))(r.surface.distance, options.smoothPasses);
-    });
+    }, solvers.stop);
     return r;
 }
 

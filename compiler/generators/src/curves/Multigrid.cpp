@@ -606,6 +606,12 @@ float maxResidual(const std::vector<uint8_t>& fixed, const Field3& u) {
 
 SolveReport solveLaplace(const std::string& name, const std::vector<uint8_t>& fixed, std::vector<Field3*> components,
                          float tolerance, const Limits& limits) {
+    return solveLaplaceUntilStopped(name, fixed, std::move(components), tolerance, limits, {});
+}
+
+SolveReport solveLaplaceUntilStopped(const std::string& name, const std::vector<uint8_t>& fixed,
+                                     std::vector<Field3*> components, float tolerance, const Limits& limits,
+                                     const std::stop_token& stop) {
     if (components.empty()) throw InternalError("curves: a linear solve without components");
     for (const Field3* c : components)
         if (c->box.size != components.front()->box.size || c->values.size() != fixed.size())
@@ -650,6 +656,7 @@ SolveReport solveLaplace(const std::string& name, const std::vector<uint8_t>& fi
     smooth(levels.back(), kCoarsestSweeps, levels.size() == 1);
     stages.push_back({levels.back().box.size, maxResidualOf(levels.back())});
     for (size_t l = levels.size() - 1; l-- > 0;) {
+        throwIfStopped(stop);
         for (size_t c = 0; c < components.size(); ++c) prolong(levels[l + 1].box, levels[l + 1].u[c], levels[l], levels[l].u[c], false);
         stages.push_back({levels[l].box.size, vCycle(levels, l)});
     }
@@ -658,6 +665,7 @@ SolveReport solveLaplace(const std::string& name, const std::vector<uint8_t>& fi
     while (!(report.residuals.back() <= tolerance)) {
         if (report.cycles() >= limits.maxCycles)
             throw ConvergenceError(name, report.cycles(), report.residuals.back(), tolerance);
+        throwIfStopped(stop);
         report.residuals.push_back(vCycle(levels, 0));
     }
     return report;

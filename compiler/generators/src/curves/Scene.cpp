@@ -80,6 +80,7 @@ SolveTable solveScene(const Scene& scene, const Limits& limits, const Solvers& s
                         : solveCurves(voxelize(scene.curves, scene.box, scene.options.seedValue, limits, scene.inputs,
                                                scene.inputOptions),
                                       scene.options, limits, solvers);
+    throwIfStopped(solvers.stop);
     const auto densityStart = std::chrono::steady_clock::now();
     if (!keepChannels) {
         // What the density does not read goes back to the heap before the table is allocated, so

@@ -10,6 +10,7 @@
 #include "voxc/program/Program.h"
 
 #include <optional>
+#include <stop_token>
 
 namespace voxc::stages {
 
@@ -17,7 +18,13 @@ struct SolveOptions {
     curves::Solvers solvers{}; // where the curves' global passes run: empty members, the host's loops
     bool keepChannels = false; // keep the solve's channels in the table (SolveTable::channels, --dump)
     terrain::ErosionRunner erosionRunner{}; // where terrain erosion steps run: empty, the host's loop
+    // Asked to stop, the solve in progress throws voxc::Stopped at its next boundary (a curves
+    // pass or V-cycle, a batch of kStopErosionSteps erosion steps) and nothing reaches the cache.
+    std::stop_token stop{};
 };
+
+// How many erosion steps a stoppable terrain solve runs between two looks at SolveOptions::stop.
+inline constexpr uint32_t kStopErosionSteps = 8;
 
 // Solves every curves and terrain block of `program` that has no table yet, in declaration order,
 // over its whole declared box (curves::solveScene; a terrain over the checked world,

@@ -60,6 +60,9 @@ struct SessionOptions {
     // Which curves and terrain blocks are shown coarse first while their full solve runs in the
     // background (Preview.h; docs/viewer.md, "Progressive preview").
     PreviewOptions preview = {};
+    // Called on the background thread as each full solve starts, before its first pass (tests
+    // hold a solve there until a newer reload has superseded it).
+    std::function<void()> fullSolveStarting = {};
 };
 
 // What the last successful run made, for the panel's statistics.
@@ -97,6 +100,9 @@ public:
     bool reload();
     // Whether a background solve will replace the preview on screen.
     bool refining() const { return refining_; }
+    // Background solves a newer reload stopped while they ran (at a V-cycle, a pass or a batch of
+    // erosion steps: stages::SolveOptions::stop).
+    uint64_t stoppedSolves() const;
     // Shows the background solve's world once it is done: nothing while it runs (or when there is
     // none), true when the world was replaced (the one a reload without a preview makes), false
     // when the solve or the run failed (lastError(); the preview stays). Call it from the thread

@@ -2,6 +2,7 @@
 // The linear solves (spec A3.4 laplace, A3.5, schedule A5): sum over in-box face neighbours of
 // (u_j - u_i) = 0 off the Dirichlet mask, homogeneous Neumann at the box faces, by geometric
 // multigrid in float32 with the fixed operation order of docs/curves.md.
+#include "voxc/core/Stopped.h"
 #include "voxc/generators/curves/Grid.h"
 #include "voxc/generators/curves/Limits.h"
 #include "voxc/program/SolveTable.h"
@@ -42,6 +43,10 @@ std::vector<std::vector<uint8_t>> multigridMasks(const std::vector<MultigridLeve
 // free cells then hold the last iterate).
 SolveReport solveLaplace(const std::string& name, const std::vector<uint8_t>& fixed, std::vector<Field3*> components,
                          float tolerance, const Limits& limits);
+// solveLaplace that throws voxc::Stopped before its next V-cycle once `stop` is requested.
+SolveReport solveLaplaceUntilStopped(const std::string& name, const std::vector<uint8_t>& fixed,
+                                     std::vector<Field3*> components, float tolerance, const Limits& limits,
+                                     const std::stop_token& stop);
 
 // How a curves solve runs its linear solves: solveLaplace on the host, or the same schedule on a
 // Vulkan device (voxc/vulkan/GpuMultigrid.h), bit for bit on lavapipe.

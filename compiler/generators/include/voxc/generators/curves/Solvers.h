@@ -7,6 +7,7 @@
 #include "voxc/generators/curves/Propagate.h"
 
 #include <functional>
+#include <stop_token>
 #include <utility>
 
 namespace voxc::curves {
@@ -33,6 +34,9 @@ struct Solvers {
     MaterialPropagator material;
     SurfacePropagator surface;
     Displacer displacement;
+    // Asked to stop, the solve throws voxc::Stopped at its next boundary: before each pass, and
+    // before each V-cycle of the host's linear solves (a device's run theirs whole).
+    std::stop_token stop;
 
     Solvers() = default;
     // Only the linear solves replaced (the first device pass; callers that hand a LinearSolver).
