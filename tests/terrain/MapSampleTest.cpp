@@ -113,7 +113,7 @@ pipeline { start; set ground; }
     const ir::IrModule module = ir::lowerProgram(program, {});
     const ir::IrField& lowered = module.fields.at(0);
     for (size_t i = 0; i < lowered.nodes.size(); ++i)
-        if (lowered.nodes[i].kind == FieldNode::Kind::Map) EXPECT_TRUE(lowered.perColumn.at(i));
+        if (lowered.nodes[i].kind == FieldNode::Kind::Map) { EXPECT_TRUE(lowered.perColumn.at(i)); }
     // The interpreter's voxels are solid exactly below the sampled height.
     const DenseGrid grid = interpret(program);
     for (int z = 0; z < 24; ++z)

@@ -459,7 +459,10 @@ std::vector<CurvesBlock> checkCurves(Context& context, const ast::File& file, co
     for (const ast::Block& block : file.blocks) {
         if (block.kind != "curves") continue;
         if (!checkLabel(context, block, true) || !block.label) continue;
-        CurvesBlock out{*block.label, block.loc, "curves"};
+        CurvesBlock out;
+        out.name = *block.label;
+        out.loc = block.loc;
+        out.source = "curves";
         if (!claimStageName(context, block, names, stageNames)) {
             blocks.push_back(std::move(out));
             continue;

@@ -335,7 +335,10 @@ std::vector<CurvesBlock> checkTerrains(Context& context, const ast::File& file, 
     for (const ast::Block& block : file.blocks) {
         if (block.kind != "terrain") continue;
         if (!checkLabel(context, block, true) || !block.label) continue;
-        CurvesBlock out{*block.label, block.loc, "terrain"};
+        CurvesBlock out;
+        out.name = *block.label;
+        out.loc = block.loc;
+        out.source = "terrain";
         if (!claimStageName(context, block, names, usedNames)) {
             blocks.push_back(std::move(out));
             continue;

@@ -190,9 +190,9 @@ private:
 };
 
 // The gathered cells of the slices [zBegin, zEnd), in the order they were first hit.
-class Slab {
+class GatheredSlab {
 public:
-    Slab(const Box& box, int32_t zBegin, int32_t zEnd) : box_(box), zBegin_(zBegin), zEnd_(zEnd) {}
+    GatheredSlab(const Box& box, int32_t zBegin, int32_t zEnd) : box_(box), zBegin_(zBegin), zEnd_(zEnd) {}
 
     // Gathers each triangle in the order given into the cells of this slab it overlaps (with
     // `allowed`, only the cells it marks). Stops once it would hold more than `maxCells` cells:
@@ -365,7 +365,7 @@ public:
     // Marks every cell within Chebyshev distance `radius` of a gathered cell as not allowed.
     void closeAround(std::vector<uint8_t>& allowed, int32_t radius) const {
         std::vector<uint8_t> near(box_.cellCount(), 0);
-        for (const std::optional<Slab>* slab : {&lower_, &upper_})
+        for (const std::optional<GatheredSlab>* slab : {&lower_, &upper_})
             if (*slab)
                 for (size_t cell : (*slab)->cells()) near[cell] = 1;
         // A Chebyshev ball is a cube: dilate along x, then y, then z.
@@ -405,7 +405,7 @@ public:
         GatheredConstraints out;
         out.box = box_;
         out.cells.reserve(size());
-        for (const std::optional<Slab>* slab : {&lower_, &upper_})
+        for (const std::optional<GatheredSlab>* slab : {&lower_, &upper_})
             if (*slab) writeSlab(**slab, out);
         return out;
     }
@@ -416,7 +416,7 @@ private:
 
     size_t size() const { return lower_->size() + (upper_ ? upper_->size() : 0); }
 
-    static void writeSlab(const Slab& slab, GatheredConstraints& out) {
+    static void writeSlab(const GatheredSlab& slab, GatheredConstraints& out) {
         for (size_t i = 0; i < slab.size(); ++i) {
             const Gather& g = slab.gather(i);
             GatheredConstraints::Cell cell;
@@ -446,7 +446,7 @@ private:
     uint64_t tests_ = 0, testsPast_ = 0;
     std::vector<PlacedTriangle> queue_;
     std::deque<RibbonTriangle> inputs_; // the input triangles queued (a deque keeps their addresses)
-    std::optional<Slab> lower_, upper_; // the slices below the box's middle z and the rest (none for one slice)
+    std::optional<GatheredSlab> lower_, upper_; // the slices below the box's middle z and the rest (none for one slice)
 };
 
 } // namespace
