@@ -6,7 +6,7 @@
 # `voxc run` on lavapipe with every cache off (--no-cache, MESA_SHADER_CACHE_DISABLE), so each
 # run compiles GLSL, SPIR-V and the driver's code afresh. The figure is the process's CPU time
 # (user + system, every thread), not wall time, so the load of other processes does not count;
-# the two groups alternate, after one untimed run of each, and the least of two runs is taken.
+# the two groups alternate and the least of two runs is taken.
 # The bound is generous: a ratio, never an absolute speed.
 set -u
 voxc=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
@@ -32,10 +32,9 @@ print("%.3f" % (usage.ru_utime + usage.ru_stime))
 ' "$voxc" run "$1" --no-cache --device lavapipe -o "$work/out.glb"; }
 
 declare -A best
-for round in warmup 1 2; do
+for round in 1 2; do
     for group in none all; do
         seconds=$(cpu_seconds "$work/$group.vox") || { fail "run_$group ($round)"; continue; }
-        [[ $round == warmup ]] && continue
         if [[ -z ${best[$group]:-} ]] || python3 -c "import sys; sys.exit(not $seconds < ${best[$group]})"; then
             best[$group]=$seconds
         fi

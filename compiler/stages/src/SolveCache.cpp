@@ -9,8 +9,8 @@
 #include <dlfcn.h>
 #include <fmt/format.h>
 #include <fstream>
+#include <memory>
 #include <mutex>
-#include <sstream>
 #include <sys/stat.h>
 
 namespace voxc::stages {
@@ -273,15 +273,20 @@ std::string solveKey(const CurvesBlock& block, bool onDevice) {
 
 std::optional<SolveTable> readSolve(const std::filesystem::path& directory, const std::string& key, bool& corrupted) {
     corrupted = false;
-    std::ifstream in(entryPath(directory, key), std::ios::binary);
+    std::ifstream in(entryPath(directory, key), std::ios::binary | std::ios::ate);
     if (!in) return std::nullopt;
-    std::stringstream bytes;
-    bytes << in.rdbuf();
-    const std::string contents = bytes.str();
+    // One read into an unfilled buffer of the file's size: a stringstream grows by copies and a
+    // zeroed string is written twice, which for a 200 MB terrain table cost more than the hash.
+    const std::streamoff size = in.tellg();
+    if (size < 0) return std::nullopt;
+    const std::unique_ptr<char[]> bytes(new char[size_t(size)]);
+    in.seekg(0);
+    if (!in.read(bytes.get(), size)) return std::nullopt;
+    const std::string_view contents(bytes.get(), size_t(size));
     corrupted = true;
     const size_t head = kMagic.size() + kDigestHexSize + 1;
     if (contents.size() <= head || !contents.starts_with(kMagic) || contents[head - 1] != '\n') return std::nullopt;
-    const std::string_view body = std::string_view(contents).substr(head);
+    const std::string_view body = contents.substr(head);
     if (sha256Hex(body) != contents.substr(kMagic.size(), kDigestHexSize)) return std::nullopt;
     std::optional<SolveTable> table = deserialise(body);
     corrupted = !table;
