@@ -73,6 +73,20 @@ void pointSetColumnSegmentStep(float px, float pz, vec4 yLo, vec4 yHi, int segme
 
 bvec4 pointSetColumnBoth(bvec4 a, bvec4 b) { return bvec4(a.x && b.x, a.y && b.y, a.z && b.z, a.w && b.w); }
 
+// A block of 8 list entries takes the step at i, then these seven (none at a block of 1).
+#if POINT_SET_BLOCK == 8
+#define POINT_SET_COLUMN_NEXT_SEVEN(step, items, item, count) \
+    step(px, pz, yLo, yHi, items, item, i + 1, count, live, nearestLo, nearestHi); \
+    step(px, pz, yLo, yHi, items, item, i + 2, count, live, nearestLo, nearestHi); \
+    step(px, pz, yLo, yHi, items, item, i + 3, count, live, nearestLo, nearestHi); \
+    step(px, pz, yLo, yHi, items, item, i + 4, count, live, nearestLo, nearestHi); \
+    step(px, pz, yLo, yHi, items, item, i + 5, count, live, nearestLo, nearestHi); \
+    step(px, pz, yLo, yHi, items, item, i + 6, count, live, nearestLo, nearestHi); \
+    step(px, pz, yLo, yHi, items, item, i + 7, count, live, nearestLo, nearestHi)
+#else
+#define POINT_SET_COLUMN_NEXT_SEVEN(step, items, item, count)
+#endif
+
 // values[s] = pointSetDistances(set, vec3(px, pointSetColumnArgY(site, blockY + s), pz)) for the
 // voxels blockY + s before blockEnd (at most 8 of them); the other entries are unused.
 void pointSetColumnFill(int site, int set, float px, float pz, int blockY, int blockEnd, out vec2 values[8]) {
@@ -126,15 +140,7 @@ void pointSetColumnFill(int site, int set, float px, float pz, int blockY, int b
         bool live = true;
         for (int i = 0; live && i < centreCount; i += POINT_SET_BLOCK) {
             pointSetColumnCentreStep(px, pz, yLo, yHi, centres, centreItem, i, centreCount, live, nearestLo, nearestHi);
-#if POINT_SET_BLOCK == 8
-            pointSetColumnCentreStep(px, pz, yLo, yHi, centres, centreItem, i + 1, centreCount, live, nearestLo, nearestHi);
-            pointSetColumnCentreStep(px, pz, yLo, yHi, centres, centreItem, i + 2, centreCount, live, nearestLo, nearestHi);
-            pointSetColumnCentreStep(px, pz, yLo, yHi, centres, centreItem, i + 3, centreCount, live, nearestLo, nearestHi);
-            pointSetColumnCentreStep(px, pz, yLo, yHi, centres, centreItem, i + 4, centreCount, live, nearestLo, nearestHi);
-            pointSetColumnCentreStep(px, pz, yLo, yHi, centres, centreItem, i + 5, centreCount, live, nearestLo, nearestHi);
-            pointSetColumnCentreStep(px, pz, yLo, yHi, centres, centreItem, i + 6, centreCount, live, nearestLo, nearestHi);
-            pointSetColumnCentreStep(px, pz, yLo, yHi, centres, centreItem, i + 7, centreCount, live, nearestLo, nearestHi);
-#endif
+            POINT_SET_COLUMN_NEXT_SEVEN(pointSetColumnCentreStep, centres, centreItem, centreCount);
         }
         centreLo = mix(centreLo, nearestLo, inLo);
         centreHi = mix(centreHi, nearestHi, inHi);
@@ -144,15 +150,7 @@ void pointSetColumnFill(int site, int set, float px, float pz, int blockY, int b
         live = true;
         for (int i = 0; live && i < segmentCount; i += POINT_SET_BLOCK) {
             pointSetColumnSegmentStep(px, pz, yLo, yHi, segments, segmentItem, i, segmentCount, live, nearestLo, nearestHi);
-#if POINT_SET_BLOCK == 8
-            pointSetColumnSegmentStep(px, pz, yLo, yHi, segments, segmentItem, i + 1, segmentCount, live, nearestLo, nearestHi);
-            pointSetColumnSegmentStep(px, pz, yLo, yHi, segments, segmentItem, i + 2, segmentCount, live, nearestLo, nearestHi);
-            pointSetColumnSegmentStep(px, pz, yLo, yHi, segments, segmentItem, i + 3, segmentCount, live, nearestLo, nearestHi);
-            pointSetColumnSegmentStep(px, pz, yLo, yHi, segments, segmentItem, i + 4, segmentCount, live, nearestLo, nearestHi);
-            pointSetColumnSegmentStep(px, pz, yLo, yHi, segments, segmentItem, i + 5, segmentCount, live, nearestLo, nearestHi);
-            pointSetColumnSegmentStep(px, pz, yLo, yHi, segments, segmentItem, i + 6, segmentCount, live, nearestLo, nearestHi);
-            pointSetColumnSegmentStep(px, pz, yLo, yHi, segments, segmentItem, i + 7, segmentCount, live, nearestLo, nearestHi);
-#endif
+            POINT_SET_COLUMN_NEXT_SEVEN(pointSetColumnSegmentStep, segments, segmentItem, segmentCount);
         }
         segmentLo = mix(segmentLo, nearestLo, inLo);
         segmentHi = mix(segmentHi, nearestHi, inHi);
