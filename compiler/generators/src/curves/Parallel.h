@@ -8,30 +8,6 @@
 
 namespace voxc::curves {
 
-// Calls slab(z0, z1) for [0, mid) on a second thread and [mid, count) on this one; small counts
-// (under `minimum`) run on this thread alone. `slab` must only write cells of its own slices.
-template <typename Slab>
-void forTwoSlabs(int32_t count, int32_t minimum, Slab&& slab) {
-    if (count < minimum || count < 2) return slab(0, count);
-    const int32_t mid = count / 2;
-    std::exception_ptr failed; // what the second thread threw (std::bad_alloc), rethrown here
-    std::thread other([&] {
-        try {
-            slab(0, mid);
-        } catch (...) {
-            failed = std::current_exception();
-        }
-    });
-    try {
-        slab(mid, count);
-    } catch (...) {
-        other.join();
-        throw;
-    }
-    other.join();
-    if (failed) std::rethrow_exception(failed);
-}
-
 // Runs `first` on a second thread and `second` on this one; rethrows what either threw.
 template <typename First, typename Second>
 void bothOf(First&& first, Second&& second) {
@@ -51,6 +27,15 @@ void bothOf(First&& first, Second&& second) {
     }
     other.join();
     if (failed) std::rethrow_exception(failed);
+}
+
+// Calls slab(z0, z1) for [0, mid) on a second thread and [mid, count) on this one; small counts
+// (under `minimum`) run on this thread alone. `slab` must only write cells of its own slices.
+template <typename Slab>
+void forTwoSlabs(int32_t count, int32_t minimum, Slab&& slab) {
+    if (count < minimum || count < 2) return slab(0, count);
+    const int32_t mid = count / 2;
+    bothOf([&] { slab(0, mid); }, [&] { slab(mid, count); });
 }
 
 } // namespace voxc::curves
