@@ -1,6 +1,6 @@
 // warpedFbmBatch equals the builtin's single-point evaluation bit for bit (its AVX2 lanes run the
 // same operations in the same order), over points at every scale the curves displacement uses,
-// large and negative coordinates, every roughness, a ragged tail and non-finite inputs.
+// large and negative coordinates, every roughness, every tail length and non-finite inputs.
 #include "voxc/builtins/Functions.h"
 #include "voxc/builtins/NoiseBatch.h"
 
@@ -41,6 +41,13 @@ TEST(NoiseBatch, WarpedFbmEqualsTheBuiltinBitForBit) {
             size_t exact = 0;
             for (size_t i = 0; i < n; ++i) exact += sameBits(out[i], scalarWarpedFbm(x[i], y[i], z[i], r[i], low, high, seed));
             EXPECT_EQ(exact, n) << "seed " << seed << " scale " << scale;
+            // Every tail length alone (one register padded with copies of the last point).
+            for (size_t tail = 1; tail < 8; ++tail) {
+                warpedFbmBatch(x.data(), y.data(), z.data(), r.data(), low, high, seed, tail, out.data());
+                for (size_t i = 0; i < tail; ++i)
+                    EXPECT_TRUE(sameBits(out[i], scalarWarpedFbm(x[i], y[i], z[i], r[i], low, high, seed)))
+                        << "tail " << tail << " point " << i;
+            }
         }
 }
 

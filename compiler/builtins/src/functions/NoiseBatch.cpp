@@ -3,6 +3,7 @@
 #include "Noise.h"
 #include "NoiseCommon.h"
 
+#include <algorithm>
 #include <cmath>
 
 #if defined(__GNUC__) && defined(__x86_64__)
@@ -144,6 +145,20 @@ void warpedFbmBatch(const float* x, const float* y, const float* z, const float*
             float base[8];
             for (int lane = 0; lane < 8; ++lane) base[lane] = std::exp2(-(1.0f - roughness[i + size_t(lane)]));
             warpedFbm8(x + i, y + i, z + i, base, warpLow, warpHigh, table, offsets, out + i);
+        }
+        if (i < n) {
+            // The last 1-7 points in one register too, padded with copies of the last one (lanes
+            // are independent): the scalar code took as long per point as the register for
+            // eight, and the curves' displacement batches are rows of a few dozen points.
+            float px[8], py[8], pz[8], base[8], result[8];
+            for (size_t lane = 0; lane < 8; ++lane) {
+                const size_t j = std::min(i + lane, n - 1);
+                px[lane] = x[j], py[lane] = y[j], pz[lane] = z[j];
+                base[lane] = std::exp2(-(1.0f - roughness[j]));
+            }
+            warpedFbm8(px, py, pz, base, warpLow, warpHigh, table, offsets, result);
+            for (size_t lane = 0; i + lane < n; ++lane) out[i + lane] = result[lane];
+            i = n;
         }
     }
 #endif
