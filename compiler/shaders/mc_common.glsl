@@ -12,8 +12,7 @@ layout(push_constant, std430) uniform McPush {
     ivec4 tileFirst;      // xyz: first world 8^3 tile holding cells; w: voxel-buffer slots along y
     ivec4 tileCount;      // xyz: such tiles per axis (the voxel tiles: one more per axis); w: unused
     vec4 surface;         // x: iso; y, z: the crossing's clamp, margin and 1 - margin
-    uvec4 levelOffset;    // element offsets of scan levels 0..3 in the scan buffer (level 0: the segments)
-    uvec4 pass;           // x: workgroups along x; y: scanned levels; z: items of this dispatch; w: scan level
+    uvec4 pass;           // x: workgroups along x; y: items of this dispatch; zw: unused
 } push;
 
 // Densities and material ids (low byte of a uint), chunk-major at the same addresses, as uniform
@@ -24,15 +23,15 @@ layout(set = 0, binding = 0) uniform samplerBuffer densityTexels;
 layout(set = 0, binding = 1) uniform usamplerBuffer materialTexels;
 // The densities again, four to a texel: a row of a chunk is contiguous, so four samples from
 // x = 0 mod 4 along it are one fetch.
-layout(set = 0, binding = 9) uniform samplerBuffer quadTexels;
+layout(set = 0, binding = 6) uniform samplerBuffer quadTexels;
 
 float densityTexel(uint address) { return texelFetch(densityTexels, int(address)).x; }
 vec4 quadTexel(uint quad) { return texelFetch(quadTexels, int(quad)); }
 
 // The active tiles' indices by rank, and the segments in global key order (below), as the host
 // listed them.
-layout(set = 0, binding = 11) uniform usamplerBuffer activeTileTexels;
-layout(set = 0, binding = 12) uniform usamplerBuffer segmentTexels;
+layout(set = 0, binding = 8) uniform usamplerBuffer activeTileTexels;
+layout(set = 0, binding = 9) uniform usamplerBuffer segmentTexels;
 uint activeTile(uint rank) { return texelFetch(activeTileTexels, int(rank)).x; }
 uint segmentSlot(uint index) { return texelFetch(segmentTexels, int(index)).x; }
 // Per case 10 words: the triangle count, then 36 edge indices, four bytes to a word.
@@ -101,7 +100,7 @@ uint materialAt(ivec3 p) {
 // that hold a cell the surface crosses, listed by the host in tile order (z, then y, then x) and
 // ranked. A cell of an active tile has a slot, rank * 512 + its place in the tile (x fastest); a
 // segment is the row of a tile's cells along x at one (y, z), slot / 8. The host also lists the
-// segments in global key order (segments.slot), the order of the scan.
+// segments in global key order (segments.slot), the order of the mesh.
 const uint kTileShift = 3u;
 const uint kTileSide = 1u << kTileShift;
 
@@ -112,11 +111,6 @@ ivec3 segmentWorldCell(uint activeTile, uint segmentSlot) {
     return (tile << kTileShift) + ivec3(0, segmentSlot & 7u, (segmentSlot >> 3) & 7u);
 }
 
-// mc_count.glsl and mc_compact.glsl take a block of kBlockSegments consecutive segments (in
-// global key order) to an invocation, and a block is an element of the scan's level 0: the scan,
-// and the compaction's reads of it, are eight times shorter than with a segment to an element.
-const uint kBlockSegments = 8u;
-
 // The grid-local cell of a slot of the tile with index `tile`.
 ivec3 cellOfSlot(uint tile, uint slot) {
     return segmentWorldCell(tile, slot >> 3) - push.gridOrigin.xyz + ivec3(slot & 7u, 0, 0);
@@ -126,12 +120,6 @@ ivec3 cellOfSlot(uint tile, uint slot) {
 ivec2 segmentCells(ivec3 worldFirst) {
     const int x = worldFirst.x - push.gridOrigin.x;
     return ivec2(max(x, -1), min(x + int(kTileSide), push.gridSize.x));
-}
-
-// The crossed edges a cell of case `mask` owns, those leaving its minimum corner: bit a for axis a.
-uint ownedEdges(uint mask) {
-    const uint lower = mask & 1u;
-    return (lower ^ ((mask >> 1) & 1u)) | (lower ^ ((mask >> 2) & 1u)) << 1 | (lower ^ ((mask >> 4) & 1u)) << 2;
 }
 
 // Corner c of a cell is at offset (c&1, (c>>1)&1, (c>>2)&1); bit c of a case is corner c solid.

@@ -1,20 +1,14 @@
 #version 450
-// GPU marching cubes, pass 1: one invocation per block of segments of the active tiles
-// (mc_common.glsl), in global key order: the case of each of their cells (bit c: corner c solid),
-// a segment's eight bytes in two words, and the block's totals of (vertices, triangles, active
-// cells), level 0 of the scan (mc_scan.glsl). A cell has a vertex per crossed edge it owns (those
-// leaving its minimum corner) and the case table's triangles; mc_compact.glsl derives the same from the cases. The segment's
-// cells read four rows of 9 samples, read first into bits. Two words a segment, where a word
-// per cell was written before: lavapipe stores to a storage buffer one lane at a time.
+// GPU marching cubes, pass 1: one invocation per segment of the active tiles (mc_common.glsl), in
+// global key order: the case of each of its cells (bit c: corner c solid), the segment's eight
+// bytes in two words, which the host reads to list the active cells, the vertices and their
+// places (GpuMesher.cpp). The segment's cells read four rows of 9 samples, read first into bits.
 
 layout(local_size_x = 64) in;
 
-layout(std430, set = 0, binding = 18) writeonly buffer SegmentCases {
+layout(std430, set = 0, binding = 13) writeonly buffer SegmentCases {
     uvec2 cases[]; // per segment, in global key order: byte i the case of the segment's cell i
 } segmentCases;
-layout(std430, set = 0, binding = 5) writeonly buffer Scan {
-    uvec4 value[]; // levels at push.levelOffset[level]: vertices, triangles, active cells
-} scan;
 
 // The segment's samples: x from range.x to range.x + 8 (those past range.y are not used) in the
 // four rows at (y, z), (y + 1, z), (y, z + 1), (y + 1, z + 1), corners 0-1, 2-3, 4-5 and 6-7 of
@@ -54,29 +48,22 @@ void readRows(ivec3 row, ivec2 range, out uint rows[4]) {
 }
 
 void main() {
-    const uint block = invocationIndex(64u), first = block * kBlockSegments;
-    if (first >= push.pass.z) return;
-    uvec3 sum = uvec3(0u);
-    for (uint index = first; index < min(first + kBlockSegments, push.pass.z); ++index) {
-        const uint segment = segmentSlot(index);
-        const ivec3 world = segmentWorldCell(activeTile(segment >> 6), segment);
-        const ivec2 range = segmentCells(world);
-        const ivec3 row = world - push.gridOrigin.xyz;
-        uint rows[4];
-        readRows(row, range, rows);
-        uvec2 cases = uvec2(0u);
-        for (int x = range.x; x < range.y; ++x) {
-            const uint i = uint(x - range.x);
-            uint mask = 0u;
-            for (uint r = 0u; r < 4u; ++r) mask |= ((rows[r] >> i) & 3u) << (2u * r);
-            const uint edges = ownedEdges(mask), triangles = caseWord(mask * 10u);
-            sum += uvec3(bitCount(edges), triangles, edges != 0u || triangles != 0u ? 1u : 0u);
-            if (i < 4u)
-                cases.x |= mask << (8u * i);
-            else
-                cases.y |= mask << (8u * (i - 4u));
-        }
-        segmentCases.cases[index] = cases;
+    const uint index = invocationIndex(64u);
+    if (index >= push.pass.y) return;
+    const uint segment = segmentSlot(index);
+    const ivec3 world = segmentWorldCell(activeTile(segment >> 6), segment);
+    const ivec2 range = segmentCells(world);
+    uint rows[4];
+    readRows(world - push.gridOrigin.xyz, range, rows);
+    uvec2 cases = uvec2(0u);
+    for (int x = range.x; x < range.y; ++x) {
+        const uint i = uint(x - range.x);
+        uint mask = 0u;
+        for (uint r = 0u; r < 4u; ++r) mask |= ((rows[r] >> i) & 3u) << (2u * r);
+        if (i < 4u)
+            cases.x |= mask << (8u * i);
+        else
+            cases.y |= mask << (8u * (i - 4u));
     }
-    scan.value[push.levelOffset[0] + block] = uvec4(sum, 0u);
+    segmentCases.cases[index] = cases;
 }

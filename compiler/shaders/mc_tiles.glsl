@@ -20,7 +20,7 @@ layout(std430, set = 0, binding = 3) buffer TileStates {
 } tiles;
 
 // The indices of the tiles to read, as the host listed them.
-layout(set = 0, binding = 20) uniform usamplerBuffer unknownTileTexels;
+layout(set = 0, binding = 14) uniform usamplerBuffer unknownTileTexels;
 
 const uint kWhole = 1u, kLowX = 2u, kLowY = 4u, kLowZ = 8u, kEdgeXY = 16u, kEdgeXZ = 32u, kEdgeYZ = 64u, kCorner = 128u;
 
@@ -34,7 +34,7 @@ uint firstVoxelRegions(uint y, uint z) {
 
 void main() {
     const uint item = invocationIndex(64u);
-    if (item >= push.pass.z) return;
+    if (item >= push.pass.y) return;
     const uint index = texelFetch(unknownTileTexels, int(item)).x;
     const uvec3 n = uvec3(push.tileCount.xyz) + 1u;
     const ivec3 tile = push.tileFirst.xyz + ivec3(index % n.x, (index / n.x) % n.y, index / (n.x * n.y));

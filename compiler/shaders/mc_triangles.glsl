@@ -1,19 +1,20 @@
 #version 450
-// GPU marching cubes, pass 5, over the active cells (mc_compact.glsl): every cell writes its
-// triangles at the place the scan gave it, so triangles come out ordered by global cell then
-// table order, as the CPU mesher orders them. A triangle names a vertex by its owner cell's
-// first vertex plus the owner's crossed edges of lower axis.
+// GPU marching cubes, pass 3, over the active cells (listed by the host from mc_count.glsl's
+// cases, GpuMesher.cpp): every cell writes its triangles at the place the host gave it, so
+// triangles come out ordered by global cell then table order, as the CPU mesher orders them. A
+// triangle names a vertex by its owner cell's first vertex plus the owner's crossed edges of
+// lower axis.
 
 layout(local_size_x = 64) in;
 
-// Per cell slot owning vertices: its owned edges | first vertex << 3 (mc_compact.glsl).
-layout(set = 0, binding = 14) uniform usamplerBuffer cellInfoTexels;
-// Per active cell: slot, first vertex, first triangle, its word (mc_compact.glsl).
-layout(set = 0, binding = 16) uniform usamplerBuffer activeCellTexels;
+// Per cell slot owning vertices: its owned edges | first vertex << 3 (the host's list).
+layout(set = 0, binding = 10) uniform usamplerBuffer cellInfoTexels;
+// Per active cell: slot, first vertex, first triangle, owned edges | triangle count << 3 | case << 19.
+layout(set = 0, binding = 11) uniform usamplerBuffer activeCellTexels;
 // Per tile of cells (x fastest): its rank among the active tiles, or none.
-layout(set = 0, binding = 10) uniform usamplerBuffer tileRankTexels;
+layout(set = 0, binding = 7) uniform usamplerBuffer tileRankTexels;
 // A texel per triangle: three vertex indices, material.
-layout(set = 0, binding = 7, rgba32ui) uniform writeonly uimageBuffer triangles;
+layout(set = 0, binding = 5, rgba32ui) uniform writeonly uimageBuffer triangles;
 
 // Per axis, for the cell (offset 0) and the next one (offset 1): the parts of a tile's index
 // among the tiles of cells and of a cell's place in its tile, which add up over the axes.
@@ -34,7 +35,7 @@ void openCorners(ivec3 cell) {
     }
 }
 
-// What mc_compact.glsl recorded at the slot of the cell at corner c (a constant) of the cell:
+// What the host recorded at the slot of the cell at corner c (a constant) of the cell:
 // its owned edges | first vertex << 3 where it owns any. A corner cell in no active tile (its
 // rank is none) or past the tiles of cells owns none of the cell's crossed edges, so its word is
 // never used; its fetch is kept inside the buffers.
@@ -88,7 +89,7 @@ uint caseEdge(uint mask, uint i) { return (caseWord(mask * 10u + 1u + i / 4u) >>
 
 void main() {
     const uint index = invocationIndex(64u);
-    if (index >= push.pass.z) return;
+    if (index >= push.pass.y) return;
     const uvec4 entry = texelFetch(activeCellTexels, int(index));
     const uint slot = entry.x, info = entry.w;
     const ivec3 cell = cellOfSlot(activeTile(slot >> 9), slot);

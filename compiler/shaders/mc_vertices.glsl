@@ -1,5 +1,5 @@
 #version 450
-// GPU marching cubes, pass 4, one invocation per vertex (mc_compact.glsl lists each with its
+// GPU marching cubes, pass 2, one invocation per vertex (the host lists each with its
 // owner cell and axis, in global edge order, the mesh's vertex order): the crossing, normal and
 // material of the vertex. The arithmetic is the CPU mesher's, operation for operation
 // (`precise`: no fused multiply-adds), so positions and normals agree bit for bit where the
@@ -8,10 +8,10 @@
 
 layout(local_size_x = 64) in;
 
-layout(set = 0, binding = 17) uniform usamplerBuffer vertexEdgeTexels; // per vertex: its owner cell's slot | axis << 30
+layout(set = 0, binding = 12) uniform usamplerBuffer vertexEdgeTexels; // per vertex: its owner cell's slot | axis << 30
 // Two texels per vertex: position xyz and normal x, then normal yz and material (float bits);
 // two texel stores, where seven words of a storage buffer were seven passes over the lanes.
-layout(set = 0, binding = 6, rgba32ui) uniform writeonly uimageBuffer vertices;
+layout(set = 0, binding = 4, rgba32ui) uniform writeonly uimageBuffer vertices;
 
 // The samples a vertex reads lie from its edge's lower sample - 1 to its upper sample + 1 along
 // each axis: per axis the address parts (mc_common.glsl, axisPart) of offsets -1 to 2 from the
@@ -78,7 +78,7 @@ void writeVertex(uint index, ivec3 lower, int axis) {
 
 void main() {
     const uint index = invocationIndex(64u);
-    if (index >= push.pass.z) return;
+    if (index >= push.pass.y) return;
     const uint edge = texelFetch(vertexEdgeTexels, int(index)).x;
     const uint slot = edge & 0x3fffffffu;
     writeVertex(index, cellOfSlot(activeTile(slot >> 9), slot), int(edge >> 30));

@@ -110,7 +110,7 @@ TEST(mesh_GpuMarchingCubes, MatchesTheCpuMesherBitForBit) {
 
 // A surface inside one world-aligned 8^3 tile (the host test mesh_MarchingCubes.
 // surfaceInOneTileVisitsOnlyThatTile's ball): the device counts the 512 cells of that tile alone,
-// no other (its count, scan and emit passes run over the segments of the active tiles), and
+// no other (its count pass and the host's lists run over the segments of the active tiles), and
 // meshes them as the host does; with the executor's tile ranges and without them (no read-back,
 // as `voxc run --mesh-on device` runs), where the tiles pass reads every tile's voxels.
 TEST(mesh_GpuMarchingCubes, ASurfaceInOneTileIsCountedInThatTileAlone) {
@@ -163,11 +163,11 @@ TEST(mesh_GpuMarchingCubes, IsTheSameForEveryChunkSizeAndRepeatedCall) {
     expectNoValidationMessages(context);
 }
 
-// The scan runs over blocks of eight of the active tiles' rows of cells, one level per factor of
-// 1024 blocks: a grid of fewer than 1024 cells has one scan workgroup and one scan dispatch; a
-// 110 x 99 x 110 grid meshed without skipping has 15 x 13 x 15 tiles and 100 x 111 rows of them,
-// 166,500 rows in 20,813 blocks: three levels.
-TEST(mesh_GpuMarchingCubes, MatchesTheCpuMesherFromOneScanBlockToThreeLevels) {
+// The count pass runs an invocation per row of cells of the active tiles, and the host lists the
+// active cells from those rows: a grid of fewer than 1024 cells has a few rows in one workgroup,
+// partly outside the grid; a 110 x 99 x 110 grid meshed without skipping has 15 x 13 x 15 tiles
+// and 100 x 111 rows of them, 166,500 rows in 2,602 workgroups.
+TEST(mesh_GpuMarchingCubes, MatchesTheCpuMesherFromATinyGridToALargeOne) {
     VulkanContext& context = validatedLavapipe();
     for (const glm::ivec3 size : {glm::ivec3(9, 8, 7), glm::ivec3(110, 99, 110)}) {
         VulkanExecutor executor(context, compileProgram(example("fields.vox", 16, {-3, 20, 5}, size), {}));

@@ -11,6 +11,8 @@
 #include <glm/vector_relational.hpp>
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cstring>
 #include <vector>
 
@@ -20,9 +22,7 @@ using namespace vulkan_detail;
 
 namespace {
 
-constexpr uint32_t kGroupSize = 64;        // local size of the tiles, count, compact and emit passes
-constexpr uint32_t kScanBlock = 1024;      // elements per scan workgroup (mc_scan.glsl)
-constexpr uint32_t kBlockSegments = 8;     // segments per count and compaction invocation, a scan element (mc_common.glsl)
+constexpr uint32_t kGroupSize = 64;        // local size of the passes
 constexpr int kTileShift = 3;              // tiles of 8^3 cells (mc_common.glsl)
 constexpr uint32_t kTileSide = 1u << kTileShift;
 constexpr uint32_t kTileCells = kTileSide * kTileSide * kTileSide;
@@ -31,8 +31,7 @@ constexpr uint32_t kNoRank = UINT32_MAX;
 constexpr uint32_t kCaseWords = 10;        // per case: triangle count, 36 edge bytes
 constexpr uint32_t kVertexWords = 8;       // position, normal, material, padding: two texels (mc_vertices.glsl)
 constexpr uint32_t kTriangleWords = 4;     // three indices, material
-constexpr VkDeviceSize kTotalsBytes = 4 * sizeof(uint32_t); // a scan element: vertices, triangles, active cells
-constexpr VkDeviceSize kActiveCellBytes = 4 * sizeof(uint32_t); // slot, first vertex, first triangle, counts
+constexpr uint32_t kActiveCellWords = 4;   // slot, first vertex, first triangle, cell word (mc_triangles.glsl)
 
 struct Access {
     VkPipelineStageFlags stage;
@@ -56,7 +55,7 @@ std::vector<uint32_t> packedCaseTable() {
     std::vector<uint32_t> words(256 * kCaseWords, 0);
     const auto& table = marching_cubes::caseTable();
     for (size_t mask = 0; mask < 256; ++mask) {
-        // mc_compact.glsl takes a cell to be active when its case is neither all air nor all solid.
+        // listCells takes a cell to be active when its case is neither all air nor all solid.
         VOXC_ASSERT((table[mask].triangleCount > 0) == (mask != 0 && mask != 255));
         words[mask * kCaseWords] = table[mask].triangleCount;
         for (size_t i = 0; i < table[mask].edges.size(); ++i)
@@ -180,6 +179,65 @@ TileLists listTiles(const uint32_t* states, glm::ivec3 tileFirst, glm::ivec3 n, 
     return lists;
 }
 
+// Per case: the crossed edges a cell of the case owns (those leaving its minimum corner: bit a
+// for axis a) | its triangle count << 3 | the case << 19, the word mc_triangles.glsl reads.
+std::array<uint32_t, 256> cellWords() {
+    std::array<uint32_t, 256> words{};
+    const auto& table = marching_cubes::caseTable();
+    for (uint32_t mask = 0; mask < 256; ++mask) {
+        const uint32_t lower = mask & 1u;
+        const uint32_t owned = (lower ^ ((mask >> 1) & 1u)) | (lower ^ ((mask >> 2) & 1u)) << 1 | (lower ^ ((mask >> 4) & 1u)) << 2;
+        words[mask] = owned | uint32_t(table[mask].triangleCount) << 3 | mask << 19;
+    }
+    return words;
+}
+
+// The host's step between the count and emit passes, over the segments' cases (mc_count.glsl) in
+// global key order: the active cells (neither all air nor all solid: every other case has a
+// triangle, which packedCaseTable checks) with their first vertex and triangle, an owner's first
+// vertex at its slot in `cellInfo` (owned edges | first vertex << 3), and every vertex with its
+// owner cell and axis, in the CPU mesher's order (vertices by global edge, triangles by cell).
+// Sequential and a few loads and stores per active cell: on lavapipe the same lists took a pass
+// over every segment with a prefix sum before it, several times longer.
+struct CellLists {
+    std::vector<uint32_t> activeCells; // kActiveCellWords per active cell
+    std::vector<uint32_t> vertexEdges; // per vertex: its owner's slot | axis << 30 (slots are below 2^30)
+    uint64_t vertices = 0, triangles = 0;
+};
+
+void listCells(const uint32_t* cases, const TileLists& lists, glm::ivec3 tileFirst, glm::ivec3 n, const ChunkLayout& layout,
+               uint32_t* cellInfo, CellLists& out) {
+    static const std::array<uint32_t, 256> kCellWords = cellWords();
+    out.activeCells.clear();
+    out.vertexEdges.clear();
+    uint64_t vertices = 0, triangles = 0;
+    constexpr uint64_t kLow7 = 0x7f7f7f7f7f7f7f7full;
+    // The high bit of each byte of `v` that is zero.
+    auto zeroBytes = [](uint64_t v) { return ~(((v & kLow7) + kLow7) | v | kLow7); };
+    for (size_t index = 0; index < lists.segments.size(); ++index) {
+        const uint64_t bytes = uint64_t(cases[2 * index]) | uint64_t(cases[2 * index + 1]) << 32;
+        // A cell is active when its case is neither 0 nor 0xff; the cells past the grid read 0.
+        uint64_t active = ~(zeroBytes(bytes) | zeroBytes(~bytes)) & ~kLow7;
+        if (active == 0) continue;
+        const uint32_t segment = lists.segments[index];
+        const int32_t tileX = tileFirst.x + int32_t(lists.activeTiles[segment / kTileSegments] % uint32_t(n.x));
+        const int32_t x = tileX * int32_t(kTileSide) - layout.gridOrigin.x; // the segment's first cell, grid-local
+        const uint32_t firstSlot = segment * kTileSide + uint32_t(std::max(x, -1) - x); // byte i: slot firstSlot + i
+        for (; active != 0; active &= active - 1) {
+            const uint32_t i = uint32_t(std::countr_zero(active)) / 8;
+            const uint32_t word = kCellWords[(bytes >> (8 * i)) & 0xffu], slot = firstSlot + i, edges = word & 7u;
+            out.activeCells.insert(out.activeCells.end(), {slot, uint32_t(vertices), uint32_t(triangles), word});
+            triangles += (word >> 3) & 15u;
+            if (edges == 0) continue;
+            cellInfo[slot] = edges | uint32_t(vertices) << 3;
+            for (uint32_t left = edges; left != 0; left &= left - 1)
+                out.vertexEdges.push_back(slot | uint32_t(std::countr_zero(left)) << 30);
+            vertices += uint32_t(std::popcount(edges));
+        }
+    }
+    out.vertices = vertices;
+    out.triangles = triangles;
+}
 
 } // namespace
 
@@ -192,10 +250,12 @@ struct GpuMarchingCubes::Impl {
     uint32_t voxelTiles = 0;
     McPipelines pipelines;
     // Host-visible: tileStates (written by mc_tiles), the tiles it reads (unknownTiles), the lists
-    // the host makes from their states (tileRanks, activeTiles, segments), and `results` (the
-    // totals, then the mesh where it is copied).
-    DeviceBuffer caseTable, tileStates, unknownTiles, tileRanks, activeTiles, segments, segmentCases, cellInfo, scanLevels, activeCells,
-        vertexEdges, vertices, triangles, results;
+    // the host makes from their states (tileRanks, activeTiles, segments) and from the segments'
+    // cases (cellInfo, activeCells, vertexEdges), and `results` (the cases, then the mesh, where
+    // they are copied). segmentCases, vertices and triangles: meshUse().
+    DeviceBuffer caseTable, tileStates, unknownTiles, tileRanks, activeTiles, segments, segmentCases, cellInfo, activeCells, vertexEdges,
+        vertices, triangles, results;
+    CellLists cellLists; // kept, so that a repeated call reuses its memory
     // At the texel bindings: views of the executor's buffers and of these (bindAll).
     std::array<VkBufferView, kMcBindingCount> texelViews{};
     VkCommandPool commandPool = VK_NULL_HANDLE;
@@ -234,7 +294,7 @@ GpuMarchingCubes::Impl::~Impl() {
     if (fence) ctx.api.vkDestroyFence(ctx.device, fence, nullptr);
     if (commandPool) ctx.api.vkDestroyCommandPool(ctx.device, commandPool, nullptr);
     destroyTexelViews();
-    for (DeviceBuffer* b : {&results, &triangles, &vertices, &vertexEdges, &activeCells, &scanLevels, &cellInfo, &segmentCases, &segments,
+    for (DeviceBuffer* b : {&results, &triangles, &vertices, &vertexEdges, &activeCells, &cellInfo, &segmentCases, &segments,
                             &activeTiles, &tileRanks, &unknownTiles, &tileStates, &caseTable})
         destroyBuffer(ctx, *b);
     destroyMcPipelines(ctx, pipelines);
@@ -292,17 +352,16 @@ void GpuMarchingCubes::Impl::createBuffers() {
     ensureBuffer(tileStates, VkDeviceSize(voxelTiles) * sizeof(uint32_t), MemoryUse::HostAccess);
     ensureBuffer(tileRanks, VkDeviceSize(tiles) * sizeof(uint32_t), MemoryUse::HostAccess);
     // Placeholders until a mesh has active tiles and triangles: every binding of the set must name a buffer.
-    for (DeviceBuffer* b : {&unknownTiles, &activeTiles, &segments}) ensureBuffer(*b, 16, MemoryUse::HostAccess);
-    for (DeviceBuffer* b : {&segmentCases, &cellInfo, &scanLevels, &activeCells, &vertexEdges}) ensureBuffer(*b, 16, MemoryUse::Device);
-    for (DeviceBuffer* b : {&vertices, &triangles}) ensureBuffer(*b, 16, meshUse());
-    ensureBuffer(results, kTotalsBytes, MemoryUse::HostAccess);
+    for (DeviceBuffer* b : {&unknownTiles, &activeTiles, &segments, &cellInfo, &activeCells, &vertexEdges})
+        ensureBuffer(*b, 16, MemoryUse::HostAccess);
+    for (DeviceBuffer* b : {&segmentCases, &vertices, &triangles}) ensureBuffer(*b, 16, meshUse());
+    ensureBuffer(results, 16, MemoryUse::HostAccess);
 }
 
 void GpuMarchingCubes::Impl::bindAll() {
     std::array<VkBuffer, kMcBindingCount> buffers{};
     buffers[kMcTileStates] = tileStates.buffer;
     buffers[kMcSegmentCases] = segmentCases.buffer;
-    buffers[kMcScanLevels] = scanLevels.buffer;
     struct View {
         McBinding binding;
         VkBuffer buffer;
@@ -317,15 +376,10 @@ void GpuMarchingCubes::Impl::bindAll() {
                           {kMcActiveTileTexels, activeTiles.buffer, VK_FORMAT_R32_UINT},
                           {kMcSegmentTexels, segments.buffer, VK_FORMAT_R32_UINT},
                           {kMcCellInfoTexels, cellInfo.buffer, VK_FORMAT_R32_UINT},
-                          {kMcScanTexels, scanLevels.buffer, VK_FORMAT_R32G32B32A32_UINT},
                           {kMcActiveCellTexels, activeCells.buffer, VK_FORMAT_R32G32B32A32_UINT},
                           {kMcVertexEdgeTexels, vertexEdges.buffer, VK_FORMAT_R32_UINT},
-                          {kMcSegmentCaseTexels, segmentCases.buffer, VK_FORMAT_R32G32_UINT},
-                          {kMcTriangles, triangles.buffer, mcStorageTexelFormat(kMcTriangles)},
-                          {kMcActiveCells, activeCells.buffer, mcStorageTexelFormat(kMcActiveCells)},
-                          {kMcCellInfo, cellInfo.buffer, mcStorageTexelFormat(kMcCellInfo)},
-                          {kMcVertices, vertices.buffer, mcStorageTexelFormat(kMcVertices)},
-                          {kMcVertexEdges, vertexEdges.buffer, mcStorageTexelFormat(kMcVertexEdges)}};
+                          {kMcTriangles, triangles.buffer, VK_FORMAT_R32G32B32A32_UINT},
+                          {kMcVertices, vertices.buffer, VK_FORMAT_R32G32B32A32_UINT}};
     destroyTexelViews();
     for (const View& view : views) {
         VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
@@ -369,7 +423,7 @@ void GpuMarchingCubes::Impl::dispatch(McPass pass, McPush& push, uint32_t groups
     const uint32_t x = std::min(groups, maxX), y = (groups + x - 1) / x;
     VOXC_ASSERT(y <= ctx.properties.limits.maxComputeWorkGroupCount[1]); // groups < 2^32 / 64 by checkLimits
     push.pass[0] = x;
-    push.pass[2] = items;
+    push.pass[1] = items;
     ctx.api.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines.pipelines[pass]);
     ctx.api.vkCmdPushConstants(cmd, pipelines.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(McPush), &push);
     ctx.api.vkCmdDispatch(cmd, x, y, 1);
@@ -450,68 +504,58 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     const uint32_t segmentCount = uint32_t(lists.segments.size());
     if (segmentCount == 0) return mesh;
 
-    // The scan's levels: the blocks of segments, then one element per 1024 of the level below, down to one.
-    const uint32_t blockCount = groupsOf(segmentCount, kBlockSegments);
-    std::vector<uint32_t> levelSize = {blockCount};
-    do levelSize.push_back(groupsOf(levelSize.back(), kScanBlock));
-    while (levelSize.back() > 1);
-    VOXC_ASSERT(levelSize.size() <= 4); // McPush::levelOffset
-    uint32_t scanElements = 0;
-    for (size_t level = 0; level < levelSize.size(); ++level) {
-        push.levelOffset[level] = scanElements;
-        scanElements += levelSize[level];
-    }
-    push.pass[1] = uint32_t(levelSize.size() - 1);
+    // The cases of the segments' cells, then on the host the lists of the active cells and the
+    // vertices, in place (cellInfo) or into cellLists.
     s.upload(s.tileRanks, lists.ranks);
     bool rebind = s.upload(s.activeTiles, lists.activeTiles);
     rebind |= s.upload(s.segments, lists.segments);
-    rebind |= s.ensureBuffer(s.segmentCases, VkDeviceSize(segmentCount) * 2 * sizeof(uint32_t), MemoryUse::Device);
-    rebind |= s.ensureBuffer(s.cellInfo, VkDeviceSize(lists.activeTiles.size()) * kTileCells * sizeof(uint32_t), MemoryUse::Device);
-    rebind |= s.ensureBuffer(s.scanLevels, VkDeviceSize(scanElements) * kTotalsBytes, MemoryUse::Device);
+    const VkDeviceSize caseBytes = VkDeviceSize(segmentCount) * 2 * sizeof(uint32_t);
+    const bool inPlace = s.meshUse() == MemoryUse::HostAccess;
+    rebind |= s.ensureBuffer(s.segmentCases, caseBytes, s.meshUse());
+    rebind |= s.ensureBuffer(s.cellInfo, VkDeviceSize(lists.activeTiles.size()) * kTileCells * sizeof(uint32_t), MemoryUse::HostAccess);
+    if (!inPlace) s.ensureBuffer(s.results, caseBytes, MemoryUse::HostAccess); // bound to no pass
     if (rebind) s.bindAll();
-
-    // Count and scan, then the totals to the host.
     s.begin();
-    s.dispatch(kMcCount, push, groupsOf(blockCount, kGroupSize), segmentCount);
-    for (uint32_t level = 0; level + 1 < levelSize.size(); ++level) {
-        memoryBarrier(api, s.cmd, kCompute, kCompute);
-        push.pass[3] = level;
-        s.dispatch(kMcScan, push, groupsOf(levelSize[level], kScanBlock), levelSize[level]);
+    s.dispatch(kMcCount, push, groupsOf(segmentCount, kGroupSize), segmentCount);
+    const DeviceBuffer* caseSource = &s.segmentCases;
+    if (!inPlace) {
+        memoryBarrier(api, s.cmd, kCompute, kTransfer);
+        const VkBufferCopy copy{0, 0, caseBytes};
+        api.vkCmdCopyBuffer(s.cmd, s.segmentCases.buffer, s.results.buffer, 1, &copy);
+        memoryBarrier(api, s.cmd, kTransfer, kHostRead);
+        caseSource = &s.results;
+    } else {
+        memoryBarrier(api, s.cmd, kCompute, kHostRead);
     }
-    memoryBarrier(api, s.cmd, kCompute, kTransfer);
-    const VkBufferCopy totals{VkDeviceSize(push.levelOffset[levelSize.size() - 1]) * kTotalsBytes, 0, kTotalsBytes};
-    api.vkCmdCopyBuffer(s.cmd, s.scanLevels.buffer, s.results.buffer, 1, &totals);
-    memoryBarrier(api, s.cmd, kTransfer, kHostRead);
     s.submitAndWait();
-    invalidateForHost(s.ctx, s.results);
-    uint32_t counts[3];
-    std::memcpy(counts, s.results.mapped, sizeof counts);
-    const uint32_t vertexCount = counts[0], triangleCount = counts[1], activeCount = counts[2];
-    if (triangleCount == 0) return mesh;
+    invalidateForHost(s.ctx, *caseSource);
+    CellLists& cells = s.cellLists;
+    listCells(static_cast<const uint32_t*>(caseSource->mapped), lists, s.tileFirst, s.tileCount, s.layout,
+              static_cast<uint32_t*>(s.cellInfo.mapped), cells);
+    if (cells.triangles == 0) return mesh;
 
     // Emit into buffers of the counted size, written as texels (two a vertex, one a triangle).
-    const uint64_t vertexBytes = uint64_t(vertexCount) * kVertexWords * sizeof(uint32_t);
-    const uint64_t triangleBytes = uint64_t(triangleCount) * kTriangleWords * sizeof(uint32_t);
-    // At most maxTexelBufferElements texels a buffer, and below 2^29 vertices: mc_compact.glsl
-    // keeps a first vertex above 3 bits of a word.
+    // At most maxTexelBufferElements texels a buffer, and below 2^29 vertices: cellInfo keeps a
+    // first vertex above 3 bits of a word.
     const uint64_t maxTriangles = s.ctx.properties.limits.maxTexelBufferElements;
     const uint64_t maxVertices = std::min<uint64_t>(maxTriangles / 2, (uint64_t(1) << 29) - 1);
-    if (vertexCount > maxVertices || triangleCount > maxTriangles)
+    if (cells.vertices > maxVertices || cells.triangles > maxTriangles)
         throw UserError(fmt::format("the mesh has {} vertices and {} triangles, more than marching cubes on the Vulkan device "
                                     "'{}' can write ({} vertices, {} triangles); mesh on the host instead (voxc run --mesh-on host)",
-                                    vertexCount, triangleCount, s.ctx.info.name, maxVertices, maxTriangles));
-    const bool inPlace = s.meshUse() == MemoryUse::HostAccess;
-    bool replaced = s.ensureBuffer(s.vertices, vertexBytes, s.meshUse());
+                                    cells.vertices, cells.triangles, s.ctx.info.name, maxVertices, maxTriangles));
+    const uint32_t vertexCount = uint32_t(cells.vertices), triangleCount = uint32_t(cells.triangles);
+    const uint32_t activeCount = uint32_t(cells.activeCells.size() / kActiveCellWords);
+    flushForDevice(s.ctx, s.cellInfo); // the queue submit makes it visible to the device
+    bool replaced = s.upload(s.activeCells, cells.activeCells);
+    replaced |= s.upload(s.vertexEdges, cells.vertexEdges);
+    const uint64_t vertexBytes = uint64_t(vertexCount) * kVertexWords * sizeof(uint32_t);
+    const uint64_t triangleBytes = uint64_t(triangleCount) * kTriangleWords * sizeof(uint32_t);
+    replaced |= s.ensureBuffer(s.vertices, vertexBytes, s.meshUse());
     replaced |= s.ensureBuffer(s.triangles, triangleBytes, s.meshUse());
-    replaced |= s.ensureBuffer(s.activeCells, VkDeviceSize(activeCount) * kActiveCellBytes, MemoryUse::Device);
-    replaced |= s.ensureBuffer(s.vertexEdges, VkDeviceSize(vertexCount) * sizeof(uint32_t), MemoryUse::Device);
-    if (!inPlace) s.ensureBuffer(s.results, vertexBytes + triangleBytes, MemoryUse::HostAccess);
+    if (!inPlace) replaced |= s.ensureBuffer(s.results, vertexBytes + triangleBytes, MemoryUse::HostAccess);
     if (replaced) s.bindAll();
-    // The active cells and the vertices in key order, then the vertices and the triangles
-    // (independent of each other) over those lists alone.
+    // The vertices and the triangles, independent of each other, over the host's lists alone.
     s.begin();
-    s.dispatch(kMcCompact, push, groupsOf(blockCount, kGroupSize), segmentCount);
-    memoryBarrier(api, s.cmd, kCompute, kCompute);
     s.dispatch(kMcEmitVertices, push, groupsOf(vertexCount, kGroupSize), vertexCount);
     s.dispatch(kMcEmitTriangles, push, groupsOf(activeCount, kGroupSize), activeCount);
     const uint32_t* vertexWords = nullptr;

@@ -10,8 +10,7 @@ namespace voxc::vulkan_detail {
 
 namespace {
 
-constexpr const char* kPassFiles[kMcPassCount] = {"mc_tiles.glsl", "mc_count.glsl", "mc_scan.glsl", "mc_compact.glsl",
-                                                   "mc_vertices.glsl", "mc_triangles.glsl"};
+constexpr const char* kPassFiles[kMcPassCount] = {"mc_tiles.glsl", "mc_count.glsl", "mc_vertices.glsl", "mc_triangles.glsl"};
 
 // The pass's #version line, kHasMaterials, the shared declarations, then the rest of the pass.
 std::string passSource(const char* file, bool hasMaterials) {

@@ -5,10 +5,10 @@
 // on which sides of iso the voxels of each world-aligned 8^3 tile lie (reading only the tiles
 // that the tile ranges of the executor's read-back, where it read back, leave open), from which the host lists
 // the tiles of cells the surface crosses (the active tiles) and their rows of cells in global
-// order; then a count pass over those rows alone (per cell: the crossed edges it owns and its
-// triangle count from the case table), an exclusive scan of the rows' counts in global cell
-// order, a list of the cells with any, and an emit pass over that list that writes every vertex
-// and triangle at the place the scan gave it (docs/architecture.md, "On the device"). The mesh
+// order; then a count pass over those rows alone (per cell its case), from whose cases the host
+// lists the active cells with their first vertex and triangle and the vertices with their owner
+// cell, in global order; and emit passes over those lists that write every vertex and triangle
+// at its place (docs/architecture.md, "On the device"). The mesh
 // is the CPU mesher's (voxc/mesh/MarchingCubes.h, the oracle): the same case table, vertices
 // ordered by global edge, triangles by global cell then table order, the same arithmetic; so the
 // index buffer and the materials are identical, and positions and normals bit-identical where
