@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <thread>
 
 namespace voxc::curves {
 namespace {
@@ -220,10 +219,6 @@ glm::ivec3 halvedAxes(const Box& b) {
     return glm::ivec3(b.size.x >= 2, b.size.y >= 2, b.size.z >= 2);
 }
 
-glm::ivec3 parentOf(const glm::ivec3& halved, int32_t x, int32_t y, int32_t z) {
-    return {x >> halved.x, y >> halved.y, z >> halved.z};
-}
-
 // The coarse rows interpolated along x at every fine column: out[x] = near * row[x0[x]] + far *
 // row[x1[x]] (the trilinear prolongation's first step), gathers through the parent columns.
 VOXC_ROW_KERNEL
@@ -378,7 +373,8 @@ void smooth(Level& level, int32_t sweeps, bool zeroRhs, const Correction* correc
     const int32_t halfSweeps = 2 * std::max(sweeps, 0);
     // With a correction, step t adds it to slice t and the sweeps run one slice behind.
     const int32_t lag = correction ? 1 : 0;
-    // Nothing below allocates or throws: the scratch rows exist before the threads start.
+    // Nothing below allocates or throws (so neither thread can leave the other waiting at the
+    // middle slices; bothOf would still rethrow): the scratch rows exist before the threads start.
     std::vector<float> scratch(4 * size_t(b.size.x), 0.0f);
     const bool threaded = b.cellCount() >= kMinCellsForThreads && b.size.z >= 4;
     float worst[2] = {0.0f, 0.0f};
@@ -433,37 +429,14 @@ void smooth(Level& level, int32_t sweeps, bool zeroRhs, const Correction* correc
     } else {
         const int32_t mid = b.size.z / 2;
         std::atomic<int32_t> lower{0}, upper{0};
-        std::thread other([&] { run(Slab{0, mid, 1, &lower, &upper}, second, second + b.size.x, worst[1]); });
-        run(Slab{b.size.z - 1, b.size.z - mid, -1, &upper, &lower}, first, first + b.size.x, worst[0]);
-        other.join();
+        bothOf([&] { run(Slab{0, mid, 1, &lower, &upper}, second, second + b.size.x, worst[1]); },
+               [&] { run(Slab{b.size.z - 1, b.size.z - mid, -1, &upper, &lower}, first, first + b.size.x, worst[0]); });
         if (maxResidual) {
             measure(mid - 1, first + b.size.x, worst[0]);
             measure(mid, first + b.size.x, worst[0]);
         }
     }
     if (maxResidual) *maxResidual = std::max(worst[0], worst[1]);
-}
-
-// `mean` of each coarse cell's children of fine values; with `onlyFixed`, only of fixed children.
-template <typename Value>
-void restrictMean(const Level& fine, const Box& coarse, bool onlyFixed, Value&& value, std::vector<float>& out) {
-    const glm::ivec3 halved = halvedAxes(fine.box);
-    std::vector<float> sum(coarse.cellCount(), 0.0f);
-    std::vector<int32_t> count(coarse.cellCount(), 0);
-    const Box& b = fine.box;
-    for (int32_t z = 0; z < b.size.z; ++z)
-        for (int32_t y = 0; y < b.size.y; ++y)
-            for (int32_t x = 0; x < b.size.x; ++x) {
-                const size_t i = b.index(x, y, z);
-                if (onlyFixed && !fine.fixed[i]) continue;
-                const glm::ivec3 parent = parentOf(halved, x, y, z);
-                const size_t p = coarse.index(parent.x, parent.y, parent.z);
-                sum[p] += value(x, y, z, i);
-                ++count[p];
-            }
-    out.assign(coarse.cellCount(), 0.0f);
-    for (size_t p = 0; p < out.size(); ++p)
-        if (count[p] > 0) out[p] = sum[p] / float(count[p]);
 }
 
 // The child cells of coarse index p along an axis of n fine cells: {2p, 2p + 1} (the second
@@ -473,6 +446,37 @@ struct Children {
 };
 Children childrenOf(int32_t p, int32_t n, int32_t halved) {
     return halved ? Children{2 * p, std::min(2, n - 2 * p)} : Children{p, 1};
+}
+
+// The full-multigrid start's coarse Dirichlet values: per coarse cell the mean of its fixed
+// children's values (0 where it has none), each sum from 0 over the children in z, y, x order.
+// Coarse slices are independent, so two threads give the same bits.
+void restrictFixedMean(const Level& fine, const std::vector<float>& values, const Box& coarse, std::vector<float>& out) {
+    const Box& b = fine.box;
+    const glm::ivec3 halved = halvedAxes(b);
+    out.resize(coarse.cellCount()); // every value is written below
+    forTwoSlabs(coarse.size.z, minSlicesForThreads(b.cellCount()), [&](int32_t z0, int32_t z1) {
+        std::vector<float> sum(size_t(coarse.size.x));
+        std::vector<int32_t> count(size_t(coarse.size.x));
+        for (int32_t pz = z0; pz < z1; ++pz)
+            for (int32_t py = 0; py < coarse.size.y; ++py) {
+                std::fill(sum.begin(), sum.end(), 0.0f);
+                std::fill(count.begin(), count.end(), 0);
+                const Children cz = childrenOf(pz, b.size.z, halved.z), cy = childrenOf(py, b.size.y, halved.y);
+                for (int32_t z = cz.first; z < cz.first + cz.count; ++z)
+                    for (int32_t y = cy.first; y < cy.first + cy.count; ++y) {
+                        const size_t i0 = b.index(0, y, z);
+                        for (int32_t x = 0; x < b.size.x; ++x)
+                            if (fine.fixed[i0 + size_t(x)]) {
+                                sum[size_t(x >> halved.x)] += values[i0 + size_t(x)];
+                                ++count[size_t(x >> halved.x)];
+                            }
+                    }
+                const size_t p0 = coarse.index(0, py, pz);
+                for (int32_t px = 0; px < coarse.size.x; ++px)
+                    out[p0 + size_t(px)] = count[size_t(px)] > 0 ? sum[size_t(px)] / float(count[size_t(px)]) : 0.0f;
+            }
+    });
 }
 
 // sum[px] += the fine values of px's children along x, in x order: fine[2 px], then fine[2 px + 1]
@@ -585,14 +589,22 @@ std::vector<std::vector<uint8_t>> multigridMasks(const std::vector<MultigridLeve
     for (size_t l = 1; l < levels.size(); ++l) {
         const Box fine{glm::ivec3(0), levels[l - 1].size}, coarse{glm::ivec3(0), levels[l].size};
         const glm::ivec3 halved = levels[l - 1].halved;
-        std::vector<uint8_t> mask(coarse.cellCount(), 0);
-        for (int32_t z = 0; z < fine.size.z; ++z)
-            for (int32_t y = 0; y < fine.size.y; ++y)
-                for (int32_t x = 0; x < fine.size.x; ++x)
-                    if (masks.back()[fine.index(x, y, z)]) {
-                        const glm::ivec3 p = parentOf(halved, x, y, z);
-                        mask[coarse.index(p.x, p.y, p.z)] = 1;
-                    }
+        std::vector<uint8_t> mask(coarse.cellCount());
+        const std::vector<uint8_t>& finer = masks.back();
+        // A coarse cell is fixed where any child is; coarse slices are independent.
+        forTwoSlabs(coarse.size.z, minSlicesForThreads(fine.cellCount()), [&](int32_t z0, int32_t z1) {
+            for (int32_t pz = z0; pz < z1; ++pz)
+                for (int32_t py = 0; py < coarse.size.y; ++py) {
+                    uint8_t* out = mask.data() + coarse.index(0, py, pz);
+                    std::fill(out, out + coarse.size.x, uint8_t(0));
+                    const Children cz = childrenOf(pz, fine.size.z, halved.z), cy = childrenOf(py, fine.size.y, halved.y);
+                    for (int32_t z = cz.first; z < cz.first + cz.count; ++z)
+                        for (int32_t y = cy.first; y < cy.first + cy.count; ++y) {
+                            const uint8_t* row = finer.data() + fine.index(0, y, z);
+                            for (int32_t x = 0; x < fine.size.x; ++x) out[x >> halved.x] |= uint8_t(row[x] != 0);
+                        }
+                }
+        });
         masks.push_back(std::move(mask));
     }
     return masks;
@@ -638,14 +650,16 @@ SolveReport solveLaplaceUntilStopped(const std::string& name, const std::vector<
     for (Field3* component : components) {
         Level& top = levels.front();
         top.u.push_back(std::move(component->values)); // moved back on every way out (below)
-        for (size_t i = 0; i < top.fixed.size(); ++i)
-            if (!top.fixed[i]) top.u.back()[i] = 0.0f;
+        std::vector<float>& u = top.u.back();
+        const size_t slice = size_t(box.size.x) * size_t(box.size.y);
+        forTwoSlabs(box.size.z, minSlicesForThreads(box.cellCount()), [&](int32_t z0, int32_t z1) {
+            for (size_t i = size_t(z0) * slice; i < size_t(z1) * slice; ++i) u[i] = top.fixed[i] ? u[i] : 0.0f;
+        });
         top.f.emplace_back(); // the finest right-hand side is 0 and never read (zeroRhs)
         for (size_t l = 1; l < levels.size(); ++l) {
             const Level& fine = levels[l - 1];
             std::vector<float> values;
-            restrictMean(fine, levels[l].box, true, [&](int32_t, int32_t, int32_t, size_t i) { return fine.u.back()[i]; },
-                         values);
+            restrictFixedMean(fine, fine.u.back(), levels[l].box, values);
             levels[l].u.push_back(std::move(values));
             levels[l].f.emplace_back(levels[l].box.cellCount(), 0.0f);
         }
