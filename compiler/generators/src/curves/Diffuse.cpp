@@ -106,16 +106,14 @@ void peronaMalikSweeps(const Constraints& cs, NormalField& n, float k, uint32_t 
 }
 
 MaterialFront prepareMaterial(const Constraints& cs) {
-    const Box& b = cs.box;
-    MaterialFront front{{std::vector<uint16_t>(b.cellCount(), 0), Field3(b), std::vector<uint8_t>(b.cellCount(), 0), 0},
-                        std::vector<FrontLayer>(b.cellCount(), -1),
-                        std::vector<uint32_t>(b.cellCount())};
-    MaterialField& out = front.field;
-    for (size_t i = 0; i < out.assigned.size(); ++i)
-        if (cs.flags[i] & kInParams) {
-            out.assigned[i] = 1, out.material[i] = cs.material[i], out.confidence.values[i] = 1.0f;
-            front.layer[i] = 0;
-        }
+    const size_t cells = cs.box.cellCount();
+    MaterialFront front;
+    front.field.material.reserve(cells);
+    front.field.confidence.box = cs.box;
+    front.field.confidence.values.reserve(cells);
+    front.field.assigned.reserve(cells);
+    front.layer.reserve(cells);
+    front.order.reserve(cells);
     return front;
 }
 
@@ -128,6 +126,19 @@ MaterialField propagateMaterial(const Constraints& cs) {
 void growMaterial(const Constraints& cs, MaterialFront& front) {
     const Box& b = cs.box;
     MaterialField& out = front.field;
+    // Filled here, in the storage prepareMaterial reserved (no reallocation), so the first
+    // touches of its pages run beside the other front's.
+    const size_t cells = b.cellCount();
+    out.material.resize(cells, 0);
+    out.confidence.values.resize(cells, 0.0f);
+    out.assigned.resize(cells, 0);
+    front.layer.resize(cells, -1);
+    front.order.resize(cells);
+    for (size_t i = 0; i < cells; ++i)
+        if (cs.flags[i] & kInParams) {
+            out.assigned[i] = 1, out.material[i] = cs.material[i], out.confidence.values[i] = 1.0f;
+            front.layer[i] = 0;
+        }
     const std::vector<FrontLayer>& layer = front.layer;
     const size_t row = size_t(b.size.x), slice = row * size_t(b.size.y);
     out.layers = growLayers(b, front.layer, front.order, [&](size_t p, glm::ivec3 q, int32_t l) {

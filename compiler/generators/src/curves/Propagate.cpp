@@ -11,14 +11,12 @@
 namespace voxc::curves {
 
 SurfaceFront prepareSurface(const Constraints& cs) {
-    const Box& b = cs.box;
-    SurfaceFront front{{Field3(b, std::numeric_limits<float>::infinity()), std::vector<FrontLayer>(b.cellCount(), -1), 0},
-                       std::vector<uint32_t>(b.cellCount())};
-    SurfaceField& out = front.field;
-    for (size_t i = 0; i < out.layer.size(); ++i)
-        if (cs.flags[i] & kInSurface) {
-            out.layer[i] = 0, out.distance.values[i] = cs.surface.values[i];
-        }
+    const size_t cells = cs.box.cellCount();
+    SurfaceFront front;
+    front.field.distance.box = cs.box;
+    front.field.distance.values.reserve(cells);
+    front.field.layer.reserve(cells);
+    front.order.reserve(cells);
     return front;
 }
 
@@ -33,6 +31,14 @@ void growSurface(const Constraints& cs, const Field3& nx, const Field3& ny, cons
                  SurfaceFront& front) {
     const Box& b = cs.box;
     SurfaceField& out = front.field;
+    // Filled here, in the storage prepareSurface reserved (no reallocation), so the first
+    // touches of its pages run beside the other front's.
+    const size_t cells = b.cellCount();
+    out.distance.values.resize(cells, std::numeric_limits<float>::infinity());
+    out.layer.resize(cells, -1);
+    front.order.resize(cells);
+    for (size_t i = 0; i < cells; ++i)
+        if (cs.flags[i] & kInSurface) out.layer[i] = 0, out.distance.values[i] = cs.surface.values[i];
     const Field3* normal[3] = {&nx, &ny, &nz};
     const size_t row = size_t(b.size.x), slice = row * size_t(b.size.y);
     out.layers = growLayers(b, out.layer, front.order, [&](size_t p, glm::ivec3 q, int32_t layer) {
