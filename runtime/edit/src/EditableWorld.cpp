@@ -1,20 +1,18 @@
 #include "voxc/edit/EditableWorld.h"
 
-#include "voxc/mesh/Lod.h"
 #include "voxc/mesh/MarchingCubes.h"
+
+#include <glm/common.hpp>
 
 namespace voxc {
 
-// The mesher refers to the pyramid, which refers to the grid: all three live here, in place.
 struct EditableWorld::State {
     State(ChunkedGrid g, const MeshOptions& options)
         : grid(std::move(g)), options(options), mesh(meshMarchingCubes(grid, options)) {}
     ChunkedGrid grid;
     MeshOptions options;
     Mesh mesh;
-    bool meshStale = false; // edits since `mesh`: mesh() welds the chunks' shares again
-    std::optional<LodPyramid> pyramid; // with the mesher, from the first edit that changes a voxel
-    std::optional<LodMesher> mesher;
+    bool meshStale = false; // edits since `mesh`: mesh() meshes the grid again
 };
 
 EditableWorld::EditableWorld(ChunkedGrid grid, const MeshOptions& options)
@@ -26,18 +24,26 @@ EditableWorld& EditableWorld::operator=(EditableWorld&&) noexcept = default;
 const ChunkedGrid& EditableWorld::grid() const { return state_->grid; }
 
 EditResult EditableWorld::edit(const Brush& brush) {
-    EditResult result;
-    result.changed = applyBrush(state_->grid, brush);
-    if (!result.changed) return result;
     State& s = *state_;
-    if (!s.mesher) {
-        // Every chunk meshed from the edited grid; the update below re-meshes the edit's chunks
-        // again (a few), only to name them as every later edit does. A pyramid of level 0 alone
-        // has no level to refresh.
-        s.pyramid.emplace(s.grid, 0);
-        s.mesher.emplace(*s.pyramid, LodLayout::uniform(s.grid.layout(), 0), s.options);
-    }
-    result.chunksRemeshed = s.mesher->update(result.changed->first, result.changed->last);
+    // The brush's writes forget the grid's tile ranges; kept and brought up to date over the
+    // changed box, they let the next mesh() skip the uniform tiles again.
+    std::optional<TileRanges> ranges;
+    if (const TileRanges* kept = s.grid.tileRanges()) ranges = *kept;
+    EditResult result;
+    result.changed = applyBrush(s.grid, brush);
+    const glm::ivec3 first = result.changed ? result.changed->first : glm::ivec3(0);
+    const glm::ivec3 last = result.changed ? result.changed->last : glm::ivec3(-1);
+    if (ranges) s.grid.recordTileRanges(std::move(*ranges), first, last);
+    if (!result.changed) return result;
+    // R2: the cells whose output can change, [first - 2, last + 1], within the grid's cells
+    // [-1, size - 1]; the chunks owning them, as cellChunks names chunks.
+    const ChunkLayout& layout = s.grid.layout();
+    const glm::ivec3 cellFirst = glm::max(first - 2, glm::ivec3(-1)), cellLast = glm::min(last + 1, layout.gridSize - 1);
+    const glm::ivec3 chunkFirst = (layout.gridOrigin + cellFirst) >> layout.chunkShift;
+    const glm::ivec3 chunkLast = (layout.gridOrigin + cellLast) >> layout.chunkShift;
+    for (int z = chunkFirst.z; z <= chunkLast.z; ++z)
+        for (int y = chunkFirst.y; y <= chunkLast.y; ++y)
+            for (int x = chunkFirst.x; x <= chunkLast.x; ++x) result.chunksRemeshed.push_back({x, y, z});
     s.meshStale = true;
     return result;
 }
@@ -48,7 +54,7 @@ std::optional<PickHit> EditableWorld::pick(glm::vec3 origin, glm::vec3 direction
 
 const Mesh& EditableWorld::mesh() const {
     State& s = *state_;
-    if (s.meshStale) s.mesh = s.mesher->mesh(), s.meshStale = false;
+    if (s.meshStale) s.mesh = meshMarchingCubes(s.grid, s.options), s.meshStale = false;
     return s.mesh;
 }
 

@@ -83,16 +83,44 @@ ChunkedGrid ChunkedGrid::fromDense(const DenseGrid& grid, const ChunkLayout& lay
     return chunked;
 }
 
-void ChunkedGrid::recordTileRanges() { summarize(data_.data(), nullptr); }
-
-void ChunkedGrid::loadDensities(const float* chunkMajor) { summarize(chunkMajor, data_.data()); }
-
 namespace {
 
 // A density as the meshers read it.
 inline float meshedDensity(float d) { return std::isfinite(d) ? d : 0.0f; }
 
 } // namespace
+
+void ChunkedGrid::recordTileRanges() { summarize(data_.data(), nullptr); }
+
+void ChunkedGrid::recordTileRanges(TileRanges before, glm::ivec3 first, glm::ivec3 last) {
+    constexpr int kShift = TileRanges::kShift;
+    const ChunkLayout& l = layout_;
+    if (glm::any(glm::lessThan(last, first))) {
+        tileRanges_ = std::move(before);
+        return;
+    }
+    const glm::ivec3 tileFirst = (l.gridOrigin + first) >> kShift, tileLast = (l.gridOrigin + last) >> kShift;
+    for (int tz = tileFirst.z; tz <= tileLast.z; ++tz)
+        for (int ty = tileFirst.y; ty <= tileLast.y; ++ty)
+            for (int tx = tileFirst.x; tx <= tileLast.x; ++tx) {
+                const glm::ivec3 tile(tx, ty, tz);
+                // The tile's voxels inside the grid, grid-local [low, high].
+                const glm::ivec3 low = glm::max(tile * (1 << kShift) - l.gridOrigin, glm::ivec3(0));
+                const glm::ivec3 high = glm::min((tile + 1) * (1 << kShift) - l.gridOrigin, l.gridSize) - 1;
+                TileRanges::Range range{INFINITY, -INFINITY};
+                for (int z = low.z; z <= high.z; ++z)
+                    for (int y = low.y; y <= high.y; ++y)
+                        for (int x = low.x; x <= high.x; ++x) {
+                            const float d = meshedDensity(data_[l.address({x, y, z})]);
+                            range.low = std::min(range.low, d);
+                            range.high = std::max(range.high, d);
+                        }
+                before.at(tile) = range;
+            }
+    tileRanges_ = std::move(before);
+}
+
+void ChunkedGrid::loadDensities(const float* chunkMajor) { summarize(chunkMajor, data_.data()); }
 
 void ChunkedGrid::summarize(const float* source, float* copyTo) {
     constexpr int kShift = TileRanges::kShift, kSide = 1 << kShift;

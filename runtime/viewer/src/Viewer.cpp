@@ -113,6 +113,12 @@ private:
             const Brush::Op op = action.kind == Action::Kind::Carve ? Brush::Op::Carve : Brush::Op::Add;
             const bool hit = action.alongRay ? brushAlong(op, action.origin, action.direction) : brushAtPixel(op, action.pixel);
             if (!hit) fail(action, "the ray meets no surface");
+            // What a click waits for before the next frame: the edit, then the world's mesh.
+            const auto start = Clock::now();
+            refreshMesh();
+            log(fmt::format("{}: {} chunks re-meshed in {:.1f} ms, the mesh ({} triangles) in {:.1f} ms", action.kind == Action::Kind::Carve ? "carve" : "add",
+                            lastEdit_->chunksRemeshed, lastEdit_->ms, mesh_.triangles.size() / 3,
+                            std::chrono::duration<double, std::milli>(Clock::now() - start).count()));
             break;
         }
         case Action::Kind::Set:

@@ -1,20 +1,21 @@
 #pragma once
-// A generated grid with its marching-cubes mesh kept per chunk, edited by brushes (voxc/edit/Brush.h)
-// and picked by rays (voxc/edit/Pick.h): the C++ API of deformation, without a viewer.
+// A generated grid with its marching-cubes mesh, edited by brushes (voxc/edit/Brush.h) and picked
+// by rays (voxc/edit/Pick.h): the C++ API of deformation, without a viewer.
 //
-// Built, the world is meshed whole (meshMarchingCubes: uniform tiles skipped on the grid's tile
-// ranges, both cores), several times faster than chunk by chunk and byte for byte the same mesh;
-// the chunks' shares (LodMesher) are made on the first edit that changes a voxel, so a world that
-// is only looked at never pays for them. mesh() is kept: welded from the shares when asked after
-// edits, once.
+// The mesh is made whole (meshMarchingCubes: uniform tiles skipped on the grid's tile ranges, both
+// cores), at construction and again when mesh() is asked after edits: faster than keeping every
+// chunk's share and welding them (at 256x128x256, making the shares takes seconds and each weld
+// longer than meshing the whole grid), and byte for byte the same mesh. An edit keeps the grid's tile ranges
+// up to date over the voxels it changed, so the next mesh skips the uniform tiles again.
 //
 // An edit diffs the densities it writes; V is the box of voxels whose bits changed. The chunks
-// re-meshed are exactly those owning a cell in [Vmin - 2, Vmax + 1] (meshing spec §2.5 R2): a cell
-// reads its 8 corners, and its vertices' normals (central differences) one sample beyond them.
-// That is LodMesher::update over V with a layout of only level 0, so the mesh after any sequence of
-// edits is, byte for byte, meshMarchingCubes of the current grid (the meshers are deterministic per
-// global grid edge). A no-op edit (carve in air, add in rock) changes no voxel and re-meshes
-// nothing. Named EditableWorld because voxc::World is the program's world settings.
+// whose share of the mesh it can change are exactly those owning a cell in [Vmin - 2, Vmax + 1]
+// (meshing spec §2.5 R2): a cell reads its 8 corners, and its vertices' normals (central
+// differences) one sample beyond them; EditResult names them, for a caller that keeps meshes per
+// chunk. The mesh after any sequence of edits is, byte for byte, the chunk-by-chunk mesher's
+// (LodMesher at level 0) of the current grid (the meshers are deterministic per global grid edge).
+// A no-op edit (carve in air, add in rock) changes no voxel and leaves the mesh as it is. Named
+// EditableWorld because voxc::World is the program's world settings.
 #include "voxc/edit/Brush.h"
 #include "voxc/edit/Pick.h"
 #include "voxc/mesh/SurfaceNets.h"
@@ -30,7 +31,8 @@ struct Mesh;
 
 struct EditResult {
     std::optional<VoxelBox> changed;       // grid-local voxels whose density changed
-    std::vector<glm::ivec3> chunksRemeshed; // world chunk coordinates
+    // The chunks whose share of the mesh the edit can change (R2), world chunk coordinates.
+    std::vector<glm::ivec3> chunksRemeshed;
 };
 
 class EditableWorld {
@@ -43,7 +45,7 @@ public:
     const ChunkedGrid& grid() const;
     EditResult edit(const Brush& brush);
     std::optional<PickHit> pick(glm::vec3 origin, glm::vec3 direction, float maxDistance = 1e30f) const;
-    // The welded mesh of every chunk as it now stands (valid until the next edit).
+    // The mesh of the grid as it now stands, made again when asked after an edit (valid until the next edit).
     const Mesh& mesh() const;
 
 private:

@@ -94,6 +94,10 @@ public:
     const TileRanges* tileRanges() const { return tileRanges_ ? &*tileRanges_ : nullptr; }
     // Records the tile ranges of the densities as they are now (one pass over them).
     void recordTileRanges();
+    // Records them after a change of the grid-local voxels [first, last] (inclusive) only: `before`
+    // (the ranges taken before the change) with the tiles that box touches summarised again (none
+    // for an empty box: last < first on some axis).
+    void recordTileRanges(TileRanges before, glm::ivec3 first, glm::ivec3 last);
     // Copies the layout's chunk-major densities (data().size() floats, e.g. a device buffer
     // mapped for reading) into the grid and records their tile ranges in the same pass.
     void loadDensities(const float* chunkMajor);
