@@ -374,7 +374,9 @@ TEST_F(SessionTest, CurvesTerrainAndLsystemSlidersRerunAsIfTheFileSaidSo) {
     Session session(context(), {path()});
     ASSERT_TRUE(session.hasWorld()) << session.lastError();
     const std::vector<glm::vec3> before = session.world().mesh().positions;
-    ASSERT_TRUE(session.setParameter("cliffs.face.constraint[1].amplitude", 3)) << session.lastError();
+    // As the window's float slider gives it: the decimal the panel shows, not the float's expansion.
+    EXPECT_EQ(sliderValue(2.7f), 2.7);
+    ASSERT_TRUE(session.setParameter("cliffs.face.constraint[1].amplitude", sliderValue(2.7f))) << session.lastError();
     EXPECT_TRUE(session.world().mesh().positions != before);
     // A terrain key solves the terrain again; the curves block, unchanged, comes from the cache.
     const stages::SolveCacheCounts counts = stages::solveCacheCounts();
@@ -388,10 +390,16 @@ TEST_F(SessionTest, CurvesTerrainAndLsystemSlidersRerunAsIfTheFileSaidSo) {
     // The same world as a file that writes the three values (one of them a key the file left out).
     std::string text = kBlocksProgram;
     const std::string secondPoint = "constraint { t = 1; material = sand; }";
-    text.replace(text.find(secondPoint), secondPoint.size(), "constraint { t = 1; material = sand; amplitude = 3; }");
+    text.replace(text.find(secondPoint), secondPoint.size(), "constraint { t = 1; material = sand; amplitude = 2.7; }");
     text.replace(text.find("rain = 0.5"), 10, "rain = 2");
     text.replace(text.find("expansions = 2"), 14, "expansions = 3");
+    // The file has the sliders' solve keys: opened afresh, and reloaded without the sliders, it
+    // reads both solves from the cache and solves nothing.
+    const stages::SolveCacheCounts beforeFile = stages::solveCacheCounts();
     expectWorldOfFile(session, text);
+    ASSERT_TRUE(session.resetParameters()) << session.lastError();
+    EXPECT_EQ(stages::solveCacheCounts().solved - beforeFile.solved, 0u);
+    EXPECT_EQ(stages::solveCacheCounts().hits - beforeFile.hits, 4u);
 
     try {
         session.setParameter("cliffs.face.constraint[3].amplitude", 1);

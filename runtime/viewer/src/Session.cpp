@@ -24,6 +24,7 @@
 #include <thread>
 #include <unistd.h>
 #include <cmath>
+#include <cstdlib>
 #include <fmt/format.h>
 #include <functional>
 #include <map>
@@ -547,6 +548,8 @@ bool Session::redo() {
 void Session::saveEdits(const std::filesystem::path& path) const {
     writeFileAtomically(path.string(), formatEdits(edits_, loaded_ ? loaded_->program.materials : std::vector<Material>{}));
 }
+
+double sliderValue(float shown) { return std::strtod(fmt::format("{}", shown).c_str(), nullptr); }
 
 std::string formatEdits(const std::vector<Brush>& edits, const std::vector<Material>& materials) {
     std::string out = "[";

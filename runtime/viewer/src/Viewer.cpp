@@ -475,7 +475,7 @@ void App::panel() {
             } else {
                 float v = float(p.value);
                 ImGui::SliderFloat(label.c_str(), &v, float(p.sliderMin), float(p.sliderMax));
-                value = v;
+                value = sliderValue(v);
             }
             // Re-run when the slider is let go, not at every step of the drag.
             if (p.kind != Parameter::Kind::Seed && ImGui::IsItemDeactivatedAfterEdit()) released = {p.name, value};

@@ -170,6 +170,12 @@ private:
     std::unique_ptr<Refiner> refiner_; // started by the first preview
 };
 
+// The value a float slider standing at `shown` gives its parameter: the shortest decimal that reads
+// back as `shown` (what the panel shows and a file would say: 2.7f gives 2.7, not the float's
+// 2.700000047683716), so a file that then says the value checks to the same numbers, and its
+// curves and terrain blocks to the same solve keys: it reads the slider's solves from the cache.
+double sliderValue(float shown);
+
 // The edits as the JSON array `voxc run --edits` reads (docs/cli.md, "Edits files"): floats are
 // written in their shortest exact form, so a replay gives the same bits; an add's material by name.
 std::string formatEdits(const std::vector<Brush>& edits, const std::vector<Material>& materials);
