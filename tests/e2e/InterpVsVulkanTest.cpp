@@ -78,7 +78,8 @@ std::vector<Case> cases() {
     std::vector<Case> all;
     for (const char* example : {"overhang", "cave_grammar", "terrain", "scene", "fields", "arch", "cave", "cliff", "curves_cliff", "curves_cave", "curves_terrace", "valley", "mountains", "canyon", "imported_ridge", "boulders", "carved_ridge", "tutorial/06_valley", "cases/priorities",
                                 "cases/field_modes", "cases/materials_grammar", "cases/materials_fields",
-                                "cases/nonfinite", "cases/symmetry", "cases/aggregates", "cases/column_noise"})
+                                "cases/nonfinite", "cases/symmetry", "cases/aggregates", "cases/column_noise",
+                                "cases/noise_skip"})
         for (glm::ivec3 origin : {glm::ivec3(0, 0, 0), glm::ivec3(-37, -5, -100), glm::ivec3(100003, 7, -65541)})
             all.push_back({example, origin});
     return all;

@@ -287,6 +287,130 @@ bool pointSetLookupsAlongColumn(const ir::IrModule& module, const ir::IrField& f
     return true;
 }
 
+// ---- Noise skip ----
+// A voxel whose field value its cheap nodes already settle, whatever values the costliest calls
+// take inside their ranges, skips those calls. The records skipped: the worley family, each a
+// search of 27 cells and most of a carve's time. The kernel bounds every node computed from them
+// by their ranges (the registry's range rules, voxc/builtins/Intervals.h, which hold the device's
+// values too) and the exact values of
+// the rest; where the root's bounds are one float it takes that float and leaves the calls and
+// their dependents to a loop it does not enter (llvmpipe runs both sides of an `if`, but leaves a
+// loop that no lane of a group is in).
+// Same bits: add, sub, mul, neg, min, max and clamp are monotone in each operand (for mul, the
+// extremes lie at the operands' corners) and float rounding is monotone, so the same float
+// operations at the ends bound the kernel's value; bounds equal as numbers are the value, signed
+// zero aside, which only a combine that ignores a zero's sign may take (FieldMode Subtract, Paint).
+constexpr std::string_view kSkippableCalls[] = {"worley_f1", "worley_f2", "worley_f2f1"};
+// The operations a value computed from a skipped call may pass through (scalar floats only).
+constexpr std::string_view kBoundedOperations[] = {"add", "sub", "mul", "neg", "min", "max", "clamp"};
+// Bounds past this are treated as unbounded, so no bound computation can overflow into a NaN.
+constexpr double kSkipBoundLimit = 1e30;
+
+struct NoiseSkip {
+    std::vector<bool> skipped;   // calls a settled voxel does not evaluate
+    std::vector<bool> dependent; // skipped, or computed from a skipped call
+    std::vector<float> lo, hi;   // the skipped calls' float ranges
+    bool rootMayBeZero = true;   // whether settling on a zero needs its sign (the combine's)
+};
+
+bool boundedFinite(const Interval& v) {
+    return v.type == Type::Float && std::fabs(v.lo.x) <= kSkipBoundLimit && std::fabs(v.hi.x) <= kSkipBoundLimit;
+}
+
+// The noise skip of a column-walking field kernel, or nullopt where no call can be skipped.
+std::optional<NoiseSkip> planNoiseSkip(const ir::IrField& field, FieldMode mode) {
+    // Every voxel's coordinates are ints converted to float: any value of an int bounds them.
+    const double coordinate = double(float(INT32_MAX));
+    std::array<Interval, 6> inputs;
+    inputs.fill(Interval{Type::Float, {-coordinate, 0, 0}, {coordinate, 0, 0}, false});
+    const std::vector<Interval> ranges = ir::fieldNodeIntervals(field, inputs);
+    const size_t count = field.nodes.size();
+    NoiseSkip skip{std::vector<bool>(count, false), std::vector<bool>(count, false), std::vector<float>(count, 0.0f),
+                   std::vector<float>(count, 0.0f), mode != FieldMode::Subtract && mode != FieldMode::Paint};
+    bool any = false;
+    for (size_t i = 0; i < count; ++i) {
+        const FieldNode& node = field.nodes[i];
+        if (field.perColumn.at(i)) continue;
+        if (node.kind == FieldNode::Kind::Call && node.type == Type::Float &&
+            std::ranges::find(kSkippableCalls, functions()[node.function].name) != std::end(kSkippableCalls) &&
+            boundedFinite(ranges[i])) {
+            skip.skipped[i] = skip.dependent[i] = any = true;
+            // Float ends outside the double bounds (every float value lies between them).
+            skip.lo[i] = std::nextafter(float(ranges[i].lo.x), -INFINITY);
+            skip.hi[i] = std::nextafter(float(ranges[i].hi.x), INFINITY);
+            continue;
+        }
+        for (uint32_t o : node.operands) skip.dependent[i] = skip.dependent[i] || skip.dependent[o];
+        if (!skip.dependent[i]) continue;
+        const bool bounded = node.kind == FieldNode::Kind::Call && node.type == Type::Float && boundedFinite(ranges[i]) &&
+                             std::ranges::find(kBoundedOperations, functions()[node.function].name) !=
+                                 std::end(kBoundedOperations) &&
+                             std::all_of(node.operands.begin(), node.operands.end(),
+                                         [&](uint32_t o) { return boundedFinite(ranges[o]); });
+        if (!bounded) return std::nullopt;
+    }
+    if (!any || !skip.dependent[field.root] || skip.skipped[field.root]) return std::nullopt;
+    return skip;
+}
+
+// The bounds of the nodes computed from skipped calls (nLo, nHi per node n), the test whether the
+// root is settled, and the loop that evaluates the skipped calls and their dependents elsewhere.
+// `statements` holds those nodes' assignments in node order.
+std::string noiseSkipGlsl(const ir::IrField& field, const NoiseSkip& skip, const std::vector<std::string>& names,
+                          const std::string& statements) {
+    std::string declarations, bounds;
+    const auto end = [&](uint32_t o, bool high) -> std::string {
+        if (skip.skipped[o]) return opaqueGlsl(glslFloat(high ? skip.hi[o] : skip.lo[o]));
+        return skip.dependent[o] ? names[o] + (high ? "Hi" : "Lo") : names[o];
+    };
+    for (size_t i = 0; i < field.nodes.size(); ++i) {
+        if (!skip.dependent[i]) continue;
+        declarations += fmt::format("precise float {};\n", names[i]);
+        if (skip.skipped[i]) continue;
+        const FieldNode& node = field.nodes[i];
+        const FunctionInfo& info = functions()[node.function];
+        const std::vector<Type> types(node.operands.size(), Type::Float);
+        const auto call = [&](std::vector<bool> high) {
+            std::vector<std::string> args;
+            for (size_t k = 0; k < node.operands.size(); ++k) args.push_back(end(node.operands[k], high[k]));
+            return info.glsl(args, types);
+        };
+        std::string lo, hi;
+        if (info.name == "sub") {
+            lo = call({false, true});
+            hi = call({true, false});
+        } else if (info.name == "neg") {
+            lo = call({true});
+            hi = call({false});
+        } else if (info.name == "mul") {
+            // The products at the corners; an exact operand has one end.
+            std::vector<std::string> corners;
+            for (bool a : {false, true})
+                for (bool b : {false, true})
+                    if ((a == false || skip.dependent[node.operands[0]]) && (b == false || skip.dependent[node.operands[1]]))
+                        corners.push_back(call({a, b}));
+            for (size_t k = 0; k < corners.size(); ++k)
+                bounds += fmt::format("precise float {}Corner{} = {};\n", names[i], k, corners[k]);
+            lo = names[i] + "Corner0";
+            hi = lo;
+            for (size_t k = 1; k < corners.size(); ++k) {
+                lo = fmt::format("min({}, {}Corner{})", lo, names[i], k);
+                hi = fmt::format("max({}, {}Corner{})", hi, names[i], k);
+            }
+        } else { // add, min, max, clamp: increasing in every operand
+            lo = call(std::vector<bool>(node.operands.size(), false));
+            hi = call(std::vector<bool>(node.operands.size(), true));
+        }
+        bounds += fmt::format("precise float {0}Lo = {1};\nprecise float {0}Hi = {2};\n", names[i], lo, hi);
+    }
+    const std::string& root = names[field.root];
+    return fmt::format("// Noise skip: bounds of the values computed from the skipped calls' ranges.\n{}{}"
+                       "bool noiseSkipSettled = {}Lo == {}Hi{};\n{} = {}Lo;\n"
+                       "for (int noiseSkip = noiseSkipSettled ? 1 : 0; noiseSkip < 1; ++noiseSkip) {{\n{}}}\n",
+                       declarations, bounds, root, root, skip.rootMayBeZero ? fmt::format(" && {}Lo != 0.0", root) : "",
+                       root, root, prefixLines(statements, "    "));
+}
+
 // x, y, z in a stamp's frame (`stampPosition`, voxc::stampLocal); wx, wy, wz the voxel's world place.
 std::string stampInputGlsl(FieldInput input) {
     const int axis = int(input) % 3;
@@ -296,7 +420,7 @@ std::string stampInputGlsl(FieldInput input) {
 
 // `stampFrame`: the inputs of a stamp, every node in `voxel` (no column walk).
 FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::string_view sourceName,
-                    bool stampFrame = false) {
+                    bool stampFrame = false, const NoiseSkip* skip = nullptr) {
     const std::vector<std::shared_ptr<const PointSet>> pointSets = pointSetsOf(module);
     const std::vector<std::shared_ptr<const SampledMap>> maps = mapsOf(module);
     FieldCode code;
@@ -305,6 +429,7 @@ FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::s
     const std::vector<bool> asVariable = constantCallOperands(field);
     std::set<std::string_view> seenLibraries;
     int columnNoiseSites = 0, columnPointSetSites = 0;
+    std::string skippable; // the assignments of the nodes a settled voxel skips
     for (size_t i = 0; i < field.nodes.size(); ++i) {
         const FieldNode& node = field.nodes[i];
         if (node.kind == FieldNode::Kind::Constant) {
@@ -380,11 +505,17 @@ FieldCode emitField(const ir::IrModule& module, const ir::IrField& field, std::s
         }
         }
         code.names[i] = fmt::format("n{}", i);
+        if (skip && skip->dependent[i]) { // declared before the skip's loop, assigned in it
+            skippable += fmt::format("{} = {}; // {} ({}:{}:{})\n", code.names[i], value, what, sourceName,
+                                     node.loc.line, node.loc.column);
+            continue;
+        }
         const std::string line =
             fmt::format("{}{} {} = {}; // {} ({}:{}:{})\n", isFloatType(node.type) ? "precise " : "",
                         typeName(node.type), code.names[i], value, what, sourceName, node.loc.line, node.loc.column);
         (field.perColumn.at(i) && !stampFrame ? code.column : code.voxel) += line;
     }
+    if (skip) code.voxel += noiseSkipGlsl(field, *skip, code.names, skippable);
     if (columnNoiseSites > 0) {
         code.libraries.push_back("noise_column.glsl");
         code.columnNoise = fmt::format("float noiseColumnValues[{}][COLUMN_BLOCK];\n"
@@ -608,7 +739,8 @@ FieldStageBoxes fieldBoxes(const ir::IrModule& module, const ir::IrField& field,
 std::string fieldKernelSource(const ir::IrModule& module, const ir::IrField& field, FieldMode mode,
                               std::optional<uint8_t> material, const std::vector<Stage>& stages, std::string_view kernelName,
                               std::string_view sourceName) {
-    const FieldCode code = emitField(module, field, sourceName);
+    const std::optional<NoiseSkip> skip = planNoiseSkip(field, mode);
+    const FieldCode code = emitField(module, field, sourceName, false, skip ? &*skip : nullptr);
     std::string header = fmt::format("voxc generated kernel \"{}\": field {} ({}:{}:{}), mode {}.\nPipeline stage",
                                      kernelName, field.name, sourceName, field.loc.line, field.loc.column,
                                      ir::fieldModeName(mode));

@@ -13,8 +13,9 @@ namespace {
 
 int floorDiv(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
-// The root's interval over positions localMin <= local < localMax.
-Interval rootInterval(const World& world, const IrField& field, glm::ivec3 localMin, glm::ivec3 localMax) {
+} // namespace
+
+std::vector<Interval> fieldNodeIntervals(const IrField& field, const std::array<Interval, 6>& inputs) {
     std::vector<Interval> values(field.nodes.size());
     std::vector<Interval> args;
     for (size_t i = 0; i < field.nodes.size(); ++i) {
@@ -25,16 +26,7 @@ Interval rootInterval(const World& world, const IrField& field, glm::ivec3 local
                         : node.type == Type::Bool ? Interval::point(Type::Bool, glm::dvec3(node.constantBool, 0, 0))
                                                   : Interval::point(node.type, glm::dvec3(node.constant));
             break;
-        case FieldNode::Kind::Input: {
-            const int axis = int(node.input) % 3;
-            const int shift = node.input >= FieldInput::WorldX ? world.origin[axis] : world.localBase[axis];
-            // The evaluator converts the integer coordinate to float: monotone, so the
-            // converted ends bound every converted coordinate (even past 2^24).
-            const double lo = double(float(int64_t(localMin[axis]) + shift));
-            const double hi = double(float(int64_t(localMax[axis]) - 1 + shift));
-            values[i] = {Type::Float, {lo, 0, 0}, {hi, 0, 0}, lo == hi};
-            break;
-        }
+        case FieldNode::Kind::Input: values[i] = inputs[int(node.input)]; break;
         case FieldNode::Kind::Component: {
             const Interval& v = values[node.operands[0]];
             const int c = int(node.component);
@@ -78,7 +70,24 @@ Interval rootInterval(const World& world, const IrField& field, glm::ivec3 local
         }
         }
     }
-    return values[field.root];
+    return values;
+}
+
+namespace {
+
+// The root's interval over positions localMin <= local < localMax.
+Interval rootInterval(const World& world, const IrField& field, glm::ivec3 localMin, glm::ivec3 localMax) {
+    std::array<Interval, 6> inputs;
+    for (int input = 0; input < 6; ++input) {
+        const int axis = input % 3;
+        const int shift = input >= int(FieldInput::WorldX) ? world.origin[axis] : world.localBase[axis];
+        // The evaluator converts the integer coordinate to float: monotone, so the
+        // converted ends bound every converted coordinate (even past 2^24).
+        const double lo = double(float(int64_t(localMin[axis]) + shift));
+        const double hi = double(float(int64_t(localMax[axis]) - 1 + shift));
+        inputs[input] = {Type::Float, {lo, 0, 0}, {hi, 0, 0}, lo == hi};
+    }
+    return fieldNodeIntervals(field, inputs)[field.root];
 }
 
 } // namespace

@@ -2,8 +2,10 @@
 // Interval analysis of a field stage per chunk: evaluates the field's DAG in interval arithmetic
 // (voxc/builtins/Intervals.h) over each chunk's box of positions and proves where the field is
 // one exact float, so a kernel can skip the DAG there and combine with that constant.
+#include "voxc/builtins/Intervals.h"
 #include "voxc/ir/Ir.h"
 
+#include <array>
 #include <glm/vec3.hpp>
 #include <limits>
 #include <vector>
@@ -20,6 +22,10 @@ struct FieldChunk {
     double lo = -std::numeric_limits<double>::infinity();
     double hi = std::numeric_limits<double>::infinity();
 };
+
+// Every node's interval where each input (FieldInput order: x, y, z, wx, wy, wz) lies in its
+// interval of `inputs`.
+std::vector<Interval> fieldNodeIntervals(const IrField& field, const std::array<Interval, 6>& inputs);
 
 // Every chunk of the world's chunk grid that holds grid voxels, x fastest, then y, then z.
 std::vector<FieldChunk> classifyFieldChunks(const World& world, const IrField& field);
