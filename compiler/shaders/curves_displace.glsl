@@ -16,6 +16,7 @@ layout(std430, set = 0, binding = 3) writeonly buffer Displacement { float displ
 
 #include "random.glsl"
 #include "noise_common.glsl"
+#include "noise_permutation.glsl"
 #include "noise_perlin3.glsl"
 #include "noise_fractal.glsl"
 

@@ -6,8 +6,9 @@
 // octave the x/z lattice work is done once per column, the hashes and the gradients' x/z parts
 // once per lattice cell along y (loops whose trip counts are the same in every lane, so llvmpipe
 // really skips), and each voxel pays only its y fraction, eight adds and seven lerps.
-// Requires noise_common.glsl, noise_perlin3.glsl and, from the kernel, COLUMN_BLOCK, the array
-// noiseColumnValues[sites][COLUMN_BLOCK] and noiseColumnArgY(site, y): the argument's y at voxel y.
+// Requires noise_common.glsl, noise_permutation.glsl, noise_perlin3.glsl and, from the kernel,
+// COLUMN_BLOCK, the array noiseColumnValues[sites][COLUMN_BLOCK] and noiseColumnArgY(site, y): the
+// argument's y at voxel y.
 
 // One octave's column constants: the scaled x and z, their lattice cells and fade weights.
 struct NoiseColumnOctave {

@@ -1,5 +1,5 @@
 // Fractals, domain warps and curl over perlin3: mirrors compiler/builtins/src/functions/Fractal.cpp.
-// Requires noise_common.glsl and noise_perlin3.glsl.
+// Requires noise_common.glsl, noise_permutation.glsl and noise_perlin3.glsl.
 
 // kind 0: fbm (sum of n), 1: turbulence (sum of |n|), 2: ridged (see voxc::noise::ridged).
 float noiseOctaveSum(vec3 p, int octaves, float lacunarity, float gain, uint seed, int kind) {

@@ -1,5 +1,5 @@
 // 3D simplex noise: mirrors voxc::noise::simplex3 (compiler/builtins/src/functions/GradientNoise.cpp).
-// Requires noise_common.glsl.
+// Requires noise_common.glsl and noise_permutation.glsl.
 
 float noiseSimplexCorner(int hash, float x, float y, float z) {
     precise float t = 0.5 - x * x - y * y - z * z;
@@ -45,10 +45,19 @@ float noiseSimplex3(vec3 p, int seedBits) {
     int I = noiseLatticeIndex(fi) + offset.x;
     int J = noiseLatticeIndex(fj) + offset.y;
     int K = noiseLatticeIndex(fk) + offset.z;
-    float n0 = noiseSimplexCorner(noisePerm(I + noisePerm(J + noisePerm(K))), x0, y0, z0);
-    float n1 = noiseSimplexCorner(noisePerm(I + c1.x + noisePerm(J + c1.y + noisePerm(K + c1.z))), x1, y1, z1);
-    float n2 = noiseSimplexCorner(noisePerm(I + c2.x + noisePerm(J + c2.y + noisePerm(K + c2.z))), x2, y2, z2);
-    float n3 = noiseSimplexCorner(noisePerm(I + 1 + noisePerm(J + 1 + noisePerm(K + 1))), x3, y3, z3);
+    // Corner c hashes perm(I + c.x + perm(J + c.y + perm(K + c.z))), read as pairs: one at K, one
+    // at J + perm(K + z) per z, one at I + perm(J + c.y + perm(K + c.z)) per corner.
+    ivec2 hK = noisePermPair(K);
+    ivec2 hJ0 = noisePermPair(J + hK.x);
+    ivec2 hJ1 = noisePermPair(J + hK.y);
+    int j1 = c1.z == 0 ? (c1.y == 0 ? hJ0.x : hJ0.y) : (c1.y == 0 ? hJ1.x : hJ1.y);
+    int j2 = c2.z == 0 ? (c2.y == 0 ? hJ0.x : hJ0.y) : (c2.y == 0 ? hJ1.x : hJ1.y);
+    ivec2 h1 = noisePermPair(I + j1);
+    ivec2 h2 = noisePermPair(I + j2);
+    float n0 = noiseSimplexCorner(noisePermPair(I + hJ0.x).x, x0, y0, z0);
+    float n1 = noiseSimplexCorner(c1.x == 0 ? h1.x : h1.y, x1, y1, z1);
+    float n2 = noiseSimplexCorner(c2.x == 0 ? h2.x : h2.y, x2, y2, z2);
+    float n3 = noiseSimplexCorner(noisePermPair(I + hJ1.y).y, x3, y3, z3);
     precise float r = 76.0 * (n0 + n1 + n2 + n3);
     return r;
 }

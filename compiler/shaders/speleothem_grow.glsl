@@ -11,6 +11,7 @@
 // <<PARAMETERS>>
 #include "random.glsl"
 #include "noise_common.glsl"
+#include "noise_permutation.glsl"
 #include "noise_simplex3.glsl"
 #include "speleothems.glsl"
 

@@ -1,7 +1,8 @@
 // Speleothems: mirrors voxc::caves (compiler/generators/src/caves/Speleothems.cpp) operation for
 // operation, every float result `precise`, so both sides write the same bits on lavapipe.
-// Requires common.glsl, random.glsl, noise_common.glsl, noise_simplex3.glsl, speleothem_air.glsl,
-// and before this file the stage's constants (speleothem_grow.glsl's PARAMETERS section):
+// Requires common.glsl, random.glsl, noise_common.glsl, noise_permutation.glsl, noise_simplex3.glsl,
+// speleothem_air.glsl, and before this file the stage's constants (speleothem_grow.glsl's
+// PARAMETERS section):
 // SPELEOTHEM_KIND (0 stalactite, 1 stalagmite, 2 column, 3 hoodoo), SPELEOTHEM_CLUSTER_FREQUENCY,
 // _CLUSTER_LOW, _CLUSTER_HIGH, _SPAWN_FREQUENCY, _SPAWN_THRESHOLD, _REACH_SCALE (voxc::
 // speleothemReachScale), _GROWTH, _TAPER, _MIN_GAP,

@@ -21,11 +21,11 @@ TEST(codegen_Shaders, EveryTemplateIsEmbedded) {
     EXPECT_NE(shaderSource("common.glsl").find("int voxelAddress(ivec3 local)"), std::string_view::npos);
 }
 
-// noise_perlin3.glsl spells Perlin's permutation out as pairs (perm(i) | perm(i + 1) << 8) so the
+// noise_permutation.glsl spells Perlin's permutation out as pairs (perm(i) | perm(i + 1) << 8) so the
 // kernels need not copy it from the noise-table buffer; the pairs must be those of the table the
 // interpreter reads, or device and interpreter noise differ.
 TEST(codegen_Shaders, PerlinPermutationPairsAreThoseOfTheInterpreterTable) {
-    const std::string_view source = shaderSource("noise_perlin3.glsl");
+    const std::string_view source = shaderSource("noise_permutation.glsl");
     const std::string_view opening = "int noisePermutationPairs[256] = int[256](";
     const size_t begin = source.find(opening);
     ASSERT_NE(begin, std::string_view::npos);

@@ -23,7 +23,7 @@ uint64_t fieldLoopIterations(const Field& field) {
 }
 
 // Perlin's permutation is written into each invocation's private table at the top of main, one
-// store per entry (noise_perlin3.glsl's initializer); counted as that many loop iterations.
+// store per entry (noise_permutation.glsl's initializer); counted as that many loop iterations.
 constexpr uint64_t kNoiseTableIterations = 256;
 
 // One sweep's stamp kernel (stamp.glsl): its stamps' field code and the loop iterations of one

@@ -40,12 +40,14 @@ constexpr char kPerlin3[] = "noisePerlin3", kSimplex3[] = "noiseSimplex3", kValu
                kRidged[] = "noiseRidged", kTurbulence[] = "noiseTurbulence", kWarp[] = "noiseWarp",
                kWarpedFbm[] = "noiseWarpedFbm";
 
-constexpr std::string_view kPerlinLibs[] = {"random.glsl", "noise_common.glsl", "noise_perlin3.glsl"};
-constexpr std::string_view kSimplexLibs[] = {"random.glsl", "noise_common.glsl", "noise_simplex3.glsl"};
+constexpr std::string_view kPerlinLibs[] = {"random.glsl", "noise_common.glsl", "noise_permutation.glsl",
+                                            "noise_perlin3.glsl"};
+constexpr std::string_view kSimplexLibs[] = {"random.glsl", "noise_common.glsl", "noise_permutation.glsl",
+                                             "noise_simplex3.glsl"};
 constexpr std::string_view kValueLibs[] = {"random.glsl", "noise_common.glsl", "noise_value3.glsl"};
 constexpr std::string_view kWorleyLibs[] = {"random.glsl", "noise_common.glsl", "noise_worley3.glsl"};
-constexpr std::string_view kFractalLibs[] = {"random.glsl", "noise_common.glsl", "noise_perlin3.glsl",
-                                             "noise_fractal.glsl"};
+constexpr std::string_view kFractalLibs[] = {"random.glsl", "noise_common.glsl", "noise_permutation.glsl",
+                                             "noise_perlin3.glsl", "noise_fractal.glsl"};
 
 // Tolerances: add, subtract, multiply and floor are correctly rounded in Vulkan and every float
 // result is `precise`, so these agree bit for bit; 1e-6 leaves room for denormal flushing.

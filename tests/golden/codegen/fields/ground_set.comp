@@ -237,20 +237,16 @@ float noiseUnitFloat(uint h) {
     return r;
 }
 // ---- end noise_common.glsl ----
-// ---- begin noise_perlin3.glsl ----
-// Ken Perlin's improved noise (2002) with a seed-derived lattice translation: mirrors
-// voxc::noise::perlin3 (compiler/builtins/src/functions/GradientNoise.cpp).
-// Requires noise_common.glsl.
-
-// The permutation in private memory as pairs: entry i holds perm(i) in bits 0..7 and perm(i + 1)
-// in bits 8..15, so one read serves both lookups Perlin's hashing makes at i and i + 1 (the
-// values, so every result bit, are those of noisePerm; tests/codegen checks them against
-// voxc::perlinPermutation). Why: llvmpipe reads a storage buffer lane by lane behind branches but
-// a private array with one gather, and the permutation reads are most of a perlin3. The table is
-// a global with a constant initializer, i.e. stored from constants once per invocation at the
-// top of main; filled from the noise-table buffer instead, each entry cost a lane-by-lane buffer
-// read and a lane-by-lane store. It is not a `const` array: llvmpipe
-// materialises a dynamically indexed constant array at every use.
+// ---- begin noise_permutation.glsl ----
+// Ken Perlin's permutation in private memory as pairs, for perlin3 and simplex3: entry i holds
+// perm(i) in bits 0..7 and perm(i + 1) in bits 8..15, so one read serves both lookups their
+// hashing makes at i and i + 1 (the values, so every result bit, are those of noisePerm;
+// tests/codegen checks them against voxc::perlinPermutation). Why: llvmpipe reads a storage
+// buffer lane by lane behind branches but a private array with one gather, and the permutation
+// reads are most of a perlin3 or a simplex3. The table is a global with a constant initializer,
+// i.e. stored from constants once per invocation at the top of main; filled from the noise-table
+// buffer instead, each entry cost a lane-by-lane buffer read and a lane-by-lane store. It is not
+// a `const` array: llvmpipe materialises a dynamically indexed constant array at every use.
 int noisePermutationPairs[256] = int[256](
     41111, 35232, 23433, 23131, 3930, 33551, 3459, 51469, 24521, 24671, 13664, 49717, 59842, 2025, 57607, 36065,
     9356, 26404, 7783, 17694, 36421, 2190, 25352, 9571, 61477, 5616, 2581, 5898, 48663, 1726, 37894, 63380,
@@ -274,6 +270,11 @@ ivec2 noisePermPair(int i) {
     int pair = noisePermutationPairs[i & 255];
     return ivec2(pair & 255, pair >> 8);
 }
+// ---- end noise_permutation.glsl ----
+// ---- begin noise_perlin3.glsl ----
+// Ken Perlin's improved noise (2002) with a seed-derived lattice translation: mirrors
+// voxc::noise::perlin3 (compiler/builtins/src/functions/GradientNoise.cpp).
+// Requires noise_common.glsl and noise_permutation.glsl.
 
 float noisePerlin3(vec3 p, uint seed) {
     if (!noiseFinite(p)) return noiseNaN();
@@ -316,7 +317,7 @@ float noisePerlin3(vec3 p, int seed) { return noisePerlin3(p, uint(seed)); }
 // ---- end noise_perlin3.glsl ----
 // ---- begin noise_fractal.glsl ----
 // Fractals, domain warps and curl over perlin3: mirrors compiler/builtins/src/functions/Fractal.cpp.
-// Requires noise_common.glsl and noise_perlin3.glsl.
+// Requires noise_common.glsl, noise_permutation.glsl and noise_perlin3.glsl.
 
 // kind 0: fbm (sum of n), 1: turbulence (sum of |n|), 2: ridged (see voxc::noise::ridged).
 float noiseOctaveSum(vec3 p, int octaves, float lacunarity, float gain, uint seed, int kind) {

@@ -246,20 +246,16 @@ float noiseUnitFloat(uint h) {
     return r;
 }
 // ---- end noise_common.glsl ----
-// ---- begin noise_perlin3.glsl ----
-// Ken Perlin's improved noise (2002) with a seed-derived lattice translation: mirrors
-// voxc::noise::perlin3 (compiler/builtins/src/functions/GradientNoise.cpp).
-// Requires noise_common.glsl.
-
-// The permutation in private memory as pairs: entry i holds perm(i) in bits 0..7 and perm(i + 1)
-// in bits 8..15, so one read serves both lookups Perlin's hashing makes at i and i + 1 (the
-// values, so every result bit, are those of noisePerm; tests/codegen checks them against
-// voxc::perlinPermutation). Why: llvmpipe reads a storage buffer lane by lane behind branches but
-// a private array with one gather, and the permutation reads are most of a perlin3. The table is
-// a global with a constant initializer, i.e. stored from constants once per invocation at the
-// top of main; filled from the noise-table buffer instead, each entry cost a lane-by-lane buffer
-// read and a lane-by-lane store. It is not a `const` array: llvmpipe
-// materialises a dynamically indexed constant array at every use.
+// ---- begin noise_permutation.glsl ----
+// Ken Perlin's permutation in private memory as pairs, for perlin3 and simplex3: entry i holds
+// perm(i) in bits 0..7 and perm(i + 1) in bits 8..15, so one read serves both lookups their
+// hashing makes at i and i + 1 (the values, so every result bit, are those of noisePerm;
+// tests/codegen checks them against voxc::perlinPermutation). Why: llvmpipe reads a storage
+// buffer lane by lane behind branches but a private array with one gather, and the permutation
+// reads are most of a perlin3 or a simplex3. The table is a global with a constant initializer,
+// i.e. stored from constants once per invocation at the top of main; filled from the noise-table
+// buffer instead, each entry cost a lane-by-lane buffer read and a lane-by-lane store. It is not
+// a `const` array: llvmpipe materialises a dynamically indexed constant array at every use.
 int noisePermutationPairs[256] = int[256](
     41111, 35232, 23433, 23131, 3930, 33551, 3459, 51469, 24521, 24671, 13664, 49717, 59842, 2025, 57607, 36065,
     9356, 26404, 7783, 17694, 36421, 2190, 25352, 9571, 61477, 5616, 2581, 5898, 48663, 1726, 37894, 63380,
@@ -283,6 +279,11 @@ ivec2 noisePermPair(int i) {
     int pair = noisePermutationPairs[i & 255];
     return ivec2(pair & 255, pair >> 8);
 }
+// ---- end noise_permutation.glsl ----
+// ---- begin noise_perlin3.glsl ----
+// Ken Perlin's improved noise (2002) with a seed-derived lattice translation: mirrors
+// voxc::noise::perlin3 (compiler/builtins/src/functions/GradientNoise.cpp).
+// Requires noise_common.glsl and noise_permutation.glsl.
 
 float noisePerlin3(vec3 p, uint seed) {
     if (!noiseFinite(p)) return noiseNaN();
@@ -401,8 +402,9 @@ float mathLength(vec3 a) { return sqrt(mathDot(a, a)); }
 // octave the x/z lattice work is done once per column, the hashes and the gradients' x/z parts
 // once per lattice cell along y (loops whose trip counts are the same in every lane, so llvmpipe
 // really skips), and each voxel pays only its y fraction, eight adds and seven lerps.
-// Requires noise_common.glsl, noise_perlin3.glsl and, from the kernel, COLUMN_BLOCK, the array
-// noiseColumnValues[sites][COLUMN_BLOCK] and noiseColumnArgY(site, y): the argument's y at voxel y.
+// Requires noise_common.glsl, noise_permutation.glsl, noise_perlin3.glsl and, from the kernel,
+// COLUMN_BLOCK, the array noiseColumnValues[sites][COLUMN_BLOCK] and noiseColumnArgY(site, y): the
+// argument's y at voxel y.
 
 // One octave's column constants: the scaled x and z, their lattice cells and fade weights.
 struct NoiseColumnOctave {
