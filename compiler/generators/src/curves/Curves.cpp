@@ -82,8 +82,8 @@ Result solve(const Constraints& cs, Constraints* owned, const Options& options, 
         // The host's fronts are independent and single-threaded (growLayers): one per core,
         // their fields allocated here (Fronts.h).
         timed(r.phaseMs, "fronts", [&] {
-            MaterialFront material = prepareMaterial(cs);
-            SurfaceFront surface = prepareSurface(cs);
+            MaterialFront material = prepareMaterial(cs, owned ? &owned->material : nullptr);
+            SurfaceFront surface = prepareSurface(cs, owned ? &owned->surface : nullptr);
             bothOf([&] { growMaterial(cs, material); },
                    [&] { growSurface(cs, r.normalX, r.normalY, r.normalZ, options.propagate, surface); });
             r.material = std::move(material.field);

@@ -105,10 +105,11 @@ void peronaMalikSweeps(const Constraints& cs, NormalField& n, float k, uint32_t 
     }
 }
 
-MaterialFront prepareMaterial(const Constraints& cs) {
+MaterialFront prepareMaterial(const Constraints& cs, std::vector<uint16_t>* constraintMaterial) {
     const size_t cells = cs.box.cellCount();
     MaterialFront front;
-    front.field.material.reserve(cells);
+    if (constraintMaterial) front.field.material = std::move(*constraintMaterial);
+    else front.field.material.reserve(cells);
     front.field.confidence.box = cs.box;
     front.field.confidence.values.reserve(cells);
     front.field.assigned.reserve(cells);
@@ -118,7 +119,7 @@ MaterialFront prepareMaterial(const Constraints& cs) {
 }
 
 MaterialField propagateMaterial(const Constraints& cs) {
-    MaterialFront front = prepareMaterial(cs);
+    MaterialFront front = prepareMaterial(cs, nullptr);
     growMaterial(cs, front);
     return std::move(front.field);
 }
@@ -129,15 +130,20 @@ void growMaterial(const Constraints& cs, MaterialFront& front) {
     // Filled here, in the storage prepareMaterial reserved (no reallocation), so the first
     // touches of its pages run beside the other front's.
     const size_t cells = b.cellCount();
-    out.material.resize(cells, 0);
+    // The constraints' own ids where prepareMaterial took them: kept on Omega_R, 0 elsewhere.
+    const bool taken = out.material.size() == cells;
+    if (!taken) out.material.resize(cells, 0);
     out.confidence.values.resize(cells, 0.0f);
     out.assigned.resize(cells, 0);
     front.layer.resize(cells, -1);
     front.order.resize(cells);
     for (size_t i = 0; i < cells; ++i)
         if (cs.flags[i] & kInParams) {
-            out.assigned[i] = 1, out.material[i] = cs.material[i], out.confidence.values[i] = 1.0f;
+            out.assigned[i] = 1, out.confidence.values[i] = 1.0f;
+            if (!taken) out.material[i] = cs.material[i];
             front.layer[i] = 0;
+        } else if (taken) {
+            out.material[i] = 0;
         }
     const std::vector<FrontLayer>& layer = front.layer;
     const size_t row = size_t(b.size.x), slice = row * size_t(b.size.y);

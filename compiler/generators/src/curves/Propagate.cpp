@@ -10,11 +10,12 @@
 
 namespace voxc::curves {
 
-SurfaceFront prepareSurface(const Constraints& cs) {
+SurfaceFront prepareSurface(const Constraints& cs, Field3* constraintSurface) {
     const size_t cells = cs.box.cellCount();
     SurfaceFront front;
     front.field.distance.box = cs.box;
-    front.field.distance.values.reserve(cells);
+    if (constraintSurface) front.field.distance.values = std::move(constraintSurface->values);
+    else front.field.distance.values.reserve(cells);
     front.field.layer.reserve(cells);
     front.order.reserve(cells);
     return front;
@@ -22,7 +23,7 @@ SurfaceFront prepareSurface(const Constraints& cs) {
 
 SurfaceField propagateSurface(const Constraints& cs, const Field3& nx, const Field3& ny, const Field3& nz,
                               PropagateRule rule) {
-    SurfaceFront front = prepareSurface(cs);
+    SurfaceFront front = prepareSurface(cs, nullptr);
     growSurface(cs, nx, ny, nz, rule, front);
     return std::move(front.field);
 }
@@ -34,11 +35,19 @@ void growSurface(const Constraints& cs, const Field3& nx, const Field3& ny, cons
     // Filled here, in the storage prepareSurface reserved (no reallocation), so the first
     // touches of its pages run beside the other front's.
     const size_t cells = b.cellCount();
-    out.distance.values.resize(cells, std::numeric_limits<float>::infinity());
+    constexpr float kAir = std::numeric_limits<float>::infinity();
+    // The constraints' own values where prepareSurface took them: kept on Omega_S, +inf elsewhere.
+    const bool taken = out.distance.values.size() == cells;
+    if (!taken) out.distance.values.resize(cells, kAir);
     out.layer.resize(cells, -1);
     front.order.resize(cells);
     for (size_t i = 0; i < cells; ++i)
-        if (cs.flags[i] & kInSurface) out.layer[i] = 0, out.distance.values[i] = cs.surface.values[i];
+        if (cs.flags[i] & kInSurface) {
+            out.layer[i] = 0;
+            if (!taken) out.distance.values[i] = cs.surface.values[i];
+        } else if (taken) {
+            out.distance.values[i] = kAir;
+        }
     const Field3* normal[3] = {&nx, &ny, &nz};
     const size_t row = size_t(b.size.x), slice = row * size_t(b.size.y);
     out.layers = growLayers(b, out.layer, front.order, [&](size_t p, glm::ivec3 q, int32_t layer) {
