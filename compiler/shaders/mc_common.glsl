@@ -30,13 +30,10 @@ vec4 quadTexel(uint quad) { return texelFetch(quadTexels, int(quad)); }
 
 // The active tiles' indices by rank, and the segments in global key order (below), as the host
 // listed them.
-layout(set = 0, binding = 8) uniform usamplerBuffer activeTileTexels;
-layout(set = 0, binding = 9) uniform usamplerBuffer segmentTexels;
+layout(set = 0, binding = 7) uniform usamplerBuffer activeTileTexels;
+layout(set = 0, binding = 8) uniform usamplerBuffer segmentTexels;
 uint activeTile(uint rank) { return texelFetch(activeTileTexels, int(rank)).x; }
 uint segmentSlot(uint index) { return texelFetch(segmentTexels, int(index)).x; }
-// Per case 10 words: the triangle count, then 36 edge indices, four bytes to a word.
-layout(set = 0, binding = 2) uniform usamplerBuffer caseTexels;
-uint caseWord(uint word) { return texelFetch(caseTexels, int(word)).x; }
 
 // Dispatches are at most 65535 workgroups along x, so large ones use y as well. The local size
 // is a parameter: this file comes before the pass's local_size layout, where gl_WorkGroupSize
@@ -98,22 +95,26 @@ uint materialAt(ivec3 p) {
 //
 // The passes after mc_tiles.glsl visit only the active tiles: world-aligned 8^3 tiles of cells
 // that hold a cell the surface crosses, listed by the host in tile order (z, then y, then x) and
-// ranked. A cell of an active tile has a slot, rank * 512 + its place in the tile (x fastest); a
-// segment is the row of a tile's cells along x at one (y, z), slot / 8. The host also lists the
-// segments in global key order (segments.slot), the order of the mesh.
+// ranked. A segment is the row of an active tile's cells along x at one (y, z), named by rank *
+// 64 + y + 8 z within the tile; the host lists the segments in global key order (segments.slot),
+// the order of the mesh. A cell has a slot, its tile's index among the tiles of cells (x fastest)
+// * 512 + its place in the tile (x fastest), so that a cell finds its neighbours' slots without
+// a look-up.
 const uint kTileShift = 3u;
 const uint kTileSide = 1u << kTileShift;
+const uint kTileCells = kTileSide * kTileSide * kTileSide;
 
-// The segment's first world cell (its tile's low x).
-ivec3 segmentWorldCell(uint activeTile, uint segmentSlot) {
+// The first world cell of the row at (y, z) = (row & 7, (row >> 3) & 7) of the tile of cells with
+// index `tile` (its low x).
+ivec3 segmentWorldCell(uint tile, uint row) {
     const uvec3 n = uvec3(push.tileCount.xyz);
-    const ivec3 tile = push.tileFirst.xyz + ivec3(activeTile % n.x, (activeTile / n.x) % n.y, activeTile / (n.x * n.y));
-    return (tile << kTileShift) + ivec3(0, segmentSlot & 7u, (segmentSlot >> 3) & 7u);
+    const ivec3 first = push.tileFirst.xyz + ivec3(tile % n.x, (tile / n.x) % n.y, tile / (n.x * n.y));
+    return (first << kTileShift) + ivec3(0, row & 7u, (row >> 3) & 7u);
 }
 
-// The grid-local cell of a slot of the tile with index `tile`.
-ivec3 cellOfSlot(uint tile, uint slot) {
-    return segmentWorldCell(tile, slot >> 3) - push.gridOrigin.xyz + ivec3(slot & 7u, 0, 0);
+// The grid-local cell of a slot.
+ivec3 cellOfSlot(uint slot) {
+    return segmentWorldCell(slot >> 9, slot >> 3) - push.gridOrigin.xyz + ivec3(slot & 7u, 0, 0);
 }
 
 // The cells of a segment's row that are cells of the grid: grid-local x in [begin, end).

@@ -6,7 +6,7 @@
 
 layout(local_size_x = 64) in;
 
-layout(std430, set = 0, binding = 13) writeonly buffer SegmentCases {
+layout(std430, set = 0, binding = 12) writeonly buffer SegmentCases {
     uvec2 cases[]; // per segment, in global key order: byte i the case of the segment's cell i
 } segmentCases;
 

@@ -20,7 +20,7 @@ layout(std430, set = 0, binding = 3) buffer TileStates {
 } tiles;
 
 // The indices of the tiles to read, as the host listed them.
-layout(set = 0, binding = 14) uniform usamplerBuffer unknownTileTexels;
+layout(set = 0, binding = 13) uniform usamplerBuffer unknownTileTexels;
 
 const uint kWhole = 1u, kLowX = 2u, kLowY = 4u, kLowZ = 8u, kEdgeXY = 16u, kEdgeXZ = 32u, kEdgeYZ = 64u, kCorner = 128u;
 

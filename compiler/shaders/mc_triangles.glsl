@@ -8,11 +8,12 @@
 layout(local_size_x = 64) in;
 
 // Per cell slot owning vertices: its owned edges | first vertex << 3 (the host's list).
-layout(set = 0, binding = 10) uniform usamplerBuffer cellInfoTexels;
+layout(set = 0, binding = 9) uniform usamplerBuffer cellInfoTexels;
 // Per active cell: slot, first vertex, first triangle, owned edges | triangle count << 3 | case << 19.
-layout(set = 0, binding = 11) uniform usamplerBuffer activeCellTexels;
-// Per tile of cells (x fastest): its rank among the active tiles, or none.
-layout(set = 0, binding = 7) uniform usamplerBuffer tileRankTexels;
+layout(set = 0, binding = 10) uniform usamplerBuffer activeCellTexels;
+// Per case a texel of two words: its (at most 15) triangles' edge indices, eight 4-bit ones to a
+// word, so that a cell's triangles cost one fetch.
+layout(set = 0, binding = 2) uniform usamplerBuffer caseTexels;
 // A texel per triangle: three vertex indices, material.
 layout(set = 0, binding = 5, rgba32ui) uniform writeonly uimageBuffer triangles;
 
@@ -35,17 +36,15 @@ void openCorners(ivec3 cell) {
     }
 }
 
-// What the host recorded at the slot of the cell at corner c (a constant) of the cell:
-// its owned edges | first vertex << 3 where it owns any. A corner cell in no active tile (its
-// rank is none) or past the tiles of cells owns none of the cell's crossed edges, so its word is
-// never used; its fetch is kept inside the buffers.
+// What the host recorded this time at the slot of the cell at corner c (a constant) of the
+// cell: its owned edges | first vertex << 3 where it owns any. A corner cell in no active tile or
+// past the tiles of cells owns none of the cell's crossed edges, so its word (whatever an earlier
+// mesh left there) is never used; its fetch is kept inside the buffer.
 uint cornerOwner(const uint c) {
     const uint x = c & 1u, y = (c >> 1) & 1u, z = c >> 2;
     const uint tile = tileParts[0][x] + tileParts[1][y] + tileParts[2][z];
     const uint tiles = uint(push.tileCount.x * push.tileCount.y * push.tileCount.z);
-    const uint rank = texelFetch(tileRankTexels, int(min(tile, tiles - 1u))).x;
-    const uint slot = rank * kTileSide * kTileSide * kTileSide + placeParts[0][x] + placeParts[1][y] + placeParts[2][z];
-    return texelFetch(cellInfoTexels, int(rank == 0xffffffffu ? 0u : slot)).x;
+    return texelFetch(cellInfoTexels, int(min(tile, tiles - 1u) * kTileCells + placeParts[0][x] + placeParts[1][y] + placeParts[2][z])).x;
 }
 
 // The most common material among the solid corners; ties go to the lowest id. Each round takes
@@ -85,14 +84,12 @@ uint majorityMaterial(ivec3 cell, uint mask) {
     return best;
 }
 
-uint caseEdge(uint mask, uint i) { return (caseWord(mask * 10u + 1u + i / 4u) >> (8u * (i % 4u))) & 0xffu; }
-
 void main() {
     const uint index = invocationIndex(64u);
     if (index >= push.pass.y) return;
     const uvec4 entry = texelFetch(activeCellTexels, int(index));
     const uint slot = entry.x, info = entry.w;
-    const ivec3 cell = cellOfSlot(activeTile(slot >> 9), slot);
+    const ivec3 cell = cellOfSlot(slot);
     const uint triangleCount = (info >> 3) & 15u;
     const uint mask = (info >> 19) & 0xffu;
     const uint material = majorityMaterial(cell, mask);
@@ -108,10 +105,12 @@ void main() {
         const uint owner = owners[(along & 1u) << u | (along >> 1) << v];
         edgeVertex[e] = (owner >> 3) + bitCount(owner & ((1u << axis) - 1u));
     }
+    const uvec2 caseEdges = texelFetch(caseTexels, int(mask)).xy;
     for (uint t = 0u; t < triangleCount; ++t) {
         uvec4 triangle = uvec4(0u, 0u, 0u, material);
         for (uint k = 0u; k < 3u; ++k) {
-            const uint edge = caseEdge(mask, t * 3u + k);
+            const uint i = t * 3u + k;
+            const uint edge = ((i < 8u ? caseEdges.x : caseEdges.y) >> (4u * (i & 7u))) & 15u;
             uint vertex = edgeVertex[0];
             for (uint e = 1u; e < 12u; ++e) vertex = edge == e ? edgeVertex[e] : vertex; // constant indices
             triangle[k] = vertex;

@@ -8,7 +8,7 @@
 
 layout(local_size_x = 64) in;
 
-layout(set = 0, binding = 12) uniform usamplerBuffer vertexEdgeTexels; // per vertex: its owner cell's slot | axis << 30
+layout(set = 0, binding = 11) uniform usamplerBuffer vertexEdgeTexels; // per vertex: its owner cell's slot | axis << 30
 // Two texels per vertex: position xyz and normal x, then normal yz and material (float bits);
 // two texel stores, where seven words of a storage buffer were seven passes over the lanes.
 layout(set = 0, binding = 4, rgba32ui) uniform writeonly uimageBuffer vertices;
@@ -81,5 +81,5 @@ void main() {
     if (index >= push.pass.y) return;
     const uint edge = texelFetch(vertexEdgeTexels, int(index)).x;
     const uint slot = edge & 0x3fffffffu;
-    writeVertex(index, cellOfSlot(activeTile(slot >> 9), slot), int(edge >> 30));
+    writeVertex(index, cellOfSlot(slot), int(edge >> 30));
 }

@@ -14,6 +14,7 @@
 #include <array>
 #include <bit>
 #include <cstring>
+#include <future>
 #include <vector>
 
 namespace voxc {
@@ -27,8 +28,7 @@ constexpr int kTileShift = 3;              // tiles of 8^3 cells (mc_common.glsl
 constexpr uint32_t kTileSide = 1u << kTileShift;
 constexpr uint32_t kTileCells = kTileSide * kTileSide * kTileSide;
 constexpr uint32_t kTileSegments = kTileSide * kTileSide; // rows of a tile's cells along x
-constexpr uint32_t kNoRank = UINT32_MAX;
-constexpr uint32_t kCaseWords = 10;        // per case: triangle count, 36 edge bytes
+constexpr uint32_t kCaseWords = 2;         // per case: up to 16 edge indices of 4 bits (mc_triangles.glsl)
 constexpr uint32_t kVertexWords = 8;       // position, normal, material, padding: two texels (mc_vertices.glsl)
 constexpr uint32_t kTriangleWords = 4;     // three indices, material
 constexpr uint32_t kActiveCellWords = 4;   // slot, first vertex, first triangle, cell word (mc_triangles.glsl)
@@ -57,9 +57,11 @@ std::vector<uint32_t> packedCaseTable() {
     for (size_t mask = 0; mask < 256; ++mask) {
         // listCells takes a cell to be active when its case is neither all air nor all solid.
         VOXC_ASSERT((table[mask].triangleCount > 0) == (mask != 0 && mask != 255));
-        words[mask * kCaseWords] = table[mask].triangleCount;
-        for (size_t i = 0; i < table[mask].edges.size(); ++i)
-            words[mask * kCaseWords + 1 + i / 4] |= uint32_t(table[mask].edges[i]) << (8 * (i % 4));
+        VOXC_ASSERT(table[mask].triangleCount * 3 <= kCaseWords * 8);
+        for (size_t i = 0; i < size_t(table[mask].triangleCount) * 3; ++i) {
+            VOXC_ASSERT(table[mask].edges[i] < 12);
+            words[mask * kCaseWords + i / 8] |= uint32_t(table[mask].edges[i]) << (4 * (i % 8));
+        }
     }
     return words;
 }
@@ -109,7 +111,6 @@ void knownTileStates(const TileRanges* ranges, float iso, glm::ivec3 tileFirst, 
 // What the host makes of mc_tiles.glsl's tile states: the tiles of cells the later passes visit,
 // ranked in tile order (z, then y, then x), and their segments in global key order.
 struct TileLists {
-    std::vector<uint32_t> ranks;        // per tile of cells: its rank, or kNoRank
     std::vector<uint32_t> activeTiles;  // by rank: the tile's index
     std::vector<uint32_t> segments;     // in global key order: rank * 64 + z * 8 + y within the tile
     size_t crossedTiles = 0;
@@ -126,7 +127,6 @@ TileLists listTiles(const uint32_t* states, glm::ivec3 tileFirst, glm::ivec3 n, 
     const glm::ivec3 chunkFirst = (layout.gridOrigin - 1) >> layout.chunkShift;
     const glm::ivec3 chunks = ((layout.gridOrigin + layout.gridSize - 1) >> layout.chunkShift) - chunkFirst + 1;
     TileLists lists;
-    lists.ranks.assign(size_t(n.x) * size_t(n.y) * size_t(n.z), kNoRank);
     lists.chunkCrossed.assign(size_t(chunks.x) * size_t(chunks.y) * size_t(chunks.z), 0);
     std::vector<uint32_t> rowStart; // per row of tiles (y, z): its first rank
     rowStart.reserve(size_t(n.y) * size_t(n.z) + 1);
@@ -149,7 +149,6 @@ TileLists listTiles(const uint32_t* states, glm::ivec3 tileFirst, glm::ivec3 n, 
                     lists.chunkCrossed[size_t(chunk.x) + size_t(chunks.x) * (size_t(chunk.y) + size_t(chunks.y) * size_t(chunk.z))] = 1;
                 }
                 if (!crossed && skip) continue;
-                lists.ranks[tile] = uint32_t(lists.activeTiles.size());
                 lists.activeTiles.push_back(uint32_t(tile));
             }
         }
@@ -219,10 +218,10 @@ void listCells(const uint32_t* cases, const TileLists& lists, glm::ivec3 tileFir
         // A cell is active when its case is neither 0 nor 0xff; the cells past the grid read 0.
         uint64_t active = ~(zeroBytes(bytes) | zeroBytes(~bytes)) & ~kLow7;
         if (active == 0) continue;
-        const uint32_t segment = lists.segments[index];
-        const int32_t tileX = tileFirst.x + int32_t(lists.activeTiles[segment / kTileSegments] % uint32_t(n.x));
-        const int32_t x = tileX * int32_t(kTileSide) - layout.gridOrigin.x; // the segment's first cell, grid-local
-        const uint32_t firstSlot = segment * kTileSide + uint32_t(std::max(x, -1) - x); // byte i: slot firstSlot + i
+        const uint32_t segment = lists.segments[index], tile = lists.activeTiles[segment / kTileSegments];
+        const int32_t x = (tileFirst.x + int32_t(tile % uint32_t(n.x))) * int32_t(kTileSide) - layout.gridOrigin.x; // its first cell, grid-local
+        // Byte i: the cell at slot firstSlot + i (mc_common.glsl).
+        const uint32_t firstSlot = tile * kTileCells + segment % kTileSegments * kTileSide + uint32_t(std::max(x, -1) - x);
         for (; active != 0; active &= active - 1) {
             const uint32_t i = uint32_t(std::countr_zero(active)) / 8;
             const uint32_t word = kCellWords[(bytes >> (8 * i)) & 0xffu], slot = firstSlot + i, edges = word & 7u;
@@ -250,10 +249,10 @@ struct GpuMarchingCubes::Impl {
     uint32_t voxelTiles = 0;
     McPipelines pipelines;
     // Host-visible: tileStates (written by mc_tiles), the tiles it reads (unknownTiles), the lists
-    // the host makes from their states (tileRanks, activeTiles, segments) and from the segments'
+    // the host makes from their states (activeTiles, segments) and from the segments'
     // cases (cellInfo, activeCells, vertexEdges), and `results` (the cases, then the mesh, where
     // they are copied). segmentCases, vertices and triangles: meshUse().
-    DeviceBuffer caseTable, tileStates, unknownTiles, tileRanks, activeTiles, segments, segmentCases, cellInfo, activeCells, vertexEdges,
+    DeviceBuffer caseTable, tileStates, unknownTiles, activeTiles, segments, segmentCases, cellInfo, activeCells, vertexEdges,
         vertices, triangles, results;
     CellLists cellLists; // kept, so that a repeated call reuses its memory
     // At the texel bindings: views of the executor's buffers and of these (bindAll).
@@ -295,7 +294,7 @@ GpuMarchingCubes::Impl::~Impl() {
     if (commandPool) ctx.api.vkDestroyCommandPool(ctx.device, commandPool, nullptr);
     destroyTexelViews();
     for (DeviceBuffer* b : {&results, &triangles, &vertices, &vertexEdges, &activeCells, &cellInfo, &segmentCases, &segments,
-                            &activeTiles, &tileRanks, &unknownTiles, &tileStates, &caseTable})
+                            &activeTiles, &unknownTiles, &tileStates, &caseTable})
         destroyBuffer(ctx, *b);
     destroyMcPipelines(ctx, pipelines);
 }
@@ -315,8 +314,9 @@ void GpuMarchingCubes::Impl::checkLimits() const {
                                     "({}); mesh on the host instead (voxc run --mesh-on host) or use a smaller grid",
                                     voxels, layout.gridSize.x, layout.gridSize.y, layout.gridSize.z, ctx.info.name, maxTexels));
     const uint64_t maxRange = ctx.properties.limits.maxStorageBufferRange;
-    // The largest buffer holds a uint per cell of every tile when all are active (cellInfo);
-    // triangle places are 32-bit sums of up to 12 triangles per cell.
+    // The largest buffer holds a uint per cell of every tile (cellInfo, indexed by slot: so slots
+    // stay below 2^30, as the vertex list needs); triangle places are 32-bit sums of up to 12
+    // triangles per cell.
     const uint64_t slots = uint64_t(tiles) * kTileCells;
     const uint64_t cellBytes = slots * sizeof(uint32_t);
     if (slots * marching_cubes::kMaxTrianglesPerCell > UINT32_MAX || cellBytes > maxRange)
@@ -350,7 +350,6 @@ void GpuMarchingCubes::Impl::createBuffers() {
     std::memcpy(caseTable.mapped, table.data(), table.size() * sizeof(uint32_t));
     flushForDevice(ctx, caseTable); // the queue submit makes it visible to the device
     ensureBuffer(tileStates, VkDeviceSize(voxelTiles) * sizeof(uint32_t), MemoryUse::HostAccess);
-    ensureBuffer(tileRanks, VkDeviceSize(tiles) * sizeof(uint32_t), MemoryUse::HostAccess);
     // Placeholders until a mesh has active tiles and triangles: every binding of the set must name a buffer.
     for (DeviceBuffer* b : {&unknownTiles, &activeTiles, &segments, &cellInfo, &activeCells, &vertexEdges})
         ensureBuffer(*b, 16, MemoryUse::HostAccess);
@@ -370,8 +369,7 @@ void GpuMarchingCubes::Impl::bindAll() {
     const View views[] = {{kMcDensityTexels, source.voxels, VK_FORMAT_R32_SFLOAT},
                           {kMcQuadTexels, source.voxels, VK_FORMAT_R32G32B32A32_SFLOAT},
                           {kMcMaterialTexels, source.materials, VK_FORMAT_R32_UINT},
-                          {kMcCaseTexels, caseTable.buffer, VK_FORMAT_R32_UINT},
-                          {kMcTileRankTexels, tileRanks.buffer, VK_FORMAT_R32_UINT},
+                          {kMcCaseTexels, caseTable.buffer, VK_FORMAT_R32G32_UINT},
                           {kMcUnknownTileTexels, unknownTiles.buffer, VK_FORMAT_R32_UINT},
                           {kMcActiveTileTexels, activeTiles.buffer, VK_FORMAT_R32_UINT},
                           {kMcSegmentTexels, segments.buffer, VK_FORMAT_R32_UINT},
@@ -506,13 +504,12 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
 
     // The cases of the segments' cells, then on the host the lists of the active cells and the
     // vertices, in place (cellInfo) or into cellLists.
-    s.upload(s.tileRanks, lists.ranks);
     bool rebind = s.upload(s.activeTiles, lists.activeTiles);
     rebind |= s.upload(s.segments, lists.segments);
     const VkDeviceSize caseBytes = VkDeviceSize(segmentCount) * 2 * sizeof(uint32_t);
     const bool inPlace = s.meshUse() == MemoryUse::HostAccess;
     rebind |= s.ensureBuffer(s.segmentCases, caseBytes, s.meshUse());
-    rebind |= s.ensureBuffer(s.cellInfo, VkDeviceSize(lists.activeTiles.size()) * kTileCells * sizeof(uint32_t), MemoryUse::HostAccess);
+    rebind |= s.ensureBuffer(s.cellInfo, VkDeviceSize(s.tiles) * kTileCells * sizeof(uint32_t), MemoryUse::HostAccess);
     if (!inPlace) s.ensureBuffer(s.results, caseBytes, MemoryUse::HostAccess); // bound to no pass
     if (rebind) s.bindAll();
     s.begin();
@@ -580,6 +577,22 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
         triangleWords = vertexWords + vertexBytes / sizeof(uint32_t);
     }
 
+    // The triangles on a second thread while this one takes the vertices: two streams of about
+    // the same size, each a few milliseconds at 256^3.
+    mesh.triangles.resize(size_t(triangleCount) * 3);
+    mesh.triangleMaterials.resize(triangleCount);
+    std::future<bool> trianglesInRange = std::async(std::launch::async, [&] {
+        bool inRange = true;
+        for (size_t t = 0; t < triangleCount; ++t) {
+            for (size_t k = 0; k < 3; ++k) {
+                const uint32_t index = triangleWords[t * kTriangleWords + k];
+                inRange &= index < vertexCount;
+                mesh.triangles[t * 3 + k] = index;
+            }
+            mesh.triangleMaterials[t] = uint8_t(triangleWords[t * kTriangleWords + 3]);
+        }
+        return inRange;
+    });
     auto floatAt = [&](size_t i) {
         float f;
         std::memcpy(&f, &vertexWords[i], sizeof f);
@@ -594,16 +607,7 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
         mesh.normals[v] = {floatAt(w + 3), floatAt(w + 4), floatAt(w + 5)};
         mesh.vertexMaterials[v] = uint8_t(vertexWords[w + 6]);
     }
-    mesh.triangles.resize(size_t(triangleCount) * 3);
-    mesh.triangleMaterials.resize(triangleCount);
-    for (size_t t = 0; t < triangleCount; ++t) {
-        for (size_t k = 0; k < 3; ++k) {
-            const uint32_t index = triangleWords[t * kTriangleWords + k];
-            if (index >= vertexCount) throw InternalError("GPU marching cubes: a triangle names a vertex past the counted ones");
-            mesh.triangles[t * 3 + k] = index;
-        }
-        mesh.triangleMaterials[t] = uint8_t(triangleWords[t * kTriangleWords + 3]);
-    }
+    if (!trianglesInRange.get()) throw InternalError("GPU marching cubes: a triangle names a vertex past the counted ones");
     // The host mesher's last step, on the host: the same function of the same mesh.
     orientNormalsToFaces(mesh);
     return mesh;

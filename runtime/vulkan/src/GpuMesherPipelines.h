@@ -34,7 +34,6 @@ enum McBinding : uint32_t {
     kMcVertices,
     kMcTriangles,
     kMcQuadTexels, // the densities again, four to a texel
-    kMcTileRankTexels,
     kMcActiveTileTexels,
     kMcSegmentTexels,
     kMcCellInfoTexels,
