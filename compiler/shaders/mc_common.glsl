@@ -42,6 +42,21 @@ uint invocationIndex(uint localSize) {
     return (gl_WorkGroupID.y * push.pass.x + gl_WorkGroupID.x) * localSize + gl_LocalInvocationID.x;
 }
 
+// The coordinates (x fastest) of index `index` of a box of n.x * n.y * n.z tiles, below 2^21.
+// lavapipe has no vector integer division and divides one lane at a time (three divisions a
+// lane, where the passes' other work per lane is a few hundred instructions), so the quotients
+// come from a float division, exact to within one for such indices, and one correction each way.
+uint tileQuotient(uint a, uint b) {
+    uint q = uint(float(a) / float(b));
+    q -= q * b > a ? 1u : 0u;
+    q += (q + 1u) * b <= a ? 1u : 0u;
+    return q;
+}
+uvec3 tileCoordinates(uint index, uvec3 n) {
+    const uint row = tileQuotient(index, n.x), z = tileQuotient(row, n.y);
+    return uvec3(index - row * n.x, row - z * n.y, z);
+}
+
 bool insideGrid(ivec3 p) {
     return all(greaterThanEqual(p, ivec3(0))) && all(lessThan(p, push.gridSize.xyz));
 }
@@ -108,7 +123,7 @@ const uint kTileCells = kTileSide * kTileSide * kTileSide;
 // index `tile` (its low x).
 ivec3 segmentWorldCell(uint tile, uint row) {
     const uvec3 n = uvec3(push.tileCount.xyz);
-    const ivec3 first = push.tileFirst.xyz + ivec3(tile % n.x, (tile / n.x) % n.y, tile / (n.x * n.y));
+    const ivec3 first = push.tileFirst.xyz + ivec3(tileCoordinates(tile, n));
     return (first << kTileShift) + ivec3(0, row & 7u, (row >> 3) & 7u);
 }
 

@@ -37,7 +37,7 @@ void main() {
     if (item >= push.pass.y) return;
     const uint index = texelFetch(unknownTileTexels, int(item)).x;
     const uvec3 n = uvec3(push.tileCount.xyz) + 1u;
-    const ivec3 tile = push.tileFirst.xyz + ivec3(index % n.x, (index / n.x) % n.y, index / (n.x * n.y));
+    const ivec3 tile = push.tileFirst.xyz + ivec3(tileCoordinates(index, n));
     const ivec3 first = (tile << kTileShift) - push.gridOrigin.xyz; // grid-local voxel
     const ivec3 last = first + int(kTileSide) - 1;
     uint solid = 0u, air = 0u;

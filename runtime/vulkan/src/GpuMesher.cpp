@@ -316,10 +316,11 @@ void GpuMarchingCubes::Impl::checkLimits() const {
     const uint64_t maxRange = ctx.properties.limits.maxStorageBufferRange;
     // The largest buffer holds a uint per cell of every tile (cellInfo, indexed by slot: so slots
     // stay below 2^30, as the vertex list needs); triangle places are 32-bit sums of up to 12
-    // triangles per cell.
+    // triangles per cell; the passes find a tile's coordinates from its index below 2^21
+    // (mc_common.glsl, tileCoordinates).
     const uint64_t slots = uint64_t(tiles) * kTileCells;
     const uint64_t cellBytes = slots * sizeof(uint32_t);
-    if (slots * marching_cubes::kMaxTrianglesPerCell > UINT32_MAX || cellBytes > maxRange)
+    if (slots * marching_cubes::kMaxTrianglesPerCell > UINT32_MAX || cellBytes > maxRange || voxelTiles >= (1u << 21))
         throw UserError(fmt::format("marching cubes on the device needs {} buffers for the {} cells of a {}x{}x{} grid's tiles, "
                                     "more than the Vulkan device '{}' can bind ({}); mesh on the host instead "
                                     "(voxc run --mesh-on host) or use a smaller grid",
