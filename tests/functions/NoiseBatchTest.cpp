@@ -1,4 +1,4 @@
-// warpedFbmBatch equals the builtin's single-point evaluation bit for bit (its AVX2 lanes run the
+// warpedFbmBatch equals the builtin's single-point evaluation bit for bit (its AVX2 and AVX-512 lanes run the
 // same operations in the same order), over points at every scale the curves displacement uses,
 // large and negative coordinates, every roughness, every tail length and non-finite inputs.
 #include "voxc/builtins/Functions.h"
@@ -28,7 +28,7 @@ TEST(NoiseBatch, WarpedFbmEqualsTheBuiltinBitForBit) {
     std::mt19937 random(7);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     const float scales[] = {0.0625f, 1.0f, 40.0f, 3000.0f};
-    const size_t n = 1027; // 128 lanes of eight and a tail of three
+    const size_t n = 1027; // 128 registers of eight (64 of sixteen) and a tail of three
     for (uint32_t seed : {0u, 1u, 123456789u})
         for (float scale : scales) {
             std::vector<float> x(n), y(n), z(n), r(n), out(n);
@@ -41,8 +41,9 @@ TEST(NoiseBatch, WarpedFbmEqualsTheBuiltinBitForBit) {
             size_t exact = 0;
             for (size_t i = 0; i < n; ++i) exact += sameBits(out[i], scalarWarpedFbm(x[i], y[i], z[i], r[i], low, high, seed));
             EXPECT_EQ(exact, n) << "seed " << seed << " scale " << scale;
-            // Every tail length alone (one register padded with copies of the last point).
-            for (size_t tail = 1; tail < 8; ++tail) {
+            // Every short batch alone: up to 7 points in one padded register, 8-15 in one full
+            // AVX2 register and a padded one (also where 1027 points take AVX-512 registers).
+            for (size_t tail = 1; tail < 16; ++tail) {
                 warpedFbmBatch(x.data(), y.data(), z.data(), r.data(), low, high, seed, tail, out.data());
                 for (size_t i = 0; i < tail; ++i)
                     EXPECT_TRUE(sameBits(out[i], scalarWarpedFbm(x[i], y[i], z[i], r[i], low, high, seed)))

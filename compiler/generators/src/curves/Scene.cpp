@@ -106,7 +106,8 @@ SolveTable solveScene(const Scene& scene, const Limits& limits, const Solvers& s
     const bool everyCell = keepChannels || displaced;
     // Pointwise: each cell's value depends on that cell alone, so two threads give the same bits.
     // Per row, the cells whose displacement must be evaluated are gathered and evaluated together
-    // (warpedFbmBatch: the builtin's own values bit for bit, eight cells per AVX2 register).
+    // (warpedFbmBatch: the builtin's own values bit for bit, eight cells per AVX2 register, sixteen
+    // per AVX-512 one).
     forTwoSlabs(box.size.z, 8, [&](int32_t z0, int32_t z1) {
         const size_t n = size_t(box.size.x);
         std::vector<float> px(n), py(n), pz(n), roughness(n), noise(n);

@@ -2,7 +2,8 @@
 // Noise functions over many points at once, for host loops that evaluate a builtin at every cell
 // of a box (the curves solve's displacement). Each result equals the builtin's single-point CPU
 // evaluation bit for bit (tests/functions NoiseBatch); where the CPU has AVX2, eight points run
-// in one vector register, with the same IEEE operations in the same order (no FMA).
+// in one vector register (sixteen where it has AVX-512; a short rest in one padded register), with
+// the same IEEE operations in the same order (no FMA).
 #include <cstddef>
 #include <cstdint>
 
