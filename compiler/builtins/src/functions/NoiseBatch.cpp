@@ -158,7 +158,7 @@ AVX512 inline __m512i perm(const int* table, __m512i i) {
                                        table, 4);
 }
 
-AVX512 inline __m512 negated(__m512 v) {
+AVX512 inline __m512 flippedSign(__m512 v) {
     return _mm512_castsi512_ps(_mm512_xor_si512(_mm512_castps_si512(v), _mm512_set1_epi32(int32_t(0x80000000u))));
 }
 
@@ -170,7 +170,7 @@ AVX512 inline __m512 grad(__m512i hash, __m512 x, __m512 y, __m512 z) {
                                           _mm512_mask_blend_ps(is12or14, z, x), y);
     const __mmask16 bit1 = _mm512_testn_epi32_mask(h, _mm512_set1_epi32(1));
     const __mmask16 bit2 = _mm512_testn_epi32_mask(h, _mm512_set1_epi32(2));
-    return add(_mm512_mask_blend_ps(bit1, negated(u), u), _mm512_mask_blend_ps(bit2, negated(v), v));
+    return add(_mm512_mask_blend_ps(bit1, flippedSign(u), u), _mm512_mask_blend_ps(bit2, flippedSign(v), v));
 }
 
 AVX512 inline __mmask16 isFinite(__m512 v) {
