@@ -4,9 +4,9 @@
 # bench/worlds/curves_cliff_256.vox) under Xvfb on lavapipe with a fresh solve and kernel cache,
 # waits for the full solve to replace the coarse preview, then carves, adds and carves again where
 # a ray down the box's middle meets the surface, and prints the viewer's log line for each edit
-# (the chunks it re-meshed and the time, then the time for the world's mesh the next frame draws)
-# with the load average before. The first edit after a load is the one that used to wait for
-# every chunk's share of the mesh. Not part of CI.
+# (its time and the chunks whose mesh it can change, then the time for the world's mesh the next
+# frame draws) with the load average before. The first edit after a load is the one a per-chunk
+# mesher would make every chunk's share of the mesh for. Not part of CI.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 voxc=$(realpath "${1:-$root/build/compiler/driver/voxc}")
@@ -26,4 +26,4 @@ SCRIPT
 echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 xvfb-run -a -s "-screen 0 1024x768x24" "$voxc" view "$file" --device lavapipe --size 480x270 \
     --script "$work/script.txt" >"$work/log" 2>&1 || { cat "$work/log" >&2; exit 1; }
-grep -E "view: (carve|add):" "$work/log"
+grep -E "view: (carve|add) in" "$work/log"

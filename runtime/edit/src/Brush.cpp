@@ -60,9 +60,14 @@ float brushed(Brush::Op op, float d, float b) {
 }
 
 std::optional<VoxelBox> applyBrush(ChunkedGrid& grid, const Brush& brush) {
-    return applyOver(brush, grid.layout().gridOrigin, grid.layout().gridSize,
-                     [&](glm::ivec3 local) -> float& { return grid.at(local); },
-                     [&](glm::ivec3 local) -> uint8_t& { return grid.materialAt(local); });
+    // The writes forget the grid's tile ranges; kept and brought up to date over the changed box.
+    std::optional<TileRanges> ranges;
+    if (const TileRanges* kept = grid.tileRanges()) ranges = *kept;
+    const std::optional<VoxelBox> changed =
+        applyOver(brush, grid.layout().gridOrigin, grid.layout().gridSize, [&](glm::ivec3 local) -> float& { return grid.at(local); },
+                  [&](glm::ivec3 local) -> uint8_t& { return grid.materialAt(local); });
+    if (ranges) grid.recordTileRanges(std::move(*ranges), changed ? changed->first : glm::ivec3(0), changed ? changed->last : glm::ivec3(-1));
+    return changed;
 }
 
 std::optional<VoxelBox> applyBrush(DenseGrid& grid, glm::ivec3 origin, const Brush& brush) {

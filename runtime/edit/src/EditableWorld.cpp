@@ -25,16 +25,10 @@ const ChunkedGrid& EditableWorld::grid() const { return state_->grid; }
 
 EditResult EditableWorld::edit(const Brush& brush) {
     State& s = *state_;
-    // The brush's writes forget the grid's tile ranges; kept and brought up to date over the
-    // changed box, they let the next mesh() skip the uniform tiles again.
-    std::optional<TileRanges> ranges;
-    if (const TileRanges* kept = s.grid.tileRanges()) ranges = *kept;
     EditResult result;
-    result.changed = applyBrush(s.grid, brush);
-    const glm::ivec3 first = result.changed ? result.changed->first : glm::ivec3(0);
-    const glm::ivec3 last = result.changed ? result.changed->last : glm::ivec3(-1);
-    if (ranges) s.grid.recordTileRanges(std::move(*ranges), first, last);
+    result.changed = applyBrush(s.grid, brush); // keeps the tile ranges the next mesh() skips on
     if (!result.changed) return result;
+    const glm::ivec3 first = result.changed->first, last = result.changed->last;
     // R2: the cells whose output can change, [first - 2, last + 1], within the grid's cells
     // [-1, size - 1]; the chunks owning them, as cellChunks names chunks.
     const ChunkLayout& layout = s.grid.layout();

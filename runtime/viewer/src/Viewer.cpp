@@ -116,8 +116,8 @@ private:
             // What a click waits for before the next frame: the edit, then the world's mesh.
             const auto start = Clock::now();
             refreshMesh();
-            log(fmt::format("{}: {} chunks re-meshed in {:.1f} ms, the mesh ({} triangles) in {:.1f} ms", action.kind == Action::Kind::Carve ? "carve" : "add",
-                            lastEdit_->chunksRemeshed, lastEdit_->ms, mesh_.triangles.size() / 3,
+            log(fmt::format("{} in {:.1f} ms ({} chunks whose mesh it can change), the mesh ({} triangles) in {:.1f} ms",
+                            action.kind == Action::Kind::Carve ? "carve" : "add", lastEdit_->ms, lastEdit_->chunksRemeshed, mesh_.triangles.size() / 3,
                             std::chrono::duration<double, std::milli>(Clock::now() - start).count()));
             break;
         }
@@ -522,7 +522,7 @@ void App::panel() {
                     s.compileMs, s.runMs, s.meshMs);
         if (session_.refining()) ImGui::TextUnformatted("a coarse preview: the full solve is running");
         if (lastEdit_)
-            ImGui::Text("last edit: %zu chunks re-meshed in %.1f ms", lastEdit_->chunksRemeshed, lastEdit_->ms);
+            ImGui::Text("last edit: %.1f ms, %zu chunks whose mesh it can change", lastEdit_->ms, lastEdit_->chunksRemeshed);
         ImGui::Text("draw %.1f ms", drawMs_);
         if (ImGui::Checkbox("wireframe", &wireframe_)) sceneStale_ = pictureStale_ = true;
         ImGui::SameLine();

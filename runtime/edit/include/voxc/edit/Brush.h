@@ -41,7 +41,8 @@ struct VoxelBox {
 
 // Applies the brush to every voxel of its support inside the grid and returns the box of the
 // voxels whose density bits (or material) changed (nullopt when none did: the edit was a no-op).
-// Materials are kept, except where an add with a material makes a voxel denser.
+// Materials are kept, except where an add with a material makes a voxel denser. A grid with tile
+// ranges keeps them, brought up to date over the changed box (so its meshers still skip uniform tiles).
 std::optional<VoxelBox> applyBrush(ChunkedGrid& grid, const Brush& brush);
 // The same on a dense grid whose voxel (0,0,0) is at world position `origin` (the interpreter's).
 std::optional<VoxelBox> applyBrush(DenseGrid& grid, glm::ivec3 origin, const Brush& brush);

@@ -79,7 +79,7 @@ struct WorldStats {
 };
 
 struct EditStats {
-    size_t chunksRemeshed = 0;
+    size_t chunksRemeshed = 0; // whose share of the mesh the edit can change (EditResult::chunksRemeshed)
     size_t voxelsInBox = 0; // of the changed box; 0 for a no-op
     double ms = 0.0;        // brush and re-mesh
 };
