@@ -490,6 +490,53 @@ TEST_F(SessionTest, ALargeSolveIsPreviewedCoarseThenRefinedToThePlainRunsWorld) 
     EXPECT_TRUE(five.world().mesh().positions == session.world().mesh().positions);
 }
 
+// A reload that solves the same blocks as the running full solve (the same solve keys: the file
+// saved again unchanged, or with the values the sliders had) lets it finish into the solve cache
+// and reads its tables there, rather than stopping it and solving again.
+TEST_F(SessionTest, AReloadWithTheSameSolveKeysLetsTheRunningSolveFinish) {
+    const OwnCache cache(directory_ / "cache");
+    write(kBlocksProgram);
+    std::mutex mutex;
+    std::condition_variable changed;
+    int started = 0;
+    bool release = false;
+    SessionOptions options{.path = path(), .preview = {.curvesCells = 2048, .terrainLevel = 4}};
+    options.fullSolveStarting = [&] { // holds the opening's full solve until the reload is made
+        std::unique_lock lock(mutex);
+        ++started;
+        changed.notify_all();
+        if (started == 1) changed.wait(lock, [&] { return release; });
+    };
+    const stages::SolveCacheCounts before = stages::solveCacheCounts();
+    Session session(context(), options);
+    struct Release { // never leaves the solve held (the session's destructor waits for it)
+        std::mutex& mutex;
+        std::condition_variable& changed;
+        bool& release;
+        void operator()() {
+            const std::lock_guard lock(mutex);
+            release = true;
+            changed.notify_all();
+        }
+        ~Release() { (*this)(); }
+    } releaseSolve{mutex, changed, release};
+    ASSERT_TRUE(session.refining()) << session.lastError();
+    {
+        std::unique_lock lock(mutex);
+        ASSERT_TRUE(changed.wait_for(lock, std::chrono::seconds(60), [&] { return started == 1; }));
+    }
+    ASSERT_TRUE(session.reload()) << session.lastError();
+    ASSERT_TRUE(session.refining());
+    releaseSolve();
+    ASSERT_EQ(waitForRefine(session), std::optional<bool>(true)) << session.lastError();
+    EXPECT_EQ(session.stoppedSolves(), 0u);
+    // The held solve solved the curves and the terrain; the reload's read both from the cache.
+    EXPECT_EQ(stages::solveCacheCounts().solved - before.solved, 2u);
+    EXPECT_EQ(stages::solveCacheCounts().hits - before.hits, 2u);
+    const std::lock_guard lock(mutex);
+    EXPECT_EQ(started, 2);
+}
+
 TEST_F(SessionTest, ASupersededRunningSolveStops) {
     const OwnCache cache(directory_ / "cache");
     write(kBlocksProgram);

@@ -159,6 +159,13 @@ bool needsPreview(const Program& program, const PreviewOptions& options) {
                        [&](const CurvesBlock& block) { return previewed(block, options); });
 }
 
+std::vector<std::string> solveKeys(const Program& program) {
+    std::vector<std::string> keys;
+    for (const CurvesBlock& block : program.curves)
+        if (!block.table && (block.scene || block.terrain)) keys.push_back(stages::solveKey(block, false));
+    return keys;
+}
+
 Program previewProgram(const Program& program, const PreviewOptions& options) {
     Program preview = program;
     for (CurvesBlock& block : preview.curves) {

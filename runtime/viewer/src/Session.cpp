@@ -238,7 +238,9 @@ void Session::listParameters(const ast::File& file) {
 // solving replaces any request still waiting, and only the newest ticket's outcome is kept, so a
 // newer slider move supersedes an older refine; a solve already running is asked to stop, and
 // stops at its next V-cycle, pass or batch of erosion steps, leaving nothing in the solve cache,
-// so the newer preview and solve have both cores.
+// so the newer preview and solve have both cores. Unless the newer request solves the same blocks
+// (the same solve keys: a file saved with the values the sliders had): then the running solve
+// goes on, its tables reach the solve cache, and the newer request reads them there.
 class Session::Refiner {
     static constexpr int kRefineNice = 10;
 
@@ -260,22 +262,23 @@ public:
         thread_.join(); // waits for a solve in progress: the thread reads nothing the session owns
     }
 
-    void submit(uint64_t ticket, Program program) {
+    void submit(uint64_t ticket, Program program, std::vector<std::string> keys) {
         {
             const std::lock_guard lock(mutex_);
             latest_ = ticket;
-            pending_.emplace(ticket, std::move(program));
+            pending_.emplace(Request{ticket, std::move(program), std::move(keys)});
             done_.reset();
         }
         wake_.notify_one();
     }
-    // Drops what is waiting and whatever the running solve will give: `ticket` is newer.
-    void supersede(uint64_t ticket) {
+    // Drops what is waiting and whatever the running solve will give: `ticket` is newer. `next`:
+    // the solve keys of the request `ticket` will submit (none when it submits none).
+    void supersede(uint64_t ticket, const std::vector<std::string>& next) {
         const std::lock_guard lock(mutex_);
         latest_ = ticket;
         pending_.reset();
         done_.reset();
-        if (running_) running_->request_stop();
+        if (running_ && (next.empty() || next != runningKeys_)) running_->request_stop();
     }
     uint64_t stopped() const {
         const std::lock_guard lock(mutex_);
@@ -297,8 +300,9 @@ private:
         while (true) {
             wake_.wait(lock, [&] { return stop_ || pending_.has_value(); });
             if (stop_) return;
-            auto [ticket, program] = std::move(*pending_);
+            auto [ticket, program, keys] = std::move(*pending_);
             pending_.reset();
+            runningKeys_ = std::move(keys);
             running_.emplace();
             const std::stop_token stop = running_->get_token();
             lock.unlock();
@@ -328,10 +332,16 @@ private:
     mutable std::mutex mutex_;
     std::condition_variable wake_;
     std::optional<std::stop_source> running_; // the solve in progress's
+    std::vector<std::string> runningKeys_;    // and its blocks' solve keys
     uint64_t stopped_ = 0;
     bool stop_ = false;
     uint64_t latest_ = 0;
-    std::optional<std::pair<uint64_t, Program>> pending_;
+    struct Request {
+        uint64_t ticket;
+        Program program;
+        std::vector<std::string> keys;
+    };
+    std::optional<Request> pending_;
     std::optional<Outcome> done_;
     std::thread thread_; // last: started once the rest is built
 };
@@ -382,15 +392,16 @@ bool Session::reload() {
         if (preview) {
             stats.preview = true;
             stats.solveMs = millisecondsSince(start);
-            supersedeRefine();
+            std::vector<std::string> keys = solveKeys(program);
+            supersedeRefine(keys);
             show(std::move(*preview), stats);
             if (!refiner_) refiner_ = std::make_unique<Refiner>(options_.fullSolveStarting);
-            refiner_->submit(ticket_, std::move(program));
+            refiner_->submit(ticket_, std::move(program), std::move(keys));
             refining_ = true;
         } else {
             stages::solveBlocks(program); // on the host, through the solve cache, as compileProgram would
             stats.solveMs = millisecondsSince(start);
-            supersedeRefine();
+            supersedeRefine({});
             show(std::move(program), stats);
         }
     } catch (const UserError& e) {
@@ -405,10 +416,10 @@ bool Session::reload() {
 
 // A new world replaces the one on screen: a refine of the older one must not replace it in turn.
 // (A reload that fails keeps the last world and lets its refine finish.)
-void Session::supersedeRefine() {
+void Session::supersedeRefine(const std::vector<std::string>& next) {
     ++ticket_;
     refining_ = false;
-    if (refiner_) refiner_->supersede(ticket_);
+    if (refiner_) refiner_->supersede(ticket_, next);
 }
 
 void Session::show(Program program, WorldStats stats) {

@@ -7,6 +7,8 @@
 #include "voxc/program/Program.h"
 
 #include <cstdint>
+#include <string>
+#include <vector>
 
 namespace voxc::viewer {
 
@@ -22,6 +24,10 @@ struct PreviewOptions {
 // Whether some block of `program` would be previewed: unsolved, past the options' sizes, and not in
 // the solve cache (whose entry a full run would read in less time than a preview takes).
 bool needsPreview(const Program& program, const PreviewOptions& options);
+
+// The solve-cache keys of the curves and terrain blocks a full solve of `program` solves or reads
+// (those without a table), in order: two programs with the same keys get the same tables.
+std::vector<std::string> solveKeys(const Program& program);
 
 // `program` with every such block's table made coarse (a curves table upsampled to the block's
 // box, a terrain's table and sampled map from its coarser levels) and every other block solved as

@@ -143,7 +143,8 @@ private:
     class Refiner;
     // Compiles and runs a solved (or previewed) program, replays the edits and makes it the world.
     void show(Program program, WorldStats stats);
-    void supersedeRefine();
+    // `next`: the solve keys of the full solve this reload submits (none when it submits none).
+    void supersedeRefine(const std::vector<std::string>& next);
     std::string textWithOverrides(const std::string& text, const ast::File& file) const;
     void rebuildWorld();
     // Copies the world's grid aside as the base before its first edit (the base of an unedited world is its grid).
