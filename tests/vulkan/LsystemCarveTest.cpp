@@ -111,9 +111,9 @@ TEST(vulkan_LsystemCarve, MatchesTheInterpreterAtEveryChunkSize) {
 // A dense network: short steps and centres every quarter voxel make thousands of centres in one
 // cell's list (2,832 here; lavapipe used to leave the list loops once an invocation had looped
 // 65,535 times, from about 1,500 centres per cell on).
-std::string denseCaveProgram(int expansions, const std::string& keys) {
+std::string denseCaveProgram(int expansions, const std::string& keys, const std::string& origin = "[0, 0, 0]") {
     return fmt::format(R"(
-world {{ size = [48, 32, 48]; seed = 3; }}
+world {{ size = [48, 32, 48]; origin = {}; seed = 3; }}
 start {{ fill {{ value = 1; }} }}
 lsystem net {{
   axiom = "Z"; expansions = {}; angle = 45; step = 0.5; start = [24, 16, 24];
@@ -122,7 +122,7 @@ lsystem net {{
 feature tunnels = lsystem_cave {{ lsystem = net; {} }}
 pipeline {{ start; subtract tunnels; }}
 )",
-                       expansions, keys);
+                       origin, expansions, keys);
 }
 
 const PointSet& pointSetOf(const Program& program) {
@@ -149,6 +149,12 @@ TEST(vulkan_LsystemCarve, DenseNetworksMatchTheInterpreterAtEveryChunkSize) {
         program.world.chunkSize = chunk;
         EXPECT_EQ(test::countBitDifferences(expected, runColumnLookupsOnLavapipe(program, 8)), 0u) << "chunk " << chunk;
     }
+    // At an odd origin the cells of the lists and the chunks straddle the network differently
+    // (one chunk size: the lists' code is the same at every size).
+    CheckResult odd = checked(denseCaveProgram(4, "radius = 8; spacing = 0.25; clearance = 1;", "[-7, 3, 5]"));
+    ASSERT_TRUE(odd.program);
+    EXPECT_GT(longestList(pointSetOf(*odd.program).bins.centreStart), 2000u);
+    EXPECT_EQ(test::countBitDifferences(interpret(*odd.program), runColumnLookupsOnLavapipe(*odd.program, 8)), 0u);
 }
 
 // The worst lists the checker accepts: kMaxPointSetPerCell centres and as many segments, packed so
