@@ -2,6 +2,7 @@
 
 #include "Bfs.h"
 #include "Fronts.h"
+#include "Parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +11,10 @@ namespace voxc::curves {
 namespace {
 
 float lengthOf(float x, float y, float z) { return std::sqrt((x * x + y * y) + z * z); }
+
+// normalizeField runs on two threads from this many cells (a smaller field's pass takes less
+// than starting a thread).
+constexpr size_t kMinCellsToNormalizeOnTwoThreads = size_t(1) << 18;
 
 } // namespace
 
@@ -23,16 +28,22 @@ void normalizeField(const Field3& x, const Field3& y, const Field3& z, Field3& o
         out->box = x.box;
         out->values.resize(x.values.size()); // every value is written below
     }
-    for (size_t i = 0; i < x.values.size(); ++i) {
-        const float length = lengthOf(x.values[i], y.values[i], z.values[i]);
-        if (!(length >= 1e-6f)) {
-            outX.values[i] = outY.values[i] = outZ.values[i] = 0.0f;
-            continue;
+    // Pointwise, so two threads (half the cells each) give the same bits.
+    auto normalize = [&](size_t begin, size_t end) {
+        for (size_t i = begin; i < end; ++i) {
+            const float length = lengthOf(x.values[i], y.values[i], z.values[i]);
+            if (!(length >= 1e-6f)) {
+                outX.values[i] = outY.values[i] = outZ.values[i] = 0.0f;
+                continue;
+            }
+            outX.values[i] = x.values[i] / length;
+            outY.values[i] = y.values[i] / length;
+            outZ.values[i] = z.values[i] / length;
         }
-        outX.values[i] = x.values[i] / length;
-        outY.values[i] = y.values[i] / length;
-        outZ.values[i] = z.values[i] / length;
-    }
+    };
+    const size_t cells = x.values.size();
+    if (cells < kMinCellsToNormalizeOnTwoThreads) return normalize(0, cells);
+    bothOf([&] { normalize(0, cells / 2); }, [&] { normalize(cells / 2, cells); });
 }
 
 NormalField peronaMalikNormals(const Constraints& cs, float k, uint32_t sweeps, const Limits&) {
