@@ -197,18 +197,19 @@ std::array<uint32_t, 256> cellWords() {
 // vertex at its slot in `cellInfo` (owned edges | first vertex << 3), and every vertex with its
 // owner cell and axis, in the CPU mesher's order (vertices by global edge, triangles by cell).
 // Sequential and a few loads and stores per active cell: on lavapipe the same lists took a pass
-// over every segment with a prefix sum before it, several times longer.
-struct CellLists {
-    std::vector<uint32_t> activeCells; // kActiveCellWords per active cell
-    std::vector<uint32_t> vertexEdges; // per vertex: its owner's slot | axis << 30 (slots are below 2^30)
+// over every segment with a prefix sum before it, several times longer. `activeCells` gets
+// kActiveCellWords per active cell, `vertexEdges` per vertex its owner's slot | axis << 30 (slots
+// are below 2^30); returns the vertex and triangle counts.
+struct CellTotals {
     uint64_t vertices = 0, triangles = 0;
 };
 
-void listCells(const uint32_t* cases, const TileLists& lists, glm::ivec3 tileFirst, glm::ivec3 n, const ChunkLayout& layout,
-               uint32_t* cellInfo, CellLists& out) {
+
+CellTotals listCells(const uint32_t* cases, const TileLists& lists, glm::ivec3 tileFirst, glm::ivec3 n, const ChunkLayout& layout,
+                     uint32_t* cellInfo, std::vector<uint32_t>& activeCells, std::vector<uint32_t>& vertexEdges) {
     static const std::array<uint32_t, 256> kCellWords = cellWords();
-    out.activeCells.clear();
-    out.vertexEdges.clear();
+    activeCells.clear();
+    vertexEdges.clear();
     uint64_t vertices = 0, triangles = 0;
     constexpr uint64_t kLow7 = 0x7f7f7f7f7f7f7f7full;
     // The high bit of each byte of `v` that is zero.
@@ -225,17 +226,16 @@ void listCells(const uint32_t* cases, const TileLists& lists, glm::ivec3 tileFir
         for (; active != 0; active &= active - 1) {
             const uint32_t i = uint32_t(std::countr_zero(active)) / 8;
             const uint32_t word = kCellWords[(bytes >> (8 * i)) & 0xffu], slot = firstSlot + i, edges = word & 7u;
-            out.activeCells.insert(out.activeCells.end(), {slot, uint32_t(vertices), uint32_t(triangles), word});
+            activeCells.insert(activeCells.end(), {slot, uint32_t(vertices), uint32_t(triangles), word});
             triangles += (word >> 3) & 15u;
             if (edges == 0) continue;
             cellInfo[slot] = edges | uint32_t(vertices) << 3;
             for (uint32_t left = edges; left != 0; left &= left - 1)
-                out.vertexEdges.push_back(slot | uint32_t(std::countr_zero(left)) << 30);
+                vertexEdges.push_back(slot | uint32_t(std::countr_zero(left)) << 30);
             vertices += uint32_t(std::popcount(edges));
         }
     }
-    out.vertices = vertices;
-    out.triangles = triangles;
+    return {vertices, triangles};
 }
 
 } // namespace
@@ -254,7 +254,7 @@ struct GpuMarchingCubes::Impl {
     // they are copied). segmentCases, vertices and triangles: meshUse().
     DeviceBuffer caseTable, tileStates, unknownTiles, activeTiles, segments, segmentCases, cellInfo, activeCells, vertexEdges,
         vertices, triangles, results;
-    CellLists cellLists; // kept, so that a repeated call reuses its memory
+    std::vector<uint32_t> activeCellWords, vertexEdgeWords; // listCells' lists, kept so that a repeated call reuses their memory
     // At the texel bindings: views of the executor's buffers and of these (bindAll).
     std::array<VkBufferView, kMcBindingCount> texelViews{};
     VkCommandPool commandPool = VK_NULL_HANDLE;
@@ -504,7 +504,7 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     if (segmentCount == 0) return mesh;
 
     // The cases of the segments' cells, then on the host the lists of the active cells and the
-    // vertices, in place (cellInfo) or into cellLists.
+    // vertices, in place (cellInfo) or into activeCellWords and vertexEdgeWords.
     bool rebind = s.upload(s.activeTiles, lists.activeTiles);
     rebind |= s.upload(s.segments, lists.segments);
     const VkDeviceSize caseBytes = VkDeviceSize(segmentCount) * 2 * sizeof(uint32_t);
@@ -527,9 +527,8 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     }
     s.submitAndWait();
     invalidateForHost(s.ctx, *caseSource);
-    CellLists& cells = s.cellLists;
-    listCells(static_cast<const uint32_t*>(caseSource->mapped), lists, s.tileFirst, s.tileCount, s.layout,
-              static_cast<uint32_t*>(s.cellInfo.mapped), cells);
+    const CellTotals cells = listCells(static_cast<const uint32_t*>(caseSource->mapped), lists, s.tileFirst, s.tileCount, s.layout,
+                                       static_cast<uint32_t*>(s.cellInfo.mapped), s.activeCellWords, s.vertexEdgeWords);
     if (cells.triangles == 0) return mesh;
 
     // Emit into buffers of the counted size, written as texels (two a vertex, one a triangle).
@@ -542,10 +541,10 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
                                     "'{}' can write ({} vertices, {} triangles); mesh on the host instead (voxc run --mesh-on host)",
                                     cells.vertices, cells.triangles, s.ctx.info.name, maxVertices, maxTriangles));
     const uint32_t vertexCount = uint32_t(cells.vertices), triangleCount = uint32_t(cells.triangles);
-    const uint32_t activeCount = uint32_t(cells.activeCells.size() / kActiveCellWords);
+    const uint32_t activeCount = uint32_t(s.activeCellWords.size() / kActiveCellWords);
     flushForDevice(s.ctx, s.cellInfo); // the queue submit makes it visible to the device
-    bool replaced = s.upload(s.activeCells, cells.activeCells);
-    replaced |= s.upload(s.vertexEdges, cells.vertexEdges);
+    bool replaced = s.upload(s.activeCells, s.activeCellWords);
+    replaced |= s.upload(s.vertexEdges, s.vertexEdgeWords);
     const uint64_t vertexBytes = uint64_t(vertexCount) * kVertexWords * sizeof(uint32_t);
     const uint64_t triangleBytes = uint64_t(triangleCount) * kTriangleWords * sizeof(uint32_t);
     replaced |= s.ensureBuffer(s.vertices, vertexBytes, s.meshUse());
