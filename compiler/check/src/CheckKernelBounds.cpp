@@ -101,11 +101,11 @@ uint64_t speleothemLoopIterations(const SpeleothemStage& stage, int32_t height) 
     // speleothem_grow.glsl, per source column (four for a hoodoo): the air-mask words, the rock
     // voxels bottom up (plus one test per word), then per closed run up to gap/2 + 1 steps of
     // the feature, each with its taper loop (taper + 1) and at most height writes in all, each
-    // write a keep_clear lookup.
+    // write a keep_clear lookup; and the permutation table simplex3 reads, stored at the top.
     const uint64_t sources = stage.params.kind == SpeleothemKind::Hoodoo ? 4 : 1;
     const uint64_t h = uint64_t(std::max(height, 0)), words = (h + 31) / 32 + 1;
     const uint64_t lookup = stage.clearance ? pointSetLookupIterations(stage.clearance->bins) : 0;
-    return sources * (2 * words + h + h * (uint64_t(stage.params.taper) + 2) + h * lookup);
+    return kNoiseTableIterations + sources * (2 * words + h + h * (uint64_t(stage.params.taper) + 2) + h * lookup);
 }
 
 void checkKernelBounds(Context& context, const Program& program, const std::vector<CheckedGrammar>& syntax) {
@@ -117,7 +117,7 @@ void checkKernelBounds(Context& context, const Program& program, const std::vect
                 checkStampKernel(context, program.grammars[g], syntax[g], sweep, program.fields);
     }
     for (const SpeleothemStage& stage : program.speleothems) {
-        if (!stage.clearance) continue; // without keep_clear, at most 4 * (2 * 17 + 512 * 11) at the grid's limit
+        if (!stage.clearance) continue; // without keep_clear, at most 256 + 4 * (2 * 17 + 512 * 11) at the grid's limit
         const uint64_t iterations = speleothemLoopIterations(stage, program.world.size.y);
         if (iterations <= uint64_t(context.limits.maxKernelLoopIterations)) continue;
         context.diagnostics.error(
