@@ -59,7 +59,9 @@ TEST(NoiseBatch, NonFiniteLanesAreNaNLikeTheBuiltin) {
     for (size_t i = 0; i < 16; ++i) {
         const float expected = scalarWarpedFbm(x[i], y[i], z[i], r[i], 0.0f, 0.0f, 5u);
         EXPECT_EQ(std::isnan(out[i]), std::isnan(expected)) << i;
-        if (!std::isnan(expected)) EXPECT_TRUE(sameBits(out[i], expected)) << i;
+        if (!std::isnan(expected)) {
+            EXPECT_TRUE(sameBits(out[i], expected)) << i;
+        }
     }
     EXPECT_TRUE(std::isnan(out[1]) && std::isnan(out[6]) && std::isnan(out[9]));
 }

@@ -23,6 +23,14 @@ Program tinyProgram() {
     return makeProgram({3, 3, 1}, {g});
 }
 
+// A filter on a rule name, a grammar name or both (the other fields unset).
+TraceFilter namesFilter(std::optional<std::string> rule, std::optional<std::string> grammar = std::nullopt) {
+    TraceFilter filter;
+    filter.rule = std::move(rule);
+    filter.grammar = std::move(grammar);
+    return filter;
+}
+
 std::vector<std::string> traceOf(const Program& program, const TraceFilter& filter = {}) {
     std::vector<std::string> lines;
     InterpOptions options;
@@ -134,8 +142,8 @@ TEST(interp_Trace, RuleFilterCoversSymmetryVariants) {
 
     Program program = tinyProgram();
     program.grammars[0].rules[0].name = "dot@mirx"; // as the checker names a variant
-    const std::vector<std::string> all = traceOf(program, {.rule = std::string("dot")});
-    const std::vector<std::string> variant = traceOf(program, {.rule = std::string("dot@mirx")});
+    const std::vector<std::string> all = traceOf(program, namesFilter("dot"));
+    const std::vector<std::string> variant = traceOf(program, namesFilter("dot@mirx"));
     EXPECT_EQ(all.size(), 4u);
     EXPECT_EQ(all, variant);
 }
@@ -154,19 +162,19 @@ TEST(interp_Trace, UnknownNamesInAFilterAreErrorsListingTheNames) {
     program.grammars[0].rules.push_back(program.grammars[0].rules[0]);
     program.grammars[0].rules[0].name = "dot@rot90y";
     program.grammars[0].rules.back().name = "dot";
-    EXPECT_EQ(filterError(program, {.rule = std::string("dot")}), "");
-    EXPECT_EQ(filterError(program, {.rule = std::string("dot@rot90y")}), "");
-    EXPECT_EQ(filterError(program, {.rule = std::string("blokc")}),
+    EXPECT_EQ(filterError(program, namesFilter("dot")), "");
+    EXPECT_EQ(filterError(program, namesFilter("dot@rot90y")), "");
+    EXPECT_EQ(filterError(program, namesFilter("blokc")),
               "--trace-rule 'blokc': no rule of that name in any grammar (the rules are: dot, block); did you mean "
               "'block'?");
-    EXPECT_EQ(filterError(program, {.rule = std::string("dot@rot9y")}),
+    EXPECT_EQ(filterError(program, namesFilter("dot@rot9y")),
               "--trace-rule 'dot@rot9y': rule 'dot' has no such variant (its variants are: dot@rot90y); did you "
               "mean 'dot@rot90y'?");
-    EXPECT_EQ(filterError(program, {.rule = std::string("block@mirx")}),
+    EXPECT_EQ(filterError(program, namesFilter("block@mirx")),
               "--trace-rule 'block@mirx': rule 'block' has no such variant (it has no symmetry variants)");
-    EXPECT_EQ(filterError(program, {.grammar = std::string("tniy")}),
+    EXPECT_EQ(filterError(program, namesFilter(std::nullopt, "tniy")),
               "--trace-grammar 'tniy': no grammar of that name (the grammars are: tiny); did you mean 'tiny'?");
-    EXPECT_EQ(filterError(program, {.rule = std::string("dot"), .grammar = std::string("tiny")}), "");
+    EXPECT_EQ(filterError(program, namesFilter("dot", "tiny")), "");
 }
 
 } // namespace trace_test
