@@ -15,6 +15,7 @@
 #include <mutex>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <gtest/gtest.h>
 #include <thread>
 
@@ -493,48 +494,68 @@ TEST_F(SessionTest, ALargeSolveIsPreviewedCoarseThenRefinedToThePlainRunsWorld) 
 // A reload that solves the same blocks as the running full solve (the same solve keys: the file
 // saved again unchanged, or with the values the sliders had) lets it finish into the solve cache
 // and reads its tables there, rather than stopping it and solving again.
+// Holds the full solve that starts as number `held` (1 for the opening's) until release(); the
+// other solves pass through. A Releaser made after the session releases it on every way out of a
+// test, before the session's destructor waits for the solve.
+class SolveGate {
+public:
+    explicit SolveGate(int held) : held_(held) {}
+
+    std::function<void()> hook() {
+        return [this] {
+            std::unique_lock lock(mutex_);
+            ++started_;
+            changed_.notify_all();
+            if (started_ == held_) changed_.wait(lock, [&] { return released_; });
+        };
+    }
+    bool waitForStarts(int count) {
+        std::unique_lock lock(mutex_);
+        return changed_.wait_for(lock, std::chrono::seconds(60), [&] { return started_ == count; });
+    }
+    void release() {
+        const std::lock_guard lock(mutex_);
+        released_ = true;
+        changed_.notify_all();
+    }
+    int started() {
+        const std::lock_guard lock(mutex_);
+        return started_;
+    }
+
+    struct Releaser {
+        SolveGate& gate;
+        ~Releaser() { gate.release(); }
+    };
+
+private:
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    int started_ = 0;
+    const int held_;
+    bool released_ = false;
+};
+
 TEST_F(SessionTest, AReloadWithTheSameSolveKeysLetsTheRunningSolveFinish) {
     const OwnCache cache(directory_ / "cache");
     write(kBlocksProgram);
-    std::mutex mutex;
-    std::condition_variable changed;
-    int started = 0;
-    bool release = false;
+    SolveGate gate(1); // holds the opening's full solve until the reload is made
     SessionOptions options{.path = path(), .preview = {.curvesCells = 2048, .terrainLevel = 4}};
-    options.fullSolveStarting = [&] { // holds the opening's full solve until the reload is made
-        std::unique_lock lock(mutex);
-        ++started;
-        changed.notify_all();
-        if (started == 1) changed.wait(lock, [&] { return release; });
-    };
+    options.fullSolveStarting = gate.hook();
     const stages::SolveCacheCounts before = stages::solveCacheCounts();
     Session session(context(), options);
-    struct Release { // never leaves the solve held (the session's destructor waits for it)
-        std::mutex& mutex;
-        std::condition_variable& changed;
-        bool& release;
-        void operator()() {
-            const std::lock_guard lock(mutex);
-            release = true;
-            changed.notify_all();
-        }
-        ~Release() { (*this)(); }
-    } releaseSolve{mutex, changed, release};
+    const SolveGate::Releaser releaseOnExit{gate};
     ASSERT_TRUE(session.refining()) << session.lastError();
-    {
-        std::unique_lock lock(mutex);
-        ASSERT_TRUE(changed.wait_for(lock, std::chrono::seconds(60), [&] { return started == 1; }));
-    }
+    ASSERT_TRUE(gate.waitForStarts(1));
     ASSERT_TRUE(session.reload()) << session.lastError();
     ASSERT_TRUE(session.refining());
-    releaseSolve();
+    gate.release();
     ASSERT_EQ(waitForRefine(session), std::optional<bool>(true)) << session.lastError();
     EXPECT_EQ(session.stoppedSolves(), 0u);
     // The held solve solved the curves and the terrain; the reload's read both from the cache.
     EXPECT_EQ(stages::solveCacheCounts().solved - before.solved, 2u);
     EXPECT_EQ(stages::solveCacheCounts().hits - before.hits, 2u);
-    const std::lock_guard lock(mutex);
-    EXPECT_EQ(started, 2);
+    EXPECT_EQ(gate.started(), 2);
 }
 
 TEST_F(SessionTest, ASupersededRunningSolveStops) {
@@ -542,46 +563,22 @@ TEST_F(SessionTest, ASupersededRunningSolveStops) {
     write(kBlocksProgram);
     // The full solve of the first slider move is held as it starts, until the second move has
     // superseded it: then it runs with its stop asked for, as a solve that was running would.
-    std::mutex mutex;
-    std::condition_variable changed;
-    int started = 0;
-    bool release = false;
+    SolveGate gate(2);
     const PreviewOptions preview{.curvesCells = 2048, .terrainLevel = 4};
     SessionOptions options{.path = path(), .preview = preview};
-    options.fullSolveStarting = [&] {
-        std::unique_lock lock(mutex);
-        ++started;
-        changed.notify_all();
-        if (started == 2) changed.wait(lock, [&] { return release; });
-    };
+    options.fullSolveStarting = gate.hook();
     Session session(context(), options);
-    struct Release { // never leaves the solve held (the session's destructor waits for it)
-        std::mutex& mutex;
-        std::condition_variable& changed;
-        bool& release;
-        void operator()() {
-            const std::lock_guard lock(mutex);
-            release = true;
-            changed.notify_all();
-        }
-        ~Release() { (*this)(); }
-    } releaseSolve{mutex, changed, release};
+    const SolveGate::Releaser releaseOnExit{gate};
     ASSERT_TRUE(session.refining()) << session.lastError();
     ASSERT_EQ(waitForRefine(session), std::optional<bool>(true)) << session.lastError();
 
     ASSERT_TRUE(session.setParameter("cliffs.face.constraint[1].amplitude", 2)) << session.lastError();
-    {
-        std::unique_lock lock(mutex);
-        ASSERT_TRUE(changed.wait_for(lock, std::chrono::seconds(60), [&] { return started == 2; }));
-    }
+    ASSERT_TRUE(gate.waitForStarts(2));
     ASSERT_TRUE(session.setParameter("cliffs.face.constraint[1].amplitude", 4)) << session.lastError();
-    releaseSolve();
+    gate.release();
     ASSERT_EQ(waitForRefine(session), std::optional<bool>(true)) << session.lastError();
     EXPECT_EQ(session.stoppedSolves(), 1u);
-    {
-        const std::lock_guard lock(mutex);
-        EXPECT_EQ(started, 3); // the opening's, the stopped one and the second move's
-    }
+    EXPECT_EQ(gate.started(), 3); // the opening's, the stopped one and the second move's
     std::string text = kBlocksProgram;
     const std::string secondPoint = "constraint { t = 1; material = sand; }";
     text.replace(text.find(secondPoint), secondPoint.size(), "constraint { t = 1; material = sand; amplitude = 4; }");
