@@ -448,6 +448,16 @@ Children childrenOf(int32_t p, int32_t n, int32_t halved) {
     return halved ? Children{2 * p, std::min(2, n - 2 * p)} : Children{p, 1};
 }
 
+// Calls childRow(y, z) for the fine rows under coarse row (py, pz), z slowest, then y; returns
+// their count.
+template <typename ChildRow>
+int32_t forChildRows(const glm::ivec3& fineSize, const glm::ivec3& halved, int32_t py, int32_t pz, ChildRow&& childRow) {
+    const Children cz = childrenOf(pz, fineSize.z, halved.z), cy = childrenOf(py, fineSize.y, halved.y);
+    for (int32_t z = cz.first; z < cz.first + cz.count; ++z)
+        for (int32_t y = cy.first; y < cy.first + cy.count; ++y) childRow(y, z);
+    return cz.count * cy.count;
+}
+
 // The full-multigrid start's coarse Dirichlet values: per coarse cell the mean of its fixed
 // children's values (0 where it has none), each sum from 0 over the children in z, y, x order.
 // Coarse slices are independent, so two threads give the same bits.
@@ -462,16 +472,14 @@ void restrictFixedMean(const Level& fine, const std::vector<float>& values, cons
             for (int32_t py = 0; py < coarse.size.y; ++py) {
                 std::fill(sum.begin(), sum.end(), 0.0f);
                 std::fill(count.begin(), count.end(), 0);
-                const Children cz = childrenOf(pz, b.size.z, halved.z), cy = childrenOf(py, b.size.y, halved.y);
-                for (int32_t z = cz.first; z < cz.first + cz.count; ++z)
-                    for (int32_t y = cy.first; y < cy.first + cy.count; ++y) {
-                        const size_t i0 = b.index(0, y, z);
-                        for (int32_t x = 0; x < b.size.x; ++x)
-                            if (fine.fixed[i0 + size_t(x)]) {
-                                sum[size_t(x >> halved.x)] += values[i0 + size_t(x)];
-                                ++count[size_t(x >> halved.x)];
-                            }
-                    }
+                forChildRows(b.size, halved, py, pz, [&](int32_t y, int32_t z) {
+                    const size_t i0 = b.index(0, y, z);
+                    for (int32_t x = 0; x < b.size.x; ++x)
+                        if (fine.fixed[i0 + size_t(x)]) {
+                            sum[size_t(x >> halved.x)] += values[i0 + size_t(x)];
+                            ++count[size_t(x >> halved.x)];
+                        }
+                });
                 const size_t p0 = coarse.index(0, py, pz);
                 for (int32_t px = 0; px < coarse.size.x; ++px)
                     out[p0 + size_t(px)] = count[size_t(px)] > 0 ? sum[size_t(px)] / float(count[size_t(px)]) : 0.0f;
@@ -496,7 +504,7 @@ void addChildren(const float* __restrict fine, int32_t n, int32_t halved, float*
 }
 
 // The coarse right-hand side: per coarse cell the mean of its children's residuals (0 at fixed
-// children), summed in z, y, x order like restrictMean, with the coarse correction reset to 0.
+// children), summed in z, y, x order like restrictFixedMean, with the coarse correction reset to 0.
 // Coarse slices are independent, so two threads give the same bits.
 void restrictResidual(const Level& fine, size_t c, bool zeroRhs, Level& coarse) {
     const Box& b = fine.box;
@@ -509,14 +517,11 @@ void restrictResidual(const Level& fine, size_t c, bool zeroRhs, Level& coarse) 
         for (int32_t pz = z0; pz < z1; ++pz)
             for (int32_t py = 0; py < cb.size.y; ++py) {
                 std::fill(sum.begin(), sum.end(), 0.0f);
-                const Children cz = childrenOf(pz, b.size.z, halved.z), cy = childrenOf(py, b.size.y, halved.y);
-                for (int32_t z = cz.first; z < cz.first + cz.count; ++z)
-                    for (int32_t y = cy.first; y < cy.first + cy.count; ++y) {
-                        residualRow(fine, fine.u[c], rhs, y, z, residual.data());
-                        addChildren(residual.data(), b.size.x, halved.x, sum.data());
-                    }
-                // Each coarse cell's child count: its z and y children times its x children.
-                const int32_t rows = cz.count * cy.count;
+                const int32_t rows = forChildRows(b.size, halved, py, pz, [&](int32_t y, int32_t z) {
+                    residualRow(fine, fine.u[c], rhs, y, z, residual.data());
+                    addChildren(residual.data(), b.size.x, halved.x, sum.data());
+                });
+                // Each coarse cell's child count: its z and y children (rows) times its x children.
                 const size_t p0 = cb.index(0, py, pz);
                 for (int32_t px = 0; px < cb.size.x; ++px)
                     out[p0 + size_t(px)] = sum[size_t(px)] / float(rows * childrenOf(px, b.size.x, halved.x).count);
@@ -597,12 +602,10 @@ std::vector<std::vector<uint8_t>> multigridMasks(const std::vector<MultigridLeve
                 for (int32_t py = 0; py < coarse.size.y; ++py) {
                     uint8_t* out = mask.data() + coarse.index(0, py, pz);
                     std::fill(out, out + coarse.size.x, uint8_t(0));
-                    const Children cz = childrenOf(pz, fine.size.z, halved.z), cy = childrenOf(py, fine.size.y, halved.y);
-                    for (int32_t z = cz.first; z < cz.first + cz.count; ++z)
-                        for (int32_t y = cy.first; y < cy.first + cy.count; ++y) {
-                            const uint8_t* row = finer.data() + fine.index(0, y, z);
-                            for (int32_t x = 0; x < fine.size.x; ++x) out[x >> halved.x] |= uint8_t(row[x] != 0);
-                        }
+                    forChildRows(fine.size, halved, py, pz, [&](int32_t y, int32_t z) {
+                        const uint8_t* row = finer.data() + fine.index(0, y, z);
+                        for (int32_t x = 0; x < fine.size.x; ++x) out[x >> halved.x] |= uint8_t(row[x] != 0);
+                    });
                 }
         });
         masks.push_back(std::move(mask));
