@@ -204,7 +204,6 @@ struct CellTotals {
     uint64_t vertices = 0, triangles = 0;
 };
 
-
 CellTotals listCells(const uint32_t* cases, const TileLists& lists, glm::ivec3 tileFirst, glm::ivec3 n, const ChunkLayout& layout,
                      uint32_t* cellInfo, std::vector<uint32_t>& activeCells, std::vector<uint32_t>& vertexEdges) {
     static const std::array<uint32_t, 256> kCellWords = cellWords();
@@ -549,7 +548,7 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     const uint64_t triangleBytes = uint64_t(triangleCount) * kTriangleWords * sizeof(uint32_t);
     replaced |= s.ensureBuffer(s.vertices, vertexBytes, s.meshUse());
     replaced |= s.ensureBuffer(s.triangles, triangleBytes, s.meshUse());
-    if (!inPlace) replaced |= s.ensureBuffer(s.results, vertexBytes + triangleBytes, MemoryUse::HostAccess);
+    if (!inPlace) s.ensureBuffer(s.results, vertexBytes + triangleBytes, MemoryUse::HostAccess); // bound to no pass
     if (replaced) s.bindAll();
     // The vertices and the triangles, independent of each other, over the host's lists alone.
     s.begin();
