@@ -234,8 +234,10 @@ struct AlongXRows {
 };
 
 // A fine row of the prolongation from rows interpolated along x: per cell y, then z, in the
-// order of the per-cell expression, stored (or added) where the cell is free, a branch-free
-// select elsewhere; elementwise, so it vectorises.
+// order of the per-cell expression, stored (or added) where the cell is free. Each block of cells
+// is first computed at every cell into a local row (added to out where `add`), then stored with a
+// branch-free select that keeps the fixed cells: a select around the arithmetic, or a load only
+// one side of it makes, is not if-converted (it may trap) and leaves the loop scalar.
 VOXC_ROW_KERNEL
 void prolongRow(AlongXRows c, float n1, float f1, float n2, float f2, const uint8_t* __restrict fixed, bool add,
                 int32_t n, float* __restrict out) {
@@ -243,16 +245,22 @@ void prolongRow(AlongXRows c, float n1, float f1, float n2, float f2, const uint
     const float* __restrict r01 = c.r01;
     const float* __restrict r10 = c.r10;
     const float* __restrict r11 = c.r11;
-    if (add) {
-        for (int32_t x = 0; x < n; ++x) {
-            const float v = n2 * (n1 * r00[x] + f1 * r01[x]) + f2 * (n1 * r10[x] + f1 * r11[x]);
-            out[x] = fixed[x] ? out[x] : out[x] + v;
+    constexpr int32_t kBlock = 64;
+    float values[kBlock];
+    for (int32_t x0 = 0; x0 < n; x0 += kBlock) {
+        const int32_t m = std::min(kBlock, n - x0);
+        if (add) {
+            for (int32_t k = 0; k < m; ++k) {
+                const int32_t x = x0 + k;
+                values[k] = out[x] + (n2 * (n1 * r00[x] + f1 * r01[x]) + f2 * (n1 * r10[x] + f1 * r11[x]));
+            }
+        } else {
+            for (int32_t k = 0; k < m; ++k) {
+                const int32_t x = x0 + k;
+                values[k] = n2 * (n1 * r00[x] + f1 * r01[x]) + f2 * (n1 * r10[x] + f1 * r11[x]);
+            }
         }
-    } else {
-        for (int32_t x = 0; x < n; ++x) {
-            const float v = n2 * (n1 * r00[x] + f1 * r01[x]) + f2 * (n1 * r10[x] + f1 * r11[x]);
-            out[x] = fixed[x] ? out[x] : v;
-        }
+        for (int32_t k = 0; k < m; ++k) out[x0 + k] = fixed[x0 + k] ? out[x0 + k] : values[k];
     }
 }
 
