@@ -1,11 +1,13 @@
 # What `cmake --install` puts under the prefix (docs/embedding.md): the voxc command, the CMake
-# package (find_package(voxc): voxc::voxc and voxc_add_ruleset) and, with VOXC_LIBVOXC, libvoxc,
+# package (find_package(voxc): voxc::voxc and voxc_add_ruleset), the OpenVDB module both load when
+# first needed (<libdir>/voxc/libvoxc-openvdb.so, voxc/vdb/Vdb.h) and, with VOXC_LIBVOXC, libvoxc,
 # its header and its pkg-config file.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set(VOXC_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/voxc)
 install(TARGETS voxc RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS voxc_openvdb_module LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/voxc)
 
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/voxcConfig.cmake.in
   ${PROJECT_BINARY_DIR}/packaging/voxcConfig.cmake

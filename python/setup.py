@@ -2,7 +2,7 @@
 
 The build (scripts/build.sh: VOXC_LIBVOXC=ON, VOXC_PYTHON=ON) already compiled the extension,
 build/python/voxc/_native*.so, for the Python it was configured with; installing copies it and
-libvoxc.so.0 instead of compiling the module a second time (seconds instead of a minute or two on
+libvoxc.so.0 (with the OpenVDB module libvoxc loads when first needed) instead of compiling the module a second time (seconds instead of a minute or two on
 2 cores). The build directory is build/ beside this folder, or the one VOXC_BUILD_DIR names. The
 extension finds libvoxc beside itself (rpath $ORIGIN), so the installed package keeps working when
 the build tree changes or goes. Only setuptools (Debian's python3-setuptools) is needed, no
@@ -25,7 +25,7 @@ sources = [here / "src" / "module.cpp", root / "runtime" / "capi" / "include" / 
 
 
 class CopyBuiltExtension(build_ext):
-    """Installs the extension the CMake build compiled, and libvoxc.so.0 beside it."""
+    """Installs the extension the CMake build compiled, and libvoxc.so.0 and libvoxc-openvdb.so beside it."""
 
     def build_extension(self, ext):
         target = Path(self.get_ext_fullpath(ext.name))
@@ -42,7 +42,8 @@ class CopyBuiltExtension(build_ext):
             raise SystemExit(f"voxc: {built} is older than {stale[0]}; build voxc again (cmake --build build)")
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copy2(built, target)
-        shutil.copy2(built_package / "libvoxc.so.0", target.parent / "libvoxc.so.0")  # the symlink's file
+        for library in ("libvoxc.so.0", "libvoxc-openvdb.so"):  # the symlinks' files
+            shutil.copy2(built_package / library, target.parent / library)
 
 
 setup(

@@ -16,6 +16,10 @@ trap 'rm -rf "$work"' EXIT
 prefix=$work/prefix
 expect install 0 "" -- cmake --install "$build" --prefix "$prefix"
 expect installed_voxc 0 "voxc 0.1.0" -- "$prefix/bin/voxc" --version
+# OpenVDB comes in with the module installed beside voxc's libraries, loaded by a mesh input's check
+# (voxc/vdb/Vdb.h), from the prefix and not from the build.
+expect installed_openvdb_module 0 "calling init: $prefix/lib[^ ]*/voxc/libvoxc-openvdb\.so" -- \
+    env LD_DEBUG=libs "$prefix/bin/voxc" check "$src/examples/boulders.vox"
 
 # A project that builds a ruleset: compiled once, then only when the .vox or its rule file changes.
 cp -r "$src/tests/pipeline/project" "$work/proj"
@@ -68,6 +72,8 @@ if [ "$with_libvoxc" = 1 ]; then
     expect embed_interpreter 0 "mesh: $counts" -- "$work/embed/embed" "$src/examples/overhang.vox" interpreter
     expect embed_materials 0 "  (sand|grass|dirt|bedrock|sandstone): [0-9]+ triangles" -- "$work/embed/embed" "$src/examples/scene.vox" interpreter
     expect embed_error_message 1 "nope.vox: error E0100" -- "$work/embed/embed" "$work/nope.vox"
+    expect embed_openvdb_module 0 "calling init: $prefix/lib[^ ]*/voxc/libvoxc-openvdb\.so" -- \
+        env LD_DEBUG=libs "$work/embed/embed" "$src/examples/boulders.vox" interpreter
     expect embed_cmake_configure 0 "" -- cmake -S "$work/embed" -B "$work/embed/build" -G Ninja -DCMAKE_PREFIX_PATH="$prefix"
     expect embed_cmake_build 0 "" -- cmake --build "$work/embed/build"
     expect embed_cmake_runs 0 "grid 32x16x32 at 0,0,0: 8192 of 16384 voxels solid" -- "$work/embed/build/embed" "$src/tests/pipeline/project/world.vox" interpreter

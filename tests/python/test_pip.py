@@ -26,6 +26,7 @@ def test_venv_install_with_pip(tmp):
     extension = next(site.glob("_native*.so"))
     assert filecmp.cmp(extension, os.path.join(built, extension.name), shallow=False), "the build's extension, copied"
     assert not (site / "libvoxc.so.0").is_symlink()
+    assert (site / "libvoxc-openvdb.so").is_file() and not (site / "libvoxc-openvdb.so").is_symlink()
 
     # As docs/python.md tells a user: activate, then python3 is the environment's.
     script = (

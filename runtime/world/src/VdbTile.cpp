@@ -2,15 +2,11 @@
 
 #include "voxc/core/Errors.h"
 #include "voxc/core/Sha256.h"
+#include "voxc/vdb/Vdb.h"
 
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
-#include <mutex>
-#include <openvdb/io/Stream.h>
-#include <openvdb/openvdb.h>
-#include <openvdb/tools/Prune.h>
-#include <sstream>
 
 namespace voxc::world {
 
@@ -34,68 +30,27 @@ void setUuidFromContents(std::string& bytes) {
     bytes.replace(kUuidOffset, kUuidLength, name);
 }
 
-void initialiseOnce() {
-    static std::once_flag once;
-    std::call_once(once, [] { openvdb::initialize(); });
-}
-
 } // namespace
 
 std::string tileVdbBytes(const DenseGrid& grid, glm::ivec3 worldMin) {
-    initialiseOnce();
-    // Densities are in [0, 1] with 0 (air) outside: a fog volume in OpenVDB's terms. Material ids
-    // are stored as floats (0..255 exactly) because float grids are what every reader opens:
-    // pyopenvdb's readAll fails on an Int32 grid, and Houdini and Blender import float grids.
-    openvdb::FloatGrid::Ptr density = openvdb::FloatGrid::create(0.0f);
-    openvdb::FloatGrid::Ptr material = openvdb::FloatGrid::create(0.0f);
-    density->setName("density");
-    density->setGridClass(openvdb::GRID_FOG_VOLUME);
-    material->setName("material");
-    auto densities = density->getAccessor();
-    auto materials = material->getAccessor();
-    const glm::ivec3 size = grid.size();
-    for (int32_t z = 0; z < size.z; ++z)
-        for (int32_t y = 0; y < size.y; ++y)
-            for (int32_t x = 0; x < size.x; ++x) {
-                const openvdb::Coord at(worldMin.x + x, worldMin.y + y, worldMin.z + z);
-                const float d = grid.at({x, y, z});
-                if (d != 0.0f) densities.setValue(at, d);
-                if (const uint8_t m = grid.materialAt({x, y, z})) materials.setValue(at, float(m));
-            }
-    openvdb::tools::prune(density->tree());
-    openvdb::tools::prune(material->tree());
-    openvdb::GridPtrVec grids{density, material};
-    std::ostringstream out(std::ios::binary);
-    openvdb::io::Stream(out).write(grids);
-    std::string bytes = std::move(out).str();
+    std::string bytes = vdb::tileFileBytes(grid.data().data(), grid.materials().data(), grid.size(), worldMin);
     setUuidFromContents(bytes);
     return bytes;
 }
 
 DenseGrid readTileVdb(const std::string& path, glm::ivec3 worldMin, glm::ivec3 size) {
-    initialiseOnce();
-    openvdb::io::File file(path);
-    try {
-        file.open();
-    } catch (const openvdb::Exception& error) {
-        throw UserError(fmt::format("cannot read '{}': {}", path, error.what()));
-    }
-    const auto density = openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid("density"));
-    const auto material = openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid("material"));
-    if (!density || !material) throw UserError(fmt::format("'{}' is not a voxc tile (no float density and material grids)", path));
-    auto densities = density->getConstAccessor();
-    auto materials = material->getConstAccessor();
+    const vdb::TileValues values = vdb::readTileFile(path, worldMin, size);
     DenseGrid grid(size);
-    for (int32_t z = 0; z < size.z; ++z)
-        for (int32_t y = 0; y < size.y; ++y)
-            for (int32_t x = 0; x < size.x; ++x) {
-                const openvdb::Coord at(worldMin.x + x, worldMin.y + y, worldMin.z + z);
-                grid.at({x, y, z}) = densities.getValue(at);
-                const float m = materials.getValue(at);
-                if (!(m >= 0.0f && m <= 255.0f && m == std::floor(m)))
-                    throw UserError(fmt::format("'{}' holds material {} at ({}, {}, {}), not an id 0..255", path, m, at.x(), at.y(), at.z()));
-                grid.materialAt({x, y, z}) = uint8_t(m);
-            }
+    grid.data() = values.density;
+    for (size_t i = 0; i < values.material.size(); ++i) {
+        const float m = values.material[i];
+        if (!(m >= 0.0f && m <= 255.0f && m == std::floor(m))) {
+            const glm::ivec3 at = worldMin + glm::ivec3(int32_t(i % size_t(size.x)), int32_t(i / size_t(size.x) % size_t(size.y)),
+                                                        int32_t(i / (size_t(size.x) * size_t(size.y))));
+            throw UserError(fmt::format("'{}' holds material {} at ({}, {}, {}), not an id 0..255", path, m, at.x, at.y, at.z));
+        }
+        grid.materials()[i] = uint8_t(m);
+    }
     return grid;
 }
 

@@ -1,18 +1,17 @@
 #include "voxc/generators/inputs/MeshDistance.h"
 
+#include "voxc/vdb/Vdb.h"
+
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/ext/vector_int3_sized.hpp>
 #include <glm/vector_relational.hpp>
 #include <glm/mat4x4.hpp>
-#include <openvdb/openvdb.h>
-#include <openvdb/tools/MeshToVolume.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
-#include <mutex>
 #include <unordered_map>
 
 namespace voxc::inputs {
@@ -65,7 +64,7 @@ struct CellHash {
 // whose boxes overlap tested in the one cell that holds the overlap's lowest corner. Bounded: at
 // most 32 cell entries per triangle and 64 pair tests per triangle (plus 10^6); past either the
 // search stops and what it found so far is reported.
-void findCrossings(const std::vector<glm::dvec3>& p, const std::vector<openvdb::Vec3I>& triangles,
+void findCrossings(const std::vector<glm::dvec3>& p, const std::vector<glm::uvec3>& triangles,
                    const std::vector<uint32_t>& id, DistanceGrid& grid) {
     const size_t n = triangles.size();
     if (n < 2) return;
@@ -98,7 +97,7 @@ void findCrossings(const std::vector<glm::dvec3>& p, const std::vector<openvdb::
                 const uint32_t i = members[x], j = members[y];
                 if (glm::any(glm::lessThan(hi[i], lo[j])) || glm::any(glm::lessThan(hi[j], lo[i]))) continue;
                 if (cellOf(glm::max(lo[i], lo[j])) != at) continue; // tested in another cell
-                const openvdb::Vec3I &t = triangles[i], &u = triangles[j];
+                const glm::uvec3 &t = triangles[i], &u = triangles[j];
                 bool shared = false;
                 for (int k = 0; k < 3; ++k)
                     for (int m = 0; m < 3; ++m) shared = shared || id[t[k]] == id[u[m]];
@@ -113,12 +112,12 @@ void findCrossings(const std::vector<glm::dvec3>& p, const std::vector<openvdb::
 // Edges after welding equal positions: how many border one triangle, and more than two; and the
 // closed parts (pieces joined through shared vertices, every edge of them bordering exactly two
 // triangles) that enclose a negative volume and lie in no positive one's box: inside out.
-void surveyTopology(const std::vector<openvdb::Vec3s>& points, const std::vector<openvdb::Vec3I>& triangles,
+void surveyTopology(const std::vector<glm::vec3>& points, const std::vector<glm::uvec3>& triangles,
                     DistanceGrid& grid) {
     std::map<std::array<float, 3>, uint32_t> welded;
     std::vector<uint32_t> id(points.size());
     for (size_t i = 0; i < points.size(); ++i)
-        id[i] = welded.emplace(std::array<float, 3>{points[i].x(), points[i].y(), points[i].z()}, uint32_t(welded.size()))
+        id[i] = welded.emplace(std::array<float, 3>{points[i].x, points[i].y, points[i].z}, uint32_t(welded.size()))
                     .first->second;
     // Parts: a union-find over the welded vertices.
     std::vector<uint32_t> parent(welded.size());
@@ -128,7 +127,7 @@ void surveyTopology(const std::vector<openvdb::Vec3s>& points, const std::vector
         return v;
     };
     std::map<std::pair<uint32_t, uint32_t>, uint32_t> uses;
-    for (const openvdb::Vec3I& t : triangles)
+    for (const glm::uvec3& t : triangles)
         for (int k = 0; k < 3; ++k) {
             uint32_t a = id[t[k]], b = id[t[(k + 1) % 3]];
             parent[root(a)] = root(b);
@@ -148,8 +147,8 @@ void surveyTopology(const std::vector<openvdb::Vec3s>& points, const std::vector
         if (count != 2) parts[root(edge.first)].closed = false;
     }
     std::vector<glm::dvec3> exact(points.size());
-    for (size_t i = 0; i < points.size(); ++i) exact[i] = glm::dvec3(points[i].x(), points[i].y(), points[i].z());
-    for (const openvdb::Vec3I& t : triangles) {
+    for (size_t i = 0; i < points.size(); ++i) exact[i] = glm::dvec3(points[i]);
+    for (const glm::uvec3& t : triangles) {
         Part& part = parts[root(id[t[0]])];
         const glm::dvec3 p[3] = {exact[t[0]], exact[t[1]], exact[t[2]]};
         for (const glm::dvec3& corner : p) part.lo = glm::min(part.lo, corner), part.hi = glm::max(part.hi, corner);
@@ -190,14 +189,12 @@ std::vector<glm::dvec3> placePoints(const TriangleMesh& mesh, const MeshTransfor
 }
 
 DistanceGrid meshDistances(const TriangleMesh& mesh, const MeshTransform& transform, float band, const Limits& limits) {
-    static std::once_flag initialised;
-    std::call_once(initialised, [] { openvdb::initialize(); });
-    std::vector<openvdb::Vec3s> points;
+    std::vector<glm::vec3> points;
     points.reserve(mesh.points.size());
     glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
     for (const glm::dvec3& p : placePoints(mesh, transform)) {
         lo = glm::min(lo, p), hi = glm::max(hi, p);
-        points.emplace_back(float(p.x), float(p.y), float(p.z));
+        points.emplace_back(p);
     }
     DistanceGrid grid;
     grid.band = band;
@@ -210,23 +207,9 @@ DistanceGrid meshDistances(const TriangleMesh& mesh, const MeshTransform& transf
         throw InputError("E0012", fmt::format("the mesh's signed-distance grid would be {} x {} x {} voxels ({} cells), "
                                               "more than the limit of {}; scale it down",
                                               grid.size.x, grid.size.y, grid.size.z, cells, limits.maxDistanceCells));
-    std::vector<openvdb::Vec3I> triangles;
-    triangles.reserve(mesh.triangles.size());
-    for (const glm::uvec3& t : mesh.triangles) triangles.emplace_back(t.x, t.y, t.z);
-    surveyTopology(points, triangles, grid);
-    // Index space = world voxels: voxel (i, j, k) of the VDB grid is world voxel (i, j, k).
-    const openvdb::math::Transform::Ptr identity = openvdb::math::Transform::createLinearTransform(1.0);
-    const openvdb::tools::QuadAndTriangleDataAdapter<openvdb::Vec3s, openvdb::Vec3I> adapter(points, triangles);
-    const openvdb::FloatGrid::Ptr vdb = openvdb::tools::meshToVolume<openvdb::FloatGrid>(adapter, *identity, band, band);
-    const openvdb::FloatGrid::ConstAccessor accessor = vdb->getConstAccessor();
-    grid.values.resize(size_t(cells));
-    size_t at = 0;
-    for (int32_t z = 0; z < grid.size.z; ++z)
-        for (int32_t y = 0; y < grid.size.y; ++y)
-            for (int32_t x = 0; x < grid.size.x; ++x, ++at) {
-                const float v = accessor.getValue(openvdb::Coord(grid.min.x + x, grid.min.y + y, grid.min.z + z));
-                grid.values[at] = std::clamp(v, -band, band);
-            }
+    surveyTopology(points, mesh.triangles, grid);
+    grid.values = vdb::meshSignedDistances(points, mesh.triangles, band, grid.min, grid.size);
+    for (float& v : grid.values) v = std::clamp(v, -band, band);
     return grid;
 }
 
