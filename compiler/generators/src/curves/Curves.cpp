@@ -50,10 +50,13 @@ Result solve(const Constraints& cs, Constraints* owned, const Options& options, 
     // solve's fresh memory (its peak heap) is most of its page faults (HeapReuse.h).
     Result r;
 
-    // A solve's Dirichlet mask.
+    // A solve's Dirichlet mask (pointwise: two threads, a slab of slices each).
     auto maskOf = [&](uint8_t flag) {
         std::vector<uint8_t> fixed(b.cellCount());
-        for (size_t i = 0; i < fixed.size(); ++i) fixed[i] = (cs.flags[i] & flag) ? 1 : 0;
+        const size_t slice = size_t(b.size.x) * size_t(b.size.y);
+        forTwoSlabs(b.size.z, 2, [&](int32_t z0, int32_t z1) {
+            for (size_t i = size_t(z0) * slice; i < size_t(z1) * slice; ++i) fixed[i] = (cs.flags[i] & flag) ? 1 : 0;
+        });
         return fixed;
     };
     if (options.normals == NormalMode::Laplace) {
@@ -101,9 +104,15 @@ Result solve(const Constraints& cs, Constraints* owned, const Options& options, 
     // beside the normals) is two fields smaller.
     timed(r.phaseMs, "parameters", [&] {
         const std::vector<uint8_t> fixed = maskOf(kInParams);
-        float maxAmplitude = 1.0f;
-        for (size_t i = 0; i < fixed.size(); ++i)
-            if (fixed[i]) maxAmplitude = std::max(maxAmplitude, cs.amplitude.values[i]);
+        // A max does not depend on the order: two threads give the same value.
+        float slabMax[2] = {1.0f, 1.0f};
+        const size_t slice = size_t(b.size.x) * size_t(b.size.y);
+        forTwoSlabs(b.size.z, 2, [&](int32_t z0, int32_t z1) {
+            float& m = slabMax[z0 == 0 ? 0 : 1];
+            for (size_t i = size_t(z0) * slice; i < size_t(z1) * slice; ++i)
+                if (fixed[i]) m = std::max(m, cs.amplitude.values[i]);
+        });
+        const float maxAmplitude = std::max(slabMax[0], slabMax[1]);
         r.amplitude = owned ? std::move(owned->amplitude) : cs.amplitude;
         r.roughness = owned ? std::move(owned->roughness) : cs.roughness;
         r.solves.push_back(linear("parameters", fixed, {&r.amplitude, &r.roughness}, kSolveTolerance * maxAmplitude, limits));

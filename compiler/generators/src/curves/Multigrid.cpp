@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <span>
 
 namespace voxc::curves {
 namespace {
@@ -23,7 +24,8 @@ namespace {
 struct Level {
     Box box;
     glm::vec3 weight{1.0f};
-    std::vector<uint8_t> fixed;
+    // The Dirichlet mask: the caller's at the finest level (not copied), coarserMasks' below.
+    std::span<const uint8_t> fixed;
     std::vector<std::vector<float>> u, f; // per component: unknowns (or corrections) and right-hand side
     // Per component: the coarser level's correction interpolated along x (Prolongation::prepare),
     // kept between V-cycles so its pages are touched once per solve.
@@ -101,13 +103,17 @@ void relaxRow(const float* __restrict centre, const float* __restrict ym, const 
 }
 
 // u[x] = relaxed[x] for x in [1, n - 1) where the cell is free and (x + parity) is even (the
-// half sweep's colour in a row of that parity); a branch-free select, so it vectorises. (Masks
+// half sweep's colour in a row of that parity); a branch-free select, so it vectorises, with
+// relaxed read at every cell (read on one side of the select only, it took masked loads). (Masks
 // of the cells to keep, per level and parity, cost as much to read and 2 bytes per cell of fresh
 // memory.)
 VOXC_ROW_KERNEL
 void storeRelaxed(const float* __restrict relaxed, const uint8_t* __restrict fixed, int32_t parity, int32_t n,
                   float* __restrict u) {
-    for (int32_t x = 1; x + 1 < n; ++x) u[x] = (fixed[x] | ((x + parity) & 1)) ? u[x] : relaxed[x];
+    for (int32_t x = 1; x + 1 < n; ++x) {
+        const float next = relaxed[x];
+        u[x] = (fixed[x] | ((x + parity) & 1)) ? u[x] : next;
+    }
 }
 
 // Red-black over-relaxed Gauss-Seidel half sweep of colour `colour` on row (y, z) of component
@@ -596,14 +602,17 @@ std::vector<MultigridLevel> multigridLevels(glm::ivec3 size) {
     return levels;
 }
 
-std::vector<std::vector<uint8_t>> multigridMasks(const std::vector<MultigridLevel>& levels,
-                                                 const std::vector<uint8_t>& fixed) {
-    std::vector<std::vector<uint8_t>> masks{fixed};
+namespace {
+
+// multigridMasks without the finest level's (`fixed` itself): masks[l - 1] is level l's.
+std::vector<std::vector<uint8_t>> coarserMasks(const std::vector<MultigridLevel>& levels,
+                                               const std::vector<uint8_t>& fixed) {
+    std::vector<std::vector<uint8_t>> masks;
     for (size_t l = 1; l < levels.size(); ++l) {
         const Box fine{glm::ivec3(0), levels[l - 1].size}, coarse{glm::ivec3(0), levels[l].size};
         const glm::ivec3 halved = levels[l - 1].halved;
         std::vector<uint8_t> mask(coarse.cellCount());
-        const std::vector<uint8_t>& finer = masks.back();
+        const std::vector<uint8_t>& finer = masks.empty() ? fixed : masks.back();
         // A coarse cell is fixed where any child is; coarse slices are independent.
         forTwoSlabs(coarse.size.z, minSlicesForThreads(fine.cellCount()), [&](int32_t z0, int32_t z1) {
             for (int32_t pz = z0; pz < z1; ++pz)
@@ -618,6 +627,15 @@ std::vector<std::vector<uint8_t>> multigridMasks(const std::vector<MultigridLeve
         });
         masks.push_back(std::move(mask));
     }
+    return masks;
+}
+
+} // namespace
+
+std::vector<std::vector<uint8_t>> multigridMasks(const std::vector<MultigridLevel>& levels,
+                                                 const std::vector<uint8_t>& fixed) {
+    std::vector<std::vector<uint8_t>> masks{fixed};
+    for (std::vector<uint8_t>& mask : coarserMasks(levels, fixed)) masks.push_back(std::move(mask));
     return masks;
 }
 
@@ -641,10 +659,11 @@ SolveReport solveLaplaceUntilStopped(const std::string& name, const std::vector<
             throw InternalError("curves: the components and mask of a linear solve differ in size");
     const Box box{glm::ivec3(0), components.front()->box.size};
     const std::vector<MultigridLevel> shapes = multigridLevels(box.size);
-    std::vector<std::vector<uint8_t>> masks = multigridMasks(shapes, fixed);
+    const std::vector<std::vector<uint8_t>> masks = coarserMasks(shapes, fixed);
     std::vector<Level> levels;
     for (size_t l = 0; l < shapes.size(); ++l)
-        levels.push_back(Level{Box{glm::ivec3(0), shapes[l].size}, shapes[l].weight, std::move(masks[l]), {}, {}, {}});
+        levels.push_back(Level{Box{glm::ivec3(0), shapes[l].size}, shapes[l].weight,
+                               l == 0 ? std::span<const uint8_t>(fixed) : std::span<const uint8_t>(masks[l - 1]), {}, {}, {}});
     for (Level& level : levels) level.alongX.resize(components.size());
 
     // The finest unknowns go back into the components however the solve ends (a ConvergenceError
