@@ -64,7 +64,10 @@ int32_t minSlicesForThreads(uint64_t cells) { return cells >= kMinCellsForThread
 // AVX-512 and AVX2 clones where the CPU has them: elementwise IEEE +, x, / give the same bits at
 // every width, and the build has -ffp-contract=off (no FMA changes a rounding). The AVX-512 clone
 // took 0.77-0.96x the row kernels' CPU samples of the AVX2 one at 256x128x256 (load 8.7-9.3).
-#define VOXC_ROW_KERNEL __attribute__((target_clones("avx512f", "avx2", "default")))
+// It is x86-64-v4's (AVX-512 F, BW, DQ, VL, CD), not AVX512F's alone: byte masks and 32-bit
+// lanes convert and compare in mask registers, which cut the multigrid's samples by about 7%
+// (storeRelaxed about 15%).
+#define VOXC_ROW_KERNEL __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
 #else
 #define VOXC_ROW_KERNEL
 #endif
