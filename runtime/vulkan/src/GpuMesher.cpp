@@ -16,7 +16,11 @@
 #include <bit>
 #include <cstring>
 #include <functional>
-#include <future>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <utility>
 #include <vector>
 
 namespace voxc {
@@ -241,19 +245,87 @@ CellTotals listCells(const uint32_t* cases, const TileLists& lists, size_t begin
     return {vertices, triangles};
 }
 
-// Runs work(i) for i in [0, count) on this thread and one more, each taking the next i in turn,
-// so that a helper thread that starts late (the scheduler lets a new thread wait while another
-// process holds the second core) takes fewer and never holds this one up.
-void onTwoThreads(size_t count, const std::function<void(size_t)>& work) {
-    if (count == 1) return work(0);
-    std::atomic<size_t> next{0};
-    auto run = [&] {
-        for (size_t i = next++; i < count; i = next++) work(i);
-    };
-    std::future<void> helper = std::async(std::launch::async, run);
-    run();
-    helper.get();
-}
+// A second thread for the host's steps between and after the passes, started once: a thread
+// started for each step begins late while another process holds the second core (the scheduler
+// lets a new thread wait its turn), and waiting for it to begin cost up to 3 ms a step at load 2.
+class HelperThread {
+public:
+    HelperThread() : thread_([this] { loop(); }) {}
+    HelperThread(const HelperThread&) = delete;
+    HelperThread& operator=(const HelperThread&) = delete;
+    ~HelperThread() {
+        {
+            std::lock_guard lock(mutex_);
+            stop_ = true;
+        }
+        wake_.notify_one();
+        thread_.join();
+    }
+
+    // Runs work(i) for i in [0, count) on the calling thread and the helper, each taking the next
+    // i in turn. Once the caller runs out, it takes the job back where the helper has not woken
+    // yet, and otherwise waits only for the piece the helper holds.
+    void share(size_t count, const std::function<void(size_t)>& work) {
+        std::atomic<size_t> next{0};
+        auto run = [&] {
+            for (size_t i = next++; i < count; i = next++) work(i);
+        };
+        if (count > 1) {
+            std::lock_guard lock(mutex_);
+            job_ = [&] {
+                try {
+                    run();
+                } catch (...) {
+                    next = count;
+                    throw;
+                }
+            };
+        }
+        wake_.notify_one();
+        std::exception_ptr failure;
+        try {
+            run();
+        } catch (...) {
+            next = count;
+            failure = std::current_exception();
+        }
+        std::unique_lock lock(mutex_);
+        job_ = nullptr; // not taken: the helper never starts it
+        done_.wait(lock, [&] { return !busy_; });
+        if (!failure) failure = std::exchange(helperFailure_, nullptr);
+        helperFailure_ = nullptr;
+        if (failure) std::rethrow_exception(failure);
+    }
+
+private:
+    void loop() {
+        std::unique_lock lock(mutex_);
+        for (;;) {
+            wake_.wait(lock, [&] { return stop_ || job_; });
+            if (stop_) return;
+            const std::function<void()> job = std::exchange(job_, nullptr);
+            busy_ = true;
+            lock.unlock();
+            std::exception_ptr failure;
+            try {
+                job();
+            } catch (...) {
+                failure = std::current_exception();
+            }
+            lock.lock();
+            helperFailure_ = failure;
+            busy_ = false;
+            done_.notify_all();
+        }
+    }
+
+    std::mutex mutex_;
+    std::condition_variable wake_, done_;
+    std::function<void()> job_; // set while a share() call offers its pieces
+    bool busy_ = false, stop_ = false;
+    std::exception_ptr helperFailure_;
+    std::thread thread_; // last: it starts once the members above exist
+};
 
 // listCells' lists over one piece of the segments, numbered from 0 within the piece.
 struct CellPiece {
@@ -263,21 +335,25 @@ struct CellPiece {
     size_t firstActiveWord = 0; // the words of their active cells
 };
 
+// Vertices or triangles per piece of the copy out of the device's buffers.
+constexpr uint32_t kCopyPiece = 1u << 16;
+
 // Segments per piece of listCellsInPieces: a few pieces a 256^3 grid, one for a small grid.
 constexpr size_t kSegmentsPerPiece = size_t(1) << 14;
 
-// listCells over every segment, on two threads, in pieces of consecutive segments: each piece's
-// lists and owners' words (in `cellInfo`) are numbered from 0; then each piece's lists go to
-// their place in the mapped `activeCells` and `vertexEdges` (`place`, given the totals, returns
-// those buffers' words) with its first vertices and triangles moved past the pieces before. The
-// result is listCells' over all the segments at once. The device waits for these lists, so the
-// host's second core is otherwise idle (at 256^3 they took 2.5 ms on one thread).
-CellTotals listCellsInPieces(const uint32_t* cases, const TileLists& lists, glm::ivec3 tileFirst, glm::ivec3 n,
-                             const ChunkLayout& layout, uint32_t* cellInfo, std::vector<CellPiece>& pieces,
+// listCells over every segment, on this thread and the helper, in pieces of consecutive
+// segments: each piece's lists and owners' words (in `cellInfo`) are numbered from 0; then each
+// piece's lists go to their place in the mapped `activeCells` and `vertexEdges` (`place`, given
+// the totals, returns those buffers' words) with its first vertices and triangles moved past the
+// pieces before. The result is listCells' over all the segments at once. The device waits for
+// these lists, so the host's second core is otherwise idle (at 256^3 they took 2.5 ms on one
+// thread).
+CellTotals listCellsInPieces(HelperThread& helper, const uint32_t* cases, const TileLists& lists, glm::ivec3 tileFirst,
+                             glm::ivec3 n, const ChunkLayout& layout, uint32_t* cellInfo, std::vector<CellPiece>& pieces,
                              const std::function<std::pair<uint32_t*, uint32_t*>(size_t activeWords, CellTotals)>& place) {
     const size_t count = lists.segments.size(), pieceCount = std::max<size_t>(1, count / kSegmentsPerPiece);
     pieces.resize(pieceCount);
-    onTwoThreads(pieceCount, [&](size_t p) {
+    helper.share(pieceCount, [&](size_t p) {
         CellPiece& piece = pieces[p];
         piece.totals = listCells(cases, lists, count * p / pieceCount, count * (p + 1) / pieceCount, tileFirst, n, layout, cellInfo,
                                  piece.activeCells, piece.vertexEdges);
@@ -292,7 +368,7 @@ CellTotals listCellsInPieces(const uint32_t* cases, const TileLists& lists, glm:
         activeWords += piece.activeCells.size();
     }
     const auto [activeOut, vertexOut] = place(activeWords, all);
-    onTwoThreads(pieceCount, [&](size_t p) {
+    helper.share(pieceCount, [&](size_t p) {
         const CellPiece& piece = pieces[p];
         const uint32_t firstVertex = uint32_t(piece.first.vertices), firstTriangle = uint32_t(piece.first.triangles);
         std::memcpy(vertexOut + piece.first.vertices, piece.vertexEdges.data(), piece.vertexEdges.size() * sizeof(uint32_t));
@@ -326,6 +402,7 @@ struct GpuMarchingCubes::Impl {
     DeviceBuffer caseTable, tileStates, unknownTiles, activeTiles, segments, segmentCases, cellInfo, activeCells, vertexEdges,
         vertices, triangles, results;
     std::vector<CellPiece> cellPieces; // listCellsInPieces' lists, kept so that a repeated call reuses their memory
+    HelperThread helper;               // the host's second thread for its steps
     // At the texel bindings: views of the executor's buffers and of these (bindAll).
     std::array<VkBufferView, kMcBindingCount> texelViews{};
     VkCommandPool commandPool = VK_NULL_HANDLE;
@@ -604,7 +681,7 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     bool replaced = false;
     size_t activeWords = 0;
     const CellTotals cells = listCellsInPieces(
-        static_cast<const uint32_t*>(caseSource->mapped), lists, s.tileFirst, s.tileCount, s.layout,
+        s.helper, static_cast<const uint32_t*>(caseSource->mapped), lists, s.tileFirst, s.tileCount, s.layout,
         static_cast<uint32_t*>(s.cellInfo.mapped), s.cellPieces, [&](size_t words, CellTotals totals) {
             const uint64_t maxTriangles = s.ctx.properties.limits.maxTexelBufferElements;
             const uint64_t maxVertices = std::min<uint64_t>(maxTriangles / 2, (uint64_t(1) << 29) - 1);
@@ -655,37 +732,43 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
         triangleWords = vertexWords + vertexBytes / sizeof(uint32_t);
     }
 
-    // The triangles on a second thread while this one takes the vertices: two streams of about
-    // the same size, each a few milliseconds at 256^3.
+    // The mesh out of the device's buffers on this thread and the helper, in pieces of vertices,
+    // then of triangles (a few milliseconds at 256^3).
+    mesh.positions.resize(vertexCount);
+    mesh.normals.resize(vertexCount);
+    mesh.vertexMaterials.resize(vertexCount);
     mesh.triangles.resize(size_t(triangleCount) * 3);
     mesh.triangleMaterials.resize(triangleCount);
-    std::future<bool> trianglesInRange = std::async(std::launch::async, [&] {
-        bool inRange = true;
-        for (size_t t = 0; t < triangleCount; ++t) {
+    auto vec3At = [&](size_t w) {
+        glm::vec3 v;
+        std::memcpy(&v, &vertexWords[w], sizeof v);
+        return v;
+    };
+    const size_t vertexPieces = groupsOf(vertexCount, kCopyPiece), trianglePieces = groupsOf(triangleCount, kCopyPiece);
+    std::atomic<bool> inRange{true};
+    s.helper.share(vertexPieces + trianglePieces, [&](size_t piece) {
+        if (piece < vertexPieces) {
+            for (size_t v = piece * kCopyPiece; v < std::min<size_t>(vertexCount, (piece + 1) * kCopyPiece); ++v) {
+                const size_t w = v * kVertexWords;
+                mesh.positions[v] = vec3At(w);
+                mesh.normals[v] = vec3At(w + 3);
+                mesh.vertexMaterials[v] = uint8_t(vertexWords[w + 6]);
+            }
+            return;
+        }
+        piece -= vertexPieces;
+        bool pieceInRange = true;
+        for (size_t t = piece * kCopyPiece; t < std::min<size_t>(triangleCount, (piece + 1) * kCopyPiece); ++t) {
             for (size_t k = 0; k < 3; ++k) {
                 const uint32_t index = triangleWords[t * kTriangleWords + k];
-                inRange &= index < vertexCount;
+                pieceInRange &= index < vertexCount;
                 mesh.triangles[t * 3 + k] = index;
             }
             mesh.triangleMaterials[t] = uint8_t(triangleWords[t * kTriangleWords + 3]);
         }
-        return inRange;
+        if (!pieceInRange) inRange = false;
     });
-    auto floatAt = [&](size_t i) {
-        float f;
-        std::memcpy(&f, &vertexWords[i], sizeof f);
-        return f;
-    };
-    mesh.positions.resize(vertexCount);
-    mesh.normals.resize(vertexCount);
-    mesh.vertexMaterials.resize(vertexCount);
-    for (size_t v = 0; v < vertexCount; ++v) {
-        const size_t w = v * kVertexWords;
-        mesh.positions[v] = {floatAt(w), floatAt(w + 1), floatAt(w + 2)};
-        mesh.normals[v] = {floatAt(w + 3), floatAt(w + 4), floatAt(w + 5)};
-        mesh.vertexMaterials[v] = uint8_t(vertexWords[w + 6]);
-    }
-    if (!trianglesInRange.get()) throw InternalError("GPU marching cubes: a triangle names a vertex past the counted ones");
+    if (!inRange) throw InternalError("GPU marching cubes: a triangle names a vertex past the counted ones");
     // The host mesher's last step, on the host: the same function of the same mesh.
     orientNormalsToFaces(mesh);
     return mesh;
