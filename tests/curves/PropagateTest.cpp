@@ -130,6 +130,11 @@ TEST(CurvesPropagate, BookkeepingMatchesAnIndependentRecomputation) {
     expectBookkeeping(Box{glm::ivec3(20, 10, 0), glm::ivec3(3, 8, 300)});
 }
 
+// Slices of more than 2^15 cells: the fronts list their cells in 32 bits (FrontOrder), not 16.
+TEST(CurvesPropagate, BookkeepingWithWideSlices) {
+    expectBookkeeping(Box{glm::ivec3(0, 0, 8), glm::ivec3(64, 520, 8)});
+}
+
 TEST(CurvesPropagate, UnreachableCellsAreAir) {
     Constraints cs(Box{glm::ivec3(0), glm::ivec3(4, 4, 4)});
     const Result r = solveCurves(cs, Options{}, Limits{});

@@ -9,6 +9,7 @@
 #include "voxc/core/Errors.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace voxc::curves {
 
@@ -45,6 +46,59 @@ inline bool setBefore(const std::vector<FrontLayer>& layer, size_t k, int32_t l)
 // The fronts value the cells in bands of this many slices (growLayers).
 inline constexpr int32_t kBandSlices = 8;
 
+// growLayers' scratch, one entry per cell: the cell's offset in its group of slices (growLayers),
+// in 16 bits where a slice holds at most kNarrowOrderSliceCells cells, else 32. A group holds one
+// slice, or more only where the layers outnumber a slice's cells (groupSlices * slice < layers + 1
+// + slice <= 16,384 + 32,768), so its offsets fit 16 bits: the fronts' largest scratch is half
+// the size (16 MiB each at 256x128x256), and is fresh memory the kernel clears (HeapReuse.h).
+struct FrontOrder {
+    static constexpr size_t kNarrowOrderSliceCells = size_t(1) << 15;
+    std::vector<uint16_t> narrow;
+    std::vector<uint32_t> wide;
+
+    static bool fitsNarrow(const Box& b) { return size_t(b.size.x) * size_t(b.size.y) <= kNarrowOrderSliceCells; }
+    void reserve(const Box& b) {
+        if (fitsNarrow(b)) narrow.reserve(b.cellCount());
+        else wide.reserve(b.cellCount());
+    }
+    void resize(const Box& b) {
+        if (fitsNarrow(b)) narrow.resize(b.cellCount());
+        else wide.resize(b.cellCount());
+    }
+};
+
+// growLayers' second half: lists the cells of each (layer, group) pair by a counting sort, each
+// as its offset in its group (an Index; the group's cells fit it), then values them band by band.
+template <typename Index, typename Value>
+void valueInBands(const Box& b, const std::vector<FrontLayer>& layer, int32_t layers, int32_t groupSlices,
+                  std::vector<Index>& order, Value& value) {
+    const int32_t nz = b.size.z;
+    const size_t slice = size_t(b.size.x) * size_t(b.size.y), groupCells = size_t(groupSlices) * slice;
+    if (groupCells - 1 > size_t(std::numeric_limits<Index>::max()))
+        throw InternalError("curves: a front's slice group past its order's index");
+    const int32_t groups = (nz + groupSlices - 1) / groupSlices;
+    std::vector<uint32_t> start(size_t(layers + 1) * size_t(groups) + 1, 0);
+    auto bucket = [&](size_t i, int32_t z) { return size_t(layer[i]) * size_t(groups) + size_t(z / groupSlices); };
+    for (int32_t z = 0; z < nz; ++z)
+        for (size_t i = size_t(z) * slice, end = i + slice; i < end; ++i) ++start[bucket(i, z) + 1];
+    for (size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
+    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+    for (int32_t z = 0; z < nz; ++z) {
+        const size_t group = size_t(z / groupSlices) * groupCells;
+        for (size_t i = size_t(z) * slice, end = i + slice; i < end; ++i) order[fill[bucket(i, z)]++] = Index(i - group);
+    }
+    // Bands of s = g + l over the layers after 0 (s from 1 to layers + groups - 1).
+    for (int32_t s0 = 1; s0 < layers + groups; s0 += kBandSlices)
+        for (int32_t l = std::max(1, s0 - groups + 1); l <= layers && l < s0 + kBandSlices; ++l)
+            for (int32_t g = std::max(0, s0 - l), g1 = std::min(groups, s0 + kBandSlices - l); g < g1; ++g) {
+                const size_t k = size_t(l) * size_t(groups) + size_t(g), group = size_t(g) * groupCells;
+                for (uint32_t c = start[k]; c != start[k + 1]; ++c) {
+                    const size_t i = group + order[c];
+                    value(i, coordinates(b, i), l);
+                }
+            }
+}
+
 // Grows BFS layers from the cells of layer 0 (layer[i] == 0; every other cell -1) and calls
 // `value(j, p, layer)` once for every other cell j (p its coordinates) to compute and store its
 // result. `value` must read only cells of earlier layers (0 <= layer[k] < the layer it is given)
@@ -55,13 +109,13 @@ inline constexpr int32_t kBandSlices = 8;
 // from the cell's by at most 1: a cell of layer l in slice z reads cells of layer l - 1 in slices
 // z - 1 .. z + 1, whose s = z + l - 1 + (-1, 0 or 1) is at most the cell's s = z + l. So the cells are valued in bands of
 // kBandSlices values of s, within a band layer by layer, within a layer slice by slice in index
-// order (a counting sort lists each (layer, slice) pair's cells): the cells of consecutive layers
+// order (a counting sort lists each (layer, slice) pair's cells in `order`): the cells of consecutive layers
 // a band visits lie next to each other, so the fronts read what the layer before left in cache
 // (valuing each whole layer in turn read its cells' neighbours from memory, as a layer spans the
-// box). `order` (one entry per cell) is sized by the caller. Single-threaded: the host runs its
+// box). `order` is sized by the caller (FrontOrder::resize). Single-threaded: the host runs its
 // two fronts side by side (Fronts.h). Returns the number of layers after 0.
 template <typename Value>
-int32_t growLayers(const Box& b, std::vector<FrontLayer>& layer, std::vector<uint32_t>& order, Value&& value) {
+int32_t growLayers(const Box& b, std::vector<FrontLayer>& layer, FrontOrder& order, Value&& value) {
     if (std::find(layer.begin(), layer.end(), FrontLayer(0)) == layer.end()) return 0; // no cell to grow from
     const int32_t nx = b.size.x, ny = b.size.y, nz = b.size.z;
     const size_t row = size_t(nx), slice = row * size_t(ny);
@@ -99,28 +153,14 @@ int32_t growLayers(const Box& b, std::vector<FrontLayer>& layer, std::vector<uin
         }
     });
     // The cells of layer l in slice group g (groupSlices slices each: 1 unless the (layer, slice)
-    // pairs outnumber the cells, as in a long thin box), in index order: start[k] .. start[k + 1]
-    // of `order`, k = l * groups + g. A face neighbour's group differs by at most 1 too.
+    // pairs outnumber the cells, as in a long thin box), in index order, are valued together. A
+    // face neighbour's group differs by at most 1 too.
     int32_t layers = 0;
     for (FrontLayer v : layer) layers = std::max<int32_t>(layers, v);
     const uint64_t pairs = uint64_t(layers + 1) * uint64_t(nz);
     const int32_t groupSlices = int32_t(std::max<uint64_t>(1, (pairs + b.cellCount() - 1) / b.cellCount()));
-    const int32_t groups = (nz + groupSlices - 1) / groupSlices;
-    std::vector<uint32_t> start(size_t(layers + 1) * size_t(groups) + 1, 0);
-    auto bucket = [&](size_t i, int32_t z) { return size_t(layer[i]) * size_t(groups) + size_t(z / groupSlices); };
-    for (int32_t z = 0; z < nz; ++z)
-        for (size_t i = size_t(z) * slice, end = i + slice; i < end; ++i) ++start[bucket(i, z) + 1];
-    for (size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
-    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-    for (int32_t z = 0; z < nz; ++z)
-        for (size_t i = size_t(z) * slice, end = i + slice; i < end; ++i) order[fill[bucket(i, z)]++] = uint32_t(i);
-    // Bands of s = g + l over the layers after 0 (s from 1 to layers + groups - 1).
-    for (int32_t s0 = 1; s0 < layers + groups; s0 += kBandSlices)
-        for (int32_t l = std::max(1, s0 - groups + 1); l <= layers && l < s0 + kBandSlices; ++l)
-            for (int32_t g = std::max(0, s0 - l), g1 = std::min(groups, s0 + kBandSlices - l); g < g1; ++g) {
-                const size_t k = size_t(l) * size_t(groups) + size_t(g);
-                for (uint32_t c = start[k]; c != start[k + 1]; ++c) value(size_t(order[c]), coordinates(b, order[c]), l);
-            }
+    if (FrontOrder::fitsNarrow(b)) valueInBands(b, layer, layers, groupSlices, order.narrow, value);
+    else valueInBands(b, layer, layers, groupSlices, order.wide, value);
     return layers;
 }
 

@@ -125,7 +125,7 @@ MaterialFront prepareMaterial(const Constraints& cs, std::vector<uint16_t>* cons
     front.field.confidence.values.reserve(cells);
     front.field.assigned.reserve(cells);
     front.layer.reserve(cells);
-    front.order.reserve(cells);
+    front.order.reserve(cs.box);
     return front;
 }
 
@@ -147,7 +147,7 @@ void growMaterial(const Constraints& cs, MaterialFront& front) {
     out.confidence.values.resize(cells, 0.0f);
     out.assigned.resize(cells, 0);
     front.layer.resize(cells, -1);
-    front.order.resize(cells);
+    front.order.resize(b);
     for (size_t i = 0; i < cells; ++i)
         if (cs.flags[i] & kInParams) {
             out.assigned[i] = 1, out.confidence.values[i] = 1.0f;

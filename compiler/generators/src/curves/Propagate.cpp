@@ -17,7 +17,7 @@ SurfaceFront prepareSurface(const Constraints& cs, Field3* constraintSurface) {
     if (constraintSurface) front.field.distance.values = std::move(constraintSurface->values);
     else front.field.distance.values.reserve(cells);
     front.field.layer.reserve(cells);
-    front.order.reserve(cells);
+    front.order.reserve(cs.box);
     return front;
 }
 
@@ -40,7 +40,7 @@ void growSurface(const Constraints& cs, const Field3& nx, const Field3& ny, cons
     const bool taken = out.distance.values.size() == cells;
     if (!taken) out.distance.values.resize(cells, kAir);
     out.layer.resize(cells, -1);
-    front.order.resize(cells);
+    front.order.resize(b);
     for (size_t i = 0; i < cells; ++i)
         if (cs.flags[i] & kInSurface) {
             out.layer[i] = 0;
