@@ -394,9 +394,11 @@ void prolong(const Box& coarse, const std::vector<float>& e, Level& fine, std::v
     });
 }
 
-// `sweeps` red-black sweeps of every component in one pass over the z slices (a wavefront):
-// step t runs half sweep h (colour h & 1) on slice t - h, h = 0 .. 2 sweeps - 1 in order. Half
-// sweep h of slice z reads the other colour of slices z - 1 .. z + 1 as half sweep h - 1 left
+// `sweeps` red-black sweeps of each component in one pass over the z slices (a wavefront), one
+// component after the other (the components are independent; a single component's slices in
+// flight stay nearer the core: about 0.94x the smoother's CPU samples of all components in one
+// pass at 256x128x256): step t runs half sweep h (colour h & 1) on slice t - h, h = 0 .. 2 sweeps
+// - 1 in order. Half sweep h of slice z reads the other colour of slices z - 1 .. z + 1 as half sweep h - 1 left
 // them: slice z + 1 got it earlier in the same step, slice z in the step before, slice z - 1 two
 // steps before, and half sweep h + 1 reaches none of them before h is done. So each cell takes
 // the value the plain sweep-by-sweep loop gives it, bit for bit, while a sweep's slices are still
@@ -439,48 +441,51 @@ void smooth(Level& level, int32_t sweeps, bool zeroRhs, const Correction* correc
     std::vector<float> scratch(4 * size_t(b.size.x), 0.0f);
     const bool threaded = b.cellCount() >= kMinCellsForThreads && b.size.z >= 4;
     float worst[2] = {0.0f, 0.0f};
-    auto measure = [&](int32_t z, float* residual, float& w) {
-        for (const std::vector<float>& u : level.u)
-            for (int32_t y = 0; y < b.size.y; ++y) {
-                residualRow(level, u, nullptr, y, z, residual);
-                w = maxAbs(residual, b.size.x, w);
-            }
+    auto measure = [&](const std::vector<float>& u, int32_t z, float* residual, float& w) {
+        for (int32_t y = 0; y < b.size.y; ++y) {
+            residualRow(level, u, nullptr, y, z, residual);
+            w = maxAbs(residual, b.size.x, w);
+        }
     };
+    // A component's stages on a middle slice: the correction, then the half sweeps.
+    const int32_t stages = lag + halfSweeps;
     auto run = [&](const Slab& slab, float* relaxed, float* residual, float& w) {
         const int32_t last = slab.count - 1;
         const bool meets = slab.other != nullptr;
-        // Before stage k of the middle slice (the correction, then the half sweeps), the other
-        // thread's middle slice must have done its stage k - 1.
-        auto waitFor = [&](int32_t stage) {
-            for (int32_t done = slab.other->load(std::memory_order_acquire); done < stage;
-                 done = slab.other->load(std::memory_order_acquire))
-                slab.other->wait(done, std::memory_order_acquire);
-        };
-        auto finished = [&](int32_t stage) {
-            slab.own->store(stage + 1, std::memory_order_release);
-            slab.own->notify_one();
-        };
         const int32_t steps = slab.count + halfSweeps - 1 + lag + (maxResidual ? 1 : 0);
-        for (int32_t t = 0; t < steps; ++t) {
-            if (correction && t < slab.count) {
-                for (size_t c = 0; c < level.u.size(); ++c)
+        for (size_t c = 0; c < level.u.size(); ++c) {
+            // Stage k of component c is stage c * stages + k of the counters: before it, the other
+            // thread's middle slice must have done the stage before (of this component, or the
+            // last of the one before, whose values this stage does not read).
+            const int32_t base = int32_t(c) * stages;
+            auto waitFor = [&](int32_t stage) {
+                for (int32_t done = slab.other->load(std::memory_order_acquire); done < base + stage;
+                     done = slab.other->load(std::memory_order_acquire))
+                    slab.other->wait(done, std::memory_order_acquire);
+            };
+            auto finished = [&](int32_t stage) {
+                slab.own->store(base + stage + 1, std::memory_order_release);
+                slab.own->notify_one();
+            };
+            for (int32_t t = 0; t < steps; ++t) {
+                if (correction && t < slab.count) {
                     for (int32_t y = 0; y < b.size.y; ++y)
                         correction->prolongation.row(level.alongX[c], level.u[c], true, y, slab.slice(t));
-                if (meets && t == last) finished(0);
-            }
-            for (int32_t h = 0; h < halfSweeps; ++h) {
-                const int32_t j = t - lag - h;
-                if (j < 0 || j > last) continue;
-                const bool middle = meets && j == last;
-                if (middle) waitFor(lag + h);
-                for (size_t c = 0; c < level.u.size(); ++c)
+                    if (meets && t == last) finished(0);
+                }
+                for (int32_t h = 0; h < halfSweeps; ++h) {
+                    const int32_t j = t - lag - h;
+                    if (j < 0 || j > last) continue;
+                    const bool middle = meets && j == last;
+                    if (middle) waitFor(lag + h);
                     for (int32_t y = 0; y < b.size.y; ++y)
                         relaxColourRow(level, c, h & 1, zeroRhs, y, slab.slice(j), middle, zeros.data(), relaxed);
-                if (middle) finished(lag + h);
+                    if (middle) finished(lag + h);
+                }
+                const int32_t measured = t - lag - halfSweeps;
+                if (maxResidual && measured >= 0 && measured < last + (meets ? 0 : 1))
+                    measure(level.u[c], slab.slice(measured), residual, w);
             }
-            const int32_t measured = t - lag - halfSweeps;
-            if (maxResidual && measured >= 0 && measured < last + (meets ? 0 : 1))
-                measure(slab.slice(measured), residual, w);
         }
     };
     float* first = scratch.data();
@@ -492,10 +497,11 @@ void smooth(Level& level, int32_t sweeps, bool zeroRhs, const Correction* correc
         std::atomic<int32_t> lower{0}, upper{0};
         bothOf([&] { run(Slab{0, mid, 1, &lower, &upper}, second, second + b.size.x, worst[1]); },
                [&] { run(Slab{b.size.z - 1, b.size.z - mid, -1, &upper, &lower}, first, first + b.size.x, worst[0]); });
-        if (maxResidual) {
-            measure(mid - 1, first + b.size.x, worst[0]);
-            measure(mid, first + b.size.x, worst[0]);
-        }
+        if (maxResidual)
+            for (const std::vector<float>& u : level.u) {
+                measure(u, mid - 1, first + b.size.x, worst[0]);
+                measure(u, mid, first + b.size.x, worst[0]);
+            }
     }
     if (maxResidual) *maxResidual = std::max(worst[0], worst[1]);
 }
