@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <utility>
 
 namespace voxc::world {
 
@@ -39,9 +40,9 @@ std::string tileVdbBytes(const DenseGrid& grid, glm::ivec3 worldMin) {
 }
 
 DenseGrid readTileVdb(const std::string& path, glm::ivec3 worldMin, glm::ivec3 size) {
-    const vdb::TileValues values = vdb::readTileFile(path, worldMin, size);
+    vdb::TileValues values = vdb::readTileFile(path, worldMin, size);
     DenseGrid grid(size);
-    grid.data() = values.density;
+    grid.data() = std::move(values.density);
     for (size_t i = 0; i < values.material.size(); ++i) {
         const float m = values.material[i];
         if (!(m >= 0.0f && m <= 255.0f && m == std::floor(m))) {
