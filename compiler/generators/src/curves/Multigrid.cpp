@@ -7,6 +7,10 @@
 #include <cmath>
 #include <span>
 
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
 namespace voxc::curves {
 namespace {
 
@@ -162,12 +166,13 @@ void relaxColourRow(Level& level, size_t c, int32_t colour, bool zeroRhs, int32_
     if (y + 1 < b.size.y) weights += wy;
     if (z > 0) weights += wz;
     if (z + 1 < b.size.z) weights += wz;
-    if (zeroRhs && wx == 1.0f && wy == 1.0f && wz == 1.0f)
+    const int32_t parity = (y + z + colour) & 1;
+    const uint8_t* fixed = level.fixed.data() + i0;
+    const bool finest = zeroRhs && wx == 1.0f && wy == 1.0f && wz == 1.0f;
+    if (finest)
         relaxRowFinest(u + i0, r.ym, r.yp, r.zm, r.zp, weights, omega, n, relaxed);
     else
         relaxRow(u + i0, r.ym, r.yp, r.zm, r.zp, rhs, wx, wy, wz, weights, omega, n, relaxed);
-    const int32_t parity = (y + z + colour) & 1;
-    const uint8_t* fixed = level.fixed.data() + i0;
     if (exactWrites) {
         for (int32_t x = 2 - parity; x + 1 < n; x += 2)
             if (!fixed[x]) u[i0 + size_t(x)] = relaxed[x];
@@ -191,6 +196,147 @@ void relaxColourRow(Level& level, size_t c, int32_t colour, bool zeroRhs, int32_
     };
     endCell(0);
     if (n > 1) endCell(n - 1);
+}
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define VOXC_COLOUR_KERNEL 1
+// One colour of a whole slice in AVX-512 registers, only that colour's cells computed (relaxRow
+// and storeRelaxed compute every cell and keep half), the end cells included. Each block of 32
+// columns from xs (the row's first cell of the colour) holds 16 of the colour's cells, x = xs +
+// 2k: their own values and their y/z neighbours (the other colour, at the same x) are the even
+// lanes of two loads, their +x neighbours the odd lanes, their -x neighbours the odd lanes one
+// lane later (the block before's last in lane 0). A missing neighbour adds an exact +0 (masked
+// loads past the row's end, the zeros row past the box; as in relaxRow, a sum from +0 is never
+// -0, so s + (+0) = s), and an end cell divides by its own sum of weights, in neighbour order as
+// relaxColourRow's per-cell path sums them: so each lane computes relaxRow's (relaxRowFinest's)
+// or the end cell's expression, term by term in neighbour order (+, *, / per lane round as the
+// scalar ones; the build has -ffp-contract=off), and a masked store writes the colour's free cells
+// only, so it also serves the middle slices (exactWrites). `finest`: every weight 1 and no
+// right-hand side. Rows of at least 2 cells.
+struct SliceRows {
+    float* u;                 // the slice's first row
+    const float *below, *above; // the slices z - 1 and z + 1 (null where outside the box)
+    const float* rhs;         // the slice's right-hand side (null: 0)
+    const uint8_t* fixed;     // the slice's mask
+    const float* zeros;       // a row of n zeros
+    int32_t n, rows;
+    float wx, wy, wz;
+    int32_t firstParity; // (y + z + colour) & 1 at y = 0
+};
+
+template <bool finest>
+__attribute__((target("avx512f,avx512bw,avx512dq,avx512vl"))) void relaxColourSliceAvx512(const SliceRows& s) {
+    const int32_t n = s.n;
+    const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
+    const __m512i odd = _mm512_setr_epi32(1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31);
+    const __m512i spreadLow = _mm512_setr_epi32(0, 0, 1, 0, 2, 0, 3, 0, 4, 0, 5, 0, 6, 0, 7, 0);
+    const __m512i spreadHigh = _mm512_setr_epi32(8, 0, 9, 0, 10, 0, 11, 0, 12, 0, 13, 0, 14, 0, 15, 0);
+    const __m512 vwx = _mm512_set1_ps(s.wx), vwy = _mm512_set1_ps(s.wy), vwz = _mm512_set1_ps(s.wz);
+    const __m512 vomega = _mm512_set1_ps(kOverRelaxation);
+    for (int32_t y = 0; y < s.rows; ++y) {
+        const size_t offset = size_t(y) * size_t(n);
+        float* u = s.u + offset;
+        const float* ym = y > 0 ? u - n : s.zeros;
+        const float* yp = y + 1 < s.rows ? u + n : s.zeros;
+        const float* zm = s.below ? s.below + offset : s.zeros;
+        const float* zp = s.above ? s.above + offset : s.zeros;
+        const float* rhs = s.rhs ? s.rhs + offset : s.zeros;
+        const uint8_t* fixed = s.fixed + offset;
+        // Sums of the present neighbours' weights from 0 in neighbour order: an interior cell's
+        // (both x neighbours) and an end cell's (one).
+        float weights = 0.0f, endWeights = 0.0f;
+        weights += s.wx, weights += s.wx;
+        endWeights += s.wx;
+        if (y > 0) weights += s.wy, endWeights += s.wy;
+        if (y + 1 < s.rows) weights += s.wy, endWeights += s.wy;
+        if (s.below) weights += s.wz, endWeights += s.wz;
+        if (s.above) weights += s.wz, endWeights += s.wz;
+        const __m512 vweights = _mm512_set1_ps(weights), vendWeights = _mm512_set1_ps(endWeights);
+        const int32_t xs = (s.firstParity + y) & 1; // (x + parity) even
+        // Lane 15: the -x neighbour of the block's first cell (+0 at x = 0).
+        __m512 before = xs > 0 ? _mm512_set1_ps(u[xs - 1]) : _mm512_setzero_ps();
+        for (int32_t x0 = xs; x0 < n; x0 += 32) {
+            const int32_t left = n - x0; // columns from x0 to the row's end
+            const __mmask32 inRow = left >= 32 ? ~__mmask32(0) : __mmask32((uint32_t(1) << left) - 1);
+            const __mmask16 low = __mmask16(inRow), high = __mmask16(inRow >> 16);
+#define VOXC_COLOUR_LANES(p) \
+    _mm512_permutex2var_ps(_mm512_maskz_loadu_ps(low, (p) + x0), even, _mm512_maskz_loadu_ps(high, (p) + x0 + 16))
+            const __m512 a = _mm512_maskz_loadu_ps(low, u + x0), b = _mm512_maskz_loadu_ps(high, u + x0 + 16);
+            const __m512 centre = _mm512_permutex2var_ps(a, even, b);
+            const __m512 right = _mm512_permutex2var_ps(a, odd, b); // +0 past the row's end
+            // (The maskz forms with every lane set: GCC 12's plain forms warn of their undefined source.)
+            const __m512 leftN = _mm512_castsi512_ps(
+                _mm512_maskz_alignr_epi32(0xffff, _mm512_castps_si512(right), _mm512_castps_si512(before), 15));
+            before = right;
+            __m512 sum = _mm512_setzero_ps();
+            if constexpr (finest) {
+                sum = _mm512_add_ps(sum, leftN);
+                sum = _mm512_add_ps(sum, right);
+                sum = _mm512_add_ps(sum, VOXC_COLOUR_LANES(ym));
+                sum = _mm512_add_ps(sum, VOXC_COLOUR_LANES(yp));
+                sum = _mm512_add_ps(sum, VOXC_COLOUR_LANES(zm));
+                sum = _mm512_add_ps(sum, VOXC_COLOUR_LANES(zp));
+            } else {
+                sum = _mm512_add_ps(sum, _mm512_mul_ps(vwx, leftN));
+                sum = _mm512_add_ps(sum, _mm512_mul_ps(vwx, right));
+                sum = _mm512_add_ps(sum, _mm512_mul_ps(vwy, VOXC_COLOUR_LANES(ym)));
+                sum = _mm512_add_ps(sum, _mm512_mul_ps(vwy, VOXC_COLOUR_LANES(yp)));
+                sum = _mm512_add_ps(sum, _mm512_mul_ps(vwz, VOXC_COLOUR_LANES(zm)));
+                sum = _mm512_add_ps(sum, _mm512_mul_ps(vwz, VOXC_COLOUR_LANES(zp)));
+                sum = _mm512_sub_ps(sum, VOXC_COLOUR_LANES(rhs));
+            }
+#undef VOXC_COLOUR_LANES
+            // Lane k holds x = x0 + 2k: the end cells are x = 0 (lane 0 of the first block) and
+            // x = n - 1.
+            __mmask16 ends = x0 == 0 ? __mmask16(1) : __mmask16(0);
+            if (((n - 1 - x0) & 1) == 0 && n - 1 - x0 < 32) ends |= __mmask16(1u << ((n - 1 - x0) >> 1));
+            const __m512 divisor = _mm512_mask_blend_ps(ends, vweights, vendWeights);
+            const __m512 relaxed = _mm512_div_ps(sum, divisor);
+            const __m512 next = _mm512_add_ps(centre, _mm512_mul_ps(vomega, _mm512_sub_ps(relaxed, centre)));
+            // The colour's free cells among the row's columns from x0.
+            const __m256i f = _mm256_maskz_loadu_epi8(inRow, fixed + x0);
+            const __mmask32 store = _mm256_cmpeq_epi8_mask(f, _mm256_setzero_si256()) & inRow & __mmask32(0x55555555u);
+            _mm512_mask_storeu_ps(u + x0, __mmask16(store), _mm512_maskz_permutexvar_ps(0xffff, spreadLow, next));
+            _mm512_mask_storeu_ps(u + x0 + 16, __mmask16(store >> 16), _mm512_maskz_permutexvar_ps(0xffff, spreadHigh, next));
+        }
+    }
+}
+
+// Whether the CPU runs relaxColourSliceAvx512 (AVX-512 F, BW, DQ and VL).
+bool hasColourKernel() {
+    static const bool has = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+                            __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl");
+    return has;
+}
+#endif
+
+// One colour's half sweep of slice z of component c: relaxColourRow on every row, or where the
+// CPU has AVX-512 and rows have at least 2 cells, relaxColourSliceAvx512 (the same bits).
+void relaxColourSlice(Level& level, size_t c, int32_t colour, bool zeroRhs, int32_t z, bool exactWrites,
+                      const float* zeros, float* relaxed) {
+    const Box& b = level.box;
+#ifdef VOXC_COLOUR_KERNEL
+    if (b.size.x >= 2 && hasColourKernel()) {
+        const size_t slice = size_t(b.size.x) * size_t(b.size.y), i0 = slice * size_t(z);
+        float* u = level.u[c].data();
+        const SliceRows rows{u + i0,
+                             z > 0 ? u + i0 - slice : nullptr,
+                             z + 1 < b.size.z ? u + i0 + slice : nullptr,
+                             zeroRhs ? nullptr : level.f[c].data() + i0,
+                             level.fixed.data() + i0,
+                             zeros,
+                             b.size.x,
+                             b.size.y,
+                             level.weight.x,
+                             level.weight.y,
+                             level.weight.z,
+                             (z + colour) & 1};
+        if (zeroRhs && level.weight == glm::vec3(1.0f)) relaxColourSliceAvx512<true>(rows);
+        else relaxColourSliceAvx512<false>(rows);
+        return;
+    }
+#endif
+    for (int32_t y = 0; y < b.size.y; ++y) relaxColourRow(level, c, colour, zeroRhs, y, z, exactWrites, zeros, relaxed);
 }
 
 // r = f - sum_j w_j (u_j - u_i) on free cells (the caller skips fixed ones).
@@ -478,8 +624,7 @@ void smooth(Level& level, int32_t sweeps, bool zeroRhs, const Correction* correc
                     if (j < 0 || j > last) continue;
                     const bool middle = meets && j == last;
                     if (middle) waitFor(lag + h);
-                    for (int32_t y = 0; y < b.size.y; ++y)
-                        relaxColourRow(level, c, h & 1, zeroRhs, y, slab.slice(j), middle, zeros.data(), relaxed);
+                    relaxColourSlice(level, c, h & 1, zeroRhs, slab.slice(j), middle, zeros.data(), relaxed);
                     if (middle) finished(lag + h);
                 }
                 const int32_t measured = t - lag - halfSweeps;
