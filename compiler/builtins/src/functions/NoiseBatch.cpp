@@ -168,7 +168,7 @@ void warpedFbmBatch(const float* x, const float* y, const float* z, const float*
         if (i < n) {
             // The last 1-7 points in one register too, padded with copies of the last one (lanes
             // are independent): the scalar code took as long per point as the register for
-            // eight, and the curves' displacement batches are rows of a few dozen points.
+            // eight.
             float px[8], py[8], pz[8], base[8], result[8];
             for (size_t lane = 0; lane < 8; ++lane) {
                 const size_t j = std::min(i + lane, n - 1);

@@ -105,13 +105,14 @@ SolveTable solveScene(const Scene& scene, const Limits& limits, const Solvers& s
     if (!displaced && keepChannels) displacements.assign(box.cellCount(), 0.0f);
     const bool everyCell = keepChannels || displaced;
     // Pointwise: each cell's value depends on that cell alone, so two threads give the same bits.
-    // Per row, the cells whose displacement must be evaluated are gathered and evaluated together
+    // Per slice, the cells whose displacement must be evaluated are gathered and evaluated together
     // (warpedFbmBatch: the builtin's own values bit for bit, eight cells per AVX2 register, sixteen
-    // per AVX-512 one).
+    // per AVX-512 one; a batch per slice leaves one part-filled register where a batch per row
+    // left one or two, in the narrower form).
     forTwoSlabs(box.size.z, 8, [&](int32_t z0, int32_t z1) {
-        const size_t n = size_t(box.size.x);
+        const size_t n = size_t(box.size.x) * size_t(box.size.y);
         std::vector<float> px(n), py(n), pz(n), roughness(n), noise(n);
-        std::vector<int32_t> pending(n);
+        std::vector<size_t> pending(n);
         // The density of a cell with displacement D, and its material.
         auto finish = [&](size_t i, float s, float displacement) {
             if (keepChannels && !displaced) displacements[i] = displacement;
@@ -121,9 +122,9 @@ SolveTable solveScene(const Scene& scene, const Limits& limits, const Solvers& s
             table.density[i] = density;
             if (materials && density >= 0.5f) table.material[i] = uint8_t(solved.material.material[i]);
         };
-        for (int32_t z = z0; z < z1; ++z)
-            for (int32_t y = 0; y < box.size.y; ++y) {
-                size_t count = 0;
+        for (int32_t z = z0; z < z1; ++z) {
+            size_t count = 0;
+            for (int32_t y = 0; y < box.size.y; ++y)
                 for (int32_t x = 0; x < box.size.x; ++x) {
                     const size_t i = box.index(x, y, z);
                     const float s = solved.smoothed.values[i];
@@ -138,18 +139,18 @@ SolveTable solveScene(const Scene& scene, const Limits& limits, const Solvers& s
                         const glm::vec3 p = glm::vec3(box.min + glm::ivec3(x, y, z)) * scene.noiseFrequency;
                         px[count] = p.x, py[count] = p.y, pz[count] = p.z;
                         roughness[count] = solved.roughness.values[i];
-                        pending[count++] = x;
+                        pending[count++] = i;
                     } else {
                         finish(i, s, displaced ? displacements[i] : 0.0f);
                     }
                 }
-                warpedFbmBatch(px.data(), py.data(), pz.data(), roughness.data(), 0.0f, 0.0f, scene.noiseSeed, count,
-                               noise.data());
-                for (size_t c = 0; c < count; ++c) {
-                    const size_t i = box.index(pending[c], y, z);
-                    finish(i, solved.smoothed.values[i], solved.amplitude.values[i] * noise[c]);
-                }
+            warpedFbmBatch(px.data(), py.data(), pz.data(), roughness.data(), 0.0f, 0.0f, scene.noiseSeed, count,
+                           noise.data());
+            for (size_t c = 0; c < count; ++c) {
+                const size_t i = pending[c];
+                finish(i, solved.smoothed.values[i], solved.amplitude.values[i] * noise[c]);
             }
+        }
     });
     if (keepChannels) {
         std::vector<float> material(box.cellCount()), confidence = std::move(solved.material.confidence.values);
