@@ -51,6 +51,7 @@ void expectSameMesh(const Mesh& cpu, const Mesh& gpu, const std::string& what) {
     EXPECT_EQ(cpu.triangles, gpu.triangles) << what;
     EXPECT_EQ(cpu.vertexMaterials, gpu.vertexMaterials) << what;
     EXPECT_EQ(cpu.triangleMaterials, gpu.triangleMaterials) << what;
+    EXPECT_EQ(cpu.normalSplits, gpu.normalSplits) << what;
 }
 
 void expectNoValidationMessages(VulkanContext& context) {

@@ -88,9 +88,7 @@ size_t orientNormalsToFaces(Mesh& mesh) {
         }
         return true;
     });
-    size_t changed = 0;
-    for (size_t v = 0; v < vertexCount; ++v) changed += against[v];
-    if (changed == 0) return 0;
+    if (std::find(against.begin(), against.end(), uint8_t(1)) == against.end()) return 0;
 
     // Their triangles, in triangle order, so the sums do not depend on anything but the mesh.
     for (size_t t = 0; t < triangleCount; ++t)
@@ -105,6 +103,15 @@ size_t orientNormalsToFaces(Mesh& mesh) {
             const uint32_t v = mesh.triangles[t * 3 + size_t(k)];
             if (against[v]) triangles[fill[v]++] = uint32_t(t);
         }
+    return orientFlaggedNormals(mesh, against, incident, triangles);
+}
+
+size_t orientFlaggedNormals(Mesh& mesh, const std::vector<uint8_t>& against, const std::vector<uint32_t>& incident,
+                            const std::vector<uint32_t>& triangles) {
+    const size_t vertexCount = against.size();
+    size_t changed = 0;
+    for (size_t v = 0; v < vertexCount; ++v) changed += against[v];
+    if (changed == 0) return 0;
 
     struct Group {
         std::vector<glm::dvec3> faces;

@@ -8,6 +8,8 @@
 #include "voxc/mesh/MarchingCubes.h"
 
 #include <fmt/format.h>
+#include <glm/ext/vector_double3.hpp>
+#include <glm/geometric.hpp>
 #include <glm/vector_relational.hpp>
 
 #include <algorithm>
@@ -336,6 +338,7 @@ struct CellPiece {
 };
 
 // Vertices or triangles per piece of the copy out of the device's buffers.
+constexpr size_t kSplitRoom = 1024; // vertices the mesh's vectors have room for past the edges' (normal splits)
 constexpr uint32_t kCopyPiece = 1u << 16;
 
 // Segments per piece of listCellsInPieces: a few pieces a 256^3 grid, one for a small grid.
@@ -385,6 +388,63 @@ CellTotals listCellsInPieces(HelperThread& helper, const uint32_t* cases, const 
     return all;
 }
 
+// The grid-local cell at `slot` (mc_common.glsl, cellOfSlot).
+glm::ivec3 cellOfSlot(uint32_t slot, glm::ivec3 tileFirst, glm::ivec3 n, const ChunkLayout& layout) {
+    const uint32_t tile = slot / kTileCells, place = slot % kTileCells, row = tile / uint32_t(n.x);
+    const glm::ivec3 t(int(tile % uint32_t(n.x)), int(row % uint32_t(n.y)), int(row / uint32_t(n.y)));
+    const glm::ivec3 inTile(int(place % kTileSide), int(place / kTileSide % kTileSide), int(place / (kTileSide * kTileSide)));
+    return ((tileFirst + t) << kTileShift) + inTile - layout.gridOrigin;
+}
+
+// The second half of orientNormalsToFaces' search, for orientFlaggedNormals: the triangles of each
+// flagged vertex in triangle order, found without a pass over every triangle. A vertex's
+// triangles are among those of the four cells around its edge (its owner cell, as vertexEdges
+// names it, and the cells before it along the other two axes), which are active (their corners
+// are on both sides of iso) and so listed in `activeCells` (kActiveCellWords each, in global key
+// order, the triangles' order): each is found there by bisection.
+void incidentTriangles(const Mesh& mesh, const std::vector<uint8_t>& against, const uint32_t* vertexEdges,
+                       const uint32_t* activeCells, uint32_t activeCount, glm::ivec3 tileFirst, glm::ivec3 n,
+                       const ChunkLayout& layout, std::vector<uint32_t>& incident, std::vector<uint32_t>& triangles) {
+    const size_t vertexCount = against.size();
+    incident.resize(vertexCount + 1);
+    triangles.clear();
+    auto before = [](glm::ivec3 a, glm::ivec3 b) { return a.z != b.z ? a.z < b.z : a.y != b.y ? a.y < b.y : a.x < b.x; };
+    auto activeIndex = [&](glm::ivec3 cell) {
+        uint32_t low = 0, high = activeCount; // the first entry not before `cell`
+        while (low < high) {
+            const uint32_t middle = low + (high - low) / 2;
+            if (before(cellOfSlot(activeCells[size_t(middle) * kActiveCellWords], tileFirst, n, layout), cell))
+                low = middle + 1;
+            else
+                high = middle;
+        }
+        if (low == activeCount || cellOfSlot(activeCells[size_t(low) * kActiveCellWords], tileFirst, n, layout) != cell)
+            throw InternalError("GPU marching cubes: a cell around a vertex's edge is not an active cell");
+        return low;
+    };
+    for (size_t v = 0; v < vertexCount; ++v) {
+        incident[v] = uint32_t(triangles.size());
+        if (!against[v]) continue;
+        const uint32_t edge = vertexEdges[v], axis = edge >> 30, u = (axis + 1) % 3, w = (axis + 2) % 3;
+        const glm::ivec3 owner = cellOfSlot(edge & 0x3fffffffu, tileFirst, n, layout);
+        std::array<uint32_t, 4> cells;
+        for (uint32_t i = 0; i < 4; ++i) {
+            glm::ivec3 cell = owner;
+            cell[int(u)] -= int(i & 1u);
+            cell[int(w)] -= int(i >> 1);
+            cells[i] = activeIndex(cell);
+        }
+        std::sort(cells.begin(), cells.end());
+        for (uint32_t cell : cells) {
+            const uint32_t* entry = &activeCells[size_t(cell) * kActiveCellWords];
+            for (uint32_t t = entry[2]; t < entry[2] + ((entry[3] >> 3) & 15u); ++t)
+                for (size_t k = 0; k < 3; ++k)
+                    if (mesh.triangles[size_t(t) * 3 + k] == v) triangles.push_back(t);
+        }
+    }
+    incident[vertexCount] = uint32_t(triangles.size());
+}
+
 } // namespace
 
 struct GpuMarchingCubes::Impl {
@@ -402,6 +462,8 @@ struct GpuMarchingCubes::Impl {
     DeviceBuffer caseTable, tileStates, unknownTiles, activeTiles, segments, segmentCases, cellInfo, activeCells, vertexEdges,
         vertices, triangles, results;
     std::vector<CellPiece> cellPieces; // listCellsInPieces' lists, kept so that a repeated call reuses their memory
+    std::vector<uint8_t> against;      // per vertex: its normal is to be re-derived (orientFlaggedNormals)
+    std::vector<uint32_t> incident, incidentList; // and the triangles of those vertices (incidentTriangles)
     HelperThread helper;               // the host's second thread for its steps
     // At the texel bindings: views of the executor's buffers and of these (bindAll).
     std::array<VkBufferView, kMcBindingCount> texelViews{};
@@ -734,6 +796,11 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
 
     // The mesh out of the device's buffers on this thread and the helper, in pieces of vertices,
     // then of triangles (a few milliseconds at 256^3).
+    // The vertices' vectors with room for the copies orientFlaggedNormals may append (growing
+    // them took about 0.4 ms at 256^3).
+    mesh.positions.reserve(vertexCount + kSplitRoom);
+    mesh.normals.reserve(vertexCount + kSplitRoom);
+    mesh.vertexMaterials.reserve(vertexCount + kSplitRoom);
     mesh.positions.resize(vertexCount);
     mesh.normals.resize(vertexCount);
     mesh.vertexMaterials.resize(vertexCount);
@@ -744,15 +811,24 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
         std::memcpy(&v, &vertexWords[w], sizeof v);
         return v;
     };
+    // The host mesher's last step (orientNormalsToFaces) in its two parts. The vertices whose
+    // normal is zero (flagged in the copy) or faces away from one of their triangles (a pass over
+    // the triangles after it, on both threads); a flag is only ever set to 1, so the result does
+    // not depend on the threads.
     const size_t vertexPieces = groupsOf(vertexCount, kCopyPiece), trianglePieces = groupsOf(triangleCount, kCopyPiece);
+    std::vector<uint8_t>& against = s.against;
+    against.assign(vertexCount, 0);
+    auto flag = [&](uint32_t v) { std::atomic_ref<uint8_t>(against[v]).store(1, std::memory_order_relaxed); };
     std::atomic<bool> inRange{true};
     s.helper.share(vertexPieces + trianglePieces, [&](size_t piece) {
         if (piece < vertexPieces) {
             for (size_t v = piece * kCopyPiece; v < std::min<size_t>(vertexCount, (piece + 1) * kCopyPiece); ++v) {
                 const size_t w = v * kVertexWords;
                 mesh.positions[v] = vec3At(w);
-                mesh.normals[v] = vec3At(w + 3);
+                const glm::vec3 normal = vec3At(w + 3);
+                mesh.normals[v] = normal;
                 mesh.vertexMaterials[v] = uint8_t(vertexWords[w + 6]);
+                if (normal == glm::vec3(0.0f)) flag(uint32_t(v));
             }
             return;
         }
@@ -769,8 +845,21 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
         if (!pieceInRange) inRange = false;
     });
     if (!inRange) throw InternalError("GPU marching cubes: a triangle names a vertex past the counted ones");
-    // The host mesher's last step, on the host: the same function of the same mesh.
-    orientNormalsToFaces(mesh);
+    s.helper.share(trianglePieces, [&](size_t piece) {
+        for (size_t t = piece * kCopyPiece; t < std::min<size_t>(triangleCount, (piece + 1) * kCopyPiece); ++t) {
+            const uint32_t* corner = &mesh.triangles[t * 3];
+            const glm::dvec3 a(mesh.positions[corner[0]]), b(mesh.positions[corner[1]]), c(mesh.positions[corner[2]]);
+            const glm::dvec3 face = glm::cross(b - a, c - a); // triangleNormal
+            if (face == glm::dvec3(0.0)) continue;
+            for (size_t k = 0; k < 3; ++k)
+                if (glm::dot(glm::dvec3(mesh.normals[corner[k]]), face) < 0.0) flag(corner[k]);
+        }
+    });
+    // Then their triangles, from the cells around their edges, and their new normals.
+    incidentTriangles(mesh, against, static_cast<const uint32_t*>(s.vertexEdges.mapped),
+                      static_cast<const uint32_t*>(s.activeCells.mapped), activeCount, s.tileFirst, s.tileCount, s.layout,
+                      s.incident, s.incidentList);
+    orientFlaggedNormals(mesh, against, s.incident, s.incidentList);
     return mesh;
 }
 

@@ -55,4 +55,14 @@ glm::dvec3 triangleNormal(const Mesh& mesh, size_t triangle);
 // keeps the same bits. Returns the number of vertices whose normal changed or that were split.
 size_t orientNormalsToFaces(Mesh& mesh);
 
+// orientNormalsToFaces' second step, for a mesher that finds the vertices to re-derive itself:
+// `against` has a byte per vertex, 1 where its normal is zero or faces away from one of its
+// triangles (glm::dot(glm::dvec3(normal), triangleNormal) < 0 for a triangle of nonzero
+// triangleNormal), else 0; the triangles of such a vertex v, in triangle order (once per corner
+// that is v), are triangles[incident[v]] to triangles[incident[v + 1] - 1] (incident: one more
+// entry than vertices). orientNormalsToFaces(mesh) is this step after finding them by a pass
+// over every triangle; the result is the same.
+size_t orientFlaggedNormals(Mesh& mesh, const std::vector<uint8_t>& against, const std::vector<uint32_t>& incident,
+                            const std::vector<uint32_t>& triangles);
+
 } // namespace voxc
