@@ -9,6 +9,8 @@
 #include "voxc/core/Errors.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <limits>
 
 namespace voxc::curves {
@@ -19,6 +21,32 @@ inline glm::ivec3 coordinates(const Box& b, size_t i) {
     const uint32_t row = index / nx;
     return {int32_t(index - row * nx), int32_t(row % ny), int32_t(row / ny)};
 }
+
+// coordinates() for many cells of one box, with multiplications instead of divisions: for 32-bit
+// n and d > 1, n / d = (ceil(2^64 / d) * n) >> 64 exactly (Lemire, Kaser and Kurz, "Faster
+// remainder by direct computation", 2019), so the same coordinates.
+class CellCoordinates {
+public:
+    explicit CellCoordinates(const Box& b)
+        : nx_(uint32_t(b.size.x)), ny_(uint32_t(b.size.y)), mx_(inverse(nx_)), my_(inverse(ny_)) {}
+    glm::ivec3 operator()(size_t i) const {
+        const uint32_t index = uint32_t(i);
+        const uint32_t row = divide(index, nx_, mx_), z = divide(row, ny_, my_);
+        return {int32_t(index - row * nx_), int32_t(row - z * ny_), int32_t(z)};
+    }
+
+private:
+    static uint64_t inverse(uint32_t d) { return d > 1 ? UINT64_MAX / d + 1 : 0; }
+    static uint32_t divide(uint32_t n, uint32_t d, uint64_t inverse) {
+#ifdef __SIZEOF_INT128__
+        return d > 1 ? uint32_t((static_cast<unsigned __int128>(inverse) * n) >> 64) : n;
+#else
+        return n / d;
+#endif
+    }
+    uint32_t nx_, ny_;
+    uint64_t mx_, my_;
+};
 
 // Cells of the next layer: those with `done` unset that neighbour a cell of `front`, once each
 // (stamp[j] == layer marks them), in the order the front reaches them.
@@ -41,6 +69,24 @@ inline std::vector<size_t> nextLayer(const Box& b, const std::vector<size_t>& fr
 inline bool setBefore(const std::vector<FrontLayer>& layer, size_t k, int32_t l) {
     const int32_t v = layer[k];
     return v >= 0 && v < l;
+}
+
+// The face neighbours of cell p (coordinates q) in neighbour order, p itself where one is outside
+// the box, and as bit n of the returned mask whether neighbour n was set in a layer before `l`,
+// p's own layer. Once growLayers values cells every cell has a layer >= 0, so setBefore is
+// layer < l, and p's own layer l never counts: the mask needs no branch per neighbour.
+inline uint32_t neighboursSetBefore(const Box& b, const std::vector<FrontLayer>& layer, size_t p, glm::ivec3 q, int32_t l,
+                                    size_t (&neighbour)[6]) {
+    const size_t row = size_t(b.size.x), slice = row * size_t(b.size.y);
+    neighbour[0] = q.x > 0 ? p - 1 : p;
+    neighbour[1] = q.x + 1 < b.size.x ? p + 1 : p;
+    neighbour[2] = q.y > 0 ? p - row : p;
+    neighbour[3] = q.y + 1 < b.size.y ? p + row : p;
+    neighbour[4] = q.z > 0 ? p - slice : p;
+    neighbour[5] = q.z + 1 < b.size.z ? p + slice : p;
+    uint32_t before = 0;
+    for (int32_t n = 0; n < 6; ++n) before |= uint32_t(layer[neighbour[n]] < l) << n;
+    return before;
 }
 
 // The fronts value the cells in bands of this many slices (growLayers).
@@ -83,6 +129,7 @@ void valueInBands(const Box& b, const std::vector<FrontLayer>& layer, int32_t la
         for (size_t i = size_t(z) * slice, end = i + slice; i < end; ++i) ++start[bucket(i, z) + 1];
     for (size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
     std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+    const CellCoordinates cellCoordinates(b);
     for (int32_t z = 0; z < nz; ++z) {
         const size_t group = size_t(z / groupSlices) * groupCells;
         for (size_t i = size_t(z) * slice, end = i + slice; i < end; ++i) order[fill[bucket(i, z)]++] = Index(i - group);
@@ -94,7 +141,7 @@ void valueInBands(const Box& b, const std::vector<FrontLayer>& layer, int32_t la
                 const size_t k = size_t(l) * size_t(groups) + size_t(g), group = size_t(g) * groupCells;
                 for (uint32_t c = start[k]; c != start[k + 1]; ++c) {
                     const size_t i = group + order[c];
-                    value(i, coordinates(b, i), l);
+                    value(i, cellCoordinates(i), l);
                 }
             }
 }

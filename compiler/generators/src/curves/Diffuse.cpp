@@ -5,6 +5,7 @@
 #include "Parallel.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace voxc::curves {
@@ -157,17 +158,29 @@ void growMaterial(const Constraints& cs, MaterialFront& front) {
             out.material[i] = 0;
         }
     const std::vector<FrontLayer>& layer = front.layer;
-    const size_t row = size_t(b.size.x), slice = row * size_t(b.size.y);
     out.layers = growLayers(b, front.layer, front.order, [&](size_t p, glm::ivec3 q, int32_t l) {
-        const bool inside[6] = {q.x > 0, q.x + 1 < b.size.x, q.y > 0, q.y + 1 < b.size.y, q.z > 0, q.z + 1 < b.size.z};
-        const size_t neighbour[6] = {p - 1, p + 1, p - row, p + row, p - slice, p + slice};
-        uint16_t ids[6];
-        float weights[6];
+        size_t neighbour[6];
+        const uint32_t before = neighboursSetBefore(b, layer, p, q, l, neighbour);
+        out.assigned[p] = 1;
+        // Mostly every neighbour set before has the same material: then its W_m is the total (the
+        // same sums from 0 in the same order), so it is m* and the confidence total / total = 1
+        // (a total of confidences >= 1/6 is finite and > 0). A cell of layer l >= 1 has a
+        // neighbour of layer l - 1, so `before` is never 0 (the bit 5 or'ed in keeps the index in
+        // range regardless).
+        const uint16_t first = out.material[neighbour[std::countr_zero(before | 0x20u)]];
+        bool same = true;
+        for (int32_t n = 0; n < 6; ++n) same &= !((before >> n) & 1) || out.material[neighbour[n]] == first;
+        if (same) {
+            out.material[p] = first;
+            out.confidence.values[p] = 1.0f;
+            return;
+        }
+        uint16_t ids[6] = {};
+        float weights[6] = {};
         int32_t distinct = 0;
         float total = 0.0f;
-        for (int32_t n = 0; n < 6; ++n) {
-            if (!inside[n] || !setBefore(layer, neighbour[n], l)) continue;
-            const size_t j = neighbour[n];
+        for (uint32_t set = before; set != 0; set &= set - 1) {
+            const size_t j = neighbour[std::countr_zero(set)];
             const float conf = out.confidence.values[j];
             total += conf;
             int32_t slot = 0;
@@ -178,7 +191,6 @@ void growMaterial(const Constraints& cs, MaterialFront& front) {
         int32_t best = 0;
         for (int32_t s = 1; s < distinct; ++s)
             if (weights[s] > weights[best] || (weights[s] == weights[best] && ids[s] < ids[best])) best = s;
-        out.assigned[p] = 1;
         out.material[p] = ids[best];
         out.confidence.values[p] = weights[best] / total;
     });
