@@ -302,7 +302,64 @@ __attribute__((target("avx512f,avx512bw,avx512dq,avx512vl"))) void relaxColourSl
     }
 }
 
-// Whether the CPU runs relaxColourSliceAvx512 (AVX-512 F, BW, DQ and VL).
+// max(worst, max |r|) over the free cells of a slice, r = 0 - sum_j w_j (u_j - u_i) (f = 0, as
+// residualRow with a null right-hand side, then maxAbs): 16 cells per AVX-512 register, each the
+// same expression in neighbour order; a missing neighbour, in x as in y and z, is the cell itself
+// (u_i - u_i = +0 changes no sum from +0, as residualRow's absent rows), and fixed cells (r = 0)
+// are left out of the max, which does not depend on the order (max(w, NaN) keeps w, as std::max).
+// `finest`: every weight 1. Rows of at least 2 cells; s.rhs is not read.
+template <bool finest>
+__attribute__((target("avx512f,avx512bw,avx512dq,avx512vl"))) float maxResidualSliceAvx512(const SliceRows& s,
+                                                                                         float worst) {
+    const int32_t n = s.n;
+    const __m512 vwx = _mm512_set1_ps(s.wx), vwy = _mm512_set1_ps(s.wy), vwz = _mm512_set1_ps(s.wz);
+    __m512 most = _mm512_set1_ps(worst);
+    for (int32_t y = 0; y < s.rows; ++y) {
+        const size_t offset = size_t(y) * size_t(n);
+        const float* u = s.u + offset;
+        const float* ym = y > 0 ? u - n : u;
+        const float* yp = y + 1 < s.rows ? u + n : u;
+        const float* zm = s.below ? s.below + offset : u;
+        const float* zp = s.above ? s.above + offset : u;
+        const uint8_t* fixed = s.fixed + offset;
+        for (int32_t x0 = 0; x0 < n; x0 += 16) {
+            const int32_t left = n - x0;
+            const __mmask16 inRow = left >= 16 ? __mmask16(0xffff) : __mmask16((1u << left) - 1);
+            const __mmask16 hasLeft = x0 == 0 ? __mmask16(inRow & ~1u) : inRow;
+            const __mmask16 hasRight = left > 16 ? inRow : __mmask16(inRow >> 1);
+            const __m512 c = _mm512_maskz_loadu_ps(inRow, u + x0);
+            const __m512 l = _mm512_mask_loadu_ps(c, hasLeft, u + x0 - 1);
+            const __m512 r = _mm512_mask_loadu_ps(c, hasRight, u + x0 + 1);
+            const __m512 terms[6] = {
+                _mm512_sub_ps(l, c),
+                _mm512_sub_ps(r, c),
+                _mm512_sub_ps(_mm512_mask_loadu_ps(c, inRow, ym + x0), c),
+                _mm512_sub_ps(_mm512_mask_loadu_ps(c, inRow, yp + x0), c),
+                _mm512_sub_ps(_mm512_mask_loadu_ps(c, inRow, zm + x0), c),
+                _mm512_sub_ps(_mm512_mask_loadu_ps(c, inRow, zp + x0), c),
+            };
+            __m512 lap = _mm512_setzero_ps();
+            for (int32_t k = 0; k < 6; ++k) {
+                if constexpr (finest) {
+                    lap = _mm512_add_ps(lap, terms[k]);
+                } else {
+                    const __m512 w = k < 2 ? vwx : k < 4 ? vwy : vwz;
+                    lap = _mm512_add_ps(lap, _mm512_mul_ps(w, terms[k]));
+                }
+            }
+            const __m512 residual = _mm512_sub_ps(_mm512_setzero_ps(), lap);
+            const __mmask16 free =
+                _mm_mask_cmpeq_epi8_mask(inRow, _mm_maskz_loadu_epi8(inRow, fixed + x0), _mm_setzero_si128());
+            most = _mm512_mask_max_ps(most, free, _mm512_abs_ps(residual), most);
+        }
+    }
+    float lanes[16];
+    _mm512_storeu_ps(lanes, most);
+    for (const float lane : lanes) worst = std::max(worst, lane);
+    return worst;
+}
+
+// Whether the CPU runs relaxColourSliceAvx512 and maxResidualSliceAvx512 (AVX-512 F, BW, DQ and VL).
 bool hasColourKernel() {
     static const bool has = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
                             __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl");
@@ -476,6 +533,38 @@ float maxAbs(const float* __restrict values, int32_t n, float worst) {
     return lanes[0];
 }
 
+// max(worst, the max |r| with f = 0 over the free cells of slice z of `u`): residualRow and
+// maxAbs per row, or where the CPU has AVX-512 and rows have at least 2 cells,
+// maxResidualSliceAvx512 (the same value). `residual` is a scratch row of n floats.
+float maxResidualOfSlice(const Level& level, const std::vector<float>& u, int32_t z, float* residual, float worst) {
+    const Box& b = level.box;
+#ifdef VOXC_COLOUR_KERNEL
+    if (b.size.x >= 2 && hasColourKernel()) {
+        const size_t slice = size_t(b.size.x) * size_t(b.size.y), i0 = slice * size_t(z);
+        const float* values = u.data();
+        const SliceRows rows{const_cast<float*>(values + i0), // read only
+                             z > 0 ? values + i0 - slice : nullptr,
+                             z + 1 < b.size.z ? values + i0 + slice : nullptr,
+                             nullptr,
+                             level.fixed.data() + i0,
+                             nullptr,
+                             b.size.x,
+                             b.size.y,
+                             level.weight.x,
+                             level.weight.y,
+                             level.weight.z,
+                             0};
+        return level.weight == glm::vec3(1.0f) ? maxResidualSliceAvx512<true>(rows, worst)
+                                               : maxResidualSliceAvx512<false>(rows, worst);
+    }
+#endif
+    for (int32_t y = 0; y < b.size.y; ++y) {
+        residualRow(level, u, nullptr, y, z, residual);
+        worst = maxAbs(residual, b.size.x, worst);
+    }
+    return worst;
+}
+
 // Trilinear cell-centred interpolation of coarse values at every free fine cell, along x, then
 // y, then z: on a halved axis weights 3/4 (own parent) and 1/4 (the next parent towards the
 // child, clamped at the box), on a kept axis 1 and 0; added to or written into u. The x step of
@@ -588,10 +677,7 @@ void smooth(Level& level, int32_t sweeps, bool zeroRhs, const Correction* correc
     const bool threaded = b.cellCount() >= kMinCellsForThreads && b.size.z >= 4;
     float worst[2] = {0.0f, 0.0f};
     auto measure = [&](const std::vector<float>& u, int32_t z, float* residual, float& w) {
-        for (int32_t y = 0; y < b.size.y; ++y) {
-            residualRow(level, u, nullptr, y, z, residual);
-            w = maxAbs(residual, b.size.x, w);
-        }
+        w = maxResidualOfSlice(level, u, z, residual, w);
     };
     // A component's stages on a middle slice: the correction, then the half sweeps.
     const int32_t stages = lag + halfSweeps;
@@ -776,11 +862,7 @@ float maxResidualOf(const Level& level) {
         std::vector<float> residual(size_t(b.size.x));
         float& w = worst[z0 == 0 ? 0 : 1];
         for (const std::vector<float>& u : level.u)
-            for (int32_t z = z0; z < z1; ++z)
-                for (int32_t y = 0; y < b.size.y; ++y) {
-                    residualRow(level, u, nullptr, y, z, residual.data());
-                    w = maxAbs(residual.data(), b.size.x, w);
-                }
+            for (int32_t z = z0; z < z1; ++z) w = maxResidualOfSlice(level, u, z, residual.data(), w);
     });
     return std::max(worst[0], worst[1]);
 }
