@@ -124,24 +124,36 @@ struct TileLists {
     size_t crossedTiles = 0;
     size_t cells = 0;                   // the cells of the listed segments
     std::vector<uint8_t> chunkCrossed;  // per world chunk holding cells
+    // Per row of tiles (y, z): its first rank, and the cells of one row of cells across its
+    // listed tiles (a segment's cells are fewer at the grid's x ends).
+    std::vector<uint32_t> rowStart;
+    std::vector<size_t> rowCells;
 };
 
 // A tile of cells reads its voxel tile and the low x face, y face, z face, xy, xz and yz edges
 // and corner of the voxel tiles after it: region r (bit r of a state) of the tile at offset r.
 constexpr glm::ivec3 kRegionTile[8] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}};
 
-TileLists listTiles(const uint32_t* states, glm::ivec3 tileFirst, glm::ivec3 n, const ChunkLayout& layout, bool skip) {
+// Into `lists`, whose vectors keep their memory from one mesh to the next (growing them anew took
+// a few tenths of a millisecond at 256^3).
+void listTiles(const uint32_t* states, glm::ivec3 tileFirst, glm::ivec3 n, const ChunkLayout& layout, bool skip, TileLists& lists) {
     const glm::ivec3 v = n + 1; // voxel tiles per axis
     const glm::ivec3 chunkFirst = (layout.gridOrigin - 1) >> layout.chunkShift;
     const glm::ivec3 chunks = ((layout.gridOrigin + layout.gridSize - 1) >> layout.chunkShift) - chunkFirst + 1;
-    TileLists lists;
+    lists.activeTiles.clear();
+    lists.segments.clear();
+    lists.crossedTiles = 0;
+    lists.cells = 0;
     lists.chunkCrossed.assign(size_t(chunks.x) * size_t(chunks.y) * size_t(chunks.z), 0);
-    std::vector<uint32_t> rowStart; // per row of tiles (y, z): its first rank
-    rowStart.reserve(size_t(n.y) * size_t(n.z) + 1);
+    std::vector<uint32_t>& rowStart = lists.rowStart;
+    rowStart.clear();
+    lists.rowCells.clear();
+    const glm::ivec3 firstCell = tileFirst << kTileShift;
     size_t tile = 0;
     for (int z = 0; z < n.z; ++z)
         for (int y = 0; y < n.y; ++y) {
             rowStart.push_back(uint32_t(lists.activeTiles.size()));
+            size_t rowCells = 0;
             for (int x = 0; x < n.x; ++x, ++tile) {
                 uint32_t solid = 0, air = 0;
                 for (uint32_t r = 0; r < 8; ++r) {
@@ -158,12 +170,14 @@ TileLists listTiles(const uint32_t* states, glm::ivec3 tileFirst, glm::ivec3 n, 
                 }
                 if (!crossed && skip) continue;
                 lists.activeTiles.push_back(uint32_t(tile));
+                const int tileX = firstCell.x + x * int(kTileSide) - layout.gridOrigin.x;
+                rowCells += size_t(std::min(tileX + int(kTileSide), layout.gridSize.x) - std::max(tileX, -1));
             }
+            lists.rowCells.push_back(rowCells);
         }
     rowStart.push_back(uint32_t(lists.activeTiles.size()));
     // Global key order: z, then y, then x; a row of cells (y, z) crosses the tiles of tile row
     // (y >> 3, z >> 3) in x order, which is their rank order. Rows outside the cells have none.
-    const glm::ivec3 firstCell = tileFirst << kTileShift;
     auto insideCells = [&](int axis, int world) {
         const int local = world - layout.gridOrigin[axis];
         return local >= -1 && local < layout.gridSize[axis];
@@ -175,15 +189,11 @@ TileLists listTiles(const uint32_t* states, glm::ivec3 tileFirst, glm::ivec3 n, 
                 for (uint32_t inY = 0; inY < kTileSide; ++inY) {
                     if (!insideCells(1, firstCell.y + y * int(kTileSide) + int(inY))) continue;
                     const size_t row = size_t(z) * size_t(n.y) + size_t(y);
-                    for (uint32_t rank = rowStart[row]; rank < rowStart[row + 1]; ++rank) {
-                        const uint32_t segment = rank * kTileSegments + inZ * kTileSide + inY;
-                        lists.segments.push_back(segment);
-                        const int tileX = firstCell.x + int(lists.activeTiles[rank] % uint32_t(n.x)) * int(kTileSide) - layout.gridOrigin.x;
-                        lists.cells += size_t(std::min(tileX + int(kTileSide), layout.gridSize.x) - std::max(tileX, -1));
-                    }
+                    for (uint32_t rank = rowStart[row]; rank < rowStart[row + 1]; ++rank)
+                        lists.segments.push_back(rank * kTileSegments + inZ * kTileSide + inY);
+                    lists.cells += lists.rowCells[row];
                 }
         }
-    return lists;
 }
 
 // Per case: the crossed edges a cell of the case owns (those leaving its minimum corner: bit a
@@ -388,12 +398,20 @@ CellTotals listCellsInPieces(HelperThread& helper, const uint32_t* cases, const 
     return all;
 }
 
-// The grid-local cell at `slot` (mc_common.glsl, cellOfSlot).
-glm::ivec3 cellOfSlot(uint32_t slot, glm::ivec3 tileFirst, glm::ivec3 n, const ChunkLayout& layout) {
-    const uint32_t tile = slot / kTileCells, place = slot % kTileCells, row = tile / uint32_t(n.x);
-    const glm::ivec3 t(int(tile % uint32_t(n.x)), int(row % uint32_t(n.y)), int(row / uint32_t(n.y)));
-    const glm::ivec3 inTile(int(place % kTileSide), int(place / kTileSide % kTileSide), int(place / (kTileSide * kTileSide)));
-    return ((tileFirst + t) << kTileShift) + inTile - layout.gridOrigin;
+// Per tile of cells (x fastest): its first cell, grid-local.
+std::vector<glm::ivec3> tileFirstCells(glm::ivec3 tileFirst, glm::ivec3 n, const ChunkLayout& layout) {
+    std::vector<glm::ivec3> cells;
+    cells.reserve(size_t(n.x) * size_t(n.y) * size_t(n.z));
+    for (int z = 0; z < n.z; ++z)
+        for (int y = 0; y < n.y; ++y)
+            for (int x = 0; x < n.x; ++x) cells.push_back(((tileFirst + glm::ivec3(x, y, z)) << kTileShift) - layout.gridOrigin);
+    return cells;
+}
+
+// The grid-local cell at `slot` (mc_common.glsl, cellOfSlot), from tileFirstCells.
+glm::ivec3 cellOfSlot(uint32_t slot, const std::vector<glm::ivec3>& tileCells) {
+    const uint32_t place = slot % kTileCells;
+    return tileCells[slot / kTileCells] + glm::ivec3(int(place % kTileSide), int(place / kTileSide % kTileSide), int(place / (kTileSide * kTileSide)));
 }
 
 // The second half of orientNormalsToFaces' search, for orientFlaggedNormals: the triangles of each
@@ -403,8 +421,8 @@ glm::ivec3 cellOfSlot(uint32_t slot, glm::ivec3 tileFirst, glm::ivec3 n, const C
 // are on both sides of iso) and so listed in `activeCells` (kActiveCellWords each, in global key
 // order, the triangles' order): each is found there by bisection.
 void incidentTriangles(const Mesh& mesh, const std::vector<uint8_t>& against, const uint32_t* vertexEdges,
-                       const uint32_t* activeCells, uint32_t activeCount, glm::ivec3 tileFirst, glm::ivec3 n,
-                       const ChunkLayout& layout, std::vector<uint32_t>& incident, std::vector<uint32_t>& triangles) {
+                       const uint32_t* activeCells, uint32_t activeCount, const std::vector<glm::ivec3>& tileCells,
+                       std::vector<uint32_t>& incident, std::vector<uint32_t>& triangles) {
     const size_t vertexCount = against.size();
     incident.resize(vertexCount + 1);
     triangles.clear();
@@ -413,20 +431,23 @@ void incidentTriangles(const Mesh& mesh, const std::vector<uint8_t>& against, co
         uint32_t low = 0, high = activeCount; // the first entry not before `cell`
         while (low < high) {
             const uint32_t middle = low + (high - low) / 2;
-            if (before(cellOfSlot(activeCells[size_t(middle) * kActiveCellWords], tileFirst, n, layout), cell))
+            if (before(cellOfSlot(activeCells[size_t(middle) * kActiveCellWords], tileCells), cell))
                 low = middle + 1;
             else
                 high = middle;
         }
-        if (low == activeCount || cellOfSlot(activeCells[size_t(low) * kActiveCellWords], tileFirst, n, layout) != cell)
+        if (low == activeCount || cellOfSlot(activeCells[size_t(low) * kActiveCellWords], tileCells) != cell)
             throw InternalError("GPU marching cubes: a cell around a vertex's edge is not an active cell");
         return low;
     };
-    for (size_t v = 0; v < vertexCount; ++v) {
-        incident[v] = uint32_t(triangles.size());
-        if (!against[v]) continue;
+    for (size_t v = 0;; ++v) {
+        // To the next flagged vertex, the ones between with no triangles listed.
+        const size_t next = size_t(std::find(against.begin() + ptrdiff_t(v), against.end(), uint8_t(1)) - against.begin());
+        std::fill(incident.begin() + ptrdiff_t(v), incident.begin() + ptrdiff_t(next) + 1, uint32_t(triangles.size()));
+        if (next == vertexCount) break;
+        v = next;
         const uint32_t edge = vertexEdges[v], axis = edge >> 30, u = (axis + 1) % 3, w = (axis + 2) % 3;
-        const glm::ivec3 owner = cellOfSlot(edge & 0x3fffffffu, tileFirst, n, layout);
+        const glm::ivec3 owner = cellOfSlot(edge & 0x3fffffffu, tileCells);
         std::array<uint32_t, 4> cells;
         for (uint32_t i = 0; i < 4; ++i) {
             glm::ivec3 cell = owner;
@@ -442,7 +463,6 @@ void incidentTriangles(const Mesh& mesh, const std::vector<uint8_t>& against, co
                     if (mesh.triangles[size_t(t) * 3 + k] == v) triangles.push_back(t);
         }
     }
-    incident[vertexCount] = uint32_t(triangles.size());
 }
 
 } // namespace
@@ -461,9 +481,12 @@ struct GpuMarchingCubes::Impl {
     // they are copied). segmentCases, vertices and triangles: meshUse().
     DeviceBuffer caseTable, tileStates, unknownTiles, activeTiles, segments, segmentCases, cellInfo, activeCells, vertexEdges,
         vertices, triangles, results;
+    TileLists tileLists;               // listTiles' lists, kept so that a repeated call reuses their memory
+    std::vector<uint32_t> unknownTileList; // knownTileStates' list, likewise
     std::vector<CellPiece> cellPieces; // listCellsInPieces' lists, kept so that a repeated call reuses their memory
     std::vector<uint8_t> against;      // per vertex: its normal is to be re-derived (orientFlaggedNormals)
     std::vector<uint32_t> incident, incidentList; // and the triangles of those vertices (incidentTriangles)
+    std::vector<glm::ivec3> tileCells;            // tileFirstCells
     HelperThread helper;               // the host's second thread for its steps
     // At the texel bindings: views of the executor's buffers and of these (bindAll).
     std::array<VkBufferView, kMcBindingCount> texelViews{};
@@ -666,6 +689,7 @@ GpuMarchingCubes::GpuMarchingCubes(VulkanExecutor& executor) : impl_(std::make_u
     s.tiles = uint32_t(s.tileCount.x) * uint32_t(s.tileCount.y) * uint32_t(s.tileCount.z);
     s.voxelTiles = uint32_t(s.tileCount.x + 1) * uint32_t(s.tileCount.y + 1) * uint32_t(s.tileCount.z + 1);
     s.checkLimits();
+    s.tileCells = tileFirstCells(s.tileFirst, s.tileCount, s.layout);
     createMcPipelines(s.ctx, s.source.hasMaterials, s.pipelines);
     s.createBuffers();
     s.bindAll();
@@ -687,7 +711,7 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     // from its voxels), then on the host the tiles of cells the surface crosses (all of them when
     // uniform regions are not skipped) and their segments.
     const std::optional<TileRanges>& ranges = *s.source.tileRanges;
-    std::vector<uint32_t> unknown;
+    std::vector<uint32_t>& unknown = s.unknownTileList;
     knownTileStates(ranges && options.skipUniformChunks ? &*ranges : nullptr, options.iso, s.tileFirst, s.tileCount + 1, s.layout,
                     static_cast<uint32_t*>(s.tileStates.mapped), unknown);
     flushForDevice(s.ctx, s.tileStates); // the queue submit makes it visible to the device
@@ -699,8 +723,9 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
         s.submitAndWait();
     }
     invalidateForHost(s.ctx, s.tileStates);
-    TileLists lists = listTiles(static_cast<const uint32_t*>(s.tileStates.mapped), s.tileFirst, s.tileCount, s.layout,
-                                options.skipUniformChunks);
+    TileLists& lists = s.tileLists;
+    listTiles(static_cast<const uint32_t*>(s.tileStates.mapped), s.tileFirst, s.tileCount, s.layout, options.skipUniformChunks,
+              lists);
     if (stats) {
         *stats = MeshStats{lists.chunkCrossed.size(), 0};
         if (options.skipUniformChunks)
@@ -857,8 +882,7 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     });
     // Then their triangles, from the cells around their edges, and their new normals.
     incidentTriangles(mesh, against, static_cast<const uint32_t*>(s.vertexEdges.mapped),
-                      static_cast<const uint32_t*>(s.activeCells.mapped), activeCount, s.tileFirst, s.tileCount, s.layout,
-                      s.incident, s.incidentList);
+                      static_cast<const uint32_t*>(s.activeCells.mapped), activeCount, s.tileCells, s.incident, s.incidentList);
     orientFlaggedNormals(mesh, against, s.incident, s.incidentList);
     return mesh;
 }
