@@ -211,9 +211,8 @@ std::array<uint32_t, 256> cellWords() {
 
 // The host's step between the count and emit passes, over the segments' cases (mc_count.glsl) in
 // global key order: the active cells (neither all air nor all solid: every other case has a
-// triangle, which packedCaseTable checks) with their first vertex and triangle, an owner's first
-// vertex at its slot in `cellInfo` (owned edges | first vertex << 3), and every vertex with its
-// owner cell and axis, in the CPU mesher's order (vertices by global edge, triangles by cell).
+// triangle, which packedCaseTable checks) with their first vertex and triangle, and every vertex
+// with its owner cell and axis, in the CPU mesher's order (vertices by global edge, triangles by cell).
 // Sequential and a few loads and stores per active cell: on lavapipe the same lists took a pass
 // over every segment with a prefix sum before it, several times longer. `activeCells` gets
 // kActiveCellWords per active cell, `vertexEdges` per vertex its owner's slot | axis << 30 (slots
@@ -224,8 +223,7 @@ struct CellTotals {
 };
 
 CellTotals listCells(const uint32_t* cases, const TileLists& lists, size_t begin, size_t end, glm::ivec3 tileFirst, glm::ivec3 n,
-                     const ChunkLayout& layout, uint32_t* cellInfo, std::vector<uint32_t>& activeCells,
-                     std::vector<uint32_t>& vertexEdges) {
+                     const ChunkLayout& layout, std::vector<uint32_t>& activeCells, std::vector<uint32_t>& vertexEdges) {
     static const std::array<uint32_t, 256> kCellWords = cellWords();
     activeCells.clear();
     vertexEdges.clear();
@@ -248,7 +246,6 @@ CellTotals listCells(const uint32_t* cases, const TileLists& lists, size_t begin
             activeCells.insert(activeCells.end(), {slot, uint32_t(vertices), uint32_t(triangles), word});
             triangles += (word >> 3) & 15u;
             if (edges == 0) continue;
-            cellInfo[slot] = edges | uint32_t(vertices) << 3;
             for (uint32_t left = edges; left != 0; left &= left - 1)
                 vertexEdges.push_back(slot | uint32_t(std::countr_zero(left)) << 30);
             vertices += uint32_t(std::popcount(edges));
@@ -355,10 +352,12 @@ constexpr uint32_t kCopyPiece = 1u << 16;
 constexpr size_t kSegmentsPerPiece = size_t(1) << 14;
 
 // listCells over every segment, on this thread and the helper, in pieces of consecutive
-// segments: each piece's lists and owners' words (in `cellInfo`) are numbered from 0; then each
-// piece's lists go to their place in the mapped `activeCells` and `vertexEdges` (`place`, given
-// the totals, returns those buffers' words) with its first vertices and triangles moved past the
-// pieces before. The result is listCells' over all the segments at once. The device waits for
+// segments: each piece's lists are numbered from 0; then each piece's lists go to their place in
+// the mapped `activeCells` and `vertexEdges` (`place`, given the totals, returns those buffers'
+// words) with its first vertices and triangles moved past the pieces before, and each owner's
+// word (owned edges | first vertex << 3) to its slot in `cellInfo` (written once there: written
+// in the first step and moved in the second, a random access each time, the step took about 0.1
+// ms more at 256^3). The result is listCells' over all the segments at once. The device waits for
 // these lists, so the host's second core is otherwise idle (at 256^3 they took 2.5 ms on one
 // thread).
 CellTotals listCellsInPieces(HelperThread& helper, const uint32_t* cases, const TileLists& lists, glm::ivec3 tileFirst,
@@ -368,7 +367,7 @@ CellTotals listCellsInPieces(HelperThread& helper, const uint32_t* cases, const 
     pieces.resize(pieceCount);
     helper.share(pieceCount, [&](size_t p) {
         CellPiece& piece = pieces[p];
-        piece.totals = listCells(cases, lists, count * p / pieceCount, count * (p + 1) / pieceCount, tileFirst, n, layout, cellInfo,
+        piece.totals = listCells(cases, lists, count * p / pieceCount, count * (p + 1) / pieceCount, tileFirst, n, layout,
                                  piece.activeCells, piece.vertexEdges);
     });
     CellTotals all;
@@ -392,7 +391,7 @@ CellTotals listCellsInPieces(HelperThread& helper, const uint32_t* cases, const 
             out[i + 1] = cell[1] + firstVertex;
             out[i + 2] = cell[2] + firstTriangle;
             out[i + 3] = cell[3];
-            if (firstVertex != 0 && (cell[3] & 7u) != 0) cellInfo[cell[0]] += firstVertex << 3; // an owner's first vertex
+            if ((cell[3] & 7u) != 0) cellInfo[cell[0]] = (cell[3] & 7u) | out[i + 1] << 3; // an owner's edges and first vertex
         }
     });
     return all;
