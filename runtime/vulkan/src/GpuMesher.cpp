@@ -346,7 +346,8 @@ struct CellPiece {
 
 // Vertices or triangles per piece of the copy out of the device's buffers.
 constexpr size_t kSplitRoom = 1024; // vertices the mesh's vectors have room for past the edges' (normal splits)
-constexpr uint32_t kCopyPiece = 1u << 16;
+constexpr uint32_t kCopyPiece = 1u << 15;
+constexpr uint32_t kVertexPiece = 1u << 14; // vertices per piece of their copy: a few pieces a thread
 
 // Segments per piece of listCellsInPieces: a few pieces a 256^3 grid, one for a small grid.
 constexpr size_t kSegmentsPerPiece = size_t(1) << 14;
@@ -836,49 +837,48 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
         return v;
     };
     // The host mesher's last step (orientNormalsToFaces) in its two parts. The vertices whose
-    // normal is zero (flagged in the copy) or faces away from one of their triangles (a pass over
-    // the triangles after it, on both threads); a flag is only ever set to 1, so the result does
-    // not depend on the threads.
-    const size_t vertexPieces = groupsOf(vertexCount, kCopyPiece), trianglePieces = groupsOf(triangleCount, kCopyPiece);
+    // normal is zero or faces away from one of their triangles are flagged as the mesh is copied
+    // (vertices first, then triangles, each on both threads); a flag is only ever set to 1, so the
+    // result does not depend on the threads.
+    const size_t vertexPieces = groupsOf(vertexCount, kVertexPiece), trianglePieces = groupsOf(triangleCount, kCopyPiece);
     std::vector<uint8_t>& against = s.against;
     against.assign(vertexCount, 0);
     auto flag = [&](uint32_t v) { std::atomic_ref<uint8_t>(against[v]).store(1, std::memory_order_relaxed); };
-    std::atomic<bool> inRange{true};
-    s.helper.share(vertexPieces + trianglePieces, [&](size_t piece) {
-        if (piece < vertexPieces) {
-            for (size_t v = piece * kCopyPiece; v < std::min<size_t>(vertexCount, (piece + 1) * kCopyPiece); ++v) {
-                const size_t w = v * kVertexWords;
-                mesh.positions[v] = vec3At(w);
-                const glm::vec3 normal = vec3At(w + 3);
-                mesh.normals[v] = normal;
-                mesh.vertexMaterials[v] = uint8_t(vertexWords[w + 6]);
-                if (normal == glm::vec3(0.0f)) flag(uint32_t(v));
-            }
-            return;
+    s.helper.share(vertexPieces, [&](size_t piece) {
+        for (size_t v = piece * kVertexPiece; v < std::min<size_t>(vertexCount, (piece + 1) * kVertexPiece); ++v) {
+            const size_t w = v * kVertexWords;
+            mesh.positions[v] = vec3At(w);
+            const glm::vec3 normal = vec3At(w + 3);
+            mesh.normals[v] = normal;
+            mesh.vertexMaterials[v] = uint8_t(vertexWords[w + 6]);
+            if (normal == glm::vec3(0.0f)) flag(uint32_t(v));
         }
-        piece -= vertexPieces;
+    });
+    // The triangles after the vertices, each tested as it is copied (as triangleNormal and
+    // orientNormalsToFaces' test).
+    std::atomic<bool> inRange{true};
+    s.helper.share(trianglePieces, [&](size_t piece) {
         bool pieceInRange = true;
         for (size_t t = piece * kCopyPiece; t < std::min<size_t>(triangleCount, (piece + 1) * kCopyPiece); ++t) {
+            uint32_t corner[3];
             for (size_t k = 0; k < 3; ++k) {
-                const uint32_t index = triangleWords[t * kTriangleWords + k];
-                pieceInRange &= index < vertexCount;
-                mesh.triangles[t * 3 + k] = index;
+                corner[k] = triangleWords[t * kTriangleWords + k];
+                mesh.triangles[t * 3 + k] = corner[k];
             }
             mesh.triangleMaterials[t] = uint8_t(triangleWords[t * kTriangleWords + 3]);
-        }
-        if (!pieceInRange) inRange = false;
-    });
-    if (!inRange) throw InternalError("GPU marching cubes: a triangle names a vertex past the counted ones");
-    s.helper.share(trianglePieces, [&](size_t piece) {
-        for (size_t t = piece * kCopyPiece; t < std::min<size_t>(triangleCount, (piece + 1) * kCopyPiece); ++t) {
-            const uint32_t* corner = &mesh.triangles[t * 3];
+            if (corner[0] >= vertexCount || corner[1] >= vertexCount || corner[2] >= vertexCount) {
+                pieceInRange = false;
+                continue;
+            }
             const glm::dvec3 a(mesh.positions[corner[0]]), b(mesh.positions[corner[1]]), c(mesh.positions[corner[2]]);
-            const glm::dvec3 face = glm::cross(b - a, c - a); // triangleNormal
+            const glm::dvec3 face = glm::cross(b - a, c - a);
             if (face == glm::dvec3(0.0)) continue;
             for (size_t k = 0; k < 3; ++k)
                 if (glm::dot(glm::dvec3(mesh.normals[corner[k]]), face) < 0.0) flag(corner[k]);
         }
+        if (!pieceInRange) inRange = false;
     });
+    if (!inRange) throw InternalError("GPU marching cubes: a triangle names a vertex past the counted ones");
     // Then their triangles, from the cells around their edges, and their new normals.
     incidentTriangles(mesh, against, static_cast<const uint32_t*>(s.vertexEdges.mapped),
                       static_cast<const uint32_t*>(s.activeCells.mapped), activeCount, s.tileCells, s.incident, s.incidentList);
