@@ -9,6 +9,7 @@
 
 #include "voxc/check/Check.h"
 #include "voxc/core/Errors.h"
+#include "voxc/core/Simd.h"
 #include "voxc/interp/Interpreter.h"
 #include "voxc/stages/Pipeline.h"
 #include "voxc/stages/Solve.h"
@@ -100,7 +101,9 @@ void registerSolve(JsonReporter& reporter, int32_t scale, const std::string& bac
 void registerCurves(JsonReporter& reporter, VulkanContext* context, bool interp, bool host) {
     for (int32_t scale : {1, 2}) {
         const int n = 128 * scale;
-        if (host) registerSolve(reporter, scale, "host", "cpu (2 threads)", [] { return curves::Solvers{}; });
+        if (host)
+            registerSolve(reporter, scale, "host", fmt::format("cpu (2 threads, {} kernels)", simdName(hostSimd())),
+                          [] { return curves::Solvers{}; });
         if (context)
             registerSolve(reporter, scale, "vulkan", context->device().name,
                           [context] { return vulkanCurvesSolvers([context] { return context; }); });

@@ -2,6 +2,7 @@
 
 #include "ChunkWorkers.h"
 #include "voxc/core/HugePages.h"
+#include "voxc/core/Simd.h"
 
 #include <algorithm>
 #include <atomic>
@@ -54,8 +55,7 @@ using Classify = void (*)(const float*, int, float, uint64_t*, int);
 
 Classify classifier() {
 #ifdef VOXC_MESH_X86
-    static const bool avx2 = __builtin_cpu_supports("avx2");
-    if (avx2) return classifyAvx2;
+    if (hostSimd() >= Simd::Avx2) return classifyAvx2;
 #endif
     return classifyScalar;
 }

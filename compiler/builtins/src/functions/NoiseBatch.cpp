@@ -2,6 +2,7 @@
 
 #include "Noise.h"
 #include "NoiseCommon.h"
+#include "voxc/core/Simd.h"
 
 #include <algorithm>
 #include <cmath>
@@ -148,12 +149,11 @@ void warpedFbmBatch(const float* x, const float* y, const float* z, const float*
                     float warpHigh, uint32_t seed, size_t n, float* out) {
     size_t i = 0;
 #ifdef VOXC_NOISE_AVX2
-    static const bool avx2 = __builtin_cpu_supports("avx2");
-    static const bool avx512 = __builtin_cpu_supports("avx512f");
-    if (avx2) {
+    const Simd simd = hostSimd();
+    if (simd >= Simd::Avx2) {
         const int* table = perlinPermutation().data();
         const int offsets[3] = {noise::seedOffset(seed, 0), noise::seedOffset(seed, 1), noise::seedOffset(seed, 2)};
-        if (avx512)
+        if (simd == Simd::Avx512)
             for (; i + 16 <= n; i += 16) {
                 float base[16];
                 for (int lane = 0; lane < 16; ++lane) base[lane] = std::exp2(-(1.0f - roughness[i + size_t(lane)]));

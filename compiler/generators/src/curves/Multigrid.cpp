@@ -1,6 +1,7 @@
 #include "voxc/generators/curves/Multigrid.h"
 
 #include "Parallel.h"
+#include "voxc/core/Simd.h"
 
 #include <algorithm>
 #include <atomic>
@@ -359,12 +360,8 @@ __attribute__((target("avx512f,avx512bw,avx512dq,avx512vl"))) float maxResidualS
     return worst;
 }
 
-// Whether the CPU runs relaxColourSliceAvx512 and maxResidualSliceAvx512 (AVX-512 F, BW, DQ and VL).
-bool hasColourKernel() {
-    static const bool has = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
-                            __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl");
-    return has;
-}
+// Whether relaxColourSliceAvx512 and maxResidualSliceAvx512 run (AVX-512 F, BW, DQ and VL).
+bool hasColourKernel() { return hostSimd() == Simd::Avx512; }
 #endif
 
 // One colour's half sweep of slice z of component c: relaxColourRow on every row, or where the
