@@ -52,6 +52,26 @@ TEST(NoiseBatch, WarpedFbmEqualsTheBuiltinBitForBit) {
         }
 }
 
+// The curves displacement's points: a box's cells times the noise frequency, so many on lattice
+// planes (a fractional part of 0), in batches of every length a slice gives.
+TEST(NoiseBatch, LatticeAlignedPointsEqualTheBuiltin) {
+    std::mt19937 random(11);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    const size_t n = 4096;
+    for (uint32_t seed : {0u, 1u, 123456789u})
+        for (float frequency : {0.125f, 0.03125f}) {
+            std::vector<float> x(n), y(n), z(n), r(n), out(n);
+            for (size_t i = 0; i < n; ++i) {
+                x[i] = float(i % 64) * frequency, y[i] = float(i / 64 % 32) * frequency;
+                z[i] = float(i / 2048 + 3) * frequency, r[i] = unit(random);
+            }
+            warpedFbmBatch(x.data(), y.data(), z.data(), r.data(), 0.0f, 0.0f, seed, n, out.data());
+            size_t exact = 0;
+            for (size_t i = 0; i < n; ++i) exact += sameBits(out[i], scalarWarpedFbm(x[i], y[i], z[i], r[i], 0.0f, 0.0f, seed));
+            EXPECT_EQ(exact, n) << "seed " << seed << " frequency " << frequency;
+        }
+}
+
 TEST(NoiseBatch, NonFiniteLanesAreNaNLikeTheBuiltin) {
     std::vector<float> x(16, 1.5f), y(16, -2.25f), z(16, 3.0f), r(16, 0.5f), out(16);
     x[1] = INFINITY, y[6] = -INFINITY, z[9] = NAN;

@@ -5,6 +5,7 @@
 #include "voxc/core/Simd.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #if defined(__GNUC__) && defined(__x86_64__)
@@ -17,6 +18,18 @@ namespace voxc {
 namespace {
 
 #ifdef VOXC_NOISE_AVX2
+// Perlin's permutation as pairs, as the shaders read it (noise_permutation.glsl): entry i holds
+// perm(i) in bits 0..7 and perm(i + 1) in bits 8..15, so one gather serves the two lookups
+// perlin3 makes at i and i + 1: seven gathers per perlin3 instead of fourteen, the same values.
+const std::array<int, 256>& permutationPairs() {
+    static const std::array<int, 256> pairs = [] {
+        std::array<int, 256> built{};
+        for (int i = 0; i < 256; ++i) built[size_t(i)] = noise::perm(i) | noise::perm(i + 1) << 8;
+        return built;
+    }();
+    return pairs;
+}
+
 // noise::perlin3 (GradientNoise.cpp) and noise::warpedFbm (Fractal.cpp) over a register of lanes:
 // the same operations in the same order, so every lane rounds as the scalar code does. Selects
 // replace the scalar branches; a lane with a non-finite coordinate computes with a masked lattice
@@ -47,9 +60,12 @@ LANES inline Ints lattice(Floats floored, int offset) {
     return _mm256_and_si256(plus(_mm256_cvttps_epi32(wrapped), offset), _mm256_set1_epi32(255));
 }
 
-LANES inline Ints perm(const int* table, Ints i) {
-    return _mm256_i32gather_epi32(table, _mm256_and_si256(i, _mm256_set1_epi32(255)), 4);
+// The permutation pair (perm(i) | perm(i + 1) << 8) at i & 255, and its two halves.
+LANES inline Ints pairAt(const int* pairs, Ints i) {
+    return _mm256_i32gather_epi32(pairs, _mm256_and_si256(i, _mm256_set1_epi32(255)), 4);
 }
+LANES inline Ints low(Ints pair) { return _mm256_and_si256(pair, _mm256_set1_epi32(255)); }
+LANES inline Ints high(Ints pair) { return _mm256_srli_epi32(pair, 8); }
 
 LANES inline Floats select(Ints condition, Floats whenTrue, Floats whenFalse) {
     return _mm256_blendv_ps(whenFalse, whenTrue, _mm256_castsi256_ps(condition));
@@ -108,10 +124,13 @@ LANES inline Ints lattice(Floats floored, int offset) {
     return _mm512_and_si512(plus(_mm512_maskz_cvttps_epi32(0xFFFF, wrapped), offset), _mm512_set1_epi32(255));
 }
 
-LANES inline Ints perm(const int* table, Ints i) {
+LANES inline Ints pairAt(const int* pairs, Ints i) {
     return _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), 0xFFFF, _mm512_and_si512(i, _mm512_set1_epi32(255)),
-                                       table, 4);
+                                       pairs, 4);
 }
+LANES inline Ints low(Ints pair) { return _mm512_and_si512(pair, _mm512_set1_epi32(255)); }
+// (the unmasked shift reads an undefined register)
+LANES inline Ints high(Ints pair) { return _mm512_maskz_srli_epi32(0xFFFF, pair, 8); }
 
 LANES inline Floats flippedSign(Floats v) {
     return _mm512_castsi512_ps(_mm512_xor_si512(_mm512_castps_si512(v), _mm512_set1_epi32(int32_t(0x80000000u))));
@@ -151,19 +170,19 @@ void warpedFbmBatch(const float* x, const float* y, const float* z, const float*
 #ifdef VOXC_NOISE_AVX2
     const Simd simd = hostSimd();
     if (simd >= Simd::Avx2) {
-        const int* table = perlinPermutation().data();
+        const int* pairs = permutationPairs().data();
         const int offsets[3] = {noise::seedOffset(seed, 0), noise::seedOffset(seed, 1), noise::seedOffset(seed, 2)};
         if (simd == Simd::Avx512)
             for (; i + 16 <= n; i += 16) {
                 float base[16];
                 for (int lane = 0; lane < 16; ++lane) base[lane] = std::exp2(-(1.0f - roughness[i + size_t(lane)]));
-                lanes16::warpedFbm(x + i, y + i, z + i, base, warpLow, warpHigh, table, offsets, out + i);
+                lanes16::warpedFbm(x + i, y + i, z + i, base, warpLow, warpHigh, pairs, offsets, out + i);
             }
         for (; i + 8 <= n; i += 8) {
             // The layer amplitude's base 2^-(1 - R), by the scalar exp2 (libm's, as warpedFbm's).
             float base[8];
             for (int lane = 0; lane < 8; ++lane) base[lane] = std::exp2(-(1.0f - roughness[i + size_t(lane)]));
-            lanes8::warpedFbm(x + i, y + i, z + i, base, warpLow, warpHigh, table, offsets, out + i);
+            lanes8::warpedFbm(x + i, y + i, z + i, base, warpLow, warpHigh, pairs, offsets, out + i);
         }
         if (i < n) {
             // The last 1-7 points in one register too, padded with copies of the last one (lanes
@@ -175,7 +194,7 @@ void warpedFbmBatch(const float* x, const float* y, const float* z, const float*
                 px[lane] = x[j], py[lane] = y[j], pz[lane] = z[j];
                 base[lane] = std::exp2(-(1.0f - roughness[j]));
             }
-            lanes8::warpedFbm(px, py, pz, base, warpLow, warpHigh, table, offsets, result);
+            lanes8::warpedFbm(px, py, pz, base, warpLow, warpHigh, pairs, offsets, result);
             for (size_t lane = 0; i + lane < n; ++lane) out[i + lane] = result[lane];
             i = n;
         }

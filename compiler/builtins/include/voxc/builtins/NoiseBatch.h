@@ -3,7 +3,8 @@
 // of a box (the curves solve's displacement). Each result equals the builtin's single-point CPU
 // evaluation bit for bit (tests/functions NoiseBatch); where the CPU has AVX2, eight points run
 // in one vector register (sixteen where it has AVX-512; a short rest in one padded register), with
-// the same IEEE operations in the same order (no FMA).
+// the same IEEE operations in the same order (no FMA), and Perlin's permutation read as pairs
+// (one gather for the lookups at i and i + 1, as the shaders read it).
 #include <cstddef>
 #include <cstdint>
 
