@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Usage: simd_paths.sh VOXC SOURCE_DIR. The host's hand-vectorised loops (the curves multigrid's
-# colour sweeps and max residuals, the batched noise of the curves' displacement, the mesher's
-# sign classification) give the same bits on every path: VOXC_SIMD=avx2 and none against the
-# CPU's widest path (docs/cli.md, "Environment"). On a CPU without AVX-512 the avx512 run is its
+# Usage: simd_paths.sh VOXC SOURCE_DIR. The host's vectorised loops (the curves multigrid's row
+# kernels, colour sweeps and max residuals, the batched noise of the curves' displacement, the
+# erosion's row kernels, the mesher's sign classification) give the same bits on every path:
+# VOXC_SIMD=avx2 and none against the CPU's widest path (docs/cli.md, "Environment"). On a CPU without AVX-512 the avx512 run is its
 # widest path again, so the test still compares every path the CPU has.
 set -u
 voxc=$1
@@ -20,12 +20,15 @@ for simd in avx512 avx2 none; do
     VOXC_SIMD=$simd VOXC_CACHE_DIR="$out/cache" "$voxc" interp -q "$src/examples/curves_cliff.vox" \
         --voxels "$out/cliff.npy" --materials "$out/cliff_materials.npy" --dump "${dumps[@]}" 2> "$out/stderr" ||
         { echo "FAIL: interp with VOXC_SIMD=$simd"; cat "$out/stderr"; status=1; }
+    VOXC_SIMD=$simd VOXC_CACHE_DIR="$out/cache" "$voxc" interp -q "$src/examples/mountains.vox" \
+        --voxels "$out/mountains.npy" --materials "$out/mountains_materials.npy" 2>> "$out/stderr" ||
+        { echo "FAIL: interp of mountains.vox with VOXC_SIMD=$simd"; cat "$out/stderr"; status=1; }
     VOXC_SIMD=$simd VOXC_CACHE_DIR="$out/cache" "$voxc" run -q "$src/examples/overhang.vox" -o "$out/overhang.ply" \
         2>> "$out/stderr" || { echo "FAIL: run with VOXC_SIMD=$simd"; cat "$out/stderr"; status=1; }
     if [ -s "$out/stderr" ]; then echo "FAIL: VOXC_SIMD=$simd printed:"; cat "$out/stderr"; status=1; fi
 done
 for simd in avx2 none; do
-    for file in cliff.npy cliff_materials.npy overhang.ply "${channels[@]/%/.npy}"; do
+    for file in cliff.npy cliff_materials.npy mountains.npy mountains_materials.npy overhang.ply "${channels[@]/%/.npy}"; do
         if ! cmp -s "$work/avx512/$file" "$work/$simd/$file"; then
             echo "FAIL: $file differs between VOXC_SIMD=avx512 and $simd"
             status=1

@@ -10,7 +10,7 @@ namespace {
 Simd cpuSimd() {
 #if defined(__x86_64__) || defined(__i386__)
     if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512dq") &&
-        __builtin_cpu_supports("avx512vl"))
+        __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512cd"))
         return Simd::Avx512;
     if (__builtin_cpu_supports("avx2")) return Simd::Avx2;
 #endif

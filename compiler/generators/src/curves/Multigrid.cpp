@@ -2,6 +2,7 @@
 
 #include "MultigridAvx512.h"
 #include "Parallel.h"
+#include "voxc/core/Simd.h"
 
 #include <algorithm>
 #include <atomic>
@@ -61,17 +62,13 @@ constexpr uint64_t kMinCellsForThreads = 1u << 18;
 // forTwoSlabs' minimum slice count for a pass over `cells` cells.
 int32_t minSlicesForThreads(uint64_t cells) { return cells >= kMinCellsForThreads ? 2 : INT32_MAX; }
 
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-// AVX-512 and AVX2 clones where the CPU has them: elementwise IEEE +, x, / give the same bits at
-// every width, and the build has -ffp-contract=off (no FMA changes a rounding). The AVX-512 clone
+// The row kernels run compiled for AVX-512 (x86-64-v4) or AVX2 where the CPU has them and
+// VOXC_SIMD allows (atHostSimd, voxc/core/Simd.h): elementwise IEEE +, x, / give the same bits at
+// every width, and the build has -ffp-contract=off (no FMA changes a rounding). The AVX-512 form
 // took 0.77-0.96x the row kernels' CPU samples of the AVX2 one at 256x128x256 (load 8.7-9.3).
 // It is x86-64-v4's (AVX-512 F, BW, DQ, VL, CD), not AVX512F's alone: byte masks and 32-bit
 // lanes convert and compare in mask registers, which cut the multigrid's samples by about 7%
 // (storeRelaxed about 15%).
-#define VOXC_ROW_KERNEL __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
-#else
-#define VOXC_ROW_KERNEL
-#endif
 
 // A row's own values and its four y/z neighbour rows (`absent` where outside the box).
 struct RowNeighbours {
@@ -90,7 +87,7 @@ inline float overRelaxed(float u, float relaxed, float omega) { return u + omega
 // sum from 0 in neighbour order. Plain arguments and restrict pointers let the compiler vectorise
 // it (elementwise only: no operation is reordered). Every cell is computed, so the store is a
 // plain select (a select around the arithmetic would not be if-converted: it may trap).
-VOXC_ROW_KERNEL
+VOXC_SIMD_KERNEL
 void relaxRow(const float* __restrict centre, const float* __restrict ym, const float* __restrict yp,
               const float* __restrict zm, const float* __restrict zp, const float* __restrict rhs, float wx, float wy,
               float wz, float weights, float omega, int32_t n, float* __restrict out) {
@@ -110,7 +107,7 @@ void relaxRow(const float* __restrict centre, const float* __restrict ym, const 
 // and s - (+0) = s for every float (-0 included), so the same bits with seven operations fewer
 // per cell of the fourteen left after the loads (the row kernels are bound by their arithmetic:
 // in L1, relaxRow takes the same time with its division replaced by a multiplication).
-VOXC_ROW_KERNEL
+VOXC_SIMD_KERNEL
 void relaxRowFinest(const float* __restrict centre, const float* __restrict ym, const float* __restrict yp,
                     const float* __restrict zm, const float* __restrict zp, float weights, float omega, int32_t n,
                     float* __restrict out) {
@@ -131,7 +128,7 @@ void relaxRowFinest(const float* __restrict centre, const float* __restrict ym, 
 // relaxed read at every cell (read on one side of the select only, it took masked loads). (Masks
 // of the cells to keep, per level and parity, cost as much to read and 2 bytes per cell of fresh
 // memory.)
-VOXC_ROW_KERNEL
+VOXC_SIMD_KERNEL
 void storeRelaxed(const float* __restrict relaxed, const uint8_t* __restrict fixed, int32_t parity, int32_t n,
                   float* __restrict u) {
     for (int32_t x = 1; x + 1 < n; ++x) {
@@ -167,14 +164,14 @@ void relaxColourRow(Level& level, size_t c, int32_t colour, bool zeroRhs, int32_
     const uint8_t* fixed = level.fixed.data() + i0;
     const bool finest = zeroRhs && wx == 1.0f && wy == 1.0f && wz == 1.0f;
     if (finest)
-        relaxRowFinest(u + i0, r.ym, r.yp, r.zm, r.zp, weights, omega, n, relaxed);
+        atHostSimd<relaxRowFinest>(u + i0, r.ym, r.yp, r.zm, r.zp, weights, omega, n, relaxed);
     else
-        relaxRow(u + i0, r.ym, r.yp, r.zm, r.zp, rhs, wx, wy, wz, weights, omega, n, relaxed);
+        atHostSimd<relaxRow>(u + i0, r.ym, r.yp, r.zm, r.zp, rhs, wx, wy, wz, weights, omega, n, relaxed);
     if (exactWrites) {
         for (int32_t x = 2 - parity; x + 1 < n; x += 2)
             if (!fixed[x]) u[i0 + size_t(x)] = relaxed[x];
     } else {
-        storeRelaxed(relaxed, fixed, parity, n, u + i0);
+        atHostSimd<storeRelaxed>(relaxed, fixed, parity, n, u + i0);
     }
     // The end cells (a missing x neighbour): the per-cell sums over the neighbours present, in
     // neighbour order (forNeighbours' visits written out with the row's weights).
@@ -242,7 +239,7 @@ float residualAt(const Level& level, const std::vector<float>& u, float f, int32
 
 // out[x] = rhs[x] - sum_j w_j (u_j - u_i) for x in [1, n - 1) (rhs null: 0), the sum from 0 in
 // neighbour order; vectorisable like relaxRow.
-VOXC_ROW_KERNEL
+VOXC_SIMD_KERNEL
 void laplaceResidualRow(const float* __restrict u, const float* __restrict ym, const float* __restrict yp,
                         const float* __restrict zm, const float* __restrict zp, const float* __restrict rhs, float wx,
                         float wy, float wz, int32_t n, float* __restrict out) {
@@ -261,7 +258,7 @@ void laplaceResidualRow(const float* __restrict u, const float* __restrict ym, c
 
 // laplaceResidualRow with every weight 1 and no right-hand side (the finest level): 1 * v = v,
 // so the same bits with six multiplications fewer per cell.
-VOXC_ROW_KERNEL
+VOXC_SIMD_KERNEL
 void laplaceResidualRowFinest(const float* __restrict u, const float* __restrict ym, const float* __restrict yp,
                               const float* __restrict zm, const float* __restrict zp, int32_t n, float* __restrict out) {
     for (int32_t x = 1; x + 1 < n; ++x) {
@@ -278,7 +275,7 @@ void laplaceResidualRowFinest(const float* __restrict u, const float* __restrict
 }
 
 // out[x] = 0 where fixed[x]; a select, so it vectorises.
-VOXC_ROW_KERNEL
+VOXC_SIMD_KERNEL
 void zeroFixed(const uint8_t* __restrict fixed, int32_t n, float* __restrict out) {
     for (int32_t x = 0; x < n; ++x) out[x] = fixed[x] ? 0.0f : out[x];
 }
@@ -293,13 +290,13 @@ void residualRow(const Level& level, const std::vector<float>& values, const flo
     const float* u = values.data() + i0;
     const RowNeighbours r = rowNeighbours(b, values.data(), y, z, u);
     if (!rhs && level.weight == glm::vec3(1.0f))
-        laplaceResidualRowFinest(u, r.ym, r.yp, r.zm, r.zp, n, out);
+        atHostSimd<laplaceResidualRowFinest>(u, r.ym, r.yp, r.zm, r.zp, n, out);
     else
-        laplaceResidualRow(u, r.ym, r.yp, r.zm, r.zp, rhs ? rhs + i0 : nullptr, level.weight.x, level.weight.y,
-                           level.weight.z, n, out);
+        atHostSimd<laplaceResidualRow>(u, r.ym, r.yp, r.zm, r.zp, rhs ? rhs + i0 : nullptr, level.weight.x,
+                                       level.weight.y, level.weight.z, n, out);
     out[0] = residualAt(level, values, rhs ? rhs[i0] : 0.0f, 0, y, z);
     if (n > 1) out[n - 1] = residualAt(level, values, rhs ? rhs[i0 + size_t(n - 1)] : 0.0f, n - 1, y, z);
-    zeroFixed(level.fixed.data() + i0, n, out);
+    atHostSimd<zeroFixed>(level.fixed.data() + i0, n, out);
 }
 
 // Which axes the next level halves (ceil): every axis of >= 2 cells while the longest has >= 8;
@@ -313,7 +310,7 @@ glm::ivec3 halvedAxes(const Box& b) {
 
 // The coarse rows interpolated along x at every fine column: out[x] = near * row[x0[x]] + far *
 // row[x1[x]] (the trilinear prolongation's first step), gathers through the parent columns.
-VOXC_ROW_KERNEL
+VOXC_SIMD_KERNEL
 void interpolateAlongX(const float* __restrict row, const int32_t* __restrict x0, const int32_t* __restrict x1,
                        float near, float far, int32_t n, float* __restrict out) {
     for (int32_t x = 0; x < n; ++x) out[x] = near * row[x0[x]] + far * row[x1[x]];
@@ -330,7 +327,7 @@ struct AlongXRows {
 // is first computed at every cell into a local row (added to out where `add`), then stored with a
 // branch-free select that keeps the fixed cells: a select around the arithmetic, or a load only
 // one side of it makes, is not if-converted (it may trap) and leaves the loop scalar.
-VOXC_ROW_KERNEL
+VOXC_SIMD_KERNEL
 void prolongRow(AlongXRows c, float n1, float f1, float n2, float f2, const uint8_t* __restrict fixed, bool add,
                 int32_t n, float* __restrict out) {
     const float* __restrict r00 = c.r00;
@@ -358,7 +355,7 @@ void prolongRow(AlongXRows c, float n1, float f1, float n2, float f2, const uint
 
 // max(worst, max_x |values[x]|): eight running maxima, merged at the end (a max does not depend
 // on the order, so the result is the plain loop's; the values are finite), so it vectorises.
-VOXC_ROW_KERNEL
+VOXC_SIMD_KERNEL
 float maxAbs(const float* __restrict values, int32_t n, float worst) {
     float lanes[8] = {worst, worst, worst, worst, worst, worst, worst, worst};
     int32_t x = 0;
@@ -381,7 +378,7 @@ float maxResidualOfSlice(const Level& level, const std::vector<float>& u, int32_
 #endif
     for (int32_t y = 0; y < b.size.y; ++y) {
         residualRow(level, u, nullptr, y, z, residual);
-        worst = maxAbs(residual, b.size.x, worst);
+        worst = atHostSimd<maxAbs>(residual, b.size.x, worst);
     }
     return worst;
 }
@@ -409,8 +406,8 @@ public:
         forTwoSlabs(coarse_.size.z, minSlicesForThreads(fine_.box.cellCount()), [&](int32_t z0, int32_t z1) {
             for (int32_t z = z0; z < z1; ++z)
                 for (int32_t y = 0; y < coarse_.size.y; ++y)
-                    interpolateAlongX(e.data() + coarse_.index(0, y, z), xs0_.data(), xs1_.data(), near_[0], far_[0], n,
-                                      alongX.data() + alongXRow(y, z));
+                    atHostSimd<interpolateAlongX>(e.data() + coarse_.index(0, y, z), xs0_.data(), xs1_.data(), near_[0],
+                                                  far_[0], n, alongX.data() + alongXRow(y, z));
         });
     }
 
@@ -423,7 +420,8 @@ public:
         const AlongXRows rows{a + alongXRow(ys[0], zs[0]), a + alongXRow(ys[1], zs[0]), a + alongXRow(ys[0], zs[1]),
                               a + alongXRow(ys[1], zs[1])};
         const size_t i0 = b.index(0, y, z);
-        prolongRow(rows, near_[1], far_[1], near_[2], far_[2], fine_.fixed.data() + i0, add, b.size.x, u.data() + i0);
+        atHostSimd<prolongRow>(rows, near_[1], far_[1], near_[2], far_[2], fine_.fixed.data() + i0, add, b.size.x,
+                               u.data() + i0);
     }
 
 private:
@@ -608,7 +606,7 @@ void restrictFixedMean(const Level& fine, const std::vector<float>& values, cons
 
 // sum[px] += the fine values of px's children along x, in x order: fine[2 px], then fine[2 px + 1]
 // (where it exists) on a halved axis, fine[px] on a kept one. Vectorisable.
-VOXC_ROW_KERNEL
+VOXC_SIMD_KERNEL
 void addChildren(const float* __restrict fine, int32_t n, int32_t halved, float* __restrict sum) {
     if (!halved) {
         for (int32_t x = 0; x < n; ++x) sum[x] += fine[x];
@@ -638,7 +636,7 @@ void restrictResidual(const Level& fine, size_t c, bool zeroRhs, Level& coarse) 
                 std::fill(sum.begin(), sum.end(), 0.0f);
                 const int32_t rows = forChildRows(b.size, halved, py, pz, [&](int32_t y, int32_t z) {
                     residualRow(fine, fine.u[c], rhs, y, z, residual.data());
-                    addChildren(residual.data(), b.size.x, halved.x, sum.data());
+                    atHostSimd<addChildren>(residual.data(), b.size.x, halved.x, sum.data());
                 });
                 // Each coarse cell's child count: its z and y children (rows) times its x children.
                 const size_t p0 = cb.index(0, py, pz);

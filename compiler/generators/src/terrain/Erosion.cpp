@@ -1,5 +1,6 @@
 #include "voxc/generators/terrain/Erosion.h"
 
+#include "voxc/core/Simd.h"
 #include "voxc/program/Random.h"
 
 #include <algorithm>
@@ -113,15 +114,10 @@ Drop dropAt(const ErosionParams& p, int32_t width, int32_t height, int32_t level
 // whichever band it lies in. Per-cell conditions are selects of values computed unconditionally,
 // so the rows' interiors are `omp simd` loops that GCC vectorises (built with -fopenmp-simd
 // -fno-trapping-math -fno-math-errno: compiler/generators/CMakeLists.txt), 8 wide in the AVX2
-// clone of each row kernel where the CPU has it. IEEE add, multiply, divide, sqrt, min and max
+// form of each row kernel where the CPU has it and VOXC_SIMD allows (atHostSimd, voxc/core/Simd.h;
+// at most AVX2: the kernels are not built for AVX-512). IEEE add, multiply, divide, sqrt, min and max
 // give the same bits at every width, and the build has -ffp-contract=off: no FMA changes a rounding.
 namespace {
-
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-#define VOXC_ROW_KERNEL __attribute__((target_clones("avx2", "default")))
-#else
-#define VOXC_ROW_KERNEL
-#endif
 
 // The read-only pointers of one row and its neighbour rows, clamped to the grid.
 struct Rows {
@@ -142,7 +138,7 @@ template <class Cell> void edgeColumns(int32_t w, Cell cell) {
 }
 
 // Rain on rows [y0, y1) (B3.4 step 1; not in the drain): a drop inside its disc, or uniform rain.
-VOXC_ROW_KERNEL void rainRows(ErosionGrid& g, const ErosionParams& p, const Drop& drop, int32_t y0, int32_t y1) {
+VOXC_SIMD_KERNEL void rainRows(ErosionGrid& g, const ErosionParams& p, const Drop& drop, int32_t y0, int32_t y1) {
     const int32_t w = g.width();
     const float radiusSquared = drop.radius * drop.radius, amount = p.dt * p.uniformRain;
     for (int32_t y = y0; y < y1; ++y) {
@@ -166,7 +162,7 @@ inline float surfaceLevel(float base, float difference, float water) { return (b
 
 // surface = (base + S_h) + d: the channel the device's surface pass writes (the flux rows add it
 // where they read it).
-VOXC_ROW_KERNEL void surfaceRows(ErosionGrid& g, int32_t y0, int32_t y1) {
+VOXC_SIMD_KERNEL void surfaceRows(ErosionGrid& g, int32_t y0, int32_t y1) {
     const size_t first = size_t(y0) * size_t(g.width()), last = size_t(y1) * size_t(g.width());
     const float* __restrict base = g.base.values.data();
     const float* __restrict difference = g.difference.values.data();
@@ -176,7 +172,7 @@ VOXC_ROW_KERNEL void surfaceRows(ErosionGrid& g, int32_t y0, int32_t y1) {
 }
 
 // surface = base + S_h, the bed the erosion's tilt reads.
-VOXC_ROW_KERNEL void bedRows(ErosionGrid& g, int32_t y0, int32_t y1) {
+VOXC_SIMD_KERNEL void bedRows(ErosionGrid& g, int32_t y0, int32_t y1) {
     const size_t first = size_t(y0) * size_t(g.width()), last = size_t(y1) * size_t(g.width());
     const float* __restrict base = g.base.values.data();
     const float* __restrict difference = g.difference.values.data();
@@ -209,7 +205,7 @@ inline void fluxCell(FluxConstants c, float level, float left, float right, floa
     fb = k * b;
 }
 
-VOXC_ROW_KERNEL void fluxRows(ErosionGrid& g, const ErosionParams& p, int32_t y0, int32_t y1) {
+VOXC_SIMD_KERNEL void fluxRows(ErosionGrid& g, const ErosionParams& p, int32_t y0, int32_t y1) {
     const FluxConstants c{(p.dt * p.pipeArea) * p.gravity, p.pipeLength, p.cellSize * p.cellSize, p.dt};
     const int32_t w = g.width(), h = g.height();
     for (int32_t y = y0; y < y1; ++y) {
@@ -265,7 +261,7 @@ inline void waterCell(WaterConstants c, float inRight, float inLeft, float inTop
 }
 
 // Water and velocity.
-VOXC_ROW_KERNEL void waterRows(ErosionGrid& g, const ErosionParams& p, float keep, int32_t y0, int32_t y1) {
+VOXC_SIMD_KERNEL void waterRows(ErosionGrid& g, const ErosionParams& p, float keep, int32_t y0, int32_t y1) {
     const WaterConstants c{p.dt, p.cellSize * p.cellSize, p.cellSize, (0.5f * p.cellSize) / p.dt, keep};
     const int32_t w = g.width(), h = g.height();
     for (int32_t y = y0; y < y1; ++y) {
@@ -322,7 +318,7 @@ inline void erodeCell(ErodeConstants c, float b, float left, float right, float 
 // Reads the bed b + S_h from base and difference (the bed's additions, done where they are read,
 // so the pass needs no other row's output of this step); writes S_h into differenceNext (the
 // caller swaps the halves).
-VOXC_ROW_KERNEL void erodeRows(ErosionGrid& g, const ErosionParams& p, int32_t y0, int32_t y1) {
+VOXC_SIMD_KERNEL void erodeRows(ErosionGrid& g, const ErosionParams& p, int32_t y0, int32_t y1) {
     const ErodeConstants c{p.depthLimit, p.minTilt, p.capacity, p.dt * p.suspension, p.dt * p.deposition, std::isfinite(p.depthLimit)};
     const int32_t w = g.width(), h = g.height();
     for (int32_t y = y0; y < y1; ++y) {
@@ -353,7 +349,7 @@ VOXC_ROW_KERNEL void erodeRows(ErosionGrid& g, const ErosionParams& p, int32_t y
 
 // Mei's backward sample (Eq 3.27): bilinear from the clamped departure point. The four samples
 // are gathers (AVX2 `vgatherdps` in the vectorised clone); the float operations are the scalar's.
-VOXC_ROW_KERNEL void transportMeiRows(ErosionGrid& g, const ErosionParams& p, int32_t y0, int32_t y1) {
+VOXC_SIMD_KERNEL void transportMeiRows(ErosionGrid& g, const ErosionParams& p, int32_t y0, int32_t y1) {
     const int32_t w = g.width(), h = g.height();
     const float dt = p.dt, cellSize = p.cellSize, right = float(w - 1), top = float(h - 1);
     const float* __restrict s1 = g.suspended.values.data();
@@ -385,7 +381,7 @@ struct SourceRow {
 // The sources of row sy: an arrival t = clamp(x + (u dt)/l_x, 0, W - 1) lies within half a cell
 // (the velocity clamp), so floor(t) is x - 1 or x, and the weights 1 - frac(t) and frac(t) land
 // on (x - 1, x) or (x, x + 1); the third offset gets 0.
-VOXC_ROW_KERNEL void conservativeSourceRow(const ErosionGrid& g, const ErosionParams& p, int32_t sy, SourceRow out) {
+VOXC_SIMD_KERNEL void conservativeSourceRow(const ErosionGrid& g, const ErosionParams& p, int32_t sy, SourceRow out) {
     const int32_t w = g.width(), h = g.height();
     const size_t row = size_t(sy) * size_t(w);
     const float dt = p.dt, cellSize = p.cellSize, right = float(w - 1), top = float(h - 1);
@@ -419,7 +415,7 @@ VOXC_ROW_KERNEL void conservativeSourceRow(const ErosionGrid& g, const ErosionPa
 
 // Adds the three sources x - 1, x, x + 1 of one source row to every cell x of a target row, in
 // that order; `dy` is the weight index along y (the target row's offset from the source's + 1).
-VOXC_ROW_KERNEL void gatherSourceRow(float* __restrict target, const SourceRow& source, int dy, int32_t w) {
+VOXC_SIMD_KERNEL void gatherSourceRow(float* __restrict target, const SourceRow& source, int dy, int32_t w) {
     const float* __restrict s = source.sediment;
     const float* __restrict x0 = source.x[0];
     const float* __restrict x1 = source.x[1];
@@ -450,21 +446,21 @@ void transportConservativeRows(ErosionGrid& g, const ErosionParams& p, int32_t y
         return SourceRow{base, {base + padded, base + 2 * padded, base + 3 * padded},
                          {base + 4 * padded, base + 5 * padded, base + 6 * padded}};
     };
-    if (y0 > 0) conservativeSourceRow(g, p, y0 - 1, ring(y0 - 1));
-    conservativeSourceRow(g, p, y0, ring(y0));
+    if (y0 > 0) atHostSimd<conservativeSourceRow, Simd::Avx2>(g, p, y0 - 1, ring(y0 - 1));
+    atHostSimd<conservativeSourceRow, Simd::Avx2>(g, p, y0, ring(y0));
     for (int32_t y = y0; y < y1; ++y) {
-        if (y + 1 < h) conservativeSourceRow(g, p, y + 1, ring(y + 1));
+        if (y + 1 < h) atHostSimd<conservativeSourceRow, Simd::Avx2>(g, p, y + 1, ring(y + 1));
         float* target = g.sediment.values.data() + size_t(y) * size_t(w);
         std::fill(target, target + w, 0.0f);
-        if (y > 0) gatherSourceRow(target, ring(y - 1), 2, w);
-        gatherSourceRow(target, ring(y), 1, w);
-        if (y + 1 < h) gatherSourceRow(target, ring(y + 1), 0, w);
+        if (y > 0) atHostSimd<gatherSourceRow, Simd::Avx2>(target, ring(y - 1), 2, w);
+        atHostSimd<gatherSourceRow, Simd::Avx2>(target, ring(y), 1, w);
+        if (y + 1 < h) atHostSimd<gatherSourceRow, Simd::Avx2>(target, ring(y + 1), 0, w);
     }
 }
 
 void transportRows(ErosionGrid& g, const ErosionParams& p, int32_t y0, int32_t y1, std::vector<float>& scratch) {
     if (p.transport == Transport::Mei)
-        transportMeiRows(g, p, y0, y1);
+        atHostSimd<transportMeiRows, Simd::Avx2>(g, p, y0, y1);
     else
         transportConservativeRows(g, p, y0, y1, scratch);
 }
@@ -478,19 +474,21 @@ constexpr int32_t kMinRowsForTwoThreads = 256;
 void addRain(ErosionGrid& g, const ErosionParams& p, int32_t level, uint32_t step) {
     if (p.rain == RainMode::None) return;
     const Drop drop = p.rain == RainMode::Drops ? dropAt(p, g.width(), g.height(), level, step) : Drop{};
-    rainRows(g, p, drop, 0, g.height());
+    atHostSimd<rainRows, Simd::Avx2>(g, p, drop, 0, g.height());
 }
 
 void updateFlux(ErosionGrid& g, const ErosionParams& p) {
-    surfaceRows(g, 0, g.height());
-    fluxRows(g, p, 0, g.height());
+    atHostSimd<surfaceRows, Simd::Avx2>(g, 0, g.height());
+    atHostSimd<fluxRows, Simd::Avx2>(g, p, 0, g.height());
 }
 
-void updateWaterAndVelocity(ErosionGrid& g, const ErosionParams& p) { waterRows(g, p, 1.0f, 0, g.height()); }
+void updateWaterAndVelocity(ErosionGrid& g, const ErosionParams& p) {
+    atHostSimd<waterRows, Simd::Avx2>(g, p, 1.0f, 0, g.height());
+}
 
 void erodeAndDeposit(ErosionGrid& g, const ErosionParams& p) {
-    bedRows(g, 0, g.height());
-    erodeRows(g, p, 0, g.height());
+    atHostSimd<bedRows, Simd::Avx2>(g, 0, g.height());
+    atHostSimd<erodeRows, Simd::Avx2>(g, p, 0, g.height());
     std::swap(g.difference, g.differenceNext);
 }
 
@@ -522,20 +520,20 @@ void erosionSteps(ErosionGrid& g, const ErosionParams& p, int32_t level, uint32_
     };
     const auto band = [&](auto&& wait, int32_t y0, int32_t y1) {
         std::vector<float> scratch; // the conservative transport's source rows
-        if (rain && steps > 0) rainRows(g, p, dropOf(firstStep), y0, y1);
+        if (rain && steps > 0) atHostSimd<rainRows, Simd::Avx2>(g, p, dropOf(firstStep), y0, y1);
         wait();
         for (uint32_t step = firstStep; step < end; ++step) {
-            fluxRows(g, p, y0, y1);
+            atHostSimd<fluxRows, Simd::Avx2>(g, p, y0, y1);
             wait();
             const bool rainNext = rain && step + 1 < end;
             const Drop next = rainNext ? dropOf(step + 1) : Drop{};
             for (int32_t y = y0; y < y1; y += kRowsPerChunk) {
                 const int32_t last = std::min(y + kRowsPerChunk, y1);
-                waterRows(g, p, keep, y, last);
-                if (rainNext) rainRows(g, p, next, y, last);
-                erodeRows(g, p, y, last);
+                atHostSimd<waterRows, Simd::Avx2>(g, p, keep, y, last);
+                if (rainNext) atHostSimd<rainRows, Simd::Avx2>(g, p, next, y, last);
+                atHostSimd<erodeRows, Simd::Avx2>(g, p, y, last);
             }
-            if (step + 1 == end) bedRows(g, y0, y1);
+            if (step + 1 == end) atHostSimd<bedRows, Simd::Avx2>(g, y0, y1);
             wait(); // S_h's halves swap here
             transportRows(g, p, y0, y1, scratch);
         }
