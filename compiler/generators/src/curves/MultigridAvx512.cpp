@@ -11,24 +11,104 @@
 namespace voxc::curves {
 namespace {
 
+#define VOXC_AVX512 __attribute__((target("avx512f,avx512bw,avx512dq,avx512vl")))
+
+// One row of a colour's half sweep: its rows, weights and lane constants.
+struct ColourRow {
+    float* u;
+    const float *ym, *yp, *zm, *zp, *rhs;
+    const uint8_t* fixed;
+    int32_t n;
+    __m512 vwx, vwy, vwz, vomega, vweights, vendWeights;
+    __m512i even, odd, spreadLow, spreadHigh;
+};
+
+// 16 floats from p, those outside the row (clear in `inRow`) read as +0: a plain load where the
+// whole block lies inside it.
+template <bool full>
+VOXC_AVX512 __attribute__((always_inline)) inline __m512 lanes(const float* p, __mmask16 inRow) {
+    if constexpr (full) return _mm512_loadu_ps(p);
+    else return _mm512_maskz_loadu_ps(inRow, p);
+}
+
+// The even columns of the 32 from p + x0: the colour's cells, or their y/z neighbours in a row of p.
+template <bool full>
+VOXC_AVX512 __attribute__((always_inline)) inline __m512 colourLanes(__mmask16 low, __mmask16 high, __m512i even,
+                                                                      const float* p, int32_t x0) {
+    return _mm512_permutex2var_ps(lanes<full>(p + x0, low), even, lanes<full>(p + x0 + 16, high));
+}
+
+// The block of 32 columns from x0 (16 cells of the colour, x = x0 + 2k), `before` holding the -x
+// neighbour of its first cell in lane 15 (the block before's +x neighbours). `full`: the block
+// lies inside the row and holds neither end cell (x0 > 0, x0 + 32 <= n - 1), so its loads need
+// no masks and every lane divides by the interior weights: the same values as the masked form.
+template <bool finest, bool full>
+VOXC_AVX512 __attribute__((always_inline)) inline void relaxBlock(const ColourRow& r, int32_t x0, __m512& before) {
+    const int32_t n = r.n;
+    const int32_t left = n - x0; // columns from x0 to the row's end
+    const __mmask32 inRow = full || left >= 32 ? ~__mmask32(0) : __mmask32((uint32_t(1) << left) - 1);
+    const __mmask16 low = __mmask16(inRow), high = __mmask16(inRow >> 16);
+    const __m512 a = lanes<full>(r.u + x0, low), b = lanes<full>(r.u + x0 + 16, high);
+    const __m512 centre = _mm512_permutex2var_ps(a, r.even, b);
+    const __m512 right = _mm512_permutex2var_ps(a, r.odd, b); // +0 past the row's end
+    // (The maskz forms with every lane set: GCC 12's plain forms warn of their undefined source.)
+    const __m512 leftN = _mm512_castsi512_ps(
+        _mm512_maskz_alignr_epi32(0xffff, _mm512_castps_si512(right), _mm512_castps_si512(before), 15));
+    before = right;
+    __m512 sum = _mm512_setzero_ps();
+    if constexpr (finest) {
+        sum = _mm512_add_ps(sum, leftN);
+        sum = _mm512_add_ps(sum, right);
+        sum = _mm512_add_ps(sum, colourLanes<full>(low, high, r.even, r.ym, x0));
+        sum = _mm512_add_ps(sum, colourLanes<full>(low, high, r.even, r.yp, x0));
+        sum = _mm512_add_ps(sum, colourLanes<full>(low, high, r.even, r.zm, x0));
+        sum = _mm512_add_ps(sum, colourLanes<full>(low, high, r.even, r.zp, x0));
+    } else {
+        sum = _mm512_add_ps(sum, _mm512_mul_ps(r.vwx, leftN));
+        sum = _mm512_add_ps(sum, _mm512_mul_ps(r.vwx, right));
+        sum = _mm512_add_ps(sum, _mm512_mul_ps(r.vwy, colourLanes<full>(low, high, r.even, r.ym, x0)));
+        sum = _mm512_add_ps(sum, _mm512_mul_ps(r.vwy, colourLanes<full>(low, high, r.even, r.yp, x0)));
+        sum = _mm512_add_ps(sum, _mm512_mul_ps(r.vwz, colourLanes<full>(low, high, r.even, r.zm, x0)));
+        sum = _mm512_add_ps(sum, _mm512_mul_ps(r.vwz, colourLanes<full>(low, high, r.even, r.zp, x0)));
+        sum = _mm512_sub_ps(sum, colourLanes<full>(low, high, r.even, r.rhs, x0));
+    }
+    // Lane k holds x = x0 + 2k: the end cells are x = 0 (lane 0 of the first block) and x = n - 1.
+    __m512 divisor = r.vweights;
+    if constexpr (!full) {
+        __mmask16 ends = x0 == 0 ? __mmask16(1) : __mmask16(0);
+        if (((n - 1 - x0) & 1) == 0 && n - 1 - x0 < 32) ends |= __mmask16(1u << ((n - 1 - x0) >> 1));
+        divisor = _mm512_mask_blend_ps(ends, r.vweights, r.vendWeights);
+    }
+    const __m512 relaxed = _mm512_div_ps(sum, divisor);
+    const __m512 next = _mm512_add_ps(centre, _mm512_mul_ps(r.vomega, _mm512_sub_ps(relaxed, centre)));
+    // The colour's free cells among the row's columns from x0.
+    const __m256i f = full ? _mm256_loadu_si256(reinterpret_cast<const __m256i*>(r.fixed + x0))
+                           : _mm256_maskz_loadu_epi8(inRow, r.fixed + x0);
+    const __mmask32 store = _mm256_cmpeq_epi8_mask(f, _mm256_setzero_si256()) & inRow & __mmask32(0x55555555u);
+    _mm512_mask_storeu_ps(r.u + x0, __mmask16(store), _mm512_maskz_permutexvar_ps(0xffff, r.spreadLow, next));
+    _mm512_mask_storeu_ps(r.u + x0 + 16, __mmask16(store >> 16), _mm512_maskz_permutexvar_ps(0xffff, r.spreadHigh, next));
+}
+
 template <bool finest>
-__attribute__((target("avx512f,avx512bw,avx512dq,avx512vl"))) void relaxKernel(const SliceRows& s) {
+VOXC_AVX512 void relaxKernel(const SliceRows& s) {
     const int32_t n = s.n;
-    const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
-    const __m512i odd = _mm512_setr_epi32(1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31);
-    const __m512i spreadLow = _mm512_setr_epi32(0, 0, 1, 0, 2, 0, 3, 0, 4, 0, 5, 0, 6, 0, 7, 0);
-    const __m512i spreadHigh = _mm512_setr_epi32(8, 0, 9, 0, 10, 0, 11, 0, 12, 0, 13, 0, 14, 0, 15, 0);
-    const __m512 vwx = _mm512_set1_ps(s.wx), vwy = _mm512_set1_ps(s.wy), vwz = _mm512_set1_ps(s.wz);
-    const __m512 vomega = _mm512_set1_ps(kOverRelaxation);
+    ColourRow r{};
+    r.n = n;
+    r.even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
+    r.odd = _mm512_setr_epi32(1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31);
+    r.spreadLow = _mm512_setr_epi32(0, 0, 1, 0, 2, 0, 3, 0, 4, 0, 5, 0, 6, 0, 7, 0);
+    r.spreadHigh = _mm512_setr_epi32(8, 0, 9, 0, 10, 0, 11, 0, 12, 0, 13, 0, 14, 0, 15, 0);
+    r.vwx = _mm512_set1_ps(s.wx), r.vwy = _mm512_set1_ps(s.wy), r.vwz = _mm512_set1_ps(s.wz);
+    r.vomega = _mm512_set1_ps(kOverRelaxation);
     for (int32_t y = 0; y < s.rows; ++y) {
         const size_t offset = size_t(y) * size_t(n);
-        float* u = s.u + offset;
-        const float* ym = y > 0 ? u - n : s.zeros;
-        const float* yp = y + 1 < s.rows ? u + n : s.zeros;
-        const float* zm = s.below ? s.below + offset : s.zeros;
-        const float* zp = s.above ? s.above + offset : s.zeros;
-        const float* rhs = s.rhs ? s.rhs + offset : s.zeros;
-        const uint8_t* fixed = s.fixed + offset;
+        r.u = s.u + offset;
+        r.ym = y > 0 ? r.u - n : s.zeros;
+        r.yp = y + 1 < s.rows ? r.u + n : s.zeros;
+        r.zm = s.below ? s.below + offset : s.zeros;
+        r.zp = s.above ? s.above + offset : s.zeros;
+        r.rhs = s.rhs ? s.rhs + offset : s.zeros;
+        r.fixed = s.fixed + offset;
         // Sums of the present neighbours' weights from 0 in neighbour order: an interior cell's
         // (both x neighbours) and an end cell's (one).
         float weights = 0.0f, endWeights = 0.0f;
@@ -38,60 +118,19 @@ __attribute__((target("avx512f,avx512bw,avx512dq,avx512vl"))) void relaxKernel(c
         if (y + 1 < s.rows) weights += s.wy, endWeights += s.wy;
         if (s.below) weights += s.wz, endWeights += s.wz;
         if (s.above) weights += s.wz, endWeights += s.wz;
-        const __m512 vweights = _mm512_set1_ps(weights), vendWeights = _mm512_set1_ps(endWeights);
+        r.vweights = _mm512_set1_ps(weights), r.vendWeights = _mm512_set1_ps(endWeights);
         const int32_t xs = (s.firstParity + y) & 1; // (x + parity) even
         // Lane 15: the -x neighbour of the block's first cell (+0 at x = 0).
-        __m512 before = xs > 0 ? _mm512_set1_ps(u[xs - 1]) : _mm512_setzero_ps();
-        for (int32_t x0 = xs; x0 < n; x0 += 32) {
-            const int32_t left = n - x0; // columns from x0 to the row's end
-            const __mmask32 inRow = left >= 32 ? ~__mmask32(0) : __mmask32((uint32_t(1) << left) - 1);
-            const __mmask16 low = __mmask16(inRow), high = __mmask16(inRow >> 16);
-#define VOXC_COLOUR_LANES(p) \
-    _mm512_permutex2var_ps(_mm512_maskz_loadu_ps(low, (p) + x0), even, _mm512_maskz_loadu_ps(high, (p) + x0 + 16))
-            const __m512 a = _mm512_maskz_loadu_ps(low, u + x0), b = _mm512_maskz_loadu_ps(high, u + x0 + 16);
-            const __m512 centre = _mm512_permutex2var_ps(a, even, b);
-            const __m512 right = _mm512_permutex2var_ps(a, odd, b); // +0 past the row's end
-            // (The maskz forms with every lane set: GCC 12's plain forms warn of their undefined source.)
-            const __m512 leftN = _mm512_castsi512_ps(
-                _mm512_maskz_alignr_epi32(0xffff, _mm512_castps_si512(right), _mm512_castps_si512(before), 15));
-            before = right;
-            __m512 sum = _mm512_setzero_ps();
-            if constexpr (finest) {
-                sum = _mm512_add_ps(sum, leftN);
-                sum = _mm512_add_ps(sum, right);
-                sum = _mm512_add_ps(sum, VOXC_COLOUR_LANES(ym));
-                sum = _mm512_add_ps(sum, VOXC_COLOUR_LANES(yp));
-                sum = _mm512_add_ps(sum, VOXC_COLOUR_LANES(zm));
-                sum = _mm512_add_ps(sum, VOXC_COLOUR_LANES(zp));
-            } else {
-                sum = _mm512_add_ps(sum, _mm512_mul_ps(vwx, leftN));
-                sum = _mm512_add_ps(sum, _mm512_mul_ps(vwx, right));
-                sum = _mm512_add_ps(sum, _mm512_mul_ps(vwy, VOXC_COLOUR_LANES(ym)));
-                sum = _mm512_add_ps(sum, _mm512_mul_ps(vwy, VOXC_COLOUR_LANES(yp)));
-                sum = _mm512_add_ps(sum, _mm512_mul_ps(vwz, VOXC_COLOUR_LANES(zm)));
-                sum = _mm512_add_ps(sum, _mm512_mul_ps(vwz, VOXC_COLOUR_LANES(zp)));
-                sum = _mm512_sub_ps(sum, VOXC_COLOUR_LANES(rhs));
-            }
-#undef VOXC_COLOUR_LANES
-            // Lane k holds x = x0 + 2k: the end cells are x = 0 (lane 0 of the first block) and
-            // x = n - 1.
-            __mmask16 ends = x0 == 0 ? __mmask16(1) : __mmask16(0);
-            if (((n - 1 - x0) & 1) == 0 && n - 1 - x0 < 32) ends |= __mmask16(1u << ((n - 1 - x0) >> 1));
-            const __m512 divisor = _mm512_mask_blend_ps(ends, vweights, vendWeights);
-            const __m512 relaxed = _mm512_div_ps(sum, divisor);
-            const __m512 next = _mm512_add_ps(centre, _mm512_mul_ps(vomega, _mm512_sub_ps(relaxed, centre)));
-            // The colour's free cells among the row's columns from x0.
-            const __m256i f = _mm256_maskz_loadu_epi8(inRow, fixed + x0);
-            const __mmask32 store = _mm256_cmpeq_epi8_mask(f, _mm256_setzero_si256()) & inRow & __mmask32(0x55555555u);
-            _mm512_mask_storeu_ps(u + x0, __mmask16(store), _mm512_maskz_permutexvar_ps(0xffff, spreadLow, next));
-            _mm512_mask_storeu_ps(u + x0 + 16, __mmask16(store >> 16), _mm512_maskz_permutexvar_ps(0xffff, spreadHigh, next));
-        }
+        __m512 before = xs > 0 ? _mm512_set1_ps(r.u[xs - 1]) : _mm512_setzero_ps();
+        int32_t x0 = xs;
+        if (x0 == 0) relaxBlock<finest, false>(r, x0, before), x0 += 32;
+        for (; x0 + 32 <= n - 1; x0 += 32) relaxBlock<finest, true>(r, x0, before);
+        for (; x0 < n; x0 += 32) relaxBlock<finest, false>(r, x0, before);
     }
 }
 
 template <bool finest>
-__attribute__((target("avx512f,avx512bw,avx512dq,avx512vl"))) float maxResidualKernel(const SliceRows& s,
-                                                                                         float worst) {
+VOXC_AVX512 float maxResidualKernel(const SliceRows& s, float worst) {
     const int32_t n = s.n;
     const __m512 vwx = _mm512_set1_ps(s.wx), vwy = _mm512_set1_ps(s.wy), vwz = _mm512_set1_ps(s.wz);
     __m512 most = _mm512_set1_ps(worst);

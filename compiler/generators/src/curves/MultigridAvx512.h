@@ -35,8 +35,9 @@ bool hasColourKernel();
 // relaxColourRow's per-cell path sums them: so each lane computes relaxRow's (relaxRowFinest's)
 // or the end cell's expression, term by term in neighbour order (+, *, / per lane round as the
 // scalar ones; the build has -ffp-contract=off), and a masked store writes the colour's free cells
-// only, so it also serves the middle slices (exactWrites). `finest`: every weight 1 and no
-// right-hand side. Rows of at least 2 cells.
+// only, so it also serves the middle slices (exactWrites). The blocks inside a row that hold
+// neither end cell load without masks and divide by the interior weights: the same values.
+// `finest`: every weight 1 and no right-hand side. Rows of at least 2 cells.
 void relaxColourSliceAvx512(const SliceRows& s, bool finest);
 
 // max(worst, max |r|) over the free cells of a slice, r = 0 - sum_j w_j (u_j - u_i) (f = 0, as
