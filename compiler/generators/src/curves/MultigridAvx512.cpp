@@ -129,49 +129,72 @@ VOXC_AVX512 void relaxKernel(const SliceRows& s) {
     }
 }
 
+// One row's rows for maxResidualKernel (a missing neighbour row is the row itself).
+struct ResidualRow {
+    const float *u, *ym, *yp, *zm, *zp;
+    const uint8_t* fixed;
+    int32_t n;
+    __m512 vwx, vwy, vwz;
+};
+
+// max(most, |r|) over the free cells of the 16 columns from x0. `full`: both x neighbours of
+// every column lie in the row (x0 > 0, x0 + 16 < n), so no load needs a mask: the same values as
+// the masked form.
+template <bool finest, bool full>
+VOXC_AVX512 __attribute__((always_inline)) inline __m512 residualBlock(const ResidualRow& r, int32_t x0, __m512 most) {
+    const int32_t left = r.n - x0;
+    const __mmask16 inRow = full || left >= 16 ? __mmask16(0xffff) : __mmask16((1u << left) - 1);
+    __m512 c, l, rt, ym, yp, zm, zp;
+    __mmask16 free;
+    if constexpr (full) {
+        c = _mm512_loadu_ps(r.u + x0), l = _mm512_loadu_ps(r.u + x0 - 1), rt = _mm512_loadu_ps(r.u + x0 + 1);
+        ym = _mm512_loadu_ps(r.ym + x0), yp = _mm512_loadu_ps(r.yp + x0);
+        zm = _mm512_loadu_ps(r.zm + x0), zp = _mm512_loadu_ps(r.zp + x0);
+        free = _mm_cmpeq_epi8_mask(_mm_loadu_si128(reinterpret_cast<const __m128i*>(r.fixed + x0)), _mm_setzero_si128());
+    } else {
+        const __mmask16 hasLeft = x0 == 0 ? __mmask16(inRow & ~1u) : inRow;
+        const __mmask16 hasRight = left > 16 ? inRow : __mmask16(inRow >> 1);
+        c = _mm512_maskz_loadu_ps(inRow, r.u + x0);
+        l = _mm512_mask_loadu_ps(c, hasLeft, r.u + x0 - 1);
+        rt = _mm512_mask_loadu_ps(c, hasRight, r.u + x0 + 1);
+        ym = _mm512_mask_loadu_ps(c, inRow, r.ym + x0), yp = _mm512_mask_loadu_ps(c, inRow, r.yp + x0);
+        zm = _mm512_mask_loadu_ps(c, inRow, r.zm + x0), zp = _mm512_mask_loadu_ps(c, inRow, r.zp + x0);
+        free = _mm_mask_cmpeq_epi8_mask(inRow, _mm_maskz_loadu_epi8(inRow, r.fixed + x0), _mm_setzero_si128());
+    }
+    const __m512 terms[6] = {_mm512_sub_ps(l, c),  _mm512_sub_ps(rt, c), _mm512_sub_ps(ym, c),
+                             _mm512_sub_ps(yp, c), _mm512_sub_ps(zm, c), _mm512_sub_ps(zp, c)};
+    __m512 lap = _mm512_setzero_ps();
+    for (int32_t k = 0; k < 6; ++k) {
+        if constexpr (finest) {
+            lap = _mm512_add_ps(lap, terms[k]);
+        } else {
+            const __m512 w = k < 2 ? r.vwx : k < 4 ? r.vwy : r.vwz;
+            lap = _mm512_add_ps(lap, _mm512_mul_ps(w, terms[k]));
+        }
+    }
+    const __m512 residual = _mm512_sub_ps(_mm512_setzero_ps(), lap);
+    return _mm512_mask_max_ps(most, free, _mm512_abs_ps(residual), most);
+}
+
 template <bool finest>
 VOXC_AVX512 float maxResidualKernel(const SliceRows& s, float worst) {
     const int32_t n = s.n;
-    const __m512 vwx = _mm512_set1_ps(s.wx), vwy = _mm512_set1_ps(s.wy), vwz = _mm512_set1_ps(s.wz);
+    ResidualRow r{};
+    r.n = n;
+    r.vwx = _mm512_set1_ps(s.wx), r.vwy = _mm512_set1_ps(s.wy), r.vwz = _mm512_set1_ps(s.wz);
     __m512 most = _mm512_set1_ps(worst);
     for (int32_t y = 0; y < s.rows; ++y) {
         const size_t offset = size_t(y) * size_t(n);
-        const float* u = s.u + offset;
-        const float* ym = y > 0 ? u - n : u;
-        const float* yp = y + 1 < s.rows ? u + n : u;
-        const float* zm = s.below ? s.below + offset : u;
-        const float* zp = s.above ? s.above + offset : u;
-        const uint8_t* fixed = s.fixed + offset;
-        for (int32_t x0 = 0; x0 < n; x0 += 16) {
-            const int32_t left = n - x0;
-            const __mmask16 inRow = left >= 16 ? __mmask16(0xffff) : __mmask16((1u << left) - 1);
-            const __mmask16 hasLeft = x0 == 0 ? __mmask16(inRow & ~1u) : inRow;
-            const __mmask16 hasRight = left > 16 ? inRow : __mmask16(inRow >> 1);
-            const __m512 c = _mm512_maskz_loadu_ps(inRow, u + x0);
-            const __m512 l = _mm512_mask_loadu_ps(c, hasLeft, u + x0 - 1);
-            const __m512 r = _mm512_mask_loadu_ps(c, hasRight, u + x0 + 1);
-            const __m512 terms[6] = {
-                _mm512_sub_ps(l, c),
-                _mm512_sub_ps(r, c),
-                _mm512_sub_ps(_mm512_mask_loadu_ps(c, inRow, ym + x0), c),
-                _mm512_sub_ps(_mm512_mask_loadu_ps(c, inRow, yp + x0), c),
-                _mm512_sub_ps(_mm512_mask_loadu_ps(c, inRow, zm + x0), c),
-                _mm512_sub_ps(_mm512_mask_loadu_ps(c, inRow, zp + x0), c),
-            };
-            __m512 lap = _mm512_setzero_ps();
-            for (int32_t k = 0; k < 6; ++k) {
-                if constexpr (finest) {
-                    lap = _mm512_add_ps(lap, terms[k]);
-                } else {
-                    const __m512 w = k < 2 ? vwx : k < 4 ? vwy : vwz;
-                    lap = _mm512_add_ps(lap, _mm512_mul_ps(w, terms[k]));
-                }
-            }
-            const __m512 residual = _mm512_sub_ps(_mm512_setzero_ps(), lap);
-            const __mmask16 free =
-                _mm_mask_cmpeq_epi8_mask(inRow, _mm_maskz_loadu_epi8(inRow, fixed + x0), _mm_setzero_si128());
-            most = _mm512_mask_max_ps(most, free, _mm512_abs_ps(residual), most);
-        }
+        r.u = s.u + offset;
+        r.ym = y > 0 ? r.u - n : r.u;
+        r.yp = y + 1 < s.rows ? r.u + n : r.u;
+        r.zm = s.below ? s.below + offset : r.u;
+        r.zp = s.above ? s.above + offset : r.u;
+        r.fixed = s.fixed + offset;
+        most = residualBlock<finest, false>(r, 0, most);
+        int32_t x0 = 16;
+        for (; x0 + 16 < n; x0 += 16) most = residualBlock<finest, true>(r, x0, most);
+        for (; x0 < n; x0 += 16) most = residualBlock<finest, false>(r, x0, most);
     }
     float lanes[16];
     _mm512_storeu_ps(lanes, most);

@@ -45,6 +45,7 @@ void relaxColourSliceAvx512(const SliceRows& s, bool finest);
 // same expression in neighbour order; a missing neighbour, in x as in y and z, is the cell itself
 // (u_i - u_i = +0 changes no sum from +0, as residualRow's absent rows), and fixed cells (r = 0)
 // are left out of the max, which does not depend on the order (max(w, NaN) keeps w, as std::max).
+// The blocks whose x neighbours all lie in the row load without masks (the same values).
 // `finest`: every weight 1. Rows of at least 2 cells; s.rhs is not read.
 float maxResidualSliceAvx512(const SliceRows& s, bool finest, float worst);
 
