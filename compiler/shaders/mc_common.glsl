@@ -23,17 +23,10 @@ layout(set = 0, binding = 0) uniform samplerBuffer densityTexels;
 layout(set = 0, binding = 1) uniform usamplerBuffer materialTexels;
 // The densities again, four to a texel: a row of a chunk is contiguous, so four samples from
 // x = 0 mod 4 along it are one fetch.
-layout(set = 0, binding = 6) uniform samplerBuffer quadTexels;
+layout(set = 0, binding = 5) uniform samplerBuffer quadTexels;
 
 float densityTexel(uint address) { return texelFetch(densityTexels, int(address)).x; }
 vec4 quadTexel(uint quad) { return texelFetch(quadTexels, int(quad)); }
-
-// The active tiles' indices by rank, and the segments in global key order (below), as the host
-// listed them.
-layout(set = 0, binding = 7) uniform usamplerBuffer activeTileTexels;
-layout(set = 0, binding = 8) uniform usamplerBuffer segmentTexels;
-uint activeTile(uint rank) { return texelFetch(activeTileTexels, int(rank)).x; }
-uint segmentSlot(uint index) { return texelFetch(segmentTexels, int(index)).x; }
 
 // Dispatches are at most 65535 workgroups along x, so large ones use y as well. The local size
 // is a parameter: this file comes before the pass's local_size layout, where gl_WorkGroupSize
@@ -111,8 +104,8 @@ uint materialAt(ivec3 p) {
 // The passes after mc_tiles.glsl visit only the active tiles: world-aligned 8^3 tiles of cells
 // that hold a cell the surface crosses, listed by the host in tile order (z, then y, then x) and
 // ranked. A segment is the row of an active tile's cells along x at one (y, z), named by rank *
-// 64 + y + 8 z within the tile; the host lists the segments in global key order (segments.slot),
-// the order of the mesh. A cell has a slot, its tile's index among the tiles of cells (x fastest)
+// 64 + y + 8 z within the tile; the host lists the segments in global key order (GpuMesher.cpp,
+// TileLists::segments), the order of the mesh. A cell has a slot, its tile's index among the tiles of cells (x fastest)
 // * 512 + its place in the tile (x fastest), so that a cell finds its neighbours' slots without
 // a look-up.
 const uint kTileShift = 3u;

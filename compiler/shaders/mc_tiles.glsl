@@ -15,12 +15,12 @@
 layout(local_size_x = 64) in;
 
 // Bits 0-7: the regions holding a solid voxel; bits 8-15: those holding an air voxel.
-layout(std430, set = 0, binding = 3) buffer TileStates {
+layout(std430, set = 0, binding = 2) buffer TileStates {
     uint state[];
 } tiles;
 
 // The indices of the tiles to read, as the host listed them.
-layout(set = 0, binding = 13) uniform usamplerBuffer unknownTileTexels;
+layout(set = 0, binding = 10) uniform usamplerBuffer unknownTileTexels;
 
 const uint kWhole = 1u, kLowX = 2u, kLowY = 4u, kLowZ = 8u, kEdgeXY = 16u, kEdgeXZ = 32u, kEdgeYZ = 64u, kCorner = 128u;
 

@@ -36,9 +36,7 @@ constexpr int kTileShift = 3;              // tiles of 8^3 cells (mc_common.glsl
 constexpr uint32_t kTileSide = 1u << kTileShift;
 constexpr uint32_t kTileCells = kTileSide * kTileSide * kTileSide;
 constexpr uint32_t kTileSegments = kTileSide * kTileSide; // rows of a tile's cells along x
-constexpr uint32_t kCaseWords = 2;         // per case: up to 16 edge indices of 4 bits (mc_triangles.glsl)
 constexpr uint32_t kVertexWords = 8;       // position, normal, material, padding: two texels (mc_vertices.glsl)
-constexpr uint32_t kTriangleWords = 4;     // three indices, material
 constexpr uint32_t kActiveCellWords = 4;   // slot, first vertex, first triangle, cell word (mc_triangles.glsl)
 
 struct Access {
@@ -56,22 +54,6 @@ void memoryBarrier(const VulkanApi& api, VkCommandBuffer cmd, Access before, Acc
     b.srcAccessMask = before.access;
     b.dstAccessMask = after.access;
     api.vkCmdPipelineBarrier(cmd, before.stage, after.stage, 0, 1, &b, 0, nullptr, 0, nullptr);
-}
-
-// The case table as the shaders read it (kCaseWords per case).
-std::vector<uint32_t> packedCaseTable() {
-    std::vector<uint32_t> words(256 * kCaseWords, 0);
-    const auto& table = marching_cubes::caseTable();
-    for (size_t mask = 0; mask < 256; ++mask) {
-        // listCells takes a cell to be active when its case is neither all air nor all solid.
-        VOXC_ASSERT((table[mask].triangleCount > 0) == (mask != 0 && mask != 255));
-        VOXC_ASSERT(table[mask].triangleCount * 3 <= kCaseWords * 8);
-        for (size_t i = 0; i < size_t(table[mask].triangleCount) * 3; ++i) {
-            VOXC_ASSERT(table[mask].edges[i] < 12);
-            words[mask * kCaseWords + i / 8] |= uint32_t(table[mask].edges[i]) << (4 * (i % 8));
-        }
-    }
-    return words;
 }
 
 std::string mib(uint64_t bytes) { return fmt::format("{:.1f} MiB", double(bytes) / (1 << 20)); }
@@ -121,6 +103,10 @@ void knownTileStates(const TileRanges* ranges, float iso, glm::ivec3 tileFirst, 
 struct TileLists {
     std::vector<uint32_t> activeTiles;  // by rank: the tile's index
     std::vector<uint32_t> segments;     // in global key order: rank * 64 + z * 8 + y within the tile
+    // By rank, four words (mc_count.glsl): the tile's index, then the index in global key order of
+    // its segment (y, z) within the tile = x + y * y' + z * z' (x wraps below 0 where the tile's
+    // first rows are not listed).
+    std::vector<uint32_t> countTiles;
     size_t crossedTiles = 0;
     size_t cells = 0;                   // the cells of the listed segments
     std::vector<uint8_t> chunkCrossed;  // per world chunk holding cells
@@ -142,6 +128,7 @@ void listTiles(const uint32_t* states, glm::ivec3 tileFirst, glm::ivec3 n, const
     const glm::ivec3 chunks = ((layout.gridOrigin + layout.gridSize - 1) >> layout.chunkShift) - chunkFirst + 1;
     lists.activeTiles.clear();
     lists.segments.clear();
+    lists.countTiles.clear();
     lists.crossedTiles = 0;
     lists.cells = 0;
     lists.chunkCrossed.assign(size_t(chunks.x) * size_t(chunks.y) * size_t(chunks.z), 0);
@@ -182,6 +169,40 @@ void listTiles(const uint32_t* states, glm::ivec3 tileFirst, glm::ivec3 n, const
         const int local = world - layout.gridOrigin[axis];
         return local >= -1 && local < layout.gridSize[axis];
     };
+    // The listed rows of tile t along `axis`: from `first` within the tile, `count` of them.
+    auto listedRows = [&](int axis, int t, uint32_t& first) {
+        uint32_t count = 0;
+        first = 0;
+        for (uint32_t i = kTileSide; i-- > 0;)
+            if (insideCells(axis, firstCell[axis] + t * int(kTileSide) + int(i))) {
+                first = i;
+                ++count;
+            }
+        return count;
+    };
+    uint32_t layerFirst = 0; // the index of the first segment of the layer of tiles at z
+    for (int z = 0; z < n.z; ++z) {
+        uint32_t firstZ = 0;
+        const uint32_t rowsZ = listedRows(2, z, firstZ);
+        uint32_t perRow = 0; // segments per row of cells of the layer
+        for (int y = 0; y < n.y; ++y) {
+            const size_t row = size_t(z) * size_t(n.y) + size_t(y);
+            uint32_t firstY = 0;
+            perRow += (rowStart[row + 1] - rowStart[row]) * listedRows(1, y, firstY);
+        }
+        uint32_t before = 0; // the segments of a row of cells in the rows of tiles before y
+        for (int y = 0; y < n.y; ++y) {
+            const size_t row = size_t(z) * size_t(n.y) + size_t(y);
+            uint32_t firstY = 0;
+            const uint32_t rowsY = listedRows(1, y, firstY), tiles = rowStart[row + 1] - rowStart[row];
+            for (uint32_t rank = rowStart[row]; rank < rowStart[row + 1]; ++rank)
+                lists.countTiles.insert(lists.countTiles.end(), {lists.activeTiles[rank],
+                                                                 layerFirst + before + (rank - rowStart[row]) - firstY * tiles - firstZ * perRow,
+                                                                 tiles, perRow});
+            before += tiles * rowsY;
+        }
+        layerFirst += perRow * rowsZ;
+    }
     for (int z = 0; z < n.z; ++z)
         for (uint32_t inZ = 0; inZ < kTileSide; ++inZ) {
             if (!insideCells(2, firstCell.z + z * int(kTileSide) + int(inZ))) continue;
@@ -194,14 +215,19 @@ void listTiles(const uint32_t* states, glm::ivec3 tileFirst, glm::ivec3 n, const
                     lists.cells += lists.rowCells[row];
                 }
         }
+    VOXC_ASSERT(layerFirst == lists.segments.size());
 }
 
 // Per case: the crossed edges a cell of the case owns (those leaving its minimum corner: bit a
-// for axis a) | its triangle count << 3 | the case << 19, the word mc_triangles.glsl reads.
+// for axis a) | its triangle count << 3 | the case << 19, the word of an active cell (makeTriangles
+// and mc_materials.glsl read it).
 std::array<uint32_t, 256> cellWords() {
     std::array<uint32_t, 256> words{};
     const auto& table = marching_cubes::caseTable();
     for (uint32_t mask = 0; mask < 256; ++mask) {
+        // listCells takes a cell to be active when its case is neither all air nor all solid.
+        VOXC_ASSERT((table[mask].triangleCount > 0) == (mask != 0 && mask != 255));
+        VOXC_ASSERT(table[mask].triangleCount <= 15);
         const uint32_t lower = mask & 1u;
         const uint32_t owned = (lower ^ ((mask >> 1) & 1u)) | (lower ^ ((mask >> 2) & 1u)) << 1 | (lower ^ ((mask >> 4) & 1u)) << 2;
         words[mask] = owned | uint32_t(table[mask].triangleCount) << 3 | mask << 19;
@@ -211,7 +237,7 @@ std::array<uint32_t, 256> cellWords() {
 
 // The host's step between the count and emit passes, over the segments' cases (mc_count.glsl) in
 // global key order: the active cells (neither all air nor all solid: every other case has a
-// triangle, which packedCaseTable checks) with their first vertex and triangle, and every vertex
+// triangle, which cellWords checks) with their first vertex and triangle, and every vertex
 // with its owner cell and axis, in the CPU mesher's order (vertices by global edge, triangles by cell).
 // Sequential and a few loads and stores per active cell: on lavapipe the same lists took a pass
 // over every segment with a prefix sum before it, several times longer. `activeCells` gets
@@ -346,8 +372,8 @@ struct CellPiece {
 
 // Vertices or triangles per piece of the copy out of the device's buffers.
 constexpr size_t kSplitRoom = 1024; // vertices the mesh's vectors have room for past the edges' (normal splits)
-constexpr uint32_t kCopyPiece = 1u << 15;
 constexpr uint32_t kVertexPiece = 1u << 14; // vertices per piece of their copy: a few pieces a thread
+constexpr uint32_t kCellPiece = 1u << 14;   // active cells per piece of the triangles
 
 // Segments per piece of listCellsInPieces: a few pieces a 256^3 grid, one for a small grid.
 constexpr size_t kSegmentsPerPiece = size_t(1) << 14;
@@ -465,6 +491,54 @@ void incidentTriangles(const Mesh& mesh, const std::vector<uint8_t>& against, co
     }
 }
 
+// Per edge of a cell (edge e runs along axis e / 4 from its lower corner, as the case table
+// numbers them): the corner whose cell owns the edge's vertex, and the owner's crossed edges of
+// lower axis, which come before the edge's vertex among the owner's (at most two: bit 0 counts
+// where the axis is 1 or 2, bit 1 where it is 2).
+struct EdgeOwner {
+    uint32_t corner, lowerX, lowerY;
+};
+constexpr std::array<EdgeOwner, 12> edgeOwners() {
+    std::array<EdgeOwner, 12> owners{};
+    for (uint32_t e = 0; e < 12; ++e) {
+        const uint32_t axis = e / 4, along = e % 4, u = (axis + 1) % 3, v = (axis + 2) % 3;
+        owners[e] = {(along & 1u) << u | (along >> 1) << v, axis >= 1 ? 1u : 0u, axis == 2 ? 1u : 0u};
+    }
+    return owners;
+}
+
+// The triangles of the active cells [begin, end) (kActiveCellWords each) into `triangles` at each
+// cell's first triangle, in the case table's order: each names the vertex of its edges' owners
+// (the words the host wrote into `cellInfo` at their slots: owned edges | first vertex << 3). A
+// cell finds its neighbours' slots from its own (mc_common.glsl): +1, +8 or +64 within its tile, or
+// into the next tile along that axis. A corner cell past the tiles of cells, or in no active tile,
+// owns none of the cell's crossed edges, so its word (whatever an earlier mesh left there) is never
+// used; its read is kept inside `slots`.
+void makeTriangles(const uint32_t* activeCells, size_t begin, size_t end, const uint32_t* cellInfo, size_t slots, glm::ivec3 n,
+                   uint32_t* triangles) {
+    static constexpr std::array<EdgeOwner, 12> kOwners = edgeOwners();
+    const auto& table = marching_cubes::caseTable();
+    const uint32_t nextRow = kTileCells * uint32_t(n.x), nextLayer = nextRow * uint32_t(n.y);
+    for (size_t i = begin; i < end; ++i) {
+        const uint32_t* cell = &activeCells[i * kActiveCellWords];
+        const uint32_t slot = cell[0], place = slot % kTileCells, word = cell[3];
+        const uint32_t step[3] = {(place & 7u) < 7u ? 1u : kTileCells - 7u, ((place >> 3) & 7u) < 7u ? 8u : nextRow - 56u,
+                                  (place >> 6) < 7u ? 64u : nextLayer - 448u};
+        uint32_t owners[7];
+        for (uint32_t c = 0; c < 7; ++c) {
+            const size_t at = size_t(slot) + ((c & 1u) ? step[0] : 0u) + ((c & 2u) ? step[1] : 0u) + ((c & 4u) ? step[2] : 0u);
+            owners[c] = cellInfo[std::min(at, slots - 1)];
+        }
+        const marching_cubes::CellCase& entry = table[(word >> 19) & 0xffu];
+        uint32_t* out = &triangles[size_t(cell[2]) * 3];
+        for (uint32_t k = 0; k < uint32_t(entry.triangleCount) * 3; ++k) {
+            const EdgeOwner& edge = kOwners[entry.edges[k]];
+            const uint32_t owner = owners[edge.corner];
+            out[k] = (owner >> 3) + (owner & edge.lowerX) + ((owner >> 1) & edge.lowerY);
+        }
+    }
+}
+
 } // namespace
 
 struct GpuMarchingCubes::Impl {
@@ -476,11 +550,13 @@ struct GpuMarchingCubes::Impl {
     uint32_t voxelTiles = 0;
     McPipelines pipelines;
     // Host-visible: tileStates (written by mc_tiles), the tiles it reads (unknownTiles), the lists
-    // the host makes from their states (activeTiles, segments) and from the segments'
-    // cases (cellInfo, activeCells, vertexEdges), and `results` (the cases, then the mesh, where
-    // they are copied). segmentCases, vertices and triangles: meshUse().
-    DeviceBuffer caseTable, tileStates, unknownTiles, activeTiles, segments, segmentCases, cellInfo, activeCells, vertexEdges,
-        vertices, triangles, results;
+    // the host makes from their states (countTiles, the active tiles for mc_count) and from the
+    // segments' cases (activeCells, vertexEdges), and `results` (the cases, then the vertices and
+    // materials, where they are copied). segmentCases, vertices and cellMaterials: meshUse().
+    DeviceBuffer tileStates, unknownTiles, countTiles, segmentCases, activeCells, vertexEdges, vertices, cellMaterials, results;
+    // Per cell slot (the tiles of cells' every cell, mc_common.glsl) that owns vertices: its owned
+    // edges | first vertex << 3, written by listCellsInPieces, read by makeTriangles.
+    std::vector<uint32_t> cellInfo;
     TileLists tileLists;               // listTiles' lists, kept so that a repeated call reuses their memory
     std::vector<uint32_t> unknownTileList; // knownTileStates' list, likewise
     std::vector<CellPiece> cellPieces; // listCellsInPieces' lists, kept so that a repeated call reuses their memory
@@ -518,6 +594,8 @@ struct GpuMarchingCubes::Impl {
     // Records `groups` workgroups of `pass`, split over x and y where x alone is not enough.
     void dispatch(McPass pass, McPush& push, uint32_t groups, uint32_t items);
     void begin();
+    void submit();
+    void wait(); // for the last submit
     void submitAndWait();
 };
 
@@ -526,8 +604,8 @@ GpuMarchingCubes::Impl::~Impl() {
     if (fence) ctx.api.vkDestroyFence(ctx.device, fence, nullptr);
     if (commandPool) ctx.api.vkDestroyCommandPool(ctx.device, commandPool, nullptr);
     destroyTexelViews();
-    for (DeviceBuffer* b : {&results, &triangles, &vertices, &vertexEdges, &activeCells, &cellInfo, &segmentCases, &segments,
-                            &activeTiles, &unknownTiles, &tileStates, &caseTable})
+    for (DeviceBuffer* b : {&results, &cellMaterials, &vertices, &vertexEdges, &activeCells, &segmentCases, &countTiles,
+                            &unknownTiles, &tileStates})
         destroyBuffer(ctx, *b);
     destroyMcPipelines(ctx, pipelines);
 }
@@ -538,26 +616,26 @@ void GpuMarchingCubes::Impl::checkLimits() const {
                                     "(edge crossings are computed in double, as on the CPU); mesh on the host instead "
                                     "(voxc run --mesh-on host)",
                                     ctx.info.name));
-    // The passes fetch the voxels, and the cells' words, as texels (mc_common.glsl).
+    // The passes fetch the voxels as texels (mc_common.glsl).
     const uint64_t voxels = uint64_t(layout.chunkTotal()) * layout.chunkVoxels();
     const uint64_t maxTexels = ctx.properties.limits.maxTexelBufferElements;
-    if (std::max<uint64_t>(voxels, uint64_t(tiles) * kTileCells) > maxTexels)
-        throw UserError(fmt::format("marching cubes on the device reads the {} voxels of the {}x{}x{} grid's chunks and a "
-                                    "word per cell of its tiles as texels, more than the Vulkan device '{}' can address "
-                                    "({}); mesh on the host instead (voxc run --mesh-on host) or use a smaller grid",
+    if (voxels > maxTexels)
+        throw UserError(fmt::format("marching cubes on the device reads the {} voxels of the {}x{}x{} grid's chunks as "
+                                    "texels, more than the Vulkan device '{}' can address ({}); mesh on the host instead "
+                                    "(voxc run --mesh-on host) or use a smaller grid",
                                     voxels, layout.gridSize.x, layout.gridSize.y, layout.gridSize.z, ctx.info.name, maxTexels));
     const uint64_t maxRange = ctx.properties.limits.maxStorageBufferRange;
-    // The largest buffer holds a uint per cell of every tile (cellInfo, indexed by slot: so slots
-    // stay below 2^30, as the vertex list needs); triangle places are 32-bit sums of up to 12
-    // triangles per cell; the passes find a tile's coordinates from its index below 2^21
-    // (mc_common.glsl, tileCoordinates).
+    // The largest buffer a pass binds as storage holds a byte per cell of the active tiles at most
+    // (segmentCases); cells are named by slots below 2^30, as the vertex list needs, and triangle
+    // places are 32-bit sums of up to 12 triangles per cell (both by the first test below); the
+    // passes find a tile's coordinates from its index below 2^21 (mc_common.glsl, tileCoordinates).
     const uint64_t slots = uint64_t(tiles) * kTileCells;
-    const uint64_t cellBytes = slots * sizeof(uint32_t);
-    if (slots * marching_cubes::kMaxTrianglesPerCell > UINT32_MAX || cellBytes > maxRange || voxelTiles >= (1u << 21))
+    const uint64_t caseBytes = slots;
+    if (slots * marching_cubes::kMaxTrianglesPerCell > UINT32_MAX || caseBytes > maxRange || voxelTiles >= (1u << 21))
         throw UserError(fmt::format("marching cubes on the device needs {} buffers for the {} cells of a {}x{}x{} grid's tiles, "
                                     "more than the Vulkan device '{}' can bind ({}); mesh on the host instead "
                                     "(voxc run --mesh-on host) or use a smaller grid",
-                                    mib(cellBytes), slots, layout.gridSize.x, layout.gridSize.y, layout.gridSize.z,
+                                    mib(caseBytes), slots, layout.gridSize.x, layout.gridSize.y, layout.gridSize.z,
                                     ctx.info.name, mib(maxRange)));
 }
 
@@ -579,15 +657,11 @@ bool GpuMarchingCubes::Impl::upload(DeviceBuffer& buffer, const std::vector<uint
 }
 
 void GpuMarchingCubes::Impl::createBuffers() {
-    const std::vector<uint32_t> table = packedCaseTable();
-    ensureBuffer(caseTable, table.size() * sizeof(uint32_t), MemoryUse::HostAccess);
-    std::memcpy(caseTable.mapped, table.data(), table.size() * sizeof(uint32_t));
-    flushForDevice(ctx, caseTable); // the queue submit makes it visible to the device
     ensureBuffer(tileStates, VkDeviceSize(voxelTiles) * sizeof(uint32_t), MemoryUse::HostAccess);
     // Placeholders until a mesh has active tiles and triangles: every binding of the set must name a buffer.
-    for (DeviceBuffer* b : {&unknownTiles, &activeTiles, &segments, &cellInfo, &activeCells, &vertexEdges})
+    for (DeviceBuffer* b : {&unknownTiles, &countTiles, &activeCells, &vertexEdges})
         ensureBuffer(*b, 16, MemoryUse::HostAccess);
-    for (DeviceBuffer* b : {&segmentCases, &vertices, &triangles}) ensureBuffer(*b, 16, meshUse());
+    for (DeviceBuffer* b : {&segmentCases, &vertices, &cellMaterials}) ensureBuffer(*b, 16, meshUse());
     ensureBuffer(results, 16, MemoryUse::HostAccess);
 }
 
@@ -603,14 +677,11 @@ void GpuMarchingCubes::Impl::bindAll() {
     const View views[] = {{kMcDensityTexels, source.voxels, VK_FORMAT_R32_SFLOAT},
                           {kMcQuadTexels, source.voxels, VK_FORMAT_R32G32B32A32_SFLOAT},
                           {kMcMaterialTexels, source.materials, VK_FORMAT_R32_UINT},
-                          {kMcCaseTexels, caseTable.buffer, VK_FORMAT_R32G32_UINT},
                           {kMcUnknownTileTexels, unknownTiles.buffer, VK_FORMAT_R32_UINT},
-                          {kMcActiveTileTexels, activeTiles.buffer, VK_FORMAT_R32_UINT},
-                          {kMcSegmentTexels, segments.buffer, VK_FORMAT_R32_UINT},
-                          {kMcCellInfoTexels, cellInfo.buffer, VK_FORMAT_R32_UINT},
+                          {kMcCountTileTexels, countTiles.buffer, VK_FORMAT_R32G32B32A32_UINT},
                           {kMcActiveCellTexels, activeCells.buffer, VK_FORMAT_R32G32B32A32_UINT},
                           {kMcVertexEdgeTexels, vertexEdges.buffer, VK_FORMAT_R32_UINT},
-                          {kMcTriangles, triangles.buffer, VK_FORMAT_R32G32B32A32_UINT},
+                          {kMcCellMaterials, cellMaterials.buffer, VK_FORMAT_R32_UINT},
                           {kMcVertices, vertices.buffer, VK_FORMAT_R32G32B32A32_UINT}};
     destroyTexelViews();
     for (const View& view : views) {
@@ -671,14 +742,22 @@ void GpuMarchingCubes::Impl::begin() {
     ctx.api.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines.layout, 0, 1, &pipelines.set, 0, nullptr);
 }
 
-void GpuMarchingCubes::Impl::submitAndWait() {
+void GpuMarchingCubes::Impl::submit() {
     check(ctx.api.vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
     VkSubmitInfo info{VK_STRUCTURE_TYPE_SUBMIT_INFO};
     info.commandBufferCount = 1;
     info.pCommandBuffers = &cmd;
     check(ctx.api.vkQueueSubmit(ctx.queue, 1, &info, fence), "vkQueueSubmit");
+}
+
+void GpuMarchingCubes::Impl::wait() {
     check(ctx.api.vkWaitForFences(ctx.device, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
     check(ctx.api.vkResetFences(ctx.device, 1, &fence), "vkResetFences");
+}
+
+void GpuMarchingCubes::Impl::submitAndWait() {
+    submit();
+    wait();
 }
 
 GpuMarchingCubes::GpuMarchingCubes(VulkanExecutor& executor) : impl_(std::make_unique<Impl>(executor)) {
@@ -739,17 +818,17 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     if (segmentCount == 0) return mesh;
 
     // The cases of the segments' cells, then on the host the lists of the active cells and the
-    // vertices, in place (cellInfo, activeCells, vertexEdges).
-    bool rebind = s.upload(s.activeTiles, lists.activeTiles);
-    rebind |= s.upload(s.segments, lists.segments);
+    // vertices (cellInfo; activeCells and vertexEdges in place).
+    bool rebind = s.upload(s.countTiles, lists.countTiles);
+    const uint32_t tileCount = uint32_t(lists.activeTiles.size());
     const VkDeviceSize caseBytes = VkDeviceSize(segmentCount) * 2 * sizeof(uint32_t);
     const bool inPlace = s.meshUse() == MemoryUse::HostAccess;
     rebind |= s.ensureBuffer(s.segmentCases, caseBytes, s.meshUse());
-    rebind |= s.ensureBuffer(s.cellInfo, VkDeviceSize(s.tiles) * kTileCells * sizeof(uint32_t), MemoryUse::HostAccess);
+    s.cellInfo.resize(size_t(s.tiles) * kTileCells); // allocated by the first mesh
     if (!inPlace) s.ensureBuffer(s.results, caseBytes, MemoryUse::HostAccess); // bound to no pass
     if (rebind) s.bindAll();
     s.begin();
-    s.dispatch(kMcCount, push, groupsOf(segmentCount, kGroupSize), segmentCount);
+    s.dispatch(kMcCount, push, groupsOf(tileCount, kGroupSize), tileCount);
     const DeviceBuffer* caseSource = &s.segmentCases;
     if (!inPlace) {
         memoryBarrier(api, s.cmd, kCompute, kTransfer);
@@ -762,21 +841,23 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     }
     s.submitAndWait();
     invalidateForHost(s.ctx, *caseSource);
-    // Emit into buffers of the counted size, written as texels (two a vertex, one a triangle).
-    // At most maxTexelBufferElements texels a buffer, and below 2^29 vertices: cellInfo keeps a
-    // first vertex above 3 bits of a word.
+    // Emit into buffers of the counted size, written as texels (two a vertex, one an active cell's
+    // material), over the active cells' list read as texels (one a cell). At most
+    // maxTexelBufferElements texels a buffer, and below 2^29 vertices: cellInfo keeps a first
+    // vertex above 3 bits of a word.
     bool replaced = false;
     size_t activeWords = 0;
     const CellTotals cells = listCellsInPieces(
         s.helper, static_cast<const uint32_t*>(caseSource->mapped), lists, s.tileFirst, s.tileCount, s.layout,
-        static_cast<uint32_t*>(s.cellInfo.mapped), s.cellPieces, [&](size_t words, CellTotals totals) {
-            const uint64_t maxTriangles = s.ctx.properties.limits.maxTexelBufferElements;
-            const uint64_t maxVertices = std::min<uint64_t>(maxTriangles / 2, (uint64_t(1) << 29) - 1);
-            if (totals.vertices > maxVertices || totals.triangles > maxTriangles)
-                throw UserError(fmt::format("the mesh has {} vertices and {} triangles, more than marching cubes on the Vulkan "
-                                            "device '{}' can write ({} vertices, {} triangles); mesh on the host instead "
+        s.cellInfo.data(), s.cellPieces, [&](size_t words, CellTotals totals) {
+            const uint64_t maxCells = s.ctx.properties.limits.maxTexelBufferElements;
+            const uint64_t maxVertices = std::min<uint64_t>(maxCells / 2, (uint64_t(1) << 29) - 1);
+            const uint64_t activeCount = words / kActiveCellWords;
+            if (totals.vertices > maxVertices || activeCount > maxCells)
+                throw UserError(fmt::format("the mesh has {} vertices in {} cells, more than marching cubes on the Vulkan "
+                                            "device '{}' can write ({} vertices, {} cells); mesh on the host instead "
                                             "(voxc run --mesh-on host)",
-                                            totals.vertices, totals.triangles, s.ctx.info.name, maxVertices, maxTriangles));
+                                            totals.vertices, activeCount, s.ctx.info.name, maxVertices, maxCells));
             activeWords = words;
             replaced |= s.ensureBuffer(s.activeCells, words * sizeof(uint32_t), MemoryUse::HostAccess);
             replaced |= s.ensureBuffer(s.vertexEdges, totals.vertices * sizeof(uint32_t), MemoryUse::HostAccess);
@@ -786,41 +867,32 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     const uint32_t vertexCount = uint32_t(cells.vertices), triangleCount = uint32_t(cells.triangles);
     const uint32_t activeCount = uint32_t(activeWords / kActiveCellWords);
     // The queue submit makes them visible to the device.
-    for (DeviceBuffer* b : {&s.cellInfo, &s.activeCells, &s.vertexEdges}) flushForDevice(s.ctx, *b);
+    for (DeviceBuffer* b : {&s.activeCells, &s.vertexEdges}) flushForDevice(s.ctx, *b);
     const uint64_t vertexBytes = uint64_t(vertexCount) * kVertexWords * sizeof(uint32_t);
-    const uint64_t triangleBytes = uint64_t(triangleCount) * kTriangleWords * sizeof(uint32_t);
+    const bool materials = s.source.hasMaterials;
+    const uint64_t materialBytes = materials ? uint64_t(activeCount) * sizeof(uint32_t) : 0;
     replaced |= s.ensureBuffer(s.vertices, vertexBytes, s.meshUse());
-    replaced |= s.ensureBuffer(s.triangles, triangleBytes, s.meshUse());
-    if (!inPlace) s.ensureBuffer(s.results, vertexBytes + triangleBytes, MemoryUse::HostAccess); // bound to no pass
+    replaced |= s.ensureBuffer(s.cellMaterials, materialBytes, s.meshUse());
+    if (!inPlace) s.ensureBuffer(s.results, vertexBytes + materialBytes, MemoryUse::HostAccess); // bound to no pass
     if (replaced) s.bindAll();
-    // The vertices and the triangles, independent of each other, over the host's lists alone.
+    // The vertices and the triangles' materials on the device, over the host's lists alone, while
+    // the host makes the triangles.
     s.begin();
     s.dispatch(kMcEmitVertices, push, groupsOf(vertexCount, kGroupSize), vertexCount);
-    s.dispatch(kMcEmitTriangles, push, groupsOf(activeCount, kGroupSize), activeCount);
-    const uint32_t* vertexWords = nullptr;
-    const uint32_t* triangleWords = nullptr;
+    if (materials) s.dispatch(kMcEmitMaterials, push, groupsOf(activeCount, kGroupSize), activeCount);
     if (inPlace) {
         memoryBarrier(api, s.cmd, kCompute, kHostRead);
-        s.submitAndWait();
-        invalidateForHost(s.ctx, s.vertices);
-        invalidateForHost(s.ctx, s.triangles);
-        vertexWords = static_cast<const uint32_t*>(s.vertices.mapped);
-        triangleWords = static_cast<const uint32_t*>(s.triangles.mapped);
     } else {
         memoryBarrier(api, s.cmd, kCompute, kTransfer);
         const VkBufferCopy vertexCopy{0, 0, vertexBytes};
         api.vkCmdCopyBuffer(s.cmd, s.vertices.buffer, s.results.buffer, 1, &vertexCopy);
-        const VkBufferCopy triangleCopy{0, vertexBytes, triangleBytes};
-        api.vkCmdCopyBuffer(s.cmd, s.triangles.buffer, s.results.buffer, 1, &triangleCopy);
+        if (materials) {
+            const VkBufferCopy materialCopy{0, vertexBytes, materialBytes};
+            api.vkCmdCopyBuffer(s.cmd, s.cellMaterials.buffer, s.results.buffer, 1, &materialCopy);
+        }
         memoryBarrier(api, s.cmd, kTransfer, kHostRead);
-        s.submitAndWait();
-        invalidateForHost(s.ctx, s.results);
-        vertexWords = static_cast<const uint32_t*>(s.results.mapped);
-        triangleWords = vertexWords + vertexBytes / sizeof(uint32_t);
     }
-
-    // The mesh out of the device's buffers on this thread and the helper, in pieces of vertices,
-    // then of triangles (a few milliseconds at 256^3).
+    s.submit();
     // The vertices' vectors with room for the copies orientFlaggedNormals may append (growing
     // them took about 0.4 ms at 256^3).
     mesh.positions.reserve(vertexCount + kSplitRoom);
@@ -831,6 +903,30 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     mesh.vertexMaterials.resize(vertexCount);
     mesh.triangles.resize(size_t(triangleCount) * 3);
     mesh.triangleMaterials.resize(triangleCount);
+    const uint32_t* activeCells = static_cast<const uint32_t*>(s.activeCells.mapped);
+    const size_t cellPieces = groupsOf(activeCount, kCellPiece);
+    s.helper.share(cellPieces, [&](size_t piece) {
+        makeTriangles(activeCells, piece * kCellPiece, std::min<size_t>(activeCount, (piece + 1) * kCellPiece),
+                      s.cellInfo.data(), s.cellInfo.size(), s.tileCount, mesh.triangles.data());
+    });
+    s.wait();
+    const uint32_t* vertexWords = nullptr;
+    const uint32_t* materialWords = nullptr;
+    if (inPlace) {
+        invalidateForHost(s.ctx, s.vertices);
+        vertexWords = static_cast<const uint32_t*>(s.vertices.mapped);
+        if (materials) {
+            invalidateForHost(s.ctx, s.cellMaterials);
+            materialWords = static_cast<const uint32_t*>(s.cellMaterials.mapped);
+        }
+    } else {
+        invalidateForHost(s.ctx, s.results);
+        vertexWords = static_cast<const uint32_t*>(s.results.mapped);
+        materialWords = vertexWords + vertexBytes / sizeof(uint32_t);
+    }
+
+    // The mesh out of the device's buffers on this thread and the helper, in pieces of vertices,
+    // then of active cells (a few milliseconds at 256^3).
     auto vec3At = [&](size_t w) {
         glm::vec3 v;
         std::memcpy(&v, &vertexWords[w], sizeof v);
@@ -840,7 +936,7 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     // normal is zero or faces away from one of their triangles are flagged as the mesh is copied
     // (vertices first, then triangles, each on both threads); a flag is only ever set to 1, so the
     // result does not depend on the threads.
-    const size_t vertexPieces = groupsOf(vertexCount, kVertexPiece), trianglePieces = groupsOf(triangleCount, kCopyPiece);
+    const size_t vertexPieces = groupsOf(vertexCount, kVertexPiece);
     std::vector<uint8_t>& against = s.against;
     against.assign(vertexCount, 0);
     auto flag = [&](uint32_t v) { std::atomic_ref<uint8_t>(against[v]).store(1, std::memory_order_relaxed); };
@@ -854,27 +950,27 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
             if (normal == glm::vec3(0.0f)) flag(uint32_t(v));
         }
     });
-    // The triangles after the vertices, each tested as it is copied (as triangleNormal and
-    // orientNormalsToFaces' test).
+    // The triangles after the vertices, a cell's at a time: their material, and each tested (as
+    // triangleNormal and orientNormalsToFaces' test).
     std::atomic<bool> inRange{true};
-    s.helper.share(trianglePieces, [&](size_t piece) {
+    s.helper.share(cellPieces, [&](size_t piece) {
         bool pieceInRange = true;
-        for (size_t t = piece * kCopyPiece; t < std::min<size_t>(triangleCount, (piece + 1) * kCopyPiece); ++t) {
-            uint32_t corner[3];
-            for (size_t k = 0; k < 3; ++k) {
-                corner[k] = triangleWords[t * kTriangleWords + k];
-                mesh.triangles[t * 3 + k] = corner[k];
+        for (size_t i = piece * kCellPiece; i < std::min<size_t>(activeCount, (piece + 1) * kCellPiece); ++i) {
+            const uint32_t* cell = &activeCells[i * kActiveCellWords];
+            const uint32_t first = cell[2], count = (cell[3] >> 3) & 15u;
+            if (materials) std::fill_n(mesh.triangleMaterials.begin() + first, count, uint8_t(materialWords[i]));
+            for (size_t t = first; t < first + count; ++t) {
+                const uint32_t* corner = &mesh.triangles[t * 3];
+                if (corner[0] >= vertexCount || corner[1] >= vertexCount || corner[2] >= vertexCount) {
+                    pieceInRange = false;
+                    continue;
+                }
+                const glm::dvec3 a(mesh.positions[corner[0]]), b(mesh.positions[corner[1]]), c(mesh.positions[corner[2]]);
+                const glm::dvec3 face = glm::cross(b - a, c - a);
+                if (face == glm::dvec3(0.0)) continue;
+                for (size_t k = 0; k < 3; ++k)
+                    if (glm::dot(glm::dvec3(mesh.normals[corner[k]]), face) < 0.0) flag(corner[k]);
             }
-            mesh.triangleMaterials[t] = uint8_t(triangleWords[t * kTriangleWords + 3]);
-            if (corner[0] >= vertexCount || corner[1] >= vertexCount || corner[2] >= vertexCount) {
-                pieceInRange = false;
-                continue;
-            }
-            const glm::dvec3 a(mesh.positions[corner[0]]), b(mesh.positions[corner[1]]), c(mesh.positions[corner[2]]);
-            const glm::dvec3 face = glm::cross(b - a, c - a);
-            if (face == glm::dvec3(0.0)) continue;
-            for (size_t k = 0; k < 3; ++k)
-                if (glm::dot(glm::dvec3(mesh.normals[corner[k]]), face) < 0.0) flag(corner[k]);
         }
         if (!pieceInRange) inRange = false;
     });

@@ -10,7 +10,7 @@ namespace voxc::vulkan_detail {
 
 namespace {
 
-constexpr const char* kPassFiles[kMcPassCount] = {"mc_tiles.glsl", "mc_count.glsl", "mc_vertices.glsl", "mc_triangles.glsl"};
+constexpr const char* kPassFiles[kMcPassCount] = {"mc_tiles.glsl", "mc_count.glsl", "mc_vertices.glsl", "mc_materials.glsl"};
 
 // The pass's #version line, kHasMaterials, the shared declarations, then the rest of the pass.
 std::string passSource(const char* file, bool hasMaterials) {

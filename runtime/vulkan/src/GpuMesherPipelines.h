@@ -20,7 +20,7 @@ struct McPush {
 };
 static_assert(sizeof(McPush) == 112, "must match mc_common.glsl; every device takes at least 128 bytes");
 
-enum McPass : uint32_t { kMcTiles, kMcCount, kMcEmitVertices, kMcEmitTriangles, kMcPassCount };
+enum McPass : uint32_t { kMcTiles, kMcCount, kMcEmitVertices, kMcEmitMaterials, kMcPassCount };
 
 // Descriptor set 0 of the passes (the buffers' meaning is in the shaders). A pass writes through
 // storage buffers or storage texel buffers and reads through uniform texel buffers (lavapipe
@@ -29,14 +29,11 @@ enum McPass : uint32_t { kMcTiles, kMcCount, kMcEmitVertices, kMcEmitTriangles, 
 enum McBinding : uint32_t {
     kMcDensityTexels,  // the executor's densities, a float per voxel
     kMcMaterialTexels, // its material ids, a uint per voxel
-    kMcCaseTexels,
     kMcTileStates,
     kMcVertices,
-    kMcTriangles,
+    kMcCellMaterials,   // per active cell, its triangles' material
     kMcQuadTexels, // the densities again, four to a texel
-    kMcActiveTileTexels,
-    kMcSegmentTexels,
-    kMcCellInfoTexels,
+    kMcCountTileTexels, // per active tile, what mc_count.glsl needs of it
     kMcActiveCellTexels,
     kMcVertexEdgeTexels,
     kMcSegmentCases,
@@ -44,11 +41,11 @@ enum McBinding : uint32_t {
     kMcBindingCount
 };
 constexpr bool isMcTexelBinding(uint32_t binding) {
-    return binding == kMcDensityTexels || binding == kMcMaterialTexels || binding == kMcCaseTexels ||
+    return binding == kMcDensityTexels || binding == kMcMaterialTexels ||
            (binding >= kMcQuadTexels && binding <= kMcVertexEdgeTexels) || binding == kMcUnknownTileTexels;
 }
 // Written as texels (imageStore): lavapipe stores a texel's words in one pass over the lanes.
-constexpr bool isMcStorageTexelBinding(uint32_t binding) { return binding == kMcTriangles || binding == kMcVertices; }
+constexpr bool isMcStorageTexelBinding(uint32_t binding) { return binding == kMcCellMaterials || binding == kMcVertices; }
 
 struct McPipelines : StorageSet {
     std::array<VkPipeline, kMcPassCount> pipelines{};
