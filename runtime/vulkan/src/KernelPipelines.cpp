@@ -2,9 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <atomic>
+#include <exception>
 #include <iterator>
 #include <mutex>
 #include <string>
+#include <thread>
 
 namespace voxc::vulkan_detail {
 
@@ -21,20 +25,86 @@ constexpr uint32_t kBindingCount = std::size(kBindings);
 
 std::string describe(const Kernel& kernel) { return fmt::format("kernel '{}' ({})", kernel.name, kernel.origin); }
 
-// The context's pipeline of the kernel's SPIR-V, created the first time over the context's own
-// layout (defined as every executor's), so it outlives the executor that asked first.
-VkPipeline sharedPipeline(VulkanContext::Impl& ctx, const Kernel& kernel) {
-    std::lock_guard lock(ctx.kernelPipelineMutex);
-    if (const auto it = ctx.kernelPipelines.find(kernel.spirv); it != ctx.kernelPipelines.end()) {
-        ++ctx.kernelPipelineCounts.shared;
-        return it->second;
+// Creates the pipeline of kernels[i] into out[i] for every i in `which`, on as many threads as
+// the host has (up to one per kernel): the driver compiles a pipeline in the calling thread, and
+// lavapipe spends about 30 ms of CPU on each even when its shader cache has the code, so a run's
+// kernels took the longest part of its set-up one after another. Every pipeline that can be made
+// is made, then the first failure in `which` order is thrown.
+void createEach(VulkanContext::Impl& ctx, VkPipelineLayout layout, const std::vector<Kernel>& kernels,
+                const std::vector<size_t>& which, std::vector<VkPipeline>& out) {
+    std::vector<std::exception_ptr> failures(which.size());
+    std::atomic<size_t> next{0};
+    const auto work = [&] {
+        for (size_t k; (k = next.fetch_add(1)) < which.size();) {
+            const Kernel& kernel = kernels[which[k]];
+            try {
+                out[which[k]] = createComputePipeline(ctx, layout, kernel.spirv, describe(kernel));
+            } catch (...) {
+                failures[k] = std::current_exception();
+            }
+        }
+    };
+    const size_t threads = std::min<size_t>(which.size(), std::max(1u, std::thread::hardware_concurrency()));
+    {
+        std::vector<std::jthread> helpers;
+        for (size_t t = 1; t < threads; ++t) helpers.emplace_back(work);
+        work();
     }
-    if (!ctx.kernelPipelineLayout)
-        createStorageLayout(ctx, kBindings, sizeof(PushBlock), ctx.kernelSetLayout, ctx.kernelPipelineLayout);
-    const VkPipeline pipeline = createComputePipeline(ctx, ctx.kernelPipelineLayout, kernel.spirv, describe(kernel));
-    ctx.kernelPipelines.emplace(kernel.spirv, pipeline);
-    ++ctx.kernelPipelineCounts.created;
-    return pipeline;
+    for (const std::exception_ptr& failure : failures)
+        if (failure) std::rethrow_exception(failure);
+}
+
+// Each kernel gets the context's pipeline of its SPIR-V, created over the context's own layout
+// (defined as every executor's) where no earlier executor made one, so it outlives the executor
+// that asked first. The new ones are created outside the lock; one that another executor made
+// meanwhile is kept and ours destroyed.
+void shareContextPipelines(VulkanContext::Impl& ctx, const std::vector<Kernel>& kernels, KernelPipelines& out) {
+    std::vector<size_t> missing;            // the first kernel of each SPIR-V the context lacks
+    std::vector<size_t> sameAs(kernels.size()); // the kernel whose pipeline kernel i takes
+    {
+        std::lock_guard lock(ctx.kernelPipelineMutex);
+        if (!ctx.kernelPipelineLayout)
+            createStorageLayout(ctx, kBindings, sizeof(PushBlock), ctx.kernelSetLayout, ctx.kernelPipelineLayout);
+        for (size_t i = 0; i < kernels.size(); ++i) {
+            sameAs[i] = i;
+            if (const auto it = ctx.kernelPipelines.find(kernels[i].spirv); it != ctx.kernelPipelines.end()) {
+                out.pipelines[i] = it->second;
+                ++ctx.kernelPipelineCounts.shared;
+                continue;
+            }
+            const auto earlier = std::find_if(missing.begin(), missing.end(),
+                                              [&](size_t j) { return kernels[j].spirv == kernels[i].spirv; });
+            if (earlier != missing.end()) sameAs[i] = *earlier;
+            else missing.push_back(i);
+        }
+    }
+    std::exception_ptr failure;
+    try {
+        createEach(ctx, ctx.kernelPipelineLayout, kernels, missing, out.pipelines);
+    } catch (...) {
+        failure = std::current_exception();
+    }
+    {
+        // Made pipelines go to the context even after a failure: it destroys them, not `out`.
+        std::lock_guard lock(ctx.kernelPipelineMutex);
+        for (const size_t i : missing) {
+            if (!out.pipelines[i]) continue;
+            const auto [it, added] = ctx.kernelPipelines.emplace(kernels[i].spirv, out.pipelines[i]);
+            if (added) {
+                ++ctx.kernelPipelineCounts.created;
+            } else {
+                ctx.api.vkDestroyPipeline(ctx.device, out.pipelines[i], nullptr);
+                out.pipelines[i] = it->second;
+                ++ctx.kernelPipelineCounts.shared;
+            }
+        }
+        for (size_t i = 0; i < kernels.size(); ++i)
+            if (sameAs[i] != i && out.pipelines[sameAs[i]]) {
+                out.pipelines[i] = out.pipelines[sameAs[i]];
+                ++ctx.kernelPipelineCounts.shared;
+            }
+    }
+    if (failure) std::rethrow_exception(failure);
 }
 
 } // namespace
@@ -42,15 +112,25 @@ VkPipeline sharedPipeline(VulkanContext::Impl& ctx, const Kernel& kernel) {
 void createPipelines(VulkanContext::Impl& ctx, const std::vector<Kernel>& kernels, KernelPipelines& out) {
     createStorageSet(ctx, kBindings, sizeof(PushBlock), out);
     out.shared = ctx.shareKernelPipelines;
-    for (const Kernel& kernel : kernels) {
-        if (out.shared) {
-            out.pipelines.push_back(sharedPipeline(ctx, kernel));
-            continue;
-        }
-        out.pipelines.push_back(createComputePipeline(ctx, out.layout, kernel.spirv, describe(kernel)));
-        std::lock_guard lock(ctx.kernelPipelineMutex);
-        ++ctx.kernelPipelineCounts.created;
+    out.pipelines.assign(kernels.size(), VK_NULL_HANDLE);
+    if (out.shared) {
+        shareContextPipelines(ctx, kernels, out);
+        return;
     }
+    std::vector<size_t> all(kernels.size());
+    for (size_t i = 0; i < all.size(); ++i) all[i] = i;
+    std::exception_ptr failure;
+    try {
+        createEach(ctx, out.layout, kernels, all, out.pipelines);
+    } catch (...) {
+        failure = std::current_exception();
+    }
+    {
+        std::lock_guard lock(ctx.kernelPipelineMutex);
+        ctx.kernelPipelineCounts.created +=
+            size_t(std::count_if(out.pipelines.begin(), out.pipelines.end(), [](VkPipeline p) { return p != VK_NULL_HANDLE; }));
+    }
+    if (failure) std::rethrow_exception(failure);
 }
 
 void bindBuffers(VulkanContext::Impl& ctx, const KernelPipelines& pipelines,

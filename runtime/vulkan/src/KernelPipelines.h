@@ -16,9 +16,10 @@ struct KernelPipelines : StorageSet {
     bool shared = false;               // the context owns them (ContextOptions::shareKernelPipelines)
 };
 
-// Fills `out` step by step, so destroyPipelines cleans up after a failure part way. With
-// ContextOptions::shareKernelPipelines a kernel whose SPIR-V an earlier executor had gets that
-// pipeline. A kernel the driver rejects is an InternalError naming the kernel.
+// Creates the kernels' pipelines on the host's threads; `out` holds every one made (null where
+// none), so destroyPipelines cleans up after a failure. With ContextOptions::shareKernelPipelines
+// a kernel whose SPIR-V an earlier executor had gets that pipeline. A kernel the driver rejects
+// is an InternalError naming the kernel (the first such in kernel order).
 void createPipelines(VulkanContext::Impl& ctx, const std::vector<Kernel>& kernels, KernelPipelines& out);
 // `byBinding[b]` is the buffer of binding b.
 void bindBuffers(VulkanContext::Impl& ctx, const KernelPipelines& pipelines,
