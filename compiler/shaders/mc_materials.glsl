@@ -3,6 +3,8 @@
 // cases, GpuMesher.cpp): the material of each cell's triangles, the most common among its solid
 // corners, as the CPU mesher votes. The host makes the triangles themselves from its lists (the
 // vertices that the cell's edges' owners numbered), while this pass and mc_vertices.glsl run.
+// Only where the executor's materials are not mapped (staged, as on a discrete GPU): elsewhere
+// (lavapipe, integrated GPUs) the host votes from the vertices' materials and the mapped words.
 
 layout(local_size_x = 64) in;
 

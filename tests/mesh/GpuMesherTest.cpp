@@ -109,6 +109,20 @@ TEST(mesh_GpuMarchingCubes, MatchesTheCpuMesherBitForBit) {
     }
 }
 
+// Where the executor's materials are not mapped (staged, as on a discrete GPU), the device votes
+// the triangles' materials (mc_materials.glsl) where the host does elsewhere: the same mesh.
+TEST(mesh_GpuMarchingCubes, VotesMaterialsOnTheDeviceWhereTheyAreStaged) {
+    VulkanContext& context = validatedLavapipe();
+    const Program program = example("scene.vox", 32, {-37, -5, -70});
+    VulkanExecutor executor(context, compileProgram(program, {}), {.alwaysStage = true});
+    const RunResult result = executor.run();
+    GpuMarchingCubes gpu(executor);
+    const Mesh cpu = meshMarchingCubes(result.grid, {});
+    ASSERT_GT(cpu.triangles.size(), 0u);
+    expectSameMesh(cpu, gpu.mesh({}), "staged");
+    expectNoValidationMessages(context);
+}
+
 // A surface inside one world-aligned 8^3 tile (the host test mesh_MarchingCubes.
 // surfaceInOneTileVisitsOnlyThatTile's ball): the device counts the 512 cells of that tile alone,
 // no other (its count pass and the host's lists run over the segments of the active tiles), and

@@ -380,7 +380,8 @@ double VulkanExecutor::setupMs() const { return impl_->setupMs; }
 
 vulkan_detail::ExecutorVoxels VulkanExecutor::deviceVoxels() const {
     const Impl& s = *impl_;
-    return {&s.ctx, s.voxels.buffer, s.materials.buffer, s.package.usesMaterials, s.hasRun, &s.readBackRanges};
+    const DeviceBuffer* mapped = !s.staged && s.package.usesMaterials && s.materials.mapped ? &s.materials : nullptr;
+    return {&s.ctx, s.voxels.buffer, s.materials.buffer, s.package.usesMaterials, s.hasRun, &s.readBackRanges, mapped};
 }
 
 RunResult VulkanExecutor::run() {

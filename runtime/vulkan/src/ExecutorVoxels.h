@@ -2,6 +2,7 @@
 // The device buffers a VulkanExecutor's run() leaves behind, for the GPU mesher (GpuMesher.cpp),
 // which meshes them where they are instead of reading the densities back first.
 #include "ContextImpl.h"
+#include "DeviceBuffer.h"
 #include "voxc/grid/Grid.h"
 
 #include <optional>
@@ -17,6 +18,10 @@ struct ExecutorVoxels {
     // The tile ranges of the densities the last run() read back (ChunkedGrid::loadDensities);
     // empty when it did not read them back. Points into the executor, so it follows every run.
     const std::optional<TileRanges>* tileRanges = nullptr;
+    // The materials' memory where it is mapped (a device whose memory is the host's: results are
+    // not staged) and holds materials; else null. The mesher votes the triangles' materials on the
+    // host from it.
+    const DeviceBuffer* mappedMaterials = nullptr;
 };
 
 } // namespace voxc::vulkan_detail

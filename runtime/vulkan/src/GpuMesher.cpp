@@ -21,6 +21,7 @@
 #include <condition_variable>
 #include <exception>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -507,6 +508,75 @@ constexpr std::array<EdgeOwner, 12> edgeOwners() {
     return owners;
 }
 
+// The host's majority-material vote (mc_materials.glsl's, the CPU mesher's): over the executor's
+// mapped material words (a uint per voxel, the id in its low byte, at ChunkLayout::address), the
+// most common id among a cell's solid corners inside the grid (0 outside); ties go to the lowest.
+// Per case, per corner: the first of the case's triangle corners (k of triangleCount * 3) whose
+// edge ends at that corner where it is solid, or -1 where none does (a solid corner whose
+// neighbours along the cell's edges are all solid).
+std::array<std::array<int8_t, 8>, 256> solidCornerVertices() {
+    std::array<std::array<int8_t, 8>, 256> sources;
+    const auto& table = marching_cubes::caseTable();
+    for (uint32_t mask = 0; mask < 256; ++mask) {
+        sources[mask].fill(-1);
+        for (uint32_t k = 0; k < uint32_t(table[mask].triangleCount) * 3; ++k) {
+            const uint32_t e = table[mask].edges[k], axis = e / 4, along = e % 4, u = (axis + 1) % 3, v = (axis + 2) % 3;
+            const uint32_t lower = (along & 1u) << u | (along >> 1) << v, upper = lower | 1u << axis;
+            const uint32_t solid = (mask >> lower) & 1u ? lower : upper;
+            VOXC_ASSERT(((mask >> solid) & 1u) && !((mask >> (solid ^ lower ^ upper)) & 1u)); // a crossed edge
+            if (sources[mask][solid] < 0) sources[mask][solid] = int8_t(k);
+        }
+    }
+    return sources;
+}
+
+// The majority-material vote on the host (mc_materials.glsl's, the CPU mesher's): the most common
+// id among a cell's solid corners (0 outside the grid); ties go to the lowest. A solid corner at
+// the end of one of the cell's crossed edges takes the material of that edge's vertex (the
+// material of its solid sample, read where the device read the sample); the others are read from
+// the executor's mapped material words (a uint per voxel, the id in its low byte, at
+// ChunkLayout::address).
+class HostVote {
+public:
+    HostVote(const uint32_t* words, const ChunkLayout& layout, const std::vector<glm::ivec3>& tileCells)
+        : words_(words), layout_(layout), tileCells_(tileCells) {}
+
+    // `cell`: the active cell's words; `triangles`: its triangles' vertex indices.
+    uint8_t operator()(const uint32_t* cell, const uint32_t* triangles, const uint8_t* vertexMaterials) const {
+        static const std::array<std::array<int8_t, 8>, 256> kSources = solidCornerVertices();
+        const uint32_t solid = (cell[3] >> 19) & 0xffu;
+        const std::array<int8_t, 8>& source = kSources[solid];
+        uint8_t ids[8];
+        int count = 0;
+        for (uint32_t c = 0; c < 8; ++c) {
+            if (((solid >> c) & 1u) == 0) continue;
+            ids[count++] = source[c] >= 0 ? vertexMaterials[triangles[source[c]]] : read(cell[0], c);
+        }
+        if (count > 0 && std::count(ids, ids + count, ids[0]) == count) return ids[0];
+        uint8_t best = 0;
+        int bestVotes = 0;
+        for (int i = 0; i < count; ++i) {
+            const int votes = int(std::count(ids, ids + count, ids[i]));
+            if (votes > bestVotes || (votes == bestVotes && ids[i] < best)) {
+                best = ids[i];
+                bestVotes = votes;
+            }
+        }
+        return best;
+    }
+
+private:
+    uint8_t read(uint32_t slot, uint32_t corner) const {
+        const glm::ivec3 p = cellOfSlot(slot, tileCells_) + glm::ivec3(int(corner & 1u), int((corner >> 1) & 1u), int(corner >> 2));
+        const bool inside = glm::all(glm::greaterThanEqual(p, glm::ivec3(0))) && glm::all(glm::lessThan(p, layout_.gridSize));
+        return inside ? uint8_t(words_[layout_.address(p)]) : 0;
+    }
+
+    const uint32_t* words_;
+    const ChunkLayout& layout_;
+    const std::vector<glm::ivec3>& tileCells_;
+};
+
 // The triangles of the active cells [begin, end) (kActiveCellWords each) into `triangles` at each
 // cell's first triangle, in the case table's order: each names the vertex of its edges' owners
 // (the words the host wrote into `cellInfo` at their slots: owned edges | first vertex << 3). A
@@ -870,7 +940,13 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     for (DeviceBuffer* b : {&s.activeCells, &s.vertexEdges}) flushForDevice(s.ctx, *b);
     const uint64_t vertexBytes = uint64_t(vertexCount) * kVertexWords * sizeof(uint32_t);
     const bool materials = s.source.hasMaterials;
-    const uint64_t materialBytes = materials ? uint64_t(activeCount) * sizeof(uint32_t) : 0;
+    // Where the executor's materials are mapped (lavapipe, an integrated GPU), the host votes the
+    // triangles' materials as it tests the triangles (HostVote: from the vertices' materials, and
+    // the mapped words for a solid corner that ends no crossed edge; on lavapipe the device pass
+    // cost more CPU time); elsewhere mc_materials.glsl does.
+    const DeviceBuffer* mappedMaterials = materials ? s.source.mappedMaterials : nullptr;
+    const bool deviceVote = materials && !mappedMaterials;
+    const uint64_t materialBytes = deviceVote ? uint64_t(activeCount) * sizeof(uint32_t) : 0;
     replaced |= s.ensureBuffer(s.vertices, vertexBytes, s.meshUse());
     replaced |= s.ensureBuffer(s.cellMaterials, materialBytes, s.meshUse());
     if (!inPlace) s.ensureBuffer(s.results, vertexBytes + materialBytes, MemoryUse::HostAccess); // bound to no pass
@@ -879,14 +955,14 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     // the host makes the triangles.
     s.begin();
     s.dispatch(kMcEmitVertices, push, groupsOf(vertexCount, kGroupSize), vertexCount);
-    if (materials) s.dispatch(kMcEmitMaterials, push, groupsOf(activeCount, kGroupSize), activeCount);
+    if (deviceVote) s.dispatch(kMcEmitMaterials, push, groupsOf(activeCount, kGroupSize), activeCount);
     if (inPlace) {
         memoryBarrier(api, s.cmd, kCompute, kHostRead);
     } else {
         memoryBarrier(api, s.cmd, kCompute, kTransfer);
         const VkBufferCopy vertexCopy{0, 0, vertexBytes};
         api.vkCmdCopyBuffer(s.cmd, s.vertices.buffer, s.results.buffer, 1, &vertexCopy);
-        if (materials) {
+        if (deviceVote) {
             const VkBufferCopy materialCopy{0, vertexBytes, materialBytes};
             api.vkCmdCopyBuffer(s.cmd, s.cellMaterials.buffer, s.results.buffer, 1, &materialCopy);
         }
@@ -905,6 +981,13 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     mesh.triangleMaterials.resize(triangleCount);
     const uint32_t* activeCells = static_cast<const uint32_t*>(s.activeCells.mapped);
     const size_t cellPieces = groupsOf(activeCount, kCellPiece);
+    std::optional<HostVote> vote;
+    if (mappedMaterials) {
+        // Its writes are visible to the host: the count pass's submit ended with a barrier from
+        // every earlier compute write to host reads, and was waited for.
+        invalidateForHost(s.ctx, *mappedMaterials);
+        vote.emplace(static_cast<const uint32_t*>(mappedMaterials->mapped), s.layout, s.tileCells);
+    }
     s.helper.share(cellPieces, [&](size_t piece) {
         makeTriangles(activeCells, piece * kCellPiece, std::min<size_t>(activeCount, (piece + 1) * kCellPiece),
                       s.cellInfo.data(), s.cellInfo.size(), s.tileCount, mesh.triangles.data());
@@ -915,7 +998,7 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
     if (inPlace) {
         invalidateForHost(s.ctx, s.vertices);
         vertexWords = static_cast<const uint32_t*>(s.vertices.mapped);
-        if (materials) {
+        if (deviceVote) {
             invalidateForHost(s.ctx, s.cellMaterials);
             materialWords = static_cast<const uint32_t*>(s.cellMaterials.mapped);
         }
@@ -958,11 +1041,12 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
         for (size_t i = piece * kCellPiece; i < std::min<size_t>(activeCount, (piece + 1) * kCellPiece); ++i) {
             const uint32_t* cell = &activeCells[i * kActiveCellWords];
             const uint32_t first = cell[2], count = (cell[3] >> 3) & 15u;
-            if (materials) std::fill_n(mesh.triangleMaterials.begin() + first, count, uint8_t(materialWords[i]));
+            if (deviceVote) std::fill_n(mesh.triangleMaterials.begin() + first, count, uint8_t(materialWords[i]));
+            bool cellInRange = true;
             for (size_t t = first; t < first + count; ++t) {
                 const uint32_t* corner = &mesh.triangles[t * 3];
                 if (corner[0] >= vertexCount || corner[1] >= vertexCount || corner[2] >= vertexCount) {
-                    pieceInRange = false;
+                    pieceInRange = cellInRange = false;
                     continue;
                 }
                 const glm::dvec3 a(mesh.positions[corner[0]]), b(mesh.positions[corner[1]]), c(mesh.positions[corner[2]]);
@@ -971,6 +1055,9 @@ Mesh GpuMarchingCubes::mesh(const MeshOptions& options, MeshStats* stats) {
                 for (size_t k = 0; k < 3; ++k)
                     if (glm::dot(glm::dvec3(mesh.normals[corner[k]]), face) < 0.0) flag(corner[k]);
             }
+            if (vote && cellInRange)
+                std::fill_n(mesh.triangleMaterials.begin() + first, count,
+                            (*vote)(cell, &mesh.triangles[size_t(first) * 3], mesh.vertexMaterials.data()));
         }
         if (!pieceInRange) inRange = false;
     });
