@@ -97,18 +97,7 @@ template <class SampleSource> uint8_t majorityMaterial(const SampleSource& sampl
     int count = 0;
     for (int c = 0; c < 8; ++c)
         if ((solid >> c) & 1u) materials[count++] = samples.materialAt(cell + cornerOffset(c));
-    // Most cells lie inside one material: then it is the answer, without the vote.
-    if (count > 0 && std::count(materials, materials + count, materials[0]) == count) return materials[0];
-    uint8_t best = kMaterialNone;
-    int bestVotes = 0;
-    for (int i = 0; i < count; ++i) {
-        const int votes = int(std::count(materials, materials + count, materials[i]));
-        if (votes > bestVotes || (votes == bestVotes && materials[i] < best)) {
-            best = materials[i];
-            bestVotes = votes;
-        }
-    }
-    return best;
+    return mostCommonMaterial(materials, count);
 }
 
 // The share of the cells `cells` (grid-local, inside the cell domain): what extractChunk does for

@@ -554,17 +554,7 @@ public:
             if (((solid >> c) & 1u) == 0) continue;
             ids[count++] = source[c] >= 0 ? vertexMaterials[triangles[source[c]]] : read(cell[0], c);
         }
-        if (count > 0 && std::count(ids, ids + count, ids[0]) == count) return ids[0];
-        uint8_t best = 0;
-        int bestVotes = 0;
-        for (int i = 0; i < count; ++i) {
-            const int votes = int(std::count(ids, ids + count, ids[i]));
-            if (votes > bestVotes || (votes == bestVotes && ids[i] < best)) {
-                best = ids[i];
-                bestVotes = votes;
-            }
-        }
-        return best;
+        return marching_cubes::mostCommonMaterial(ids, count);
     }
 
 private:

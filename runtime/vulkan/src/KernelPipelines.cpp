@@ -29,8 +29,9 @@ std::string describe(const Kernel& kernel) { return fmt::format("kernel '{}' ({}
 // the host has (up to one per kernel): the driver compiles a pipeline in the calling thread, and
 // lavapipe spends about 30 ms of CPU on each even when its shader cache has the code, so a run's
 // kernels took the longest part of its set-up one after another. Every pipeline that can be made
-// is made, then the first failure in `which` order is thrown.
-void createEach(VulkanContext::Impl& ctx, VkPipelineLayout layout, const std::vector<Kernel>& kernels,
+// is made; the first failure in `which` order is returned, for the caller to throw once it has
+// accounted for the pipelines made.
+std::exception_ptr createEach(VulkanContext::Impl& ctx, VkPipelineLayout layout, const std::vector<Kernel>& kernels,
                 const std::vector<size_t>& which, std::vector<VkPipeline>& out) {
     std::vector<std::exception_ptr> failures(which.size());
     std::atomic<size_t> next{0};
@@ -50,8 +51,9 @@ void createEach(VulkanContext::Impl& ctx, VkPipelineLayout layout, const std::ve
         for (size_t t = 1; t < threads; ++t) helpers.emplace_back(work);
         work();
     }
-    for (const std::exception_ptr& failure : failures)
-        if (failure) std::rethrow_exception(failure);
+    const auto failure =
+        std::find_if(failures.begin(), failures.end(), [](const std::exception_ptr& f) { return bool(f); });
+    return failure != failures.end() ? *failure : nullptr;
 }
 
 // Each kernel gets the context's pipeline of its SPIR-V, created over the context's own layout
@@ -78,12 +80,7 @@ void shareContextPipelines(VulkanContext::Impl& ctx, const std::vector<Kernel>& 
             else missing.push_back(i);
         }
     }
-    std::exception_ptr failure;
-    try {
-        createEach(ctx, ctx.kernelPipelineLayout, kernels, missing, out.pipelines);
-    } catch (...) {
-        failure = std::current_exception();
-    }
+    const std::exception_ptr failure = createEach(ctx, ctx.kernelPipelineLayout, kernels, missing, out.pipelines);
     {
         // Made pipelines go to the context even after a failure: it destroys them, not `out`.
         std::lock_guard lock(ctx.kernelPipelineMutex);
@@ -119,16 +116,11 @@ void createPipelines(VulkanContext::Impl& ctx, const std::vector<Kernel>& kernel
     }
     std::vector<size_t> all(kernels.size());
     for (size_t i = 0; i < all.size(); ++i) all[i] = i;
-    std::exception_ptr failure;
-    try {
-        createEach(ctx, out.layout, kernels, all, out.pipelines);
-    } catch (...) {
-        failure = std::current_exception();
-    }
+    const std::exception_ptr failure = createEach(ctx, out.layout, kernels, all, out.pipelines);
     {
         std::lock_guard lock(ctx.kernelPipelineMutex);
-        ctx.kernelPipelineCounts.created +=
-            size_t(std::count_if(out.pipelines.begin(), out.pipelines.end(), [](VkPipeline p) { return p != VK_NULL_HANDLE; }));
+        ctx.kernelPipelineCounts.created += size_t(
+            std::count_if(out.pipelines.begin(), out.pipelines.end(), [](VkPipeline p) { return p != VK_NULL_HANDLE; }));
     }
     if (failure) std::rethrow_exception(failure);
 }

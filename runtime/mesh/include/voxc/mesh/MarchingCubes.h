@@ -19,6 +19,7 @@
 //   the lowest id (as a surface-nets vertex does).
 #include "voxc/mesh/SurfaceNets.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -57,6 +58,23 @@ namespace marching_cubes {
 inline glm::ivec3 cornerOffset(int corner) { return {corner & 1, (corner >> 1) & 1, (corner >> 2) & 1}; }
 std::array<int, 2> edgeCorners(int edge);
 inline int edgeAxis(int edge) { return edge / 4; }
+
+// The most common of a cell's `count` solid-corner material ids; ties go to the lowest id, and no
+// solid corner gives 0 (kMaterialNone). The host and the device mesher both vote with it.
+inline uint8_t mostCommonMaterial(const uint8_t* ids, int count) {
+    // Most cells lie inside one material: then it is the answer, without the vote.
+    if (count > 0 && std::count(ids, ids + count, ids[0]) == count) return ids[0];
+    uint8_t best = 0;
+    int bestVotes = 0;
+    for (int i = 0; i < count; ++i) {
+        const int votes = int(std::count(ids, ids + count, ids[i]));
+        if (votes > bestVotes || (votes == bestVotes && ids[i] < best)) {
+            best = ids[i];
+            bestVotes = votes;
+        }
+    }
+    return best;
+}
 
 inline constexpr int kMaxTrianglesPerCell = 12;
 
