@@ -23,6 +23,19 @@ struct ColourRow {
     __m512i even, odd, spreadLow, spreadHigh;
 };
 
+// Row y of the slice into `r` (a ColourRow or a ResidualRow): its values, its fixed flags and its
+// four y/z neighbour rows, a missing one being `absent`, or the row itself where absent is null.
+template <class Row> VOXC_AVX512 inline void loadRow(Row& r, const SliceRows& s, int32_t y, const float* absent) {
+    const size_t offset = size_t(y) * size_t(s.n);
+    r.u = s.u + offset;
+    if (!absent) absent = r.u;
+    r.ym = y > 0 ? r.u - s.n : absent;
+    r.yp = y + 1 < s.rows ? r.u + s.n : absent;
+    r.zm = s.below ? s.below + offset : absent;
+    r.zp = s.above ? s.above + offset : absent;
+    r.fixed = s.fixed + offset;
+}
+
 // 16 floats from p, those outside the row (clear in `inRow`) read as +0: a plain load where the
 // whole block lies inside it.
 template <bool full>
@@ -101,14 +114,8 @@ VOXC_AVX512 void relaxKernel(const SliceRows& s) {
     r.vwx = _mm512_set1_ps(s.wx), r.vwy = _mm512_set1_ps(s.wy), r.vwz = _mm512_set1_ps(s.wz);
     r.vomega = _mm512_set1_ps(kOverRelaxation);
     for (int32_t y = 0; y < s.rows; ++y) {
-        const size_t offset = size_t(y) * size_t(n);
-        r.u = s.u + offset;
-        r.ym = y > 0 ? r.u - n : s.zeros;
-        r.yp = y + 1 < s.rows ? r.u + n : s.zeros;
-        r.zm = s.below ? s.below + offset : s.zeros;
-        r.zp = s.above ? s.above + offset : s.zeros;
-        r.rhs = s.rhs ? s.rhs + offset : s.zeros;
-        r.fixed = s.fixed + offset;
+        loadRow(r, s, y, s.zeros); // a missing neighbour adds an exact +0
+        r.rhs = s.rhs ? s.rhs + size_t(y) * size_t(n) : s.zeros;
         // Sums of the present neighbours' weights from 0 in neighbour order: an interior cell's
         // (both x neighbours) and an end cell's (one).
         float weights = 0.0f, endWeights = 0.0f;
@@ -184,13 +191,7 @@ VOXC_AVX512 float maxResidualKernel(const SliceRows& s, float worst) {
     r.vwx = _mm512_set1_ps(s.wx), r.vwy = _mm512_set1_ps(s.wy), r.vwz = _mm512_set1_ps(s.wz);
     __m512 most = _mm512_set1_ps(worst);
     for (int32_t y = 0; y < s.rows; ++y) {
-        const size_t offset = size_t(y) * size_t(n);
-        r.u = s.u + offset;
-        r.ym = y > 0 ? r.u - n : r.u;
-        r.yp = y + 1 < s.rows ? r.u + n : r.u;
-        r.zm = s.below ? s.below + offset : r.u;
-        r.zp = s.above ? s.above + offset : r.u;
-        r.fixed = s.fixed + offset;
+        loadRow(r, s, y, nullptr); // a missing neighbour is the row itself: u_i - u_i = +0
         most = residualBlock<finest, false>(r, 0, most);
         int32_t x0 = 16;
         for (; x0 + 16 < n; x0 += 16) most = residualBlock<finest, true>(r, x0, most);
