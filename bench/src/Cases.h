@@ -40,6 +40,10 @@ Program fbm5Program(int n);
 // one z slab per thread; returns the n^3 values.
 std::vector<float> libnoiseFbm5(int n);
 std::string libnoiseDescription();
+// What the interpreter runs on: grammars on one thread, field stages on every core.
+std::string interpDescription();
+// The host field stage's threads and widest SIMD (VOXC_SIMD lowers it).
+std::string fieldHostDescription();
 
 // CPU time of the whole process, every thread (lavapipe runs a dispatch on worker threads of its
 // own): on a shared machine the load stretches wall times, much less the CPU a run takes.

@@ -2,6 +2,7 @@
 
 #include "voxc/check/Check.h"
 #include "voxc/core/Errors.h"
+#include "voxc/core/Simd.h"
 
 #include <fmt/format.h>
 #include <libnoise/noise.h>
@@ -48,6 +49,14 @@ std::vector<float> libnoiseFbm5(int n) {
     }
     for (std::thread& worker : workers) worker.join();
     return values;
+}
+
+std::string fieldHostDescription() {
+    return fmt::format("cpu ({} threads, {})", std::max(1u, std::thread::hardware_concurrency()), simdName(hostSimd()));
+}
+
+std::string interpDescription() {
+    return fmt::format("cpu (grammars on 1 thread, field stages on {})", std::max(1u, std::thread::hardware_concurrency()));
 }
 
 std::string libnoiseDescription() {

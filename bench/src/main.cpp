@@ -24,6 +24,7 @@
 
 #include "voxc/stages/Pipeline.h"
 #include "voxc/core/Errors.h"
+#include "voxc/interp/FieldEval.h"
 #include "voxc/interp/Interpreter.h"
 #include "voxc/vulkan/Context.h"
 #include "voxc/vulkan/Executor.h"
@@ -96,7 +97,28 @@ void registerInterp(bench::JsonReporter& reporter, const std::string& caseName, 
         }
         state.counters["cpu_ms"] = benchmark::Counter(cpuMs, benchmark::Counter::kAvgIterations);
     })->Unit(benchmark::kMillisecond);
-    reporter.describe(name, {caseName, n, "interp", "cpu (1 thread)"});
+    reporter.describe(name, {caseName, n, "interp", bench::interpDescription()});
+}
+
+// The field stage alone on the host (voxc::runField, FieldRowEvaluator on every core) into a grid
+// made once, as the peers fill an array made once: fbm5's figure beside FastNoise2's.
+void registerFieldHost(bench::JsonReporter& reporter, const std::string& caseName, int n,
+                       std::shared_ptr<const Program> program) {
+    const std::string name = fmt::format("{}/{}/host", caseName, n);
+    benchmark::RegisterBenchmark(name.c_str(), [program](benchmark::State& state) {
+        DenseGrid grid(program->world.size);
+        const Stage& stage = program->pipeline.back();
+        runField(*program, stage, grid); // warm-up: the grid's pages, the threads' first run
+        double cpuMs = 0;
+        for (auto _ : state) {
+            const double cpuStart = bench::processCpuMs();
+            runField(*program, stage, grid);
+            benchmark::DoNotOptimize(grid.data().data());
+            cpuMs += bench::processCpuMs() - cpuStart;
+        }
+        state.counters["cpu_ms"] = benchmark::Counter(cpuMs, benchmark::Counter::kAvgIterations);
+    })->Unit(benchmark::kMillisecond)->UseRealTime();
+    reporter.describe(name + "/real_time", {caseName, n, "host", bench::fieldHostDescription()});
 }
 
 void registerLibnoise(bench::JsonReporter& reporter, int n) {
@@ -177,6 +199,7 @@ int main(int argc, char** argv) {
             if (uses("vulkan")) registerVulkan(reporter, *context, "fbm5", n, program);
             if (uses("vulkan")) registerVulkan(reporter, *context, "fbm5", n, program, false);
             if (uses("interp")) registerInterp(reporter, "fbm5", n, program);
+            if (uses("host")) registerFieldHost(reporter, "fbm5", n, program);
             if (uses("libnoise")) registerLibnoise(reporter, n);
         }
         if (uses("vulkan") || uses("interp")) bench::registerLsystemCarve(reporter, context.get(), uses("interp"));

@@ -80,24 +80,24 @@ int chooseRule(const Grammar& grammar, const std::vector<uint32_t>& matched, uin
 
 namespace voxc {
 
-VoxelState combineField(FieldMode mode, std::optional<uint8_t> material, float f, VoxelState voxel) {
-    const float d = voxel.density;
-    float result = d;
-    bool wins = false;
+void combineFieldRow(FieldMode mode, std::optional<uint8_t> material, const float* f, int n, float* d, uint8_t* m) {
+    // One loop per mode with the mode's test inlined, so the compiler can vectorise it.
+    const auto each = [&](auto combine) {
+        for (int i = 0; i < n; ++i) {
+            const VoxelState out = combine(f[i], VoxelState{d[i], m[i]});
+            d[i] = out.density;
+            m[i] = out.material;
+        }
+    };
     switch (mode) {
-    case FieldMode::Set: result = f, wins = true; break;
-    case FieldMode::Union: wins = d < f, result = wins ? f : d; break;
-    case FieldMode::Subtract: {
-        const float carved = 1.0f - f;
-        wins = carved < d, result = wins ? carved : d;
-        break;
+    case FieldMode::Set: return each([&](float v, VoxelState s) { return combineField(FieldMode::Set, material, v, s); });
+    case FieldMode::Union: return each([&](float v, VoxelState s) { return combineField(FieldMode::Union, material, v, s); });
+    case FieldMode::Subtract:
+        return each([&](float v, VoxelState s) { return combineField(FieldMode::Subtract, material, v, s); });
+    case FieldMode::Intersect:
+        return each([&](float v, VoxelState s) { return combineField(FieldMode::Intersect, material, v, s); });
+    case FieldMode::Paint: return each([&](float v, VoxelState s) { return combineField(FieldMode::Paint, material, v, s); });
     }
-    case FieldMode::Intersect: wins = f < d, result = wins ? f : d; break;
-    case FieldMode::Paint: wins = f >= kSolidDensity; break;
-    }
-    VoxelState out{result, voxel.material};
-    if (material && wins && result >= kSolidDensity) out.material = *material;
-    return out;
 }
 
 } // namespace voxc

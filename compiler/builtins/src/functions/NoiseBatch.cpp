@@ -18,18 +18,6 @@ namespace voxc {
 namespace {
 
 #ifdef VOXC_NOISE_AVX2
-// Perlin's permutation as pairs, as the shaders read it (noise_permutation.glsl): entry i holds
-// perm(i) in bits 0..7 and perm(i + 1) in bits 8..15, so one gather serves the two lookups
-// perlin3 makes at i and i + 1: seven gathers per perlin3 instead of fourteen, the same values.
-const std::array<int, 256>& permutationPairs() {
-    static const std::array<int, 256> pairs = [] {
-        std::array<int, 256> built{};
-        for (int i = 0; i < 256; ++i) built[size_t(i)] = noise::perm(i) | noise::perm(i + 1) << 8;
-        return built;
-    }();
-    return pairs;
-}
-
 // noise::perlin3 (GradientNoise.cpp) and noise::warpedFbm (Fractal.cpp) over a register of lanes:
 // the same operations in the same order, so every lane rounds as the scalar code does. Selects
 // replace the scalar branches; a lane with a non-finite coordinate computes with a masked lattice
@@ -170,7 +158,7 @@ void warpedFbmBatch(const float* x, const float* y, const float* z, const float*
 #ifdef VOXC_NOISE_AVX2
     const Simd simd = hostSimd();
     if (simd >= Simd::Avx2) {
-        const int* pairs = permutationPairs().data();
+        const int* pairs = noise::permutationPairs().data();
         const int offsets[3] = {noise::seedOffset(seed, 0), noise::seedOffset(seed, 1), noise::seedOffset(seed, 2)};
         if (simd == Simd::Avx512)
             for (; i + 16 <= n; i += 16) {

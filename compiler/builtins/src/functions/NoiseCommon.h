@@ -3,6 +3,7 @@
 #include "voxc/builtins/Shapes.h"
 #include "voxc/program/Random.h"
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -10,6 +11,18 @@
 namespace voxc::noise {
 
 inline int perm(int i) { return perlinPermutation()[i & 255]; }
+
+// Perlin's permutation as pairs, as the shaders read it (noise_permutation.glsl): entry i holds
+// perm(i) in bits 0..7 and perm(i + 1) in bits 8..15, so one gather serves the two lookups at i
+// and i + 1 that perlin3 makes.
+inline const std::array<int, 256>& permutationPairs() {
+    static const std::array<int, 256> pairs = [] {
+        std::array<int, 256> built{};
+        for (int i = 0; i < 256; ++i) built[size_t(i)] = perm(i) | perm(i + 1) << 8;
+        return built;
+    }();
+    return pairs;
+}
 
 // A lattice cell exists only for finite coordinates: noise of a point with a NaN or infinite
 // coordinate is NaN (docs/language.md, "Non-finite values"), never a float -> int conversion

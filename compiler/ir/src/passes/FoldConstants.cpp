@@ -20,15 +20,6 @@ bool foldable(const Value& value) {
     return true;
 }
 
-Value valueOf(const FieldNode& node) {
-    Value value;
-    value.type = node.type;
-    value.v = node.constant;
-    value.i = node.constantInt;
-    value.b = node.constantBool;
-    return value;
-}
-
 void makeConstant(FieldNode& node, const Value& value) {
     node.kind = FieldNode::Kind::Constant;
     node.type = value.type;
@@ -47,8 +38,8 @@ void foldField(IrField& field) {
         bool allConstant = true;
         for (uint32_t operand : node.operands) {
             const FieldNode& source = field.nodes[operand];
-            allConstant = allConstant && source.kind == FieldNode::Kind::Constant && foldable(valueOf(source));
-            arguments.push_back(valueOf(source));
+            allConstant = allConstant && source.kind == FieldNode::Kind::Constant && foldable(constantValue(source));
+            arguments.push_back(constantValue(source));
         }
         if (!allConstant) continue;
         Value result;

@@ -31,6 +31,9 @@ struct Value {
     static Value makeVec3(glm::vec3 x) { return {Type::Vec3, x, 0, false}; }
 };
 
+// The value of a Constant field node.
+inline Value constantValue(const FieldNode& node) { return {node.type, node.constant, node.constantInt, node.constantBool}; }
+
 struct FunctionInfo {
     std::string_view name;
     std::string_view signature; // for diagnostics and docs, e.g. "perlin3(p: vec3, seed: int) -> float"

@@ -1,9 +1,10 @@
 #pragma once
 // The widest instruction set the host's vectorised loops may use (the multigrid's and the
-// erosion's row kernels and colour sweeps, the mesher's sign classification, the batched noise):
-// what the CPU has, lowered by the environment variable VOXC_SIMD (`avx512`, `avx2` or `none`),
-// read once per process. Every path computes the same bits, so the variable changes only speed:
-// it lets a machine time and test the narrower paths it would otherwise never run.
+// erosion's row kernels and colour sweeps, the mesher's sign classification, the batched noise,
+// the field rows and their fractal noise): what the CPU has, lowered by the environment variable
+// VOXC_SIMD (`avx512`, `avx2` or `none`), read once per process. Every path computes the same
+// bits, so the variable changes only speed: it lets a machine time and test the narrower paths it
+// would otherwise never run.
 #include <algorithm>
 #include <utility>
 

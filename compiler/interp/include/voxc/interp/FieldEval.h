@@ -7,6 +7,7 @@
 #include "voxc/program/Program.h"
 
 #include <functional>
+#include <span>
 #include <glm/vec3.hpp>
 #include <vector>
 
@@ -25,6 +26,9 @@ public:
     // The field with inputs x, y, z = `position` and wx, wy, wz = float(`world`): a stamp's frame
     // (voxc::stampLocal) at the world voxel it writes.
     const std::vector<Value>& evaluateAt(glm::vec3 position, glm::ivec3 world);
+    // Node `node` alone, from its operands' values as the last evaluations left them.
+    void evaluateNode(size_t node, glm::vec3 position, glm::ivec3 world);
+    const std::vector<Value>& values() const { return values_; }
 
 private:
     const Field& field_;
@@ -34,6 +38,11 @@ private:
     std::vector<Value> values_;
     std::vector<Value> arguments_;
 };
+
+// One node's value from its operands' values (in the node's operand order); `function` is the
+// node's builtin when it is a Call.
+Value nodeValue(const FieldNode& node, const FunctionInfo* function, std::span<const Value> operands,
+                glm::vec3 position, glm::ivec3 world);
 
 // Runs one field stage over the whole grid in place: voxc::combineField at every voxel with the
 // field's value, or with 0 where that value is not finite (counted in `nonFinite` when set).

@@ -64,6 +64,28 @@ struct VoxelState {
 // and then the resulting density >= kSolidDensity. So `union arch material stone` paints the
 // arch's new rock, `subtract cave material sand` paints the rock left in the cave's density ramp
 // (its walls), and `paint low material rock` paints solid voxels where `low` is >= 0.5.
-VoxelState combineField(FieldMode mode, std::optional<uint8_t> material, float f, VoxelState voxel);
+// (inline: combineFieldRow's loops inline it per mode)
+inline VoxelState combineField(FieldMode mode, std::optional<uint8_t> material, float f, VoxelState voxel) {
+    const float d = voxel.density;
+    float result = d;
+    bool wins = false;
+    switch (mode) {
+    case FieldMode::Set: result = f, wins = true; break;
+    case FieldMode::Union: wins = d < f, result = wins ? f : d; break;
+    case FieldMode::Subtract: {
+        const float carved = 1.0f - f;
+        wins = carved < d, result = wins ? carved : d;
+        break;
+    }
+    case FieldMode::Intersect: wins = f < d, result = wins ? f : d; break;
+    case FieldMode::Paint: wins = f >= kSolidDensity; break;
+    }
+    VoxelState out{result, voxel.material};
+    if (material && wins && result >= kSolidDensity) out.material = *material;
+    return out;
+}
+
+// combineField at each of n voxels in a row: field values f[i], densities d[i], materials m[i].
+void combineFieldRow(FieldMode mode, std::optional<uint8_t> material, const float* f, int n, float* d, uint8_t* m);
 
 } // namespace voxc

@@ -4,6 +4,7 @@
 // (after the clamp) is not finite, and each stage counts its replacements. The interpreter
 // applies it here, the kernels in compiler/shaders/nonfinite.glsl, so the grid after every stage
 // holds only finite densities on both backends.
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <glm/vec3.hpp>
@@ -23,6 +24,15 @@ struct NonFiniteCount {
         if (count == 0 || index < firstIndex) firstIndex = index;
         ++count;
         return 0.0f;
+    }
+
+    // values[i] = replace(values[i], first + i) for i < n: a quick test of the whole row first,
+    // as a row is almost always finite.
+    void replaceRow(float* values, int n, uint64_t first) {
+        uint32_t nonFinite = 0; // (exponent bits all set: infinite or NaN; integer tests vectorise)
+        for (int i = 0; i < n; ++i) nonFinite |= uint32_t((std::bit_cast<uint32_t>(values[i]) & 0x7f800000u) == 0x7f800000u);
+        if (nonFinite == 0) return;
+        for (int i = 0; i < n; ++i) values[i] = replace(values[i], first + uint64_t(i));
     }
 };
 
