@@ -71,8 +71,8 @@ TEST(codegen_Materials, PaintBoxesAreUnchangedWhereNothingIsPainted) {
     // Straight after a start of air every density is 0: nothing is painted anywhere.
     program.start.resize(1);
     program.pipeline = {program.pipeline.front(), program.pipeline.back()};
-    for (const FieldBox& box : compileProgram(program).stages.back().gridBoxes)
-        EXPECT_EQ(box.unchanged, box.constant);
+    const KernelPackage airThenPaint = compileProgram(program); // (the loop must not outlive the package)
+    for (const FieldBox& box : airThenPaint.stages.back().gridBoxes) EXPECT_EQ(box.unchanged, box.constant);
 }
 
 TEST(codegen_Materials, ManifestRecordsMaterials) {
