@@ -58,9 +58,9 @@ void interpret(const Program& program, const Stage& stage, DenseGrid& grid, cons
         for (int32_t y = 0; y < table.size.y; ++y)
             for (int32_t x = 0; x < table.size.x; ++x, ++at) {
                 const glm::ivec3 p = table.min + glm::ivec3(x, y, z);
-                const std::optional<uint8_t> material = materials ? std::optional(table.material[at]) : std::nullopt;
-                const VoxelState out =
-                    combineField(stage.mode, material, table.density[at], {grid.at(p), grid.materialAt(p)});
+                const VoxelState voxel{grid.at(p), grid.materialAt(p)};
+                const VoxelState out = materials ? combineField(stage.mode, table.material[at], table.density[at], voxel)
+                                                 : combineField(stage.mode, std::nullopt, table.density[at], voxel);
                 grid.at(p) = out.density;
                 grid.materialAt(p) = out.material;
             }
