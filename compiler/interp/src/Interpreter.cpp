@@ -114,7 +114,8 @@ void checkFits(const Grammar& grammar, const DenseGrid& grid) {
 } // namespace
 
 DenseGrid evaluateStart(const Program& program) {
-    DenseGrid grid(program.world.size);
+    DenseGrid grid(program.world.size); // air: what a start without shapes leaves
+    if (program.start.empty()) return grid;
     const glm::ivec3 size = program.world.size;
     for (int z = 0; z < size.z; ++z)
         for (int y = 0; y < size.y; ++y)
