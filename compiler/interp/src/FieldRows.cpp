@@ -59,10 +59,6 @@ FieldRowEvaluator::FieldRowEvaluator(const Field& field, glm::ivec3 origin, glm:
     for (size_t i = 0; i < field.nodes.size(); ++i) {
         const FieldNode& node = field.nodes[i];
         NodePlan& plan = plans_[i];
-        const auto operandVaries = [&](uint32_t operand, int component) {
-            const NodePlan& o = plans_[operand];
-            return field.nodes[operand].type == Type::Float ? o.varies[0] : o.varies[component];
-        };
         const auto anyOperandVaries = [&] {
             return std::any_of(node.operands.begin(), node.operands.end(), [&](uint32_t o) { return !plans_[o].uniform; });
         };
@@ -84,7 +80,7 @@ FieldRowEvaluator::FieldRowEvaluator(const Field& field, glm::ivec3 origin, glm:
             if (arithmetic) {
                 for (int c = 0; c < components(node.type); ++c)
                     plan.varies[c] = std::any_of(node.operands.begin(), node.operands.end(),
-                                                 [&](uint32_t o) { return operandVaries(o, c); });
+                                                 [&](uint32_t o) { return !uniformLanes(o, c); });
                 plan.op = name == "add" ? RowOp::Add : name == "sub" ? RowOp::Subtract : name == "mul" ? RowOp::Multiply
                           : name == "div" ? RowOp::Divide : RowOp::Negate;
                 break;

@@ -2,6 +2,7 @@
 
 #include "Noise.h"
 #include "NoiseCommon.h"
+#include "NoiseLanes.h"
 #include "voxc/core/Simd.h"
 
 #include <algorithm>
@@ -21,22 +22,18 @@ namespace {
 // noise::perlin3 (GradientNoise.cpp) and noise::warpedFbm (Fractal.cpp) over a register of lanes:
 // the same operations in the same order, so every lane rounds as the scalar code does. Selects
 // replace the scalar branches; a lane with a non-finite coordinate computes with a masked lattice
-// index and returns NaN, as the scalar code does without computing. Each width below defines its
-// primitives, then NoiseBatchLanes.inc writes the noise once over them.
+// index and returns NaN, as the scalar code does without computing. Each width below brings in
+// NoiseLanes.h's arithmetic and defines its other primitives, then NoiseBatchLanes.inc writes the
+// noise once over them.
 
 // Eight lanes (AVX2).
 namespace lanes8 {
 #define LANES __attribute__((target("avx2")))
 
-using Floats = __m256;
+using namespace noise::simd8; // Floats, add, sub, mul, splat, floorOf
 using Ints = __m256i;
 using Finite = __m256; // all ones where a lane's three coordinates are finite
 
-LANES inline Floats add(Floats a, Floats b) { return _mm256_add_ps(a, b); }
-LANES inline Floats sub(Floats a, Floats b) { return _mm256_sub_ps(a, b); }
-LANES inline Floats mul(Floats a, Floats b) { return _mm256_mul_ps(a, b); }
-LANES inline Floats splat(float v) { return _mm256_set1_ps(v); }
-LANES inline Floats floorOf(Floats v) { return _mm256_floor_ps(v); }
 LANES inline Floats load(const float* from) { return _mm256_loadu_ps(from); }
 LANES inline void store(float* to, Floats v) { _mm256_storeu_ps(to, v); }
 LANES inline Ints plus(Ints a, Ints b) { return _mm256_add_epi32(a, b); }
@@ -92,15 +89,10 @@ LANES inline Floats nanUnless(Finite finite, Floats v) { return _mm256_blendv_ps
 namespace lanes16 {
 #define LANES __attribute__((target("avx512f")))
 
-using Floats = __m512;
+using namespace noise::simd16; // Floats, add, sub, mul, splat, floorOf
 using Ints = __m512i;
 using Finite = __mmask16;
 
-LANES inline Floats add(Floats a, Floats b) { return _mm512_add_ps(a, b); }
-LANES inline Floats sub(Floats a, Floats b) { return _mm512_sub_ps(a, b); }
-LANES inline Floats mul(Floats a, Floats b) { return _mm512_mul_ps(a, b); }
-LANES inline Floats splat(float v) { return _mm512_set1_ps(v); }
-LANES inline Floats floorOf(Floats v) { return _mm512_floor_ps(v); }
 LANES inline Floats load(const float* from) { return _mm512_loadu_ps(from); }
 LANES inline void store(float* to, Floats v) { _mm512_storeu_ps(to, v); }
 LANES inline Ints plus(Ints a, Ints b) { return _mm512_add_epi32(a, b); }

@@ -35,7 +35,7 @@ inline float fade(float t) { return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f)
 inline float lerp(float t, float a, float b) { return a + t * (b - a); }
 
 // Perlin's reference gradient: 12 cube-edge directions, four of them repeated (hash & 15).
-inline float grad(int hash, float x, float y, float z) {
+constexpr float grad(int hash, float x, float y, float z) {
     const int h = hash & 15;
     const float u = h < 8 ? x : y;
     const float v = h < 4 ? y : (h == 12 || h == 14 ? x : z);

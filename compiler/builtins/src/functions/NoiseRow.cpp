@@ -2,6 +2,7 @@
 
 #include "Noise.h"
 #include "NoiseCommon.h"
+#include "NoiseLanes.h"
 #include "voxc/core/Simd.h"
 
 #include <algorithm>
@@ -36,7 +37,7 @@ constexpr float kExactFloors = 16777216.0f;
 // without x, the part itself, which part + x * (-0 or +0) also is when the zero's sign makes
 // x * 0 equal -0: -0 for the low corners' x in [0, 1), +0 for the high corners' x - 1 in [-1, 0)
 // (and part + -0 is part, signed zeros included). noise_column.glsl splits it the same way along y.
-float gradientPart(int hash, float y, float z) {
+constexpr float gradientPart(int hash, float y, float z) {
     const int h = hash & 15;
     if (h < 4) return (h & 2) ? -y : y;                    // u = x, v = y
     if (h < 8) return (h & 2) ? -z : z;                    // u = x, v = z
@@ -44,11 +45,11 @@ float gradientPart(int hash, float y, float z) {
     return ((h & 1) ? -y : y) + ((h & 2) ? -z : z);        // u = y, v = z
 }
 
-// The coefficient of x for hash h at a low (x in [0, 1)) or high (x - 1) lattice corner.
+// The coefficient of x for hash h at a low (x in [0, 1)) or high (x - 1) lattice corner: grad's
+// value at x = 1, y = z = 0 (+-1 where it takes x), the zero of the right sign where it does not.
 constexpr float xCoefficient(int h, bool high) {
-    if (h < 8) return (h & 1) ? -1.0f : 1.0f;
-    if (h == 12 || h == 14) return (h & 2) ? -1.0f : 1.0f;
-    return high ? 0.0f : -0.0f;
+    const float g = noise::grad(h, 1.0f, 0.0f, 0.0f);
+    return g != 0.0f ? g : high ? 0.0f : -0.0f;
 }
 
 constexpr std::array<std::array<float, 16>, 2> kXCoefficients = [] {
@@ -134,22 +135,52 @@ void makeRowHashes(int X0, int Y, int Z, size_t entries, size_t stride, int32_t*
 #ifdef VOXC_NOISE_ROW_AVX512
 #define LANES __attribute__((target("avx512f")))
 
+namespace rowLanes16 {
+
+using namespace noise::simd16; // Floats, add, sub, mul, splat, floorOf
+using Ints = __m512i;
+using Active = __mmask16;
+constexpr size_t kLanes = 16;
+
+LANES inline Floats magnitude(Floats v) {
+    return _mm512_castsi512_ps(_mm512_and_si512(_mm512_castps_si512(v), _mm512_set1_epi32(0x7fffffff)));
+}
+LANES inline Active activeLanes(size_t count) { return count >= 16 ? Active(0xFFFF) : Active((1u << count) - 1u); }
+LANES inline Floats loadActive(Active active, const float* from) { return _mm512_maskz_loadu_ps(active, from); }
+LANES inline void storeActive(float* to, Active active, Floats v) { _mm512_mask_storeu_ps(to, active, v); }
+LANES inline Active finiteAmong(Active active, Floats v) {
+    return _mm512_mask_cmp_ps_mask(active, magnitude(v), splat(INFINITY), _CMP_LT_OQ);
+}
+LANES inline Floats select(Active where, Floats otherwise, Floats v) { return _mm512_mask_blend_ps(where, otherwise, v); }
+// (the unmasked conversion and permutes read an undefined register)
+LANES inline Ints truncate(Floats v) { return _mm512_maskz_cvttps_epi32(0xFFFF, v); }
+LANES inline Ints minus(Ints a, int32_t b) { return _mm512_sub_epi32(a, _mm512_set1_epi32(b)); }
+LANES inline bool anyOutside(Active active, Ints idx) { return _mm512_mask_cmpgt_epu32_mask(active, idx, _mm512_set1_epi32(15)) != 0; }
+LANES inline bool allZero(Ints idx) { return _mm512_test_epi32_mask(idx, idx) == 0; }
+LANES inline Floats permuted(const float* table, Ints idx) {
+    return _mm512_maskz_permutexvar_ps(0xFFFF, idx, _mm512_loadu_ps(table));
+}
+
+#include "NoiseRowLanes.inc"
+
+constexpr int32_t kSignBit = int32_t(0x80000000u);
+
 // gradientPart(h, y, z) for the sixteen hashes h: what each takes of y and z, and their signs.
 struct PartRecipe {
     int32_t ySign[16], zSign[16];
     __mmask16 usesY, usesZ;
 };
 
+// From gradientPart itself: with y = 1 and z = 0 its value is +-1 where it takes y (+-0 where
+// not), and likewise for z.
 constexpr PartRecipe partRecipe() {
     PartRecipe r{};
     for (int h = 0; h < 16; ++h) {
-        constexpr int32_t kSignBit = int32_t(0x80000000u);
-        const int32_t bit0 = (h & 1) ? kSignBit : 0, bit1 = (h & 2) ? kSignBit : 0;
-        const bool y = h < 4 || h >= 8, z = (h >= 4 && h < 8) || (h >= 8 && h != 12 && h != 14);
-        r.ySign[h] = h < 4 ? bit1 : bit0;
-        r.zSign[h] = bit1;
-        r.usesY = __mmask16(r.usesY | (y ? 1 << h : 0));
-        r.usesZ = __mmask16(r.usesZ | (z ? 1 << h : 0));
+        const float y = gradientPart(h, 1.0f, 0.0f), z = gradientPart(h, 0.0f, 1.0f);
+        r.ySign[h] = y < 0.0f ? kSignBit : 0;
+        r.zSign[h] = z < 0.0f ? kSignBit : 0;
+        r.usesY = __mmask16(r.usesY | (y != 0.0f ? 1 << h : 0));
+        r.usesZ = __mmask16(r.usesZ | (z != 0.0f ? 1 << h : 0));
     }
     return r;
 }
@@ -167,10 +198,9 @@ LANES void rangeOf16(const float* x, size_t n, float& lo, float& hi, bool& allFi
     __mmask16 nonFinite = 0;
     __m512 low = _mm512_set1_ps(INFINITY), high = _mm512_set1_ps(-INFINITY);
     for (size_t i = 0; i < n; i += 16) {
-        const __mmask16 active = n - i >= 16 ? __mmask16(0xFFFF) : __mmask16((1u << (n - i)) - 1u);
-        const __m512 q = _mm512_maskz_loadu_ps(active, x + i);
-        const __m512 magnitude = _mm512_castsi512_ps(_mm512_and_si512(_mm512_castps_si512(q), _mm512_set1_epi32(0x7fffffff)));
-        const __mmask16 finite = _mm512_mask_cmp_ps_mask(active, magnitude, _mm512_set1_ps(INFINITY), _CMP_LT_OQ);
+        const Active active = activeLanes(n - i);
+        const Floats q = loadActive(active, x + i);
+        const Active finite = finiteAmong(active, q);
         low = _mm512_mask_min_ps(low, finite, low, q);
         high = _mm512_mask_max_ps(high, finite, high, q);
         nonFinite |= __mmask16(active & ~finite);
@@ -192,7 +222,7 @@ LANES void makeParts16(const float* cornerY, const float* cornerZ, const int32_t
         partsOfHashes16(cornerY[c], cornerZ[c], partOfHash);
         const __m512 table = _mm512_load_ps(partOfHash);
         for (size_t j = 0; j < entries; j += 16) {
-            const __mmask16 active = entries - j >= 16 ? __mmask16(0xFFFF) : __mmask16((1u << (entries - j)) - 1u);
+            const Active active = activeLanes(entries - j);
             const __m512i hash = _mm512_maskz_loadu_epi32(active, hashes + c * stride + j);
             _mm512_mask_storeu_ps(parts + c * stride + j, active, _mm512_maskz_permutexvar_ps(0xFFFF, hash, table));
         }
@@ -213,7 +243,7 @@ LANES void makeRowHashes16(int X0, int Y, int Z, size_t entries, size_t stride, 
     const __m512i byte = _mm512_set1_epi32(255), nibble = _mm512_set1_epi32(15);
     const __m512 low = _mm512_loadu_ps(kXCoefficients[0].data()), high = _mm512_loadu_ps(kXCoefficients[1].data());
     for (size_t j = 0; j < entries; j += 16) {
-        const __mmask16 active = entries - j >= 16 ? __mmask16(0xFFFF) : __mmask16((1u << (entries - j)) - 1u);
+        const Active active = activeLanes(entries - j);
         const __m512i X = _mm512_and_si512(_mm512_add_epi32(_mm512_set1_epi32(X0 + int(j)),
                                                             _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15)),
                                            byte);
@@ -236,39 +266,6 @@ LANES void makeRowHashes16(int X0, int Y, int Z, size_t entries, size_t stride, 
     }
 }
 
-namespace rowLanes16 {
-
-using Floats = __m512;
-using Ints = __m512i;
-using Active = __mmask16;
-constexpr size_t kLanes = 16;
-
-LANES inline Floats add(Floats a, Floats b) { return _mm512_add_ps(a, b); }
-LANES inline Floats sub(Floats a, Floats b) { return _mm512_sub_ps(a, b); }
-LANES inline Floats mul(Floats a, Floats b) { return _mm512_mul_ps(a, b); }
-LANES inline Floats splat(float v) { return _mm512_set1_ps(v); }
-LANES inline Floats floorOf(Floats v) { return _mm512_floor_ps(v); }
-LANES inline Floats magnitude(Floats v) {
-    return _mm512_castsi512_ps(_mm512_and_si512(_mm512_castps_si512(v), _mm512_set1_epi32(0x7fffffff)));
-}
-LANES inline Active activeLanes(size_t count) { return count >= 16 ? Active(0xFFFF) : Active((1u << count) - 1u); }
-LANES inline Floats loadActive(Active active, const float* from) { return _mm512_maskz_loadu_ps(active, from); }
-LANES inline void storeActive(float* to, Active active, Floats v) { _mm512_mask_storeu_ps(to, active, v); }
-LANES inline Active finiteAmong(Active active, Floats v) {
-    return _mm512_mask_cmp_ps_mask(active, magnitude(v), splat(INFINITY), _CMP_LT_OQ);
-}
-LANES inline Floats select(Active where, Floats otherwise, Floats v) { return _mm512_mask_blend_ps(where, otherwise, v); }
-// (the unmasked conversion and permutes read an undefined register)
-LANES inline Ints truncate(Floats v) { return _mm512_maskz_cvttps_epi32(0xFFFF, v); }
-LANES inline Ints minus(Ints a, int32_t b) { return _mm512_sub_epi32(a, _mm512_set1_epi32(b)); }
-LANES inline bool anyOutside(Active active, Ints idx) { return _mm512_mask_cmpgt_epu32_mask(active, idx, _mm512_set1_epi32(15)) != 0; }
-LANES inline bool allZero(Ints idx) { return _mm512_test_epi32_mask(idx, idx) == 0; }
-LANES inline Floats permuted(const float* table, Ints idx) {
-    return _mm512_maskz_permutexvar_ps(0xFFFF, idx, _mm512_loadu_ps(table));
-}
-
-#include "NoiseRowLanes.inc"
-
 } // namespace rowLanes16
 
 #undef LANES
@@ -277,16 +274,11 @@ LANES inline Floats permuted(const float* table, Ints idx) {
 namespace rowLanes8 {
 #define LANES __attribute__((target("avx2")))
 
-using Floats = __m256;
+using namespace noise::simd8; // Floats, add, sub, mul, splat, floorOf
 using Ints = __m256i;
 using Active = __m256;
 constexpr size_t kLanes = 8;
 
-LANES inline Floats add(Floats a, Floats b) { return _mm256_add_ps(a, b); }
-LANES inline Floats sub(Floats a, Floats b) { return _mm256_sub_ps(a, b); }
-LANES inline Floats mul(Floats a, Floats b) { return _mm256_mul_ps(a, b); }
-LANES inline Floats splat(float v) { return _mm256_set1_ps(v); }
-LANES inline Floats floorOf(Floats v) { return _mm256_floor_ps(v); }
 LANES inline Floats magnitude(Floats v) { return _mm256_andnot_ps(splat(-0.0f), v); }
 LANES inline Active activeLanes(size_t count) {
     const int32_t lanes = int32_t(std::min<size_t>(count, 8));
@@ -353,12 +345,13 @@ VOXC_SIMD_KERNEL void FractalRow::perlinOctave(FractalRow& row, int32_t octave, 
     RowHashes& h = row.rowHashes_[size_t(octave) * 256 + size_t(Y)];
     if (!(h.made && h.seed == seed && h.X0 == X0 && h.Z == Z && h.entries == entries)) {
         h.made = true, h.seed = seed, h.X0 = X0, h.Z = Z, h.entries = entries;
-        h.hashes.assign(kCorners * stride, 0);
-        h.lowCoefficients.assign(kCorners * stride, 0.0f);
-        h.highCoefficients.assign(kCorners * stride, 0.0f);
+        // (entries past `entries` are padding a load may read: any initialised values)
+        h.hashes.resize(std::max(h.hashes.size(), kCorners * stride));
+        h.lowCoefficients.resize(h.hashes.size());
+        h.highCoefficients.resize(h.hashes.size());
 #ifdef VOXC_NOISE_ROW_AVX512
         if (hostSimd() == Simd::Avx512)
-            makeRowHashes16(X0, Y, Z, entries, stride, h.hashes.data(), h.lowCoefficients.data(), h.highCoefficients.data());
+            rowLanes16::makeRowHashes16(X0, Y, Z, entries, stride, h.hashes.data(), h.lowCoefficients.data(), h.highCoefficients.data());
         else
 #endif
             makeRowHashes(X0, Y, Z, entries, stride, h.hashes.data(), h.lowCoefficients.data(), h.highCoefficients.data());
@@ -371,7 +364,7 @@ VOXC_SIMD_KERNEL void FractalRow::perlinOctave(FractalRow& row, int32_t octave, 
                              lo,            noise::fade(y),           noise::fade(z)};
 #ifdef VOXC_NOISE_ROW_AVX512
     if (hostSimd() == Simd::Avx512) {
-        makeParts16(cornerY, cornerZ, h.hashes.data(), entries, stride, row.parts_.data());
+        rowLanes16::makeParts16(cornerY, cornerZ, h.hashes.data(), entries, stride, row.parts_.data());
         if (allFinite) return rowLanes16::perlinPoints<true>(lattice, points, scale, term, n, out);
         return rowLanes16::perlinPoints<false>(lattice, points, scale, term, n, out);
     }
@@ -393,7 +386,7 @@ VOXC_SIMD_KERNEL void FractalRow::octaveSum(FractalRow& row, FractalFold fold, c
                                             float* out) {
     PointRange range;
 #ifdef VOXC_NOISE_ROW_AVX512
-    if (hostSimd() == Simd::Avx512) rangeOf16(x, n, range.lo, range.hi, range.allFinite);
+    if (hostSimd() == Simd::Avx512) rowLanes16::rangeOf16(x, n, range.lo, range.hi, range.allFinite);
     else
 #endif
         for (size_t i = 0; i < n; ++i) {
